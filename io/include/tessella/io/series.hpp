@@ -1,0 +1,41 @@
+#pragma once
+// ParaView time series: DIR/<name>.pvd listing DIR/<name>_000000.vtu, ...
+// with the simulation time of each step. The .pvd is rewritten (temporary
+// file, then rename) after every step, so an interrupted run leaves a valid,
+// openable series of the steps written so far.
+
+#include <string>
+#include <vector>
+
+#include "tessella/io/vtu.hpp"
+#include "tessella/tissue/tissue.hpp"
+
+namespace tessella::io {
+
+class SeriesWriter {
+ public:
+  /// Creates `directory` if needed. Throws InputError if it cannot be created.
+  SeriesWriter(std::string directory, std::string name = "tissue", VtuOptions options = {});
+
+  /// Writes one snapshot for simulation time `time` and updates the .pvd.
+  /// Returns the snapshot's path.
+  std::string write(const Tissue& tissue, double time);
+
+  const std::string& pvdPath() const { return pvd_path_; }
+  std::size_t steps() const { return entries_.size(); }
+
+ private:
+  struct Entry {
+    double time;
+    std::string file;  // relative to the directory
+  };
+  void writePvd() const;
+
+  std::string directory_;
+  std::string name_;
+  std::string pvd_path_;
+  VtuOptions options_;
+  std::vector<Entry> entries_;
+};
+
+}  // namespace tessella::io

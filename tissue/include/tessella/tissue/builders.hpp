@@ -1,0 +1,33 @@
+#pragma once
+// Building tissues from plain arrays (generators, file readers, tests).
+
+#include <array>
+#include <span>
+#include <vector>
+
+#include "tessella/tissue/tissue.hpp"
+
+namespace tessella {
+
+/// A 2D tissue from vertex positions and polygons (vertex index loops).
+/// Shared edges are created once. Loops must all run the same way round
+/// (counter-clockwise seen from +z for a planar tissue); throws InputError
+/// naming the polygon for a loop with fewer than 3 vertices or a bad index.
+Tissue buildPolygonTissue(std::span<const Vec3> positions,
+                          const std::vector<std::vector<Index>>& polygons,
+                          Embedding embedding = Embedding::Planar);
+
+/// One face of a polyhedral cell as used by buildPolyhedralTissue: an index
+/// into the face list and whether its loop normal points into the cell.
+struct CellFace {
+  Index face = 0;
+  bool reversed = false;
+};
+
+/// A 3D tissue from vertex positions, wall polygons (vertex index loops, each
+/// shared by its one or two cells) and cells (faces with orientation).
+Tissue buildPolyhedralTissue(std::span<const Vec3> positions,
+                             const std::vector<std::vector<Index>>& faces,
+                             const std::vector<std::vector<CellFace>>& cells);
+
+}  // namespace tessella

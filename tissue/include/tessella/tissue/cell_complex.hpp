@@ -1,0 +1,136 @@
+#pragma once
+// CellComplex: the pure combinatorics of a tissue (no positions, no
+// properties): elements of degree 0..D with oriented borders and regions.
+//
+//   borders                              regions (kept in sync by every edit)
+//   edge   -> 2 vertices (from, to)      vertex -> edges
+//   face   -> closed oriented edge loop  edge   -> faces
+//   volume -> faces with signs           face   -> volumes (at most 2)
+//
+// A face loop is stored twice, as oriented edges and as vertices (vertex i
+// is where edge i starts), so geometry sweeps read only the vertex loop.
+// A volume's face signs make every face normal point out of the volume.
+// Removal leaves a tombstone; compact() renumbers. Users normally reach the
+// complex through Tissue, which adds positions, properties and lineage.
+
+#include <array>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "tessella/tissue/handles.hpp"
+#include "tessella/tissue/ragged_array.hpp"
+
+namespace tessella {
+
+/// Old-to-new index maps returned by compact(), one per degree
+/// (kInvalidIndex for removed elements).
+struct Renumbering {
+  std::array<std::vector<Index>, 4> old_to_new;
+  Index operator()(int degree, Index old) const { return old_to_new[degree][old]; }
+  template <typename Tag>
+  Handle<Tag> operator()(int degree, Handle<Tag> h) const {
+    return Handle<Tag>(old_to_new[degree][h.index()]);
+  }
+};
+
+class CellComplex {
+ public:
+  /// dim = 2 (vertices, edges, faces) or 3 (and volumes).
+  explicit CellComplex(int dim);
+
+  int dim() const { return dim_; }
+  /// Number of slots of a degree, tombstones included (the bound for indices).
+  std::size_t slots(int degree) const { return alive_[degree].size(); }
+  /// Number of live elements of a degree.
+  std::size_t count(int degree) const { return live_count_[degree]; }
+  bool alive(int degree, Index i) const { return i < alive_[degree].size() && alive_[degree][i]; }
+  bool alive(VertexId v) const { return alive(0, v.index()); }
+  bool alive(EdgeId e) const { return alive(1, e.index()); }
+  bool alive(FaceId f) const { return alive(2, f.index()); }
+  bool alive(VolumeId c) const { return alive(3, c.index()); }
+
+  // --- borders --------------------------------------------------------------
+  VertexId edgeFrom(EdgeId e) const { return edge_vertices_[e.index()][0]; }
+  VertexId edgeTo(EdgeId e) const { return edge_vertices_[e.index()][1]; }
+  std::array<VertexId, 2> edgeVertices(EdgeId e) const { return edge_vertices_[e.index()]; }
+  /// Start vertex of an oriented edge.
+  VertexId tail(OrientedEdge oe) const {
+    return oe.reversed() ? edgeTo(oe.handle()) : edgeFrom(oe.handle());
+  }
+  VertexId head(OrientedEdge oe) const {
+    return oe.reversed() ? edgeFrom(oe.handle()) : edgeTo(oe.handle());
+  }
+  std::span<const OrientedEdge> faceEdges(FaceId f) const { return face_edges_[f.index()]; }
+  std::span<const VertexId> faceVertices(FaceId f) const { return face_vertices_[f.index()]; }
+  std::span<const OrientedFace> volumeFaces(VolumeId c) const { return volume_faces_[c.index()]; }
+
+  // --- regions --------------------------------------------------------------
+  std::span<const EdgeId> vertexEdges(VertexId v) const { return vertex_edges_[v.index()]; }
+  std::span<const FaceId> edgeFaces(EdgeId e) const { return edge_faces_[e.index()]; }
+  std::span<const VolumeId> faceVolumes(FaceId f) const { return face_volumes_[f.index()]; }
+
+  /// The edge joining a and b, or an invalid handle.
+  EdgeId findEdge(VertexId a, VertexId b) const;
+  /// Position of edge e in f's loop, or -1.
+  int loopPosition(FaceId f, EdgeId e) const;
+  /// Position of vertex v in f's vertex loop, or -1.
+  int loopPosition(FaceId f, VertexId v) const;
+  /// Orientation of face f in volume c (+1, -1, 0 if f does not bound c).
+  int faceSign(VolumeId c, FaceId f) const;
+
+  // --- construction (checked; throw TopologyError, leaving the complex unchanged)
+  VertexId addVertex();
+  EdgeId addEdge(VertexId from, VertexId to);
+  /// A face from a closed loop of oriented edges (each edge's head is the
+  /// next edge's tail; no vertex repeats).
+  FaceId addFace(std::span<const OrientedEdge> loop);
+  /// A volume from faces with orientation signs; the surface must be closed
+  /// and consistently oriented (each edge used once in each direction).
+  VolumeId addVolume(std::span<const OrientedFace> faces);
+
+  /// Removes an element that bounds nothing (its regions are empty); its
+  /// borders lose it from their regions.
+  void remove(int degree, Index i);
+
+  // --- topological edits used by Tissue's editing primitives ------------------
+  /// Splits e = (a, b) into e = (a, v) and a new edge (v, b) with a new vertex
+  /// v; every face through e gets v and the new edge in its loop.
+  std::pair<VertexId, EdgeId> splitEdge(EdgeId e);
+  /// Splits face f along a new edge between loop vertices a and b (not
+  /// adjacent). f keeps the part of its loop from a to b (a -> ... -> b, then
+  /// the new edge b -> a); the new face gets b -> ... -> a plus a -> b. Both
+  /// keep f's orientation, and every volume bounded by f is bounded by both.
+  std::pair<EdgeId, FaceId> splitFace(FaceId f, VertexId a, VertexId b);
+  /// Splits volume c: the faces in `moving` go to a new volume, and a new
+  /// face with the given loop is added, bounding c with sign `cut_sign` and
+  /// the new volume with the opposite sign.
+  std::pair<FaceId, VolumeId> splitVolume(VolumeId c, std::span<const FaceId> moving,
+                                          std::span<const OrientedEdge> cut_loop, int cut_sign);
+
+  /// Drops tombstones and renumbers every degree, preserving order.
+  Renumbering compact();
+
+  /// Bumped by every topological change: caches compare it to know when to rebuild.
+  std::uint64_t version() const { return version_; }
+  const std::vector<std::uint8_t>& aliveFlags(int degree) const { return alive_[degree]; }
+  std::size_t bytes() const;
+
+ private:
+  Index newSlot(int degree);
+  void checkLoop(std::span<const OrientedEdge> loop) const;
+
+  int dim_;
+  std::array<std::vector<std::uint8_t>, 4> alive_;
+  std::array<std::size_t, 4> live_count_{};
+  std::vector<std::array<VertexId, 2>> edge_vertices_;
+  RaggedArray<OrientedEdge> face_edges_;
+  RaggedArray<VertexId> face_vertices_;
+  RaggedArray<OrientedFace> volume_faces_;
+  RaggedArray<EdgeId> vertex_edges_;
+  RaggedArray<FaceId> edge_faces_;
+  RaggedArray<VolumeId> face_volumes_;
+  std::uint64_t version_ = 0;
+};
+
+}  // namespace tessella

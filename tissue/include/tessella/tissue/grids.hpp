@@ -1,0 +1,23 @@
+#pragma once
+// Grid tissues: rectangular and hexagonal sheets, boxes of boxes.
+
+#include <cstddef>
+
+#include "tessella/tissue/tissue.hpp"
+
+namespace tessella {
+
+/// nx x ny rectangular cells of size dx x dy, lower-left corner at `origin`.
+Tissue rectangularGrid(std::size_t nx, std::size_t ny, double dx = 1.0, double dy = 1.0,
+                       const Vec3& origin = Vec3::Zero());
+
+/// nx x ny regular hexagons (pointy side up, offset rows) of circumradius
+/// `radius`; neighbouring hexagons share edges.
+Tissue hexagonalGrid(std::size_t nx, std::size_t ny, double radius = 1.0,
+                     const Vec3& origin = Vec3::Zero());
+
+/// nx x ny x nz box cells of size dx x dy x dz.
+Tissue boxGrid(std::size_t nx, std::size_t ny, std::size_t nz, double dx = 1.0, double dy = 1.0,
+               double dz = 1.0, const Vec3& origin = Vec3::Zero());
+
+}  // namespace tessella

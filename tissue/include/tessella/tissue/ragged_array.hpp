@@ -1,0 +1,166 @@
+#pragma once
+// RaggedArray: many short lists (a face's edge loop, a vertex's star) in one
+// contiguous pool.
+//
+// Lists built in order sit back to back, so a sweep over all faces streams
+// through memory. A list that outgrows its capacity is moved to the end of
+// the pool (its old place becomes garbage); when garbage passes half the pool
+// everything is repacked. Spans returned by operator[] are invalidated by any
+// mutation of the array.
+
+#include <algorithm>
+#include <cassert>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "tessella/tissue/handles.hpp"
+
+namespace tessella {
+
+template <typename T>
+class RaggedArray {
+ public:
+  std::size_t size() const { return slots_.size(); }
+  bool empty() const { return slots_.empty(); }
+
+  std::span<const T> operator[](std::size_t i) const {
+    const Slot& s = slots_[i];
+    return {data_.data() + s.offset, s.size};
+  }
+  std::span<T> mutableList(std::size_t i) {
+    const Slot& s = slots_[i];
+    return {data_.data() + s.offset, s.size};
+  }
+  std::uint32_t listSize(std::size_t i) const { return slots_[i].size; }
+
+  /// Appends a new list; returns its index.
+  std::size_t pushList(std::span<const T> items) {
+    Slot s{static_cast<std::uint32_t>(data_.size()), static_cast<std::uint32_t>(items.size()),
+           static_cast<std::uint32_t>(items.size())};
+    data_.insert(data_.end(), items.begin(), items.end());
+    slots_.push_back(s);
+    return slots_.size() - 1;
+  }
+  std::size_t pushList(std::initializer_list<T> items) {
+    return pushList(std::span<const T>(items.begin(), items.size()));
+  }
+
+  /// Replaces the contents of list i.
+  void assign(std::size_t i, std::span<const T> items) {
+    if (items.size() > slots_[i].capacity) {
+      std::vector<T> copy(items.begin(), items.end());  // items may alias the pool
+      relocate(i, copy.size());
+      std::copy(copy.begin(), copy.end(), data_.begin() + slots_[i].offset);
+    } else {
+      std::copy(items.begin(), items.end(), data_.begin() + slots_[i].offset);
+    }
+    slots_[i].size = static_cast<std::uint32_t>(items.size());
+  }
+
+  void insert(std::size_t i, std::size_t pos, const T& value) {
+    const T v = value;  // value may alias the pool
+    if (slots_[i].size == slots_[i].capacity) relocate(i, slots_[i].size + 1);
+    Slot& s = slots_[i];
+    assert(pos <= s.size);
+    auto first = data_.begin() + s.offset;
+    std::move_backward(first + pos, first + s.size, first + s.size + 1);
+    first[pos] = v;
+    ++s.size;
+  }
+  void pushBack(std::size_t i, const T& value) { insert(i, slots_[i].size, value); }
+
+  void erase(std::size_t i, std::size_t pos) {
+    Slot& s = slots_[i];
+    assert(pos < s.size);
+    auto first = data_.begin() + s.offset;
+    std::move(first + pos + 1, first + s.size, first + pos);
+    --s.size;
+  }
+  /// Removes the first occurrence of value; returns whether it was found.
+  bool eraseValue(std::size_t i, const T& value) {
+    auto list = (*this)[i];
+    auto it = std::find(list.begin(), list.end(), value);
+    if (it == list.end()) return false;
+    erase(i, static_cast<std::size_t>(it - list.begin()));
+    return true;
+  }
+  /// Replaces the first occurrence of old_value; returns whether it was found.
+  bool replaceValue(std::size_t i, const T& old_value, const T& new_value) {
+    auto list = mutableList(i);
+    auto it = std::find(list.begin(), list.end(), old_value);
+    if (it == list.end()) return false;
+    *it = new_value;
+    return true;
+  }
+  void clearList(std::size_t i) { slots_[i].size = 0; }
+
+  /// Renumbers lists: list i moves to old_to_new[i] (kInvalidIndex drops it),
+  /// and the pool is repacked in the new order. `transform` maps each item.
+  template <typename Transform>
+  void compact(const std::vector<Index>& old_to_new, std::size_t new_count, Transform transform) {
+    std::vector<Index> new_to_old(new_count, kInvalidIndex);
+    for (std::size_t i = 0; i < old_to_new.size(); ++i)
+      if (old_to_new[i] != kInvalidIndex) new_to_old[old_to_new[i]] = static_cast<Index>(i);
+    RaggedArray packed;
+    packed.slots_.reserve(new_count);
+    std::size_t total = 0;
+    for (Index o : new_to_old) total += slots_[o].size;
+    packed.data_.reserve(total);
+    for (Index o : new_to_old) {
+      auto list = (*this)[o];
+      Slot s{static_cast<std::uint32_t>(packed.data_.size()), static_cast<std::uint32_t>(list.size()),
+             static_cast<std::uint32_t>(list.size())};
+      for (const T& item : list) packed.data_.push_back(transform(item));
+      packed.slots_.push_back(s);
+    }
+    *this = std::move(packed);
+  }
+
+  /// Repacks every list back to back, dropping garbage (order unchanged).
+  void repack() {
+    std::vector<T> data;
+    data.reserve(data_.size() - garbage_);
+    for (Slot& s : slots_) {
+      const std::uint32_t offset = static_cast<std::uint32_t>(data.size());
+      data.insert(data.end(), data_.begin() + s.offset, data_.begin() + s.offset + s.size);
+      s.offset = offset;
+      s.capacity = s.size;
+    }
+    data_ = std::move(data);
+    garbage_ = 0;
+  }
+
+  void reserve(std::size_t lists, std::size_t items) {
+    slots_.reserve(lists);
+    data_.reserve(items);
+  }
+  std::size_t bytes() const { return slots_.capacity() * sizeof(Slot) + data_.capacity() * sizeof(T); }
+
+ private:
+  struct Slot {
+    std::uint32_t offset = 0;
+    std::uint32_t size = 0;
+    std::uint32_t capacity = 0;
+  };
+
+  // Moves list i to the end of the pool with room for at least min_capacity.
+  void relocate(std::size_t i, std::size_t min_capacity) {
+    if (garbage_ > 1024 && garbage_ * 2 > data_.size()) repack();
+    Slot& s = slots_[i];
+    const std::uint32_t capacity =
+        static_cast<std::uint32_t>(std::max<std::size_t>(min_capacity + 2, s.size * 3 / 2));
+    const std::uint32_t offset = static_cast<std::uint32_t>(data_.size());
+    data_.resize(data_.size() + capacity);
+    std::copy(data_.begin() + s.offset, data_.begin() + s.offset + s.size, data_.begin() + offset);
+    garbage_ += s.capacity;
+    s.offset = offset;
+    s.capacity = capacity;
+  }
+
+  std::vector<Slot> slots_;
+  std::vector<T> data_;
+  std::size_t garbage_ = 0;
+};
+
+}  // namespace tessella

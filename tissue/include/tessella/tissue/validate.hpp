@@ -1,0 +1,36 @@
+#pragma once
+// validate(): checks every invariant of a tissue and reports the first
+// violation with the element ids involved. Tests call it after every edit;
+// building with -DTESSELLA_PARANOID=ON calls it inside every editing primitive.
+
+#include <string>
+
+#include "tessella/tissue/tissue.hpp"
+
+namespace tessella {
+
+struct ValidateOptions {
+  /// Check the Euler characteristic: per connected component, V-E+F = 2 - b
+  /// in 2D (a sphere with b holes, i.e. genus 0) and V-E+F-C = 1 in 3D (a
+  /// solid ball). Disable for tissues with handles or cavities.
+  bool check_euler = true;
+  /// Check that every live edge, face and cell has a positive measure.
+  bool check_measures = true;
+  /// Check that 2D cells sharing an edge traverse it in opposite directions
+  /// (a consistently oriented sheet).
+  bool check_orientation = true;
+};
+
+struct ValidationReport {
+  bool ok = true;
+  std::string message;  ///< first violation, naming the element ids
+  ElementId element;    ///< the offending element, where there is one
+  explicit operator bool() const { return ok; }
+};
+
+ValidationReport validate(const Tissue& t, const ValidateOptions& options = {});
+
+/// validate() that throws TopologyError with the report's message.
+void validateOrThrow(const Tissue& t, const ValidateOptions& options = {});
+
+}  // namespace tessella
