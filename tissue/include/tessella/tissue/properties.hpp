@@ -20,6 +20,7 @@
 #include <string>
 #include <type_traits>
 #include <typeindex>
+#include <utility>
 #include <vector>
 
 #include "tessella/tissue/errors.hpp"
@@ -164,7 +165,7 @@ class PropertyStore {
   /// The column `name` of type T; throws InputError if missing or of another type.
   template <typename T>
   PropertyColumn<T>& get(const std::string& name) {
-    return const_cast<PropertyColumn<T>&>(std::as_const(*this).get<T>(name));
+    return const_cast<PropertyColumn<T>&>(std::as_const(*this).template get<T>(name));
   }
   template <typename T>
   const PropertyColumn<T>& get(const std::string& name) const {
@@ -175,7 +176,10 @@ class PropertyStore {
   }
 
   bool has(const std::string& name) const { return find(name) != nullptr; }
+  /// Removes a column; throws InputError for a missing or locked (built-in) one.
   void remove(const std::string& name);
+  /// Marks a column as built-in: it can no longer be removed.
+  void lock(const std::string& name) { locked_.push_back(name); }
   PropertyColumnBase* find(const std::string& name);
   const PropertyColumnBase* find(const std::string& name) const;
   std::vector<std::string> names() const;
@@ -193,6 +197,7 @@ class PropertyStore {
 
  private:
   std::vector<std::unique_ptr<PropertyColumnBase>> columns_;
+  std::vector<std::string> locked_;
   std::size_t size_ = 0;
 };
 

@@ -231,6 +231,9 @@ class Tissue {
   void newCell(Index cell);
   void dividedCell(Index mother, Index daughter, double fraction);
   void paranoidCheck(const char* where) const;
+  CellSplit splitCell2D(CellId c, const Plane& plane, const SplitOptions& options);
+  CellSplit splitCell3D(CellId c, const Plane& plane, const SplitOptions& options);
+  double measureFraction(int degree, Index kept, Index part) const;
 
   CellComplex complex_;
   Embedding embedding_;

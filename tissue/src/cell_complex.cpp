@@ -1,0 +1,368 @@
+#include "tessella/tissue/cell_complex.hpp"
+
+#include <algorithm>
+#include <string>
+#include <utility>
+
+#include "tessella/tissue/errors.hpp"
+
+namespace tessella {
+
+namespace {
+
+std::string id(const char* kind, Index i) { return std::string(kind) + " " + std::to_string(i); }
+
+// An oriented surface is closed and consistently oriented when every edge is
+// traversed exactly once in each direction by its faces' loops.
+template <typename LoopOf>
+bool closedOrientedSurface(std::span<const OrientedFace> faces, LoopOf loopOf, Index* bad_edge) {
+  std::vector<std::pair<Index, int>> uses;  // (edge, +1 forward / -1 backward)
+  for (OrientedFace of : faces) {
+    for (OrientedEdge oe : loopOf(of.handle())) {
+      const bool forward = oe.reversed() == of.reversed();
+      uses.emplace_back(oe.handle().index(), forward ? 1 : -1);
+    }
+  }
+  std::sort(uses.begin(), uses.end());
+  for (std::size_t i = 0; i < uses.size();) {
+    std::size_t j = i;
+    int fwd = 0, bwd = 0;
+    while (j < uses.size() && uses[j].first == uses[i].first) {
+      (uses[j].second > 0 ? fwd : bwd)++;
+      ++j;
+    }
+    if (fwd != 1 || bwd != 1) {
+      if (bad_edge) *bad_edge = uses[i].first;
+      return false;
+    }
+    i = j;
+  }
+  return true;
+}
+
+}  // namespace
+
+CellComplex::CellComplex(int dim) : dim_(dim) {
+  if (dim != 2 && dim != 3)
+    throw InputError("a cell complex has dimension 2 or 3, not " + std::to_string(dim));
+}
+
+Index CellComplex::newSlot(int degree) {
+  alive_[degree].push_back(1);
+  ++live_count_[degree];
+  ++version_;
+  return static_cast<Index>(alive_[degree].size() - 1);
+}
+
+EdgeId CellComplex::findEdge(VertexId a, VertexId b) const {
+  for (EdgeId e : vertex_edges_[a.index()]) {
+    const auto& ev = edge_vertices_[e.index()];
+    if ((ev[0] == a && ev[1] == b) || (ev[0] == b && ev[1] == a)) return e;
+  }
+  return EdgeId();
+}
+
+int CellComplex::loopPosition(FaceId f, EdgeId e) const {
+  auto loop = face_edges_[f.index()];
+  for (std::size_t i = 0; i < loop.size(); ++i)
+    if (loop[i].handle() == e) return static_cast<int>(i);
+  return -1;
+}
+
+int CellComplex::loopPosition(FaceId f, VertexId v) const {
+  auto loop = face_vertices_[f.index()];
+  for (std::size_t i = 0; i < loop.size(); ++i)
+    if (loop[i] == v) return static_cast<int>(i);
+  return -1;
+}
+
+int CellComplex::faceSign(VolumeId c, FaceId f) const {
+  for (OrientedFace of : volume_faces_[c.index()])
+    if (of.handle() == f) return of.sign();
+  return 0;
+}
+
+VertexId CellComplex::addVertex() {
+  const Index v = newSlot(0);
+  vertex_edges_.pushList({});
+  return VertexId(v);
+}
+
+EdgeId CellComplex::addEdge(VertexId from, VertexId to) {
+  if (!alive(from) || !alive(to))
+    throw TopologyError("edge from " + id("vertex", from.index()) + " to " + id("vertex", to.index()) +
+                        ": vertex is not alive", {0, alive(from) ? to.index() : from.index()});
+  if (from == to)
+    throw TopologyError("edge from " + id("vertex", from.index()) + " to itself", {0, from.index()});
+  if (EdgeId e = findEdge(from, to))
+    throw TopologyError("an edge between vertices " + std::to_string(from.index()) + " and " +
+                        std::to_string(to.index()) + " already exists (" + id("edge", e.index()) + ")",
+                        {1, e.index()});
+  const Index e = newSlot(1);
+  edge_vertices_.push_back({from, to});
+  edge_faces_.pushList({});
+  vertex_edges_.pushBack(from.index(), EdgeId(e));
+  vertex_edges_.pushBack(to.index(), EdgeId(e));
+  return EdgeId(e);
+}
+
+void CellComplex::checkLoop(std::span<const OrientedEdge> loop) const {
+  if (loop.size() < 3)
+    throw TopologyError("a face loop needs at least 3 edges, got " + std::to_string(loop.size()));
+  std::vector<Index> seen_vertices, seen_edges;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const EdgeId e = loop[i].handle();
+    if (!alive(e)) throw TopologyError("face loop uses dead or invalid edge", {1, e.index()});
+    const OrientedEdge next = loop[(i + 1) % loop.size()];
+    if (head(loop[i]) != tail(next))
+      throw TopologyError("face loop is not closed: " + id("edge", e.index()) + " ends at " +
+                              id("vertex", head(loop[i]).index()) + " but " +
+                              id("edge", next.handle().index()) + " starts at " +
+                              id("vertex", tail(next).index()),
+                          {1, e.index()});
+    seen_vertices.push_back(tail(loop[i]).index());
+    seen_edges.push_back(e.index());
+  }
+  std::sort(seen_vertices.begin(), seen_vertices.end());
+  if (auto it = std::adjacent_find(seen_vertices.begin(), seen_vertices.end()); it != seen_vertices.end())
+    throw TopologyError("face loop passes twice through " + id("vertex", *it), {0, *it});
+  std::sort(seen_edges.begin(), seen_edges.end());
+  if (auto it = std::adjacent_find(seen_edges.begin(), seen_edges.end()); it != seen_edges.end())
+    throw TopologyError("face loop uses " + id("edge", *it) + " twice", {1, *it});
+}
+
+FaceId CellComplex::addFace(std::span<const OrientedEdge> loop) {
+  checkLoop(loop);
+  if (dim_ == 2) {
+    for (OrientedEdge oe : loop) {
+      const auto faces = edge_faces_[oe.handle().index()];
+      if (faces.size() >= 2)
+        throw TopologyError(id("edge", oe.handle().index()) + " already bounds two faces (" +
+                                std::to_string(faces[0].index()) + ", " +
+                                std::to_string(faces[1].index()) + ")",
+                            {1, oe.handle().index()});
+    }
+  }
+  const Index f = newSlot(2);
+  face_edges_.pushList(loop);
+  std::vector<VertexId> verts(loop.size());
+  for (std::size_t i = 0; i < loop.size(); ++i) verts[i] = tail(loop[i]);
+  face_vertices_.pushList(std::span<const VertexId>(verts));
+  face_volumes_.pushList({});
+  for (OrientedEdge oe : loop) edge_faces_.pushBack(oe.handle().index(), FaceId(f));
+  return FaceId(f);
+}
+
+VolumeId CellComplex::addVolume(std::span<const OrientedFace> faces) {
+  if (dim_ != 3) throw TopologyError("volumes exist only in a 3D complex");
+  if (faces.size() < 4)
+    throw TopologyError("a volume needs at least 4 faces, got " + std::to_string(faces.size()));
+  std::vector<Index> seen;
+  for (OrientedFace of : faces) {
+    const FaceId f = of.handle();
+    if (!alive(f)) throw TopologyError("volume uses dead or invalid face", {2, f.index()});
+    if (face_volumes_[f.index()].size() >= 2)
+      throw TopologyError(id("face", f.index()) + " already bounds two volumes", {2, f.index()});
+    seen.push_back(f.index());
+  }
+  std::sort(seen.begin(), seen.end());
+  if (auto it = std::adjacent_find(seen.begin(), seen.end()); it != seen.end())
+    throw TopologyError("volume uses " + id("face", *it) + " twice", {2, *it});
+  Index bad = kInvalidIndex;
+  if (!closedOrientedSurface(faces, [&](FaceId f) { return faceEdges(f); }, &bad))
+    throw TopologyError("volume surface is not closed and consistently oriented at " + id("edge", bad),
+                        {1, bad});
+  const Index c = newSlot(3);
+  volume_faces_.pushList(faces);
+  for (OrientedFace of : faces) face_volumes_.pushBack(of.handle().index(), VolumeId(c));
+  return VolumeId(c);
+}
+
+void CellComplex::remove(int degree, Index i) {
+  if (degree < 0 || degree > dim_ || !alive(degree, i))
+    throw TopologyError("cannot remove " + id(degreeName(degree), i) + ": not alive", {degree, i});
+  switch (degree) {
+    case 0:
+      if (!vertex_edges_[i].empty())
+        throw TopologyError("cannot remove " + id("vertex", i) + ": edges still use it", {0, i});
+      break;
+    case 1: {
+      if (!edge_faces_[i].empty())
+        throw TopologyError("cannot remove " + id("edge", i) + ": faces still use it", {1, i});
+      for (VertexId v : edge_vertices_[i]) vertex_edges_.eraseValue(v.index(), EdgeId(i));
+      break;
+    }
+    case 2: {
+      if (!face_volumes_[i].empty())
+        throw TopologyError("cannot remove " + id("face", i) + ": volumes still use it", {2, i});
+      for (OrientedEdge oe : face_edges_[i]) edge_faces_.eraseValue(oe.handle().index(), FaceId(i));
+      face_edges_.clearList(i);
+      face_vertices_.clearList(i);
+      break;
+    }
+    case 3: {
+      for (OrientedFace of : volume_faces_[i])
+        face_volumes_.eraseValue(of.handle().index(), VolumeId(i));
+      volume_faces_.clearList(i);
+      break;
+    }
+  }
+  alive_[degree][i] = 0;
+  --live_count_[degree];
+  ++version_;
+}
+
+std::pair<VertexId, EdgeId> CellComplex::splitEdge(EdgeId e) {
+  if (!alive(e)) throw TopologyError("cannot split dead " + id("edge", e.index()), {1, e.index()});
+  const VertexId b = edgeTo(e);
+  const VertexId v = addVertex();
+  const EdgeId e2(newSlot(1));
+  edge_vertices_.push_back({v, b});
+  edge_vertices_[e.index()][1] = v;
+  vertex_edges_.replaceValue(b.index(), e, e2);
+  vertex_edges_.pushBack(v.index(), e);
+  vertex_edges_.pushBack(v.index(), e2);
+  const std::vector<FaceId> faces(edge_faces_[e.index()].begin(), edge_faces_[e.index()].end());
+  edge_faces_.pushList(std::span<const FaceId>(faces));
+  for (FaceId f : faces) {
+    const int p = loopPosition(f, e);
+    const bool reversed = face_edges_[f.index()][p].reversed();
+    // Forward: ... a->v (e), v->b (e2) ...   Reversed: ... b->v (e2~), v->a (e~) ...
+    face_edges_.insert(f.index(), reversed ? p : p + 1, OrientedEdge(e2, reversed));
+    face_vertices_.insert(f.index(), p + 1, v);
+  }
+  return {v, e2};
+}
+
+std::pair<EdgeId, FaceId> CellComplex::splitFace(FaceId f, VertexId a, VertexId b) {
+  if (!alive(f)) throw TopologyError("cannot split dead " + id("face", f.index()), {2, f.index()});
+  const int ia = loopPosition(f, a), ib = loopPosition(f, b);
+  const int n = static_cast<int>(face_vertices_[f.index()].size());
+  if (ia < 0 || ib < 0)
+    throw TopologyError("cannot split " + id("face", f.index()) + ": " +
+                            id("vertex", (ia < 0 ? a : b).index()) + " is not on its loop",
+                        {2, f.index()});
+  if (ia == ib || (ia + 1) % n == ib || (ib + 1) % n == ia)
+    throw TopologyError("cannot split " + id("face", f.index()) + " between vertices " +
+                            std::to_string(a.index()) + " and " + std::to_string(b.index()) +
+                            ": they are equal or adjacent on its loop",
+                        {2, f.index()});
+  if (EdgeId existing = findEdge(a, b))
+    throw TopologyError("cannot split " + id("face", f.index()) + ": vertices " +
+                            std::to_string(a.index()) + " and " + std::to_string(b.index()) +
+                            " are already joined by " + id("edge", existing.index()),
+                        {1, existing.index()});
+  const std::vector<OrientedEdge> loop(face_edges_[f.index()].begin(), face_edges_[f.index()].end());
+  const EdgeId e = addEdge(a, b);
+  std::vector<OrientedEdge> keep, move;
+  for (int i = ia; i != ib; i = (i + 1) % n) keep.push_back(loop[i]);
+  keep.push_back(OrientedEdge(e, true));  // b -> a
+  for (int i = ib; i != ia; i = (i + 1) % n) move.push_back(loop[i]);
+  move.push_back(OrientedEdge(e, false));  // a -> b
+  auto tails = [&](const std::vector<OrientedEdge>& l) {
+    std::vector<VertexId> v(l.size());
+    for (std::size_t i = 0; i < l.size(); ++i) v[i] = tail(l[i]);
+    return v;
+  };
+  const FaceId f2(newSlot(2));
+  face_edges_.assign(f.index(), std::span<const OrientedEdge>(keep));
+  face_vertices_.assign(f.index(), std::span<const VertexId>(tails(keep)));
+  face_edges_.pushList(std::span<const OrientedEdge>(move));
+  face_vertices_.pushList(std::span<const VertexId>(tails(move)));
+  for (std::size_t i = 0; i + 1 < move.size(); ++i)
+    edge_faces_.replaceValue(move[i].handle().index(), f, f2);
+  edge_faces_.pushBack(e.index(), f);
+  edge_faces_.pushBack(e.index(), f2);
+  const std::vector<VolumeId> vols(face_volumes_[f.index()].begin(), face_volumes_[f.index()].end());
+  face_volumes_.pushList(std::span<const VolumeId>(vols));
+  for (VolumeId c : vols) volume_faces_.pushBack(c.index(), OrientedFace(f2, faceSign(c, f) < 0));
+  return {e, f2};
+}
+
+std::pair<FaceId, VolumeId> CellComplex::splitVolume(VolumeId c, std::span<const FaceId> moving,
+                                                     std::span<const OrientedEdge> cut_loop,
+                                                     int cut_sign) {
+  if (!alive(c)) throw TopologyError("cannot split dead " + id("volume", c.index()), {3, c.index()});
+  checkLoop(cut_loop);
+  // Build both new face lists and check they are closed before touching anything.
+  std::vector<OrientedFace> stay, go;
+  for (OrientedFace of : volume_faces_[c.index()]) {
+    const bool moves = std::find(moving.begin(), moving.end(), of.handle()) != moving.end();
+    (moves ? go : stay).push_back(of);
+  }
+  if (go.size() != moving.size())
+    throw TopologyError("splitVolume: a moving face does not bound " + id("volume", c.index()),
+                        {3, c.index()});
+  // The cut face's edges, seen as a temporary face for the closure test.
+  constexpr Index kCutFace = 0x7FFFFFFE;  // not a real face: indices stay below 2^31
+  auto loopOf = [&](FaceId f) -> std::span<const OrientedEdge> {
+    return f.index() == kCutFace ? cut_loop : faceEdges(f);
+  };
+  stay.push_back(OrientedFace(FaceId(kCutFace), cut_sign < 0));
+  go.push_back(OrientedFace(FaceId(kCutFace), cut_sign > 0));
+  Index bad = kInvalidIndex;
+  if (!closedOrientedSurface(std::span<const OrientedFace>(stay), loopOf, &bad) ||
+      !closedOrientedSurface(std::span<const OrientedFace>(go), loopOf, &bad))
+    throw TopologyError("splitting " + id("volume", c.index()) +
+                            " would leave an open surface at " + id("edge", bad),
+                        {3, c.index()});
+  stay.pop_back();
+  go.pop_back();
+  const FaceId cut = addFace(cut_loop);
+  const VolumeId c2(newSlot(3));
+  stay.push_back(OrientedFace(cut, cut_sign < 0));
+  go.push_back(OrientedFace(cut, cut_sign > 0));
+  volume_faces_.assign(c.index(), std::span<const OrientedFace>(stay));
+  volume_faces_.pushList(std::span<const OrientedFace>(go));
+  for (FaceId f : moving) face_volumes_.replaceValue(f.index(), c, c2);
+  face_volumes_.pushBack(cut.index(), c);
+  face_volumes_.pushBack(cut.index(), c2);
+  return {cut, c2};
+}
+
+Renumbering CellComplex::compact() {
+  Renumbering r;
+  std::array<std::size_t, 4> counts{};
+  for (int d = 0; d <= 3; ++d) {
+    auto& map = r.old_to_new[d];
+    map.assign(alive_[d].size(), kInvalidIndex);
+    Index next = 0;
+    for (std::size_t i = 0; i < alive_[d].size(); ++i)
+      if (alive_[d][i]) map[i] = next++;
+    counts[d] = next;
+  }
+  const auto& m = r.old_to_new;
+  auto mapV = [&](VertexId v) { return VertexId(m[0][v.index()]); };
+  auto mapE = [&](EdgeId e) { return EdgeId(m[1][e.index()]); };
+  auto mapF = [&](FaceId f) { return FaceId(m[2][f.index()]); };
+  auto mapC = [&](VolumeId c) { return VolumeId(m[3][c.index()]); };
+  {
+    std::vector<std::array<VertexId, 2>> ev(counts[1]);
+    for (std::size_t i = 0; i < edge_vertices_.size(); ++i)
+      if (m[1][i] != kInvalidIndex) ev[m[1][i]] = {mapV(edge_vertices_[i][0]), mapV(edge_vertices_[i][1])};
+    edge_vertices_ = std::move(ev);
+  }
+  vertex_edges_.compact(m[0], counts[0], mapE);
+  edge_faces_.compact(m[1], counts[1], mapF);
+  face_edges_.compact(m[2], counts[2],
+                      [&](OrientedEdge oe) { return OrientedEdge(mapE(oe.handle()), oe.reversed()); });
+  face_vertices_.compact(m[2], counts[2], mapV);
+  face_volumes_.compact(m[2], counts[2], mapC);
+  volume_faces_.compact(m[3], counts[3],
+                        [&](OrientedFace of) { return OrientedFace(mapF(of.handle()), of.reversed()); });
+  for (int d = 0; d <= 3; ++d) {
+    alive_[d].assign(counts[d], 1);
+    live_count_[d] = counts[d];
+  }
+  ++version_;
+  return r;
+}
+
+std::size_t CellComplex::bytes() const {
+  std::size_t b = edge_vertices_.capacity() * sizeof(edge_vertices_[0]);
+  for (const auto& a : alive_) b += a.capacity();
+  return b + face_edges_.bytes() + face_vertices_.bytes() + volume_faces_.bytes() +
+         vertex_edges_.bytes() + edge_faces_.bytes() + face_volumes_.bytes();
+}
+
+}  // namespace tessella

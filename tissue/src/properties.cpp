@@ -1,0 +1,82 @@
+#include "tessella/tissue/properties.hpp"
+
+#include <algorithm>
+
+namespace tessella {
+
+const char* divisionPolicyName(DivisionPolicy policy) {
+  switch (policy) {
+    case DivisionPolicy::Copy: return "copy";
+    case DivisionPolicy::SplitByMeasure: return "split_by_measure";
+    case DivisionPolicy::Reset: return "reset";
+    case DivisionPolicy::Custom: return "custom";
+  }
+  return "?";
+}
+
+PropertyStore::PropertyStore(const PropertyStore& other) : locked_(other.locked_), size_(other.size_) {
+  columns_.reserve(other.columns_.size());
+  for (const auto& c : other.columns_) columns_.push_back(c->clone());
+}
+
+PropertyStore& PropertyStore::operator=(const PropertyStore& other) {
+  if (this != &other) {
+    PropertyStore copy(other);
+    *this = std::move(copy);
+  }
+  return *this;
+}
+
+void PropertyStore::remove(const std::string& name) {
+  if (std::find(locked_.begin(), locked_.end(), name) != locked_.end())
+    throw InputError("property '" + name + "' is built in and cannot be removed");
+  auto it = std::find_if(columns_.begin(), columns_.end(),
+                         [&](const auto& c) { return c->name() == name; });
+  if (it == columns_.end()) throw InputError("no property named '" + name + "' to remove");
+  columns_.erase(it);
+}
+
+PropertyColumnBase* PropertyStore::find(const std::string& name) {
+  for (auto& c : columns_)
+    if (c->name() == name) return c.get();
+  return nullptr;
+}
+
+const PropertyColumnBase* PropertyStore::find(const std::string& name) const {
+  for (const auto& c : columns_)
+    if (c->name() == name) return c.get();
+  return nullptr;
+}
+
+std::vector<std::string> PropertyStore::names() const {
+  std::vector<std::string> out;
+  out.reserve(columns_.size());
+  for (const auto& c : columns_) out.push_back(c->name());
+  return out;
+}
+
+void PropertyStore::resize(std::size_t n) {
+  size_ = n;
+  for (auto& c : columns_) c->resize(n);
+}
+
+void PropertyStore::divide(Index mother, Index part, double fraction) {
+  for (auto& c : columns_) c->divide(mother, part, fraction);
+}
+
+void PropertyStore::reset(Index i) {
+  for (auto& c : columns_) c->reset(i);
+}
+
+void PropertyStore::compact(const std::vector<Index>& old_to_new, std::size_t new_count) {
+  size_ = new_count;
+  for (auto& c : columns_) c->compact(old_to_new, new_count);
+}
+
+std::size_t PropertyStore::bytes() const {
+  std::size_t b = columns_.capacity() * sizeof(void*);
+  for (const auto& c : columns_) b += c->bytes();
+  return b;
+}
+
+}  // namespace tessella

@@ -1,0 +1,250 @@
+#include "tessella/tissue/validate.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <string>
+#include <unordered_map>
+#include <functional>
+#include <unordered_set>
+
+#include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/geometry.hpp"
+
+namespace tessella {
+
+namespace {
+
+struct Fail {
+  ValidationReport report;
+};
+
+[[noreturn]] void fail(int degree, Index i, const std::string& what) {
+  ValidationReport r;
+  r.ok = false;
+  r.element = {degree, i};
+  r.message = std::string(degreeName(degree)) + " " + std::to_string(i) + ": " + what;
+  throw Fail{r};
+}
+
+template <typename H, typename Span>
+bool contains(const Span& s, H h) {
+  return std::find(s.begin(), s.end(), h) != s.end();
+}
+
+struct UnionFind {
+  std::vector<Index> parent;
+  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), Index(0)); }
+  Index find(Index x) {
+    while (parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+  void unite(Index a, Index b) { parent[find(a)] = find(b); }
+};
+
+void checkIncidence(const Tissue& t) {
+  const CellComplex& k = t.topology();
+  const int D = t.dim();
+  for (VertexId v : t.vertices()) {
+    const auto star = k.vertexEdges(v);
+    if (star.empty()) fail(0, v.index(), "dangling (bounds no edge)");
+    for (EdgeId e : star) {
+      if (!k.alive(e)) fail(0, v.index(), "its star lists dead edge " + std::to_string(e.index()));
+      const auto ev = k.edgeVertices(e);
+      if (ev[0] != v && ev[1] != v) fail(0, v.index(), "its star lists edge " + std::to_string(e.index()) + " which does not end at it");
+    }
+    std::vector<EdgeId> s(star.begin(), star.end());
+    std::sort(s.begin(), s.end());
+    if (std::adjacent_find(s.begin(), s.end()) != s.end()) fail(0, v.index(), "an edge appears twice in its star");
+    if (!t.position(v).allFinite()) fail(0, v.index(), "position is not finite");
+  }
+  for (EdgeId e : t.edges()) {
+    const auto ev = k.edgeVertices(e);
+    for (VertexId v : ev) {
+      if (!k.alive(v)) fail(1, e.index(), "ends at dead vertex " + std::to_string(v.index()));
+      if (!contains(k.vertexEdges(v), e)) fail(1, e.index(), "missing from the star of vertex " + std::to_string(v.index()));
+    }
+    if (ev[0] == ev[1]) fail(1, e.index(), "both ends are vertex " + std::to_string(ev[0].index()));
+    if (k.findEdge(ev[0], ev[1]) != e)
+      fail(1, e.index(), "duplicates edge " + std::to_string(k.findEdge(ev[0], ev[1]).index()));
+    const auto faces = k.edgeFaces(e);
+    if (faces.empty()) fail(1, e.index(), "dangling (bounds no face)");
+    if (D == 2 && faces.size() > 2) fail(1, e.index(), "bounds " + std::to_string(faces.size()) + " cells (at most 2 in a 2D tissue)");
+    for (FaceId f : faces) {
+      if (!k.alive(f)) fail(1, e.index(), "regions list dead face " + std::to_string(f.index()));
+      if (k.loopPosition(f, e) < 0) fail(1, e.index(), "regions list face " + std::to_string(f.index()) + " whose loop does not use it");
+    }
+  }
+  std::unordered_map<std::string, Index> seen_faces;
+  for (FaceId f : t.faces()) {
+    const auto loop = k.faceEdges(f);
+    const auto verts = k.faceVertices(f);
+    if (loop.size() < 3) fail(2, f.index(), "loop has " + std::to_string(loop.size()) + " edges");
+    if (verts.size() != loop.size()) fail(2, f.index(), "vertex loop and edge loop differ in length");
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const EdgeId e = loop[i].handle();
+      if (!k.alive(e)) fail(2, f.index(), "loop uses dead edge " + std::to_string(e.index()));
+      if (k.tail(loop[i]) != verts[i]) fail(2, f.index(), "vertex loop disagrees with edge loop at position " + std::to_string(i));
+      if (k.head(loop[i]) != k.tail(loop[(i + 1) % loop.size()]))
+        fail(2, f.index(), "loop is not closed after edge " + std::to_string(e.index()));
+      if (!contains(k.edgeFaces(e), f)) fail(2, f.index(), "missing from the regions of edge " + std::to_string(e.index()));
+    }
+    std::vector<Index> key;
+    for (VertexId v : verts) key.push_back(v.index());
+    std::sort(key.begin(), key.end());
+    if (std::adjacent_find(key.begin(), key.end()) != key.end()) fail(2, f.index(), "loop passes twice through a vertex");
+    std::string skey(reinterpret_cast<const char*>(key.data()), key.size() * sizeof(Index));
+    if (auto [it, fresh] = seen_faces.emplace(skey, f.index()); !fresh)
+      fail(2, f.index(), "duplicates face " + std::to_string(it->second));
+    if (D == 3) {
+      const auto vols = k.faceVolumes(f);
+      if (vols.empty()) fail(2, f.index(), "dangling wall (bounds no cell)");
+      if (vols.size() > 2) fail(2, f.index(), "bounds " + std::to_string(vols.size()) + " cells");
+      for (VolumeId c : vols) {
+        if (!k.alive(c)) fail(2, f.index(), "regions list dead volume " + std::to_string(c.index()));
+        if (k.faceSign(c, f) == 0) fail(2, f.index(), "regions list volume " + std::to_string(c.index()) + " which it does not bound");
+      }
+      if (vols.size() == 2 && k.faceSign(vols[0], f) == k.faceSign(vols[1], f))
+        fail(2, f.index(), "has the same orientation in both its cells " + std::to_string(vols[0].index()) + " and " +
+                               std::to_string(vols[1].index()) + " (normals must point out of each)");
+    }
+  }
+  if (D == 3) {
+    for (VolumeId c : t.volumes()) {
+      const auto faces = k.volumeFaces(c);
+      if (faces.size() < 4) fail(3, c.index(), "has only " + std::to_string(faces.size()) + " faces");
+      std::vector<std::pair<Index, int>> uses;
+      for (OrientedFace of : faces) {
+        if (!k.alive(of.handle())) fail(3, c.index(), "uses dead face " + std::to_string(of.handle().index()));
+        if (!contains(k.faceVolumes(of.handle()), c))
+          fail(3, c.index(), "missing from the regions of face " + std::to_string(of.handle().index()));
+        for (OrientedEdge oe : k.faceEdges(of.handle()))
+          uses.emplace_back(oe.handle().index(), oe.reversed() == of.reversed() ? 1 : -1);
+      }
+      std::sort(uses.begin(), uses.end());
+      for (std::size_t i = 0; i < uses.size();) {
+        std::size_t j = i;
+        int fwd = 0, bwd = 0;
+        for (; j < uses.size() && uses[j].first == uses[i].first; ++j) (uses[j].second > 0 ? fwd : bwd)++;
+        if (fwd != 1 || bwd != 1)
+          fail(3, c.index(), "surface is not closed and consistently oriented at edge " + std::to_string(uses[i].first) +
+                                 " (used " + std::to_string(fwd) + " times forward, " + std::to_string(bwd) + " backward)");
+        i = j;
+      }
+    }
+  }
+}
+
+void checkOrientation2D(const Tissue& t) {
+  const CellComplex& k = t.topology();
+  for (EdgeId e : t.edges()) {
+    const auto faces = k.edgeFaces(e);
+    if (faces.size() != 2) continue;
+    const bool r0 = k.faceEdges(faces[0])[k.loopPosition(faces[0], e)].reversed();
+    const bool r1 = k.faceEdges(faces[1])[k.loopPosition(faces[1], e)].reversed();
+    if (r0 == r1)
+      fail(1, e.index(), "cells " + std::to_string(faces[0].index()) + " and " + std::to_string(faces[1].index()) +
+                             " traverse it in the same direction (inconsistent orientation)");
+  }
+}
+
+void checkEuler(const Tissue& t) {
+  const CellComplex& k = t.topology();
+  const int D = t.dim();
+  const Index ncells = static_cast<Index>(t.cellSlots());
+  UnionFind uf(ncells);
+  for (WallId w : t.walls()) {
+    const auto cells = t.wallCells(w);
+    for (std::size_t i = 1; i < cells.size(); ++i) uf.unite(cells[0].index(), cells[i].index());
+  }
+  // Count elements per component, each element once, by the component of any cell it touches.
+  std::unordered_map<Index, long> chi;
+  std::vector<Index> vcomp(k.slots(0), kInvalidIndex), ecomp(k.slots(1), kInvalidIndex), fcomp(k.slots(2), kInvalidIndex);
+  for (CellId c : t.cells()) {
+    const Index comp = uf.find(c.index());
+    chi[comp] += (D == 2 ? 1 : -1);
+    std::vector<FaceId> faces;
+    if (D == 2) faces.push_back(FaceId(c.index()));
+    else for (OrientedFace of : k.volumeFaces(VolumeId(c.index()))) faces.push_back(of.handle());
+    for (FaceId f : faces) {
+      if (D == 3 && fcomp[f.index()] == kInvalidIndex) { fcomp[f.index()] = comp; chi[comp] += 1; }
+      for (OrientedEdge oe : k.faceEdges(f)) {
+        const EdgeId e = oe.handle();
+        if (ecomp[e.index()] == kInvalidIndex) { ecomp[e.index()] = comp; chi[comp] -= 1; }
+        const VertexId v = k.tail(oe);
+        if (vcomp[v.index()] == kInvalidIndex) { vcomp[v.index()] = comp; chi[comp] += 1; }
+      }
+    }
+  }
+  if (D == 3) {
+    for (const auto& [comp, x] : chi)
+      if (x != 1)
+        fail(3, comp, "its connected component has Euler characteristic V-E+F-C = " + std::to_string(x) +
+                          ", expected 1 for a solid ball (a tunnel, cavity or broken incidence?)");
+    return;
+  }
+  // 2D: genus 0 with b boundary loops -> chi = 2 - b. Boundary loops are the
+  // components of the graph of boundary edges.
+  std::unordered_map<Index, Index> vparent;
+  std::function<Index(Index)> root = [&](Index x) {
+    while (vparent[x] != x) x = vparent[x] = vparent[vparent[x]];
+    return x;
+  };
+  for (EdgeId e : t.edges()) {
+    if (k.edgeFaces(e).size() != 1) continue;
+    const auto ev = k.edgeVertices(e);
+    for (VertexId v : ev) vparent.try_emplace(v.index(), v.index());
+    vparent[root(ev[0].index())] = root(ev[1].index());
+  }
+  std::unordered_map<Index, long> loops;
+  for (auto& [v, p] : vparent)
+    if (root(v) == v) loops[vcomp[v]] += 1;
+  for (const auto& [comp, x] : chi) {
+    const long b = loops.count(comp) ? loops[comp] : 0;
+    if (x != 2 - b)
+      fail(2, comp, "its connected component has Euler characteristic V-E+F = " + std::to_string(x) + " with " +
+                        std::to_string(b) + " boundary loop(s); expected " + std::to_string(2 - b) +
+                        " for a genus-0 sheet (a handle or broken incidence?)");
+  }
+}
+
+void checkMeasures(const Tissue& t) {
+  for (EdgeId e : t.edges())
+    if (!(edgeLength(t, e) > 0)) fail(1, e.index(), "has zero length");
+  int orientation = 0;
+  for (FaceId f : t.faces()) {
+    const PolygonMeasures m = polygonMeasures(t, f);
+    if (!(m.area > 0)) fail(2, f.index(), "has non-positive area " + std::to_string(m.area));
+    if (t.embedding() == Embedding::Planar) {
+      const int s = m.normal.z() > 0 ? 1 : -1;
+      if (orientation == 0) orientation = s;
+      else if (s != orientation)
+        fail(2, f.index(), "is inverted: its loop turns the other way from the tissue's other cells");
+    }
+  }
+  if (t.dim() == 3)
+    for (VolumeId c : t.volumes()) {
+      const double v = cellMeasure(t, CellId(c.index()));
+      if (!(v > 0)) fail(3, c.index(), "has non-positive volume " + std::to_string(v));
+    }
+}
+
+}  // namespace
+
+ValidationReport validate(const Tissue& t, const ValidateOptions& options) {
+  try {
+    checkIncidence(t);
+    if (t.dim() == 2 && options.check_orientation) checkOrientation2D(t);
+    if (options.check_euler) checkEuler(t);
+    if (options.check_measures) checkMeasures(t);
+  } catch (const Fail& f) {
+    return f.report;
+  }
+  return {};
+}
+
+void validateOrThrow(const Tissue& t, const ValidateOptions& options) {
+  const ValidationReport r = validate(t, options);
+  if (!r) throw TopologyError("invalid tissue: " + r.message, r.element);
+}
+
+}  // namespace tessella
