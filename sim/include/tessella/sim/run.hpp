@@ -1,0 +1,59 @@
+#pragma once
+// PreparedRun: everything `tessella run` does, minus printing, split in two
+// so that no file is written until every check has passed:
+//
+//   prepare()  validates the config, resolves and checks the output
+//              directory, builds the tissue (throws ConfigError; writes nothing)
+//   execute()  creates the directory, writes run.yaml, then the series while
+//              the simulation runs
+//
+// The output directory is, in order: RunOptions::output_directory (--out),
+// output.directory, runs/<config name> (relative to the working directory).
+// A directory that already holds a run (run.yaml or the series' .pvd) is
+// refused unless `overwrite` is set, so a re-run never silently replaces results.
+
+#include <memory>
+#include <string>
+
+#include "tessella/sim/series_output.hpp"
+#include "tessella/sim/simulation.hpp"
+#include "tessella/sim/simulation_config.hpp"
+
+namespace tessella::sim {
+
+struct RunOptions {
+  std::string output_directory;  ///< overrides output.directory when not empty
+  bool overwrite = false;        ///< replace a run already in the directory
+};
+
+class PreparedRun {
+ public:
+  static PreparedRun prepare(SimulationConfig config, const RunOptions& options = {});
+
+  const std::string& outputDirectory() const { return directory_; }
+  const SimulationConfig& config() const { return config_; }
+  Simulation& simulation() { return simulation_; }
+  const Simulation& simulation() const { return simulation_; }
+
+  /// Creates the directory, removes a previous run's files when overwriting,
+  /// writes run.yaml and runs to the end, writing the series. Callbacks
+  /// registered on simulation() before (e.g. progress) keep running.
+  void execute();
+  /// Snapshots written by execute().
+  std::size_t snapshots() const { return output_ ? output_->snapshots() : 0; }
+  std::string runRecordPath() const;
+
+ private:
+  PreparedRun(SimulationConfig config, Simulation simulation, std::string directory, bool overwrite);
+
+  SimulationConfig config_;
+  Simulation simulation_;
+  std::string directory_;
+  bool overwrite_;
+  std::shared_ptr<SeriesOutput> output_;
+};
+
+/// File name of the run record inside the output directory.
+inline constexpr const char* kRunRecordName = "run.yaml";
+
+}  // namespace tessella::sim

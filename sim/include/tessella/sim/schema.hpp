@@ -1,0 +1,106 @@
+#pragma once
+// The configuration schema: every key a config file may hold, with its type,
+// default, allowed range or choices, and a doc string. Validation, defaults,
+// run.yaml and the reference in docs/config.md are all derived from it, so a
+// key exists in exactly one place.
+//
+// Keys live in sections ("tissue", "tissue.voronoi", ...). A section or key
+// can be conditional (`activeWhen`): tissue.voronoi only matters when
+// tissue.generator is "voronoi". Inactive parts are validated when given but
+// are not used and not written to run.yaml.
+//
+// Extension point: a new config section is one file that declares its keys
+// (see tissue_section.hpp, time_section.hpp, output_section.hpp) and one line
+// in tessellaSchema() (tessella_schema.cpp).
+
+#include <deque>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tessella/sim/config_value.hpp"
+
+namespace tessella::sim {
+
+/// "Active when the Enum key `key` has one of `values`" (and `key` is active).
+struct Condition {
+  std::string key;
+  std::vector<std::string> values;
+};
+
+struct KeySpec {
+  std::string path;  ///< full dotted path, e.g. "tissue.voronoi.count"
+  ValueType type = ValueType::String;
+  std::string doc;
+  /// Value used when the key is absent. No default: the key is required
+  /// (`required`) or optional with a meaning given by `absent_doc`.
+  std::optional<ConfigValue> default_value;
+  bool required = false;
+  std::string absent_doc;
+  std::optional<double> min, max;  ///< Int and Float only
+  bool min_exclusive = false, max_exclusive = false;
+  std::vector<std::string> choices;  ///< Enum only
+  std::optional<Condition> active_when;
+
+  // Fluent setters, so declarations read like a table.
+  KeySpec& byDefault(ConfigValue v) { default_value = std::move(v); return *this; }
+  KeySpec& isRequired() { required = true; return *this; }
+  KeySpec& whenAbsent(std::string meaning) { absent_doc = std::move(meaning); return *this; }
+  KeySpec& atLeast(double v) { min = v; min_exclusive = false; return *this; }
+  KeySpec& above(double v) { min = v; min_exclusive = true; return *this; }
+  KeySpec& atMost(double v) { max = v; max_exclusive = false; return *this; }
+  KeySpec& oneOf(std::vector<std::string> c) { choices = std::move(c); return *this; }
+  KeySpec& activeWhen(std::string key, std::vector<std::string> values) {
+    active_when = Condition{std::move(key), std::move(values)};
+    return *this;
+  }
+
+  /// The leaf name ("count" for "tissue.voronoi.count").
+  std::string name() const;
+  /// The allowed range in words ("> 0", ">= 3 and <= 1000"), or "" if none.
+  std::string rangeText() const;
+  /// The expected value in words: "an integer >= 3", "one of a, b".
+  std::string expectation() const;
+};
+
+struct SectionSpec {
+  std::string path;
+  std::string doc;
+  std::optional<Condition> active_when;
+
+  SectionSpec& activeWhen(std::string key, std::vector<std::string> values) {
+    active_when = Condition{std::move(key), std::move(values)};
+    return *this;
+  }
+};
+
+class Schema {
+ public:
+  /// Declares a section; its parent must be declared first ("" is the root).
+  SectionSpec& section(std::string path, std::string doc);
+  /// Declares a key in an already declared section. Throws std::logic_error
+  /// on a duplicate path or an undeclared section (a programming error).
+  KeySpec& key(std::string path, ValueType type, std::string doc);
+
+  const KeySpec* findKey(const std::string& path) const;
+  const SectionSpec* findSection(const std::string& path) const;
+  bool isSection(const std::string& path) const { return path.empty() || findSection(path); }
+
+  /// Names (not paths) of a section's keys and subsections, in declaration order.
+  std::vector<std::string> childNames(const std::string& section_path) const;
+  /// Every key and every section, in declaration order.
+  const std::deque<KeySpec>& keys() const { return keys_; }
+  const std::deque<SectionSpec>& sections() const { return sections_; }
+
+ private:
+  std::deque<KeySpec> keys_;  // deque: references handed out stay valid
+  std::deque<SectionSpec> sections_;
+  std::vector<std::string> order_;  // every path, keys and sections, in declaration order
+};
+
+/// Joins a section path and a name ("" + "time" = "time").
+std::string joinPath(const std::string& section, const std::string& name);
+/// The section part of a path ("tissue.voronoi" for "tissue.voronoi.count").
+std::string parentPath(const std::string& path);
+
+}  // namespace tessella::sim

@@ -1,0 +1,103 @@
+#pragma once
+// Simulation: a tissue, a time span and the stages applied at every step.
+//
+//   auto sim = Simulation::fromFile("configs/hex_grid_2d.yaml");
+//   sim.onStep([](const Simulation& s) { ... });   // after every step
+//   sim.runUntil(5.0);                               // or step(), or run()
+//
+// or from code, with your own tissue and stages:
+//
+//   Simulation sim(hexagonalGrid(10, 10), {.time = {0, 20, 0.5}, .rng_seed = 42});
+//   sim.addStage(std::make_unique<MyGrowth>(...));
+//
+// One step: every stage in order over [t, t + dt], then the clock advances
+// (the tissue's time too), then the step callbacks run. The Simulation does
+// not write files; attach a SeriesOutput (series_output.hpp) for that.
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "tessella/sim/simulation_config.hpp"
+#include "tessella/sim/stage.hpp"
+#include "tessella/sim/time_section.hpp"
+#include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/tissue.hpp"
+
+namespace tessella::sim {
+
+/// A stage failed: names the stage, the step and the time, then the cause.
+class SimulationError : public Error {
+ public:
+  using Error::Error;
+};
+
+struct SimulationParameters {
+  TimeSpan time;
+  std::uint64_t rng_seed = 0;
+};
+
+class Simulation {
+ public:
+  using StepCallback = std::function<void(const Simulation&)>;
+
+  /// From code: the tissue's clock is set to time.start.
+  Simulation(Tissue tissue, SimulationParameters parameters);
+
+  /// From a validated config: builds the tissue its generator describes and
+  /// the stages its sections ask for (makeStages). Throws ConfigError.
+  static Simulation fromConfig(const SimulationConfig& config);
+  static Simulation fromFile(const std::string& path, const std::vector<std::string>& overrides = {});
+  static Simulation fromYaml(const std::string& yaml, const std::vector<std::string>& overrides = {},
+                             const std::string& base_directory = ".");
+
+  Simulation(Simulation&&) noexcept = default;
+  Simulation& operator=(Simulation&&) noexcept = default;
+
+  // --- state ------------------------------------------------------------------
+  const Tissue& tissue() const { return tissue_; }
+  /// Mutable access for models that edit the tissue between steps.
+  Tissue& tissue() { return tissue_; }
+  const SimulationParameters& parameters() const { return parameters_; }
+  double time() const { return parameters_.time.timeAt(step_); }
+  /// Steps taken so far.
+  std::size_t stepsDone() const { return step_; }
+  std::size_t numSteps() const { return parameters_.time.numSteps(); }
+  bool finished() const { return step_ >= numSteps(); }
+  std::mt19937_64& rng() { return rng_; }
+
+  // --- composition ------------------------------------------------------------
+  void addStage(std::unique_ptr<Stage> stage);
+  std::size_t numStages() const { return stages_.size(); }
+  const Stage& stage(std::size_t i) const { return *stages_[i]; }
+  /// Called after every step, in registration order.
+  void onStep(StepCallback callback);
+
+  // --- advancing --------------------------------------------------------------
+  /// Takes one step. Throws std::logic_error when already finished, and
+  /// SimulationError (naming stage, step and time) when a stage throws.
+  void step();
+  /// Steps while time() < t (within a millionth of dt) and not finished;
+  /// stops at the end of the time span if t lies beyond it.
+  void runUntil(double t);
+  /// Steps to the end of the time span.
+  void run();
+
+ private:
+  Tissue tissue_;
+  SimulationParameters parameters_;
+  std::mt19937_64 rng_;
+  std::size_t step_ = 0;
+  std::vector<std::unique_ptr<Stage>> stages_;
+  std::vector<StepCallback> callbacks_;
+};
+
+/// The stages a config asks for, in execution order. Empty for now: the
+/// loop only advances time. Extension point for growth/division sections.
+std::vector<std::unique_ptr<Stage>> makeStages(const SimulationConfig& config);
+
+}  // namespace tessella::sim

@@ -1,0 +1,36 @@
+#pragma once
+// Stage: one process a Simulation applies at every step (growth, division,
+// a solve...). Stages run in the order they were added.
+//
+// Extension point: growth/ provides its stages (move vertices by a velocity
+// field, divide cells over a threshold) as Stage subclasses; makeStages()
+// (sim/src/stages_from_config.cpp) turns config sections into stages.
+
+#include <cstddef>
+#include <random>
+#include <string>
+
+#include "tessella/tissue/tissue.hpp"
+
+namespace tessella::sim {
+
+struct StepContext {
+  std::size_t step = 0;  ///< index of the step being taken (0 for the first)
+  double time = 0.0;     ///< time at the start of the step
+  double dt = 0.0;       ///< length of this step (the last one may be shorter)
+  /// The simulation's random stream: every random draw of a run comes from
+  /// it, so a run is reproducible from its RNG seed.
+  std::mt19937_64* rng = nullptr;
+};
+
+class Stage {
+ public:
+  virtual ~Stage() = default;
+  /// Short name for messages ("growth", "division").
+  virtual std::string name() const = 0;
+  /// Advances the tissue over [context.time, context.time + context.dt].
+  /// Throws on failure; the Simulation reports which stage and step failed.
+  virtual void apply(Tissue& tissue, const StepContext& context) = 0;
+};
+
+}  // namespace tessella::sim

@@ -1,0 +1,38 @@
+#pragma once
+// TissueSummary: what `tessella info` reports about a tissue: element counts,
+// total size, the distribution of cell sizes and whether validate() passes.
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "tessella/tissue/tissue.hpp"
+#include "tessella/tissue/validate.hpp"
+
+namespace tessella::sim {
+
+/// Order statistics and moments of a sample. Quartiles interpolate linearly
+/// between order statistics (the "type 7" rule of R and NumPy); the
+/// coefficient of variation is the population standard deviation / mean.
+struct Distribution {
+  std::size_t count = 0;
+  double min = 0, q1 = 0, median = 0, q3 = 0, max = 0;
+  double mean = 0, cv = 0;
+};
+
+/// Throws InputError for an empty sample.
+Distribution distributionOf(std::vector<double> values);
+
+struct TissueSummary {
+  int dim = 2;
+  Embedding embedding = Embedding::Planar;
+  std::array<std::size_t, 4> counts{};  ///< live vertices, edges, faces, volumes
+  std::size_t cells = 0;
+  double total_measure = 0;  ///< area (2D) or volume (3D)
+  Distribution cell_sizes;   ///< cell areas (2D) or volumes (3D); empty tissue: count 0
+  ValidationReport validation;
+};
+
+TissueSummary summarizeTissue(const Tissue& tissue);
+
+}  // namespace tessella::sim

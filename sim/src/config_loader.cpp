@@ -1,0 +1,347 @@
+#include "tessella/sim/config_loader.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "tessella/sim/suggest.hpp"
+
+namespace fs = std::filesystem;
+
+namespace tessella::sim {
+
+namespace {
+
+std::string quoted(const std::string& s) {
+  constexpr std::size_t kMax = 60;  // a pasted blob must not flood the message
+  return "'" + (s.size() > kMax ? s.substr(0, kMax) + "..." : s) + "'";
+}
+
+std::string describe(const YAML::Node& node) {
+  if (!node || node.IsNull()) return "nothing";
+  if (node.IsScalar()) return quoted(node.Scalar());
+  if (node.IsSequence()) return "a sequence";
+  if (node.IsMap()) return "a mapping";
+  return "an unknown node";
+}
+
+std::string lower(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+std::optional<std::int64_t> parseInt(std::string s) {
+  if (!s.empty() && s[0] == '+') s.erase(0, 1);
+  std::int64_t v = 0;
+  auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size() || s.empty()) return std::nullopt;
+  return v;
+}
+
+std::optional<double> parseDouble(std::string s) {
+  if (!s.empty() && s[0] == '+') s.erase(0, 1);
+  double v = 0;
+  auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+  if (ec != std::errc() || end != s.data() + s.size() || s.empty()) return std::nullopt;
+  return v;
+}
+
+/// Walks YAML nodes against the schema, filling a Config.
+class Loader {
+ public:
+  Loader(const Schema& schema, Config& config) : schema_(schema), config_(config) {}
+
+  void loadDocument(const YAML::Node& root, const std::string& file, const fs::path& base) {
+    source_ = file;
+    base_ = base;
+    origin_ = ValueOrigin::File;
+    if (!root || root.IsNull()) return;  // an empty file: every key takes its default
+    if (!root.IsMap())
+      throw ConfigError(at(root.Mark()), "",
+                        "the top level must be a mapping of sections and keys, got " + describe(root));
+    walkSection(root, "");
+  }
+
+  void loadOverride(const std::string& argument) {
+    source_ = "--set " + argument;
+    base_ = fs::current_path();
+    origin_ = ValueOrigin::Override;
+    const SourceLocation where{source_, 0, 0};
+    const auto eq = argument.find('=');
+    std::string path = eq == std::string::npos ? std::string() : argument.substr(0, eq);
+    path.erase(0, path.find_first_not_of(" \t"));
+    path.erase(path.find_last_not_of(" \t") + 1);
+    if (path.empty()) throw ConfigError(where, "", "expected KEY.PATH=VALUE, e.g. time.end=20");
+    YAML::Node value;
+    try {
+      value = YAML::Load(argument.substr(eq + 1));
+    } catch (const YAML::Exception& e) {
+      throw ConfigError(where, path, "the value is not valid YAML: " + e.msg);
+    }
+    if (schema_.isSection(path)) return walkSection(value, path);
+    if (const KeySpec* spec = schema_.findKey(path)) return setValue(*spec, value, where);
+    unknownPath(path, where);
+  }
+
+  /// Defaults, required keys and notes, once every source is in.
+  void finish() {
+    for (const KeySpec& spec : schema_.keys())
+      if (!config_.has(spec.path) && spec.default_value)
+        config_.set(spec.path, *spec.default_value, {}, ValueOrigin::Default);
+    for (const KeySpec& spec : schema_.keys()) {
+      if (!spec.required || config_.has(spec.path) || !config_.isActive(spec.path)) continue;
+      SourceLocation where{config_.source(), 0, 0};
+      for (std::string s = parentPath(spec.path);; s = parentPath(s)) {
+        if (auto it = section_marks_.find(s); it != section_marks_.end()) {
+          where = it->second;
+          break;
+        }
+        if (s.empty()) break;
+      }
+      throw ConfigError(where, spec.path, "missing required key; expected " + spec.expectation());
+    }
+    std::set<std::string> noted;
+    for (const auto& [path, entry] : config_.entries()) {
+      if (entry.origin == ValueOrigin::Default || config_.isActive(path)) continue;
+      std::string outer = path;  // the outermost inactive part names the reason
+      while (!parentPath(outer).empty() && !config_.isActive(parentPath(outer))) outer = parentPath(outer);
+      if (!noted.insert(outer).second) continue;
+      config_.addNote(entry.where.str() + ": " + outer + " is ignored: " + inactiveReason(outer));
+    }
+  }
+
+ private:
+  SourceLocation at(const YAML::Mark& mark) const {
+    if (origin_ == ValueOrigin::Override || mark.is_null()) return {source_, 0, 0};
+    return {source_, mark.line + 1, mark.column + 1};
+  }
+
+  std::string inactiveReason(const std::string& path) const {
+    std::optional<Condition> c;
+    if (const SectionSpec* s = schema_.findSection(path)) c = s->active_when;
+    if (const KeySpec* k = schema_.findKey(path)) c = k->active_when;
+    if (!c || !config_.has(c->key)) return "it does not apply";
+    return c->key + " is " + formatValue(config_.entry(c->key).value);
+  }
+
+  void walkSection(const YAML::Node& node, const std::string& section) {
+    if (!node || node.IsNull()) return;  // "tissue:" alone is an empty section
+    if (!node.IsMap())
+      throw ConfigError(at(node.Mark()), section,
+                        "expected a section (key: value lines), got " + describe(node));
+    if (origin_ == ValueOrigin::File) section_marks_.emplace(section, at(node.Mark()));
+    std::map<std::string, YAML::Mark> seen;
+    for (auto it = node.begin(); it != node.end(); ++it) {
+      const YAML::Node& key = it->first;
+      const YAML::Node& value = it->second;
+      if (!key.IsScalar())
+        throw ConfigError(at(key.Mark()), section, "a key must be a plain name, got " + describe(key));
+      const std::string name = key.Scalar();
+      const std::string path = joinPath(section, name);
+      if (auto [first, inserted] = seen.emplace(name, key.Mark()); !inserted)
+        throw ConfigError(at(key.Mark()), path,
+                          "duplicate key (first given at " + at(first->second).str() + ")");
+      if (schema_.isSection(path)) {
+        walkSection(value, path);
+      } else if (const KeySpec* spec = schema_.findKey(path)) {
+        const bool has_mark = value && !value.IsNull() && !value.Mark().is_null();
+        setValue(*spec, value, at(has_mark ? value.Mark() : key.Mark()));
+      } else {
+        throw ConfigError(at(key.Mark()), path, unknownProblem(name, section));
+      }
+    }
+  }
+
+  std::string unknownProblem(const std::string& name, const std::string& section) const {
+    const std::vector<std::string> siblings = schema_.childNames(section);
+    std::string problem = "unknown key " + quoted(name);
+    if (auto m = closestMatch(name, siblings)) return problem + "; did you mean '" + *m + "'?";
+    // Right name, wrong place? ("count" at the top level)
+    std::vector<std::string> elsewhere;
+    for (const KeySpec& k : schema_.keys())
+      if (k.name() == name) elsewhere.push_back(k.path);
+    if (!elsewhere.empty()) {
+      problem += "; did you mean '" + elsewhere[0] + "'";
+      for (std::size_t i = 1; i < elsewhere.size(); ++i) problem += " or '" + elsewhere[i] + "'";
+      return problem + "?";
+    }
+    problem += "; known keys here: ";
+    for (std::size_t i = 0; i < siblings.size(); ++i) problem += (i ? ", " : "") + siblings[i];
+    return problem;
+  }
+
+  /// An override path that is not in the schema: find where it leaves it.
+  [[noreturn]] void unknownPath(const std::string& path, const SourceLocation& where) const {
+    std::string section;
+    std::size_t start = 0;
+    while (true) {
+      const auto dot = path.find('.', start);
+      const std::string name = path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+      const std::string here = joinPath(section, name);
+      if (dot != std::string::npos && schema_.isSection(here)) {
+        section = here;
+        start = dot + 1;
+        continue;
+      }
+      if (dot != std::string::npos && schema_.findKey(here))
+        throw ConfigError(where, path, here + " is a value, not a section");
+      std::string problem = unknownProblem(name, section);
+      // For overrides, name the whole corrected path.
+      if (auto m = closestMatch(name, schema_.childNames(section)))
+        problem = "unknown key " + quoted(name) + "; did you mean '" + joinPath(section, *m) +
+                  (dot == std::string::npos ? "" : path.substr(dot)) + "'?";
+      throw ConfigError(where, path, problem);
+    }
+  }
+
+  void setValue(const KeySpec& spec, const YAML::Node& node, const SourceLocation& where) {
+    config_.set(spec.path, convert(spec, node, where), where, origin_);
+  }
+
+  ConfigValue convert(const KeySpec& spec, const YAML::Node& node, const SourceLocation& where) const {
+    auto fail = [&](const std::string& problem) -> ConfigError {
+      return ConfigError(where, spec.path, problem);
+    };
+    auto expected = [&](const YAML::Node& n) {
+      return fail("expected " + spec.expectation() + ", got " + describe(n));
+    };
+    if (!node || node.IsNull()) throw fail("no value given; expected " + spec.expectation());
+    switch (spec.type) {
+      case ValueType::Bool: {
+        if (!node.IsScalar()) throw expected(node);
+        const std::string s = lower(node.Scalar());
+        if (s == "true" || s == "yes" || s == "on") return true;
+        if (s == "false" || s == "no" || s == "off") return false;
+        throw expected(node);
+      }
+      case ValueType::Int: {
+        if (!node.IsScalar()) throw expected(node);
+        auto v = parseInt(node.Scalar());
+        if (!v) throw expected(node);
+        checkRange(spec, static_cast<double>(*v), node, where);
+        return *v;
+      }
+      case ValueType::Float: {
+        if (!node.IsScalar()) throw expected(node);
+        auto v = parseDouble(node.Scalar());
+        if (!v || !std::isfinite(*v)) throw expected(node);
+        checkRange(spec, *v, node, where);
+        return *v;
+      }
+      case ValueType::String:
+        if (!node.IsScalar()) throw expected(node);
+        return node.Scalar();
+      case ValueType::Enum: {
+        if (!node.IsScalar()) throw expected(node);
+        const std::string& s = node.Scalar();
+        if (std::find(spec.choices.begin(), spec.choices.end(), s) != spec.choices.end()) return s;
+        std::string problem = "expected " + spec.expectation() + ", got " + describe(node);
+        if (auto m = closestMatch(s, spec.choices)) problem += "; did you mean '" + *m + "'?";
+        throw fail(problem);
+      }
+      case ValueType::Vec2:
+      case ValueType::Vec3: {
+        const std::size_t n = spec.type == ValueType::Vec2 ? 2 : 3;
+        if (!node.IsSequence() || node.size() != n) {
+          std::string got = describe(node);
+          if (node.IsSequence()) got = "a sequence of " + std::to_string(node.size());
+          throw fail("expected " + spec.expectation() + ", got " + got);
+        }
+        std::vector<double> v;
+        for (std::size_t i = 0; i < n; ++i) {
+          const YAML::Node item = node[i];
+          std::optional<double> x;
+          if (item.IsScalar()) x = parseDouble(item.Scalar());
+          if (!x || !std::isfinite(*x)) {
+            const bool has_mark = origin_ == ValueOrigin::File && !item.Mark().is_null();
+            throw ConfigError(has_mark ? at(item.Mark()) : where,
+                              spec.path + "[" + std::to_string(i) + "]",
+                              "expected a finite number, got " + describe(item));
+          }
+          v.push_back(*x);
+        }
+        return v;
+      }
+      case ValueType::Path: {
+        if (!node.IsScalar() || node.Scalar().empty()) throw expected(node);
+        const fs::path given = node.Scalar();
+        const fs::path full = (given.is_absolute() ? given : base_ / given).lexically_normal();
+        std::error_code ec;
+        const auto status = fs::status(full, ec);
+        if (ec || !fs::exists(status))
+          throw fail("file not found: " + quoted(given.string()) + " (looked for " + full.string() + ")");
+        if (!fs::is_regular_file(status))
+          throw fail(quoted(given.string()) + " is not a regular file (" + full.string() + ")");
+        return full.string();
+      }
+    }
+    throw fail("unsupported value type");
+  }
+
+  static void checkRange(const KeySpec& spec, double v, const YAML::Node& node, const SourceLocation& where) {
+    const bool low = spec.min && (spec.min_exclusive ? v <= *spec.min : v < *spec.min);
+    const bool high = spec.max && (spec.max_exclusive ? v >= *spec.max : v > *spec.max);
+    if (low || high)
+      throw ConfigError(where, spec.path,
+                        "value " + node.Scalar() + " is out of range; expected " + spec.expectation());
+  }
+
+  const Schema& schema_;
+  Config& config_;
+  std::string source_;
+  fs::path base_;
+  ValueOrigin origin_ = ValueOrigin::File;
+  std::map<std::string, SourceLocation> section_marks_;
+};
+
+YAML::Node parseYaml(const std::string& text, const std::string& source) {
+  try {
+    return YAML::Load(text);
+  } catch (const YAML::Exception& e) {
+    SourceLocation where{source, 0, 0};
+    if (!e.mark.is_null()) where = {source, e.mark.line + 1, e.mark.column + 1};
+    throw ConfigError(where, "", "malformed YAML: " + e.msg);
+  }
+}
+
+Config load(const std::string& text, const std::vector<std::string>& overrides, const Schema& schema,
+            const std::string& name, const std::string& source, const fs::path& base) {
+  Config config(schema, name, source, base.string());
+  Loader loader(schema, config);
+  loader.loadDocument(parseYaml(text, source), source, base);
+  for (const std::string& o : overrides) loader.loadOverride(o);
+  loader.finish();
+  return config;
+}
+
+}  // namespace
+
+Config loadConfigFile(const std::string& path, const std::vector<std::string>& overrides,
+                      const Schema& schema) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec))
+    throw ConfigError(SourceLocation{path, 0, 0}, "",
+                      fs::exists(path, ec) ? "not a regular file" : "config file not found");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ConfigError(SourceLocation{path, 0, 0}, "", "cannot open the config file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  const fs::path full = fs::absolute(path).lexically_normal();
+  return load(text.str(), overrides, schema, full.stem().string(), path, full.parent_path());
+}
+
+Config loadConfigString(const std::string& yaml, const std::vector<std::string>& overrides,
+                        const Schema& schema, const std::string& name, const std::string& source,
+                        const std::string& base_directory) {
+  return load(yaml, overrides, schema, name, source, fs::absolute(base_directory).lexically_normal());
+}
+
+}  // namespace tessella::sim

@@ -1,0 +1,91 @@
+#include "tessella/sim/run.hpp"
+
+#include <filesystem>
+#include <functional>
+#include <regex>
+
+#include "tessella/sim/run_record.hpp"
+
+namespace fs = std::filesystem;
+
+namespace tessella::sim {
+
+namespace {
+
+/// The files of a previous run of series `name` in `dir`.
+std::vector<fs::path> previousRunFiles(const fs::path& dir, const std::string& name) {
+  std::vector<fs::path> files;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return files;
+  const std::regex snapshot(std::regex_replace(name, std::regex(R"([.^$|()\[\]{}*+?\\-])"), R"(\$&)") +
+                            R"(_\d+\.vtu)");
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    const std::string file = entry.path().filename().string();
+    if (file == kRunRecordName || file == name + ".pvd" || std::regex_match(file, snapshot))
+      files.push_back(entry.path());
+  }
+  return files;
+}
+
+}  // namespace
+
+PreparedRun::PreparedRun(SimulationConfig config, Simulation simulation, std::string directory, bool overwrite)
+    : config_(std::move(config)),
+      simulation_(std::move(simulation)),
+      directory_(std::move(directory)),
+      overwrite_(overwrite) {}
+
+PreparedRun PreparedRun::prepare(SimulationConfig config, const RunOptions& options) {
+  // Where the directory comes from decides where an error about it points.
+  std::string chosen;
+  std::function<ConfigError(const std::string&)> error;
+  if (!options.output_directory.empty()) {
+    chosen = options.output_directory;
+    error = [&](const std::string& p) {
+      return ConfigError(SourceLocation{"--out " + chosen, 0, 0}, "output.directory", p);
+    };
+  } else if (!config.output.directory.empty()) {
+    chosen = config.output.directory;
+    error = [&](const std::string& p) { return config.config.errorAt("output.directory", p); };
+  } else {
+    chosen = (fs::path("runs") / config.config.name()).string();
+    error = [&](const std::string& p) {
+      return ConfigError(SourceLocation{config.config.source(), 0, 0}, "output.directory",
+                         "(default " + chosen + ") " + p);
+    };
+  }
+  const fs::path dir = fs::absolute(chosen).lexically_normal();
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw error("'" + dir.string() + "' exists and is not a directory");
+  if (!options.overwrite) {
+    const auto previous = previousRunFiles(dir, config.output.name);
+    if (!previous.empty())
+      throw error("'" + dir.string() + "' already holds a run (" + previous.front().filename().string() +
+                  "); choose another directory or pass --overwrite to replace it");
+  }
+
+  Simulation simulation = Simulation::fromConfig(config);  // the tissue, before anything is written
+  config.output.directory = dir.string();
+  config.config.set("output.directory", dir.string(), {}, ValueOrigin::Derived);
+  return PreparedRun(std::move(config), std::move(simulation), dir.string(), options.overwrite);
+}
+
+std::string PreparedRun::runRecordPath() const { return (fs::path(directory_) / kRunRecordName).string(); }
+
+void PreparedRun::execute() {
+  if (output_) throw std::logic_error("PreparedRun::execute: already executed");
+  std::error_code ec;
+  fs::create_directories(directory_, ec);
+  if (ec) throw InputError("cannot create the output directory " + directory_ + ": " + ec.message());
+  if (overwrite_)
+    for (const fs::path& file : previousRunFiles(directory_, config_.output.name)) {
+      fs::remove(file, ec);
+      if (ec) throw InputError("cannot remove the previous run's " + file.string() + ": " + ec.message());
+    }
+  writeRunRecord(config_.config, runRecordPath());
+  output_ = attachSeriesOutput(simulation_, directory_, config_.output);
+  simulation_.run();
+}
+
+}  // namespace tessella::sim

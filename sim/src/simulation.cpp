@@ -1,0 +1,87 @@
+#include "tessella/sim/simulation.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "tessella/sim/config_error.hpp"
+
+namespace tessella::sim {
+
+namespace {
+// The stage stream is derived from the run's seed rather than equal to it,
+// so it does not replay the draws the generator made for seed points.
+std::mt19937_64 stageStream(std::uint64_t seed) {
+  std::seed_seq seq{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32), 0x5eedu};
+  return std::mt19937_64(seq);
+}
+
+std::string number(double x) { return formatValue(x); }
+}  // namespace
+
+Simulation::Simulation(Tissue tissue, SimulationParameters parameters)
+    : tissue_(std::move(tissue)), parameters_(parameters), rng_(stageStream(parameters.rng_seed)) {
+  const TimeSpan& t = parameters_.time;
+  if (!std::isfinite(t.start) || !std::isfinite(t.end) || !(t.end >= t.start))
+    throw InputError("Simulation: time span [" + number(t.start) + ", " + number(t.end) +
+                     "] is not a finite interval with end >= start");
+  if (!(t.dt > 0) || !std::isfinite(t.dt)) throw InputError("Simulation: dt must be > 0, got " + number(t.dt));
+  if ((t.end - t.start) / t.dt > kMaxSteps)
+    throw InputError("Simulation: " + number((t.end - t.start) / t.dt) + " steps is more than the limit of " +
+                     number(kMaxSteps));
+  tissue_.setTime(t.start);
+}
+
+Simulation Simulation::fromConfig(const SimulationConfig& config) {
+  Simulation sim(buildTissue(config.tissue, config.rng_seed, config.config),
+                 SimulationParameters{config.time, config.rng_seed});
+  for (auto& stage : makeStages(config)) sim.addStage(std::move(stage));
+  return sim;
+}
+
+Simulation Simulation::fromFile(const std::string& path, const std::vector<std::string>& overrides) {
+  return fromConfig(loadSimulationConfigFile(path, overrides));
+}
+
+Simulation Simulation::fromYaml(const std::string& yaml, const std::vector<std::string>& overrides,
+                                const std::string& base_directory) {
+  return fromConfig(loadSimulationConfigString(yaml, overrides, base_directory));
+}
+
+void Simulation::addStage(std::unique_ptr<Stage> stage) {
+  if (!stage) throw std::invalid_argument("Simulation::addStage: null stage");
+  stages_.push_back(std::move(stage));
+}
+
+void Simulation::onStep(StepCallback callback) {
+  if (!callback) throw std::invalid_argument("Simulation::onStep: empty callback");
+  callbacks_.push_back(std::move(callback));
+}
+
+void Simulation::step() {
+  if (finished()) throw std::logic_error("Simulation::step: the time span is already over");
+  const double t0 = time();
+  const double t1 = parameters_.time.timeAt(step_ + 1);
+  const StepContext context{step_, t0, t1 - t0, &rng_};
+  for (auto& stage : stages_) {
+    try {
+      stage->apply(tissue_, context);
+    } catch (const std::exception& e) {
+      throw SimulationError("step " + std::to_string(step_ + 1) + " (t = " + number(t0) + "), stage '" +
+                            stage->name() + "': " + e.what());
+    }
+  }
+  ++step_;
+  tissue_.setTime(t1);
+  for (auto& callback : callbacks_) callback(*this);
+}
+
+void Simulation::runUntil(double t) {
+  const double slack = 1e-6 * parameters_.time.dt;
+  while (!finished() && time() < t - slack) step();
+}
+
+void Simulation::run() {
+  while (!finished()) step();
+}
+
+}  // namespace tessella::sim

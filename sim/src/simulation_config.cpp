@@ -1,0 +1,49 @@
+#include "tessella/sim/simulation_config.hpp"
+
+#include <limits>
+#include <random>
+
+#include "tessella/sim/config_loader.hpp"
+#include "tessella/sim/tessella_schema.hpp"
+
+namespace tessella::sim {
+
+namespace {
+std::uint64_t freshSeed() {
+  std::random_device device;
+  const std::uint64_t seed = (std::uint64_t{device()} << 32) ^ device();
+  return seed & static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max());  // fits rng_seed's int
+}
+}  // namespace
+
+SimulationConfig readSimulationConfig(Config config) {
+  if (config.has("tessella_version") && config.getString("tessella_version") != tessellaVersion())
+    config.addNote(config.entry("tessella_version").where.str() + ": this configuration was written by Tessella " +
+                   config.getString("tessella_version") + "; this is " + tessellaVersion() +
+                   ", so results may differ");
+  config.set("tessella_version", std::string(tessellaVersion()), {}, ValueOrigin::Derived);
+  std::uint64_t seed = 0;
+  if (config.has("rng_seed")) {
+    seed = static_cast<std::uint64_t>(config.getInt("rng_seed"));
+  } else {
+    seed = freshSeed();
+    config.set("rng_seed", static_cast<std::int64_t>(seed), {}, ValueOrigin::Derived);
+  }
+  TissueSpec tissue = readTissueSection(config);
+  TimeSpan time = readTimeSection(config);
+  OutputSpec output = readOutputSection(config);
+  // Extension point: read new sections here.
+  return SimulationConfig{std::move(config), seed, std::move(tissue), time, std::move(output)};
+}
+
+SimulationConfig loadSimulationConfigFile(const std::string& path, const std::vector<std::string>& overrides) {
+  return readSimulationConfig(loadConfigFile(path, overrides, tessellaSchema()));
+}
+
+SimulationConfig loadSimulationConfigString(const std::string& yaml, const std::vector<std::string>& overrides,
+                                            const std::string& base_directory) {
+  return readSimulationConfig(
+      loadConfigString(yaml, overrides, tessellaSchema(), "simulation", "<string>", base_directory));
+}
+
+}  // namespace tessella::sim
