@@ -1,0 +1,44 @@
+#pragma once
+// Private: clipped Voronoi cells as plain arrays, before they become a Tissue
+// (shared by the generators, the dome and Lloyd relaxation).
+
+#include <span>
+#include <vector>
+
+#include "tessella/tissue/builders.hpp"
+#include "tessella/tissue/vec3.hpp"
+#include "voronoi_domain.hpp"
+
+namespace tessella::detail {
+
+struct ClippedCells2 {
+  std::vector<Vec3> positions;               // welded vertices (z = 0)
+  std::vector<std::vector<Index>> polygons;  // cell k = seed k, counter-clockwise
+  std::vector<Vec3> centroids;               // of each clipped cell
+};
+
+struct ClippedCells3 {
+  std::vector<Vec3> positions;                 // welded vertices
+  std::vector<std::vector<Index>> faces;       // walls, each listed once
+  std::vector<std::vector<CellFace>> cells;    // cell k = seed k
+  std::vector<Vec3> centroids;                 // of each clipped cell
+};
+
+/// What to compute: Lloyd relaxation needs the centroids only.
+enum class CellOutput { CentroidsOnly, Complex };
+
+/// Voronoi cells of checked seeds (checkSeeds2/3 passed) clipped to the
+/// domain. Throws InputError for duplicate or collinear/coplanar seeds.
+ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& domain,
+                           double duplicate_tolerance, CellOutput output);
+ClippedCells3 clipVoronoi3(std::span<const Vec3> seeds, const ConvexDomain3& domain,
+                           double duplicate_tolerance, CellOutput output);
+
+/// Lloyd relaxation: `iterations` times, every seed moves to the centroid of
+/// its clipped cell.
+std::vector<Vec3> lloydRelax(std::span<const Vec3> seeds, const ConvexDomain2& domain,
+                             int iterations, double duplicate_tolerance);
+std::vector<Vec3> lloydRelax(std::span<const Vec3> seeds, const ConvexDomain3& domain,
+                             int iterations, double duplicate_tolerance);
+
+}  // namespace tessella::detail

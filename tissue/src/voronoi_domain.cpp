@@ -1,0 +1,203 @@
+// The clipping domains of the Voronoi generators as convex polygons/polyhedra.
+
+#include "voronoi_domain.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <map>
+#include <numbers>
+#include <sstream>
+#include <utility>
+
+#include "tessella/tissue/errors.hpp"
+
+namespace tessella::detail {
+namespace {
+
+std::string fmt3(const Vec3& p) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
+  return s.str();
+}
+
+void requireFinite(const Vec3& p, const char* what) {
+  if (!p.allFinite()) throw InputError(std::string(what) + " must be finite, got " + fmt3(p));
+}
+
+void requirePositiveRadius(double r, const char* what) {
+  if (!std::isfinite(r) || !(r > 0))
+    throw InputError(std::string(what) + ".radius must be a positive finite number, got " +
+                     std::to_string(r));
+}
+
+ConvexDomain2 polygonDomain(std::vector<Vec2> corners) {
+  ConvexDomain2 d;
+  d.corners = std::move(corners);
+  const std::size_t n = d.corners.size();
+  d.lo = d.hi = d.corners[0];
+  for (std::size_t k = 0; k < n; ++k) {
+    const Vec2& a = d.corners[k];
+    const Vec2& b = d.corners[(k + 1) % n];
+    const Vec2 edge = b - a;
+    const Vec2 outward = Vec2(edge.y(), -edge.x()).normalized();  // CCW polygon: right of the edge
+    d.sides.push_back({outward, outward.dot(a)});
+    d.lo = d.lo.cwiseMin(a);
+    d.hi = d.hi.cwiseMax(a);
+  }
+  d.scale = (d.hi - d.lo).norm();
+  return d;
+}
+
+ConvexDomain3 boxDomain(const Vec3& lo, const Vec3& hi) {
+  ConvexDomain3 d;
+  for (int axis = 0; axis < 3; ++axis) {
+    Vec3 n = Vec3::Zero();
+    n[axis] = -1;
+    d.faces.push_back({n, -lo[axis]});
+    n[axis] = 1;
+    d.faces.push_back({n, hi[axis]});
+  }
+  d.lo = lo;
+  d.hi = hi;
+  d.scale = (hi - lo).norm();
+  d.is_box = true;
+  d.center = (lo + hi) / 2;
+  d.volume_value = (hi - lo).prod();
+  return d;
+}
+
+}  // namespace
+
+double ConvexDomain2::excess(const Vec2& p) const {
+  double worst = -std::numeric_limits<double>::infinity();
+  for (const HalfPlane& s : sides) worst = std::max(worst, s.excess(p));
+  return worst;
+}
+
+double ConvexDomain2::area() const {
+  double twice = 0;
+  for (std::size_t k = 0; k < corners.size(); ++k) {
+    const Vec2& a = corners[k];
+    const Vec2& b = corners[(k + 1) % corners.size()];
+    twice += a.x() * b.y() - a.y() * b.x();
+  }
+  return twice / 2;
+}
+
+double ConvexDomain3::excess(const Vec3& p) const {
+  double worst = -std::numeric_limits<double>::infinity();
+  for (const HalfSpace& f : faces) worst = std::max(worst, f.excess(p));
+  return worst;
+}
+
+ConvexDomain2 makeDomain(const Rectangle& r) {
+  requireFinite(r.min, "rectangle.min");
+  requireFinite(r.max, "rectangle.max");
+  if (!(r.max.x() > r.min.x()) || !(r.max.y() > r.min.y()))
+    throw InputError("rectangle.max " + fmt3(r.max) + " must exceed rectangle.min " + fmt3(r.min) +
+                     " in x and y");
+  ConvexDomain2 d = polygonDomain({{r.min.x(), r.min.y()},
+                                   {r.max.x(), r.min.y()},
+                                   {r.max.x(), r.max.y()},
+                                   {r.min.x(), r.max.y()}});
+  d.is_rectangle = true;
+  d.center = (d.lo + d.hi) / 2;
+  return d;
+}
+
+ConvexDomain2 makeDomain(const Disk& disk) {
+  requireFinite(disk.center, "disk.center");
+  requirePositiveRadius(disk.radius, "disk");
+  if (disk.boundary_segments < 8 || disk.boundary_segments > (1 << 20))
+    throw InputError("disk.boundary_segments must be in [8, 1048576], got " +
+                     std::to_string(disk.boundary_segments));
+  const int n = disk.boundary_segments;
+  std::vector<Vec2> corners;
+  corners.reserve(n);
+  for (int k = 0; k < n; ++k) {
+    const double angle = 2 * std::numbers::pi * k / n;
+    corners.emplace_back(disk.center.x() + disk.radius * std::cos(angle),
+                         disk.center.y() + disk.radius * std::sin(angle));
+  }
+  ConvexDomain2 d = polygonDomain(std::move(corners));
+  d.center = Vec2(disk.center.x(), disk.center.y());
+  // The polygon's inradius, less a rounding margin.
+  d.inner_radius = disk.radius * std::cos(std::numbers::pi / n) * (1 - 1e-12);
+  return d;
+}
+
+ConvexDomain3 makeDomain(const Box& b) {
+  requireFinite(b.min, "box.min");
+  requireFinite(b.max, "box.max");
+  if (!(b.max.array() > b.min.array()).all())
+    throw InputError("box.max " + fmt3(b.max) + " must exceed box.min " + fmt3(b.min) +
+                     " in x, y and z");
+  return boxDomain(b.min, b.max);
+}
+
+Icosphere makeIcosphere(const Ball& b) {
+  const double t = (1 + std::sqrt(5.0)) / 2;
+  Icosphere s;
+  s.vertices = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0}, {0, -1, t}, {0, 1, t},
+                {0, -1, -t}, {0, 1, -t}, {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
+  for (Vec3& v : s.vertices) v.normalize();
+  s.triangles = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                 {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                 {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                 {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  for (int level = 0; level < b.subdivisions; ++level) {
+    std::map<std::pair<int, int>, int> midpoint;
+    auto mid = [&](int a, int c) {
+      const auto key = std::minmax(a, c);
+      auto it = midpoint.find(key);
+      if (it != midpoint.end()) return it->second;
+      s.vertices.push_back((s.vertices[a] + s.vertices[c]).normalized());
+      const int id = static_cast<int>(s.vertices.size()) - 1;
+      midpoint.emplace(key, id);
+      return id;
+    };
+    std::vector<std::array<int, 3>> finer;
+    finer.reserve(s.triangles.size() * 4);
+    for (const auto& tri : s.triangles) {
+      const int ab = mid(tri[0], tri[1]), bc = mid(tri[1], tri[2]), ca = mid(tri[2], tri[0]);
+      finer.push_back({tri[0], ab, ca});
+      finer.push_back({tri[1], bc, ab});
+      finer.push_back({tri[2], ca, bc});
+      finer.push_back({ab, bc, ca});
+    }
+    s.triangles = std::move(finer);
+  }
+  for (Vec3& v : s.vertices) v = b.center + b.radius * v;
+  return s;
+}
+
+ConvexDomain3 makeDomain(const Ball& b) {
+  requireFinite(b.center, "ball.center");
+  requirePositiveRadius(b.radius, "ball");
+  if (b.subdivisions < 0 || b.subdivisions > 6)
+    throw InputError("ball.subdivisions must be in [0, 6], got " + std::to_string(b.subdivisions));
+  const Icosphere sphere = makeIcosphere(b);
+  ConvexDomain3 d;
+  d.center = b.center;
+  d.lo = b.center - Vec3::Constant(b.radius);
+  d.hi = b.center + Vec3::Constant(b.radius);
+  d.scale = (d.hi - d.lo).norm();
+  double inradius = b.radius;
+  for (const auto& tri : sphere.triangles) {
+    const Vec3& p0 = sphere.vertices[tri[0]];
+    const Vec3& p1 = sphere.vertices[tri[1]];
+    const Vec3& p2 = sphere.vertices[tri[2]];
+    const Vec3 n = (p1 - p0).cross(p2 - p0).normalized();
+    d.faces.push_back({n, n.dot(p0)});
+    inradius = std::min(inradius, n.dot(p0) - n.dot(b.center));
+    // Volume of the cone from the centre over this triangle.
+    d.volume_value += (p0 - b.center).dot((p1 - b.center).cross(p2 - b.center)) / 6;
+  }
+  d.inner_radius = inradius * (1 - 1e-12);
+  return d;
+}
+
+}  // namespace tessella::detail
