@@ -1,0 +1,36 @@
+#pragma once
+// MeshOptions: the size and quality targets of a tissue mesh, in the tissue's
+// own length units. See docs/meshing.md for what each bound guarantees.
+
+namespace tessella {
+
+struct MeshOptions {
+  /// 2D and surface tissues: lower bound on every triangle angle, in degrees
+  /// (CGAL Delaunay refinement). Termination is proven up to 20.7 degrees;
+  /// values up to 33 usually work. Angles of the input (two walls meeting at
+  /// a sharp corner) cannot be improved, so triangles at such corners may be
+  /// sharper.
+  double min_angle_degrees = 20.0;
+  /// 2D and surface tissues: upper bound on every triangle edge length.
+  /// 0 = no size bound (only the quality bound refines).
+  double max_edge_length = 0.0;
+  /// 3D tissues: upper bound on every tetrahedron volume (TetGen -a).
+  /// 0 = no volume bound.
+  double max_volume = 0.0;
+  /// 3D tissues: upper bound on the circumradius / shortest edge ratio of
+  /// every tetrahedron (TetGen -q). Must be > 1; 2 is proven to terminate,
+  /// 1.2 - 1.5 is the usual choice.
+  double radius_edge_ratio = 1.5;
+  /// 3D tissues: TetGen's lower bound on dihedral angles (degrees) used
+  /// together with the radius-edge ratio (the second number of -q). 0 = off.
+  double min_dihedral_degrees = 0.0;
+  /// Relative tolerance (times the tissue's bounding-box diagonal) below
+  /// which a wall counts as planar (meshed as one polygon in 3D) and a
+  /// length/area as zero in the geometry check.
+  double tolerance = 1e-10;
+};
+
+/// Throws InputError naming the field and value when an option is out of range.
+void validateMeshOptions(const MeshOptions& options);
+
+}  // namespace tessella

@@ -1,0 +1,37 @@
+#pragma once
+// Internal: every wall of a 3D tissue as triangles over one point list (the
+// tissue's vertex slots, then one fan centre per wall slot). A planar wall is
+// its fan from the vertex mean when that fan is star-shaped, else a
+// constrained Delaunay triangulation of the polygon; a non-planar wall is its
+// fan, the very surface the tissue's geometry integrates over. Triangles run
+// the same way round as the wall loop (normal = the wall's normal).
+
+#include <array>
+#include <string>
+#include <vector>
+
+#include "tessella/mesh/geometry_check.hpp"
+#include "tessella/tissue/tissue.hpp"
+
+namespace tessella::mesh_detail {
+
+struct WallTriangulation {
+  std::vector<Vec3> points;  ///< vertex slots, then wall slots (fan centres)
+  std::vector<std::vector<std::array<int, 3>>> wall_triangles;  ///< per wall slot
+  std::vector<std::uint8_t> wall_planar;                         ///< per wall slot
+  std::vector<Vec3> wall_normal;                                 ///< unit, per wall slot
+  int centerPoint(WallId w) const { return static_cast<int>(vertex_slots + w.index()); }
+  std::size_t vertex_slots = 0;
+};
+
+/// Builds the triangulation and reports the first wall defect it meets
+/// (zero area, folded non-planar fan, non-simple polygon).
+MeshabilityReport triangulateWalls(const Tissue& t, double tolerance, WallTriangulation& out);
+
+/// The 3D part of the geometry check; fills `walls` for the volume mesher.
+MeshabilityReport checkVolumeGeometry(const Tissue& t, const MeshOptions& options, WallTriangulation& walls);
+
+/// Bounding-box diagonal of the live vertices (the length scale of tolerances).
+double tissueScale(const Tissue& t);
+
+}  // namespace tessella::mesh_detail
