@@ -1,0 +1,147 @@
+#include "tessella/solvers/linear_solver.hpp"
+
+#include "tessella/solvers/errors.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace tessella {
+
+std::string toString(SolverMethod method) {
+  switch (method) {
+    case SolverMethod::Auto: return "auto";
+    case SolverMethod::Direct: return "direct (SimplicialLDLT)";
+    case SolverMethod::ConjugateGradient: return "conjugate gradient";
+  }
+  return "unknown";
+}
+
+LinearSolver::LinearSolver(LinearSolverOptions options) : options_(options) {
+  if (!(options_.tolerance > 0.0)) throw InvalidProblemError("LinearSolver: tolerance must be > 0");
+  if (options_.max_iterations < 0) throw InvalidProblemError("LinearSolver: max_iterations must be >= 0");
+}
+
+// GCC 12 reports a false "null pointer dereference" inside Eigen's inlined
+// IncompleteCholesky code; silenced for this function only.
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wnull-dereference"
+#endif
+void LinearSolver::compute(const SparseMatrix& A) {
+  ready_ = false;
+  if (A.rows() != A.cols()) {
+    std::ostringstream msg;
+    msg << "LinearSolver: matrix is " << A.rows() << " x " << A.cols() << ", not square";
+    throw InvalidProblemError(msg.str());
+  }
+  const int n = static_cast<int>(A.rows());
+  method_ = options_.method;
+  if (method_ == SolverMethod::Auto)
+    method_ = n <= options_.auto_direct_max_unknowns ? SolverMethod::Direct : SolverMethod::ConjugateGradient;
+  matrix_ = A;
+  if (n == 0) {
+    ready_ = true;
+    return;
+  }
+
+  if (method_ == SolverMethod::Direct) {
+    ldlt_.compute(A);
+    if (ldlt_.info() != Eigen::Success)
+      throw FactorizationError("LinearSolver: LDL^T factorisation failed (matrix singular or not SPD)");
+    // SimplicialLDLT accepts indefinite and (numerically) singular matrices;
+    // the pivots tell: all must be positive and not round-off small.
+    const Eigen::VectorXd d = ldlt_.vectorD();
+    double dmax = 0.0, dmin = d[0];
+    for (Eigen::Index i = 0; i < d.size(); ++i) {
+      dmax = std::max(dmax, std::abs(d[i]));
+      dmin = std::min(dmin, d[i]);
+    }
+    if (!(dmax > 0.0) || !std::isfinite(dmax)) throw FactorizationError("LinearSolver: matrix is zero or not finite");
+    if (dmin <= options_.pivot_tolerance * dmax) {
+      std::ostringstream msg;
+      msg << "LinearSolver: matrix is " << (dmin < -options_.pivot_tolerance * dmax ? "not positive definite" : "singular")
+          << " (smallest LDL^T pivot " << dmin << ", largest " << dmax << ", n = " << n << ")";
+      throw FactorizationError(msg.str());
+    }
+  } else {
+    const int max_it = options_.max_iterations > 0 ? options_.max_iterations : 2 * n;
+    if (options_.preconditioner == Preconditioner::Jacobi) {
+      cg_jacobi_.setTolerance(options_.tolerance);
+      cg_jacobi_.setMaxIterations(max_it);
+      cg_jacobi_.compute(matrix_);
+      if (cg_jacobi_.info() != Eigen::Success) throw FactorizationError("LinearSolver: Jacobi preconditioner setup failed");
+    } else {
+      cg_ichol_.setTolerance(options_.tolerance);
+      cg_ichol_.setMaxIterations(max_it);
+      cg_ichol_.compute(matrix_);
+      if (cg_ichol_.info() != Eigen::Success)
+        throw FactorizationError("LinearSolver: incomplete Cholesky failed (matrix not SPD?)");
+    }
+  }
+  ready_ = true;
+}
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC diagnostic pop
+#endif
+
+Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b, const Eigen::VectorXd& x0) {
+  if (!ready_) throw SolverError("LinearSolver::solve called before a successful compute()");
+  const int n = static_cast<int>(matrix_.rows());
+  if (b.size() != n) {
+    std::ostringstream msg;
+    msg << "LinearSolver: right-hand side has size " << b.size() << ", matrix has " << n << " rows";
+    throw InvalidProblemError(msg.str());
+  }
+  report_ = SolveReport{};
+  report_.method = method_;
+  report_.unknowns = n;
+  const double bnorm = b.norm();
+  if (n == 0 || bnorm == 0.0) return Eigen::VectorXd::Zero(n);  // A SPD => x = 0 exactly
+
+  Eigen::VectorXd x;
+  if (method_ == SolverMethod::Direct) {
+    x = ldlt_.solve(b);
+    if (ldlt_.info() != Eigen::Success) throw FactorizationError("LinearSolver: LDL^T solve failed");
+  } else {
+    const bool warm = x0.size() == n;
+    // Eigen's iterations() does not count the step on which CG converged; we
+    // report CG steps done: 0 only if the initial guess already satisfies the tolerance.
+    const bool converged_at_start = warm && (b - matrix_ * x0).norm() <= options_.tolerance * bnorm;
+    int iterations = 0;
+    Eigen::ComputationInfo info;
+    if (options_.preconditioner == Preconditioner::Jacobi) {
+      x = warm ? Eigen::VectorXd(cg_jacobi_.solveWithGuess(b, x0)) : Eigen::VectorXd(cg_jacobi_.solve(b));
+      iterations = static_cast<int>(cg_jacobi_.iterations());
+      info = cg_jacobi_.info();
+    } else {
+      x = warm ? Eigen::VectorXd(cg_ichol_.solveWithGuess(b, x0)) : Eigen::VectorXd(cg_ichol_.solve(b));
+      iterations = static_cast<int>(cg_ichol_.iterations());
+      info = cg_ichol_.info();
+    }
+    if (info == Eigen::Success && !converged_at_start) ++iterations;
+    report_.iterations = iterations;
+    if (info != Eigen::Success) {
+      const double res = (b - matrix_ * x).norm() / bnorm;
+      std::ostringstream msg;
+      msg << "LinearSolver: conjugate gradient did not converge in " << iterations << " iterations (relative residual "
+          << res << ", tolerance " << options_.tolerance << ", n = " << n << ")";
+      throw ConvergenceError(msg.str());
+    }
+  }
+  // The residual is measured, not taken from the solver, so both methods report alike.
+  report_.relative_residual = (b - matrix_ * x).norm() / bnorm;
+  if (!std::isfinite(report_.relative_residual)) throw FactorizationError("LinearSolver: solution is not finite");
+  return x;
+}
+
+Eigen::VectorXd solveLinear(const SparseMatrix& A, const Eigen::VectorXd& b, const LinearSolverOptions& options,
+                            SolveReport* report) {
+  LinearSolver solver(options);
+  solver.compute(A);
+  Eigen::VectorXd x = solver.solve(b);
+  if (report) *report = solver.lastReport();
+  return x;
+}
+
+}  // namespace tessella

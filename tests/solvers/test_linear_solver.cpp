@@ -1,0 +1,129 @@
+// LinearSolver: both methods solve SPD systems to their tolerance, report what
+// they did, and refuse singular / indefinite matrices or non-convergence.
+#include <catch2/catch.hpp>
+
+#include "tessella/solvers/errors.hpp"
+#include "tessella/solvers/linear_solver.hpp"
+
+#include <vector>
+
+using namespace tessella;
+
+namespace {
+
+// 1D Laplacian with Dirichlet ends (tridiagonal 2, -1): SPD, cond ~ n^2.
+SparseMatrix laplacian1d(int n, bool neumann = false) {
+  std::vector<Eigen::Triplet<double>> t;
+  for (int i = 0; i < n; ++i) {
+    double diag = 2.0;
+    if (neumann && (i == 0 || i == n - 1)) diag = 1.0;  // rows sum to 0: singular
+    t.emplace_back(i, i, diag);
+    if (i > 0) t.emplace_back(i, i - 1, -1.0);
+    if (i + 1 < n) t.emplace_back(i, i + 1, -1.0);
+  }
+  SparseMatrix A(n, n);
+  A.setFromTriplets(t.begin(), t.end());
+  return A;
+}
+
+}  // namespace
+
+TEST_CASE("LinearSolver solves an SPD system with every method", "[solvers][linear]") {
+  const int n = 300;
+  const SparseMatrix A = laplacian1d(n);
+  Eigen::VectorXd x_true(n);
+  for (int i = 0; i < n; ++i) x_true[i] = std::sin(0.05 * i) + 0.01 * i;
+  const Eigen::VectorXd b = A * x_true;
+
+  struct Case {
+    SolverMethod method;
+    Preconditioner pre;
+  };
+  for (const Case c : {Case{SolverMethod::Direct, Preconditioner::Jacobi},
+                       Case{SolverMethod::ConjugateGradient, Preconditioner::Jacobi},
+                       Case{SolverMethod::ConjugateGradient, Preconditioner::IncompleteCholesky}}) {
+    LinearSolverOptions opt;
+    opt.method = c.method;
+    opt.preconditioner = c.pre;
+    opt.tolerance = 1e-12;
+    LinearSolver solver(opt);
+    solver.compute(A);
+    const Eigen::VectorXd x = solver.solve(b);
+    const SolveReport& r = solver.lastReport();
+    CHECK(r.method == c.method);
+    CHECK(r.unknowns == n);
+    CHECK(r.relative_residual <= 1e-12);
+    CHECK(r.relative_residual == Approx((b - A * x).norm() / b.norm()).margin(1e-18));
+    // cond(A) ~ 4e4: the error is bounded by cond * residual.
+    CHECK((x - x_true).norm() / x_true.norm() < 1e-7);
+    if (c.method == SolverMethod::Direct) {
+      CHECK(r.iterations == 0);
+    } else {
+      CHECK(r.iterations > 0);
+    }
+  }
+}
+
+TEST_CASE("LinearSolver Auto picks direct for small and CG for large systems", "[solvers][linear]") {
+  LinearSolverOptions opt;
+  opt.auto_direct_max_unknowns = 100;
+  LinearSolver small(opt), large(opt);
+  small.compute(laplacian1d(100));
+  large.compute(laplacian1d(101));
+  CHECK(small.method() == SolverMethod::Direct);
+  CHECK(large.method() == SolverMethod::ConjugateGradient);
+  const Eigen::VectorXd b = Eigen::VectorXd::Ones(101);
+  const Eigen::VectorXd x = large.solve(b);
+  CHECK((laplacian1d(101) * x - b).norm() <= 1e-10 * b.norm());
+}
+
+TEST_CASE("LinearSolver rejects singular and indefinite matrices", "[solvers][linear]") {
+  LinearSolverOptions opt;
+  opt.method = SolverMethod::Direct;
+  LinearSolver solver(opt);
+  CHECK_THROWS_AS(solver.compute(laplacian1d(50, /*neumann=*/true)), FactorizationError);
+  CHECK_FALSE(solver.ready());
+  CHECK_THROWS_AS(solver.solve(Eigen::VectorXd::Ones(50)), SolverError);
+
+  SparseMatrix indefinite(3, 3);
+  indefinite.insert(0, 0) = 1.0;
+  indefinite.insert(1, 1) = -1.0;
+  indefinite.insert(2, 2) = 2.0;
+  CHECK_THROWS_AS(solver.compute(indefinite), FactorizationError);
+
+  SparseMatrix rect(3, 2);
+  CHECK_THROWS_AS(solver.compute(rect), InvalidProblemError);
+}
+
+TEST_CASE("LinearSolver reports a non-converged CG solve", "[solvers][linear]") {
+  LinearSolverOptions opt;
+  opt.method = SolverMethod::ConjugateGradient;
+  opt.preconditioner = Preconditioner::Jacobi;
+  opt.max_iterations = 3;
+  LinearSolver solver(opt);
+  solver.compute(laplacian1d(400));
+  try {
+    solver.solve(Eigen::VectorXd::Ones(400));
+    FAIL("expected ConvergenceError");
+  } catch (const ConvergenceError& e) {
+    CHECK(std::string(e.what()).find("did not converge in 3 iterations") != std::string::npos);
+  }
+}
+
+TEST_CASE("LinearSolver: zero right-hand side gives zero, CG warm start converges at once", "[solvers][linear]") {
+  const SparseMatrix A = laplacian1d(80);
+  LinearSolverOptions opt;
+  opt.method = SolverMethod::ConjugateGradient;
+  opt.preconditioner = Preconditioner::Jacobi;  // (incomplete Cholesky is exact on a tridiagonal matrix)
+  LinearSolver solver(opt);
+  solver.compute(A);
+  CHECK(solver.solve(Eigen::VectorXd::Zero(80)).isZero(0.0));
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(80, 1.0, 2.0);
+  const Eigen::VectorXd x = solver.solve(b);
+  const int cold = solver.lastReport().iterations;
+  CHECK(cold > 1);
+  solver.solve(b, x);
+  CHECK(solver.lastReport().iterations < cold);
+  solver.solve(b, solver.solve(b, x));  // an exact guess needs no step at all
+  CHECK(solver.lastReport().iterations <= 1);
+}
