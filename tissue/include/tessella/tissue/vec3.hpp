@@ -5,6 +5,7 @@
 #include <array>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross products
 
 namespace tessella {
 

@@ -1,0 +1,55 @@
+#include <catch2/catch.hpp>
+
+#include "tessella/tissue/handles.hpp"
+#include "tessella/tissue/ragged_array.hpp"
+
+using namespace tessella;
+
+TEST_CASE("handles are invalid by default and typed", "[tissue][handles]") {
+  VertexId v;
+  CHECK_FALSE(v.valid());
+  CHECK(VertexId(3).valid());
+  CHECK(VertexId(3) == VertexId(3));
+  CHECK(VertexId(2) < VertexId(3));
+  STATIC_REQUIRE_FALSE(std::is_convertible_v<VertexId, EdgeId>);
+  OrientedEdge oe(EdgeId(7), true);
+  CHECK(oe.handle() == EdgeId(7));
+  CHECK(oe.reversed());
+  CHECK(oe.sign() == -1);
+  CHECK(oe.flipped().sign() == 1);
+  CHECK_FALSE(OrientedEdge().handle().valid());
+}
+
+TEST_CASE("ragged array keeps lists through growth, relocation and compaction", "[tissue][ragged]") {
+  RaggedArray<int> r;
+  for (int i = 0; i < 100; ++i) r.pushList({i, i + 1});
+  // Grow every list well past its capacity: lists relocate, garbage gets repacked.
+  for (int round = 0; round < 20; ++round)
+    for (int i = 0; i < 100; ++i) r.pushBack(i, 1000 * round + i);
+  for (int i = 0; i < 100; ++i) {
+    auto l = r[i];
+    REQUIRE(l.size() == 22);
+    CHECK(l[0] == i);
+    CHECK(l[1] == i + 1);
+    CHECK(l[21] == 19000 + i);
+  }
+  r.insert(5, 0, -1);
+  CHECK(r[5][0] == -1);
+  CHECK(r.eraseValue(5, -1));
+  CHECK_FALSE(r.eraseValue(5, -12345));
+  CHECK(r.replaceValue(5, 5, 55));
+  CHECK(r[5][0] == 55);
+  // Assigning a list from a view of itself must not read freed memory.
+  std::vector<int> longer(r[7].begin(), r[7].end());
+  longer.insert(longer.end(), 50, 9);
+  r.assign(7, longer);
+  CHECK(r[7].size() == 72);
+  std::vector<Index> map(100, kInvalidIndex);
+  map[7] = 0;
+  map[3] = 1;
+  r.compact(map, 2, [](int x) { return x * 2; });
+  REQUIRE(r.size() == 2);
+  CHECK(r[0].size() == 72);
+  CHECK(r[0][0] == 14);
+  CHECK(r[1][0] == 6);
+}
