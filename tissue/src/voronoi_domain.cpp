@@ -11,6 +11,8 @@
 #include <sstream>
 #include <utility>
 
+#include <Eigen/Geometry>
+
 #include "tessella/tissue/errors.hpp"
 
 namespace tessella::detail {

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <string>
 
+#include <Eigen/Geometry>
+
 #include "tessella/tissue/errors.hpp"
 
 namespace tessella::detail {
