@@ -14,41 +14,45 @@ namespace tessella::detail {
 template <typename At>
 inline void polygonKernel(std::size_t n, At at, bool planar, bool moments, double& area,
                           Vec3& centroid, Vec3& normal, Mat3* second_moment) {
-  Vec3 c0 = Vec3::Zero();
-  for (std::size_t i = 0; i < n; ++i) c0 += at(i);
-  c0 /= static_cast<double>(n);
   if (planar) {
-    // Shoelace in the z = 0 plane about the vertex mean (for conditioning).
+    // Shoelace in the z = 0 plane, one pass, about the first vertex (any
+    // origin gives the same exact result; a local one keeps it well conditioned).
+    const Vec3 o = at(0);
     double a2 = 0, cx = 0, cy = 0, ixx = 0, iyy = 0, ixy = 0;
-    Vec3 p = at(n - 1) - c0;
+    double px = at(n - 1).x() - o.x(), py = at(n - 1).y() - o.y();
     for (std::size_t i = 0; i < n; ++i) {
-      const Vec3 q = at(i) - c0;
-      const double cr = p.x() * q.y() - q.x() * p.y();
+      const Vec3& qv = at(i);
+      const double qx = qv.x() - o.x(), qy = qv.y() - o.y();
+      const double cr = px * qy - qx * py;
       a2 += cr;
-      cx += (p.x() + q.x()) * cr;
-      cy += (p.y() + q.y()) * cr;
+      cx += (px + qx) * cr;
+      cy += (py + qy) * cr;
       if (moments) {
-        ixx += (p.x() * p.x() + p.x() * q.x() + q.x() * q.x()) * cr;
-        iyy += (p.y() * p.y() + p.y() * q.y() + q.y() * q.y()) * cr;
-        ixy += (p.x() * q.y() + 2 * p.x() * p.y() + 2 * q.x() * q.y() + q.x() * p.y()) * cr;
+        ixx += (px * px + px * qx + qx * qx) * cr;
+        iyy += (py * py + py * qy + qy * qy) * cr;
+        ixy += (px * qy + 2 * px * py + 2 * qx * qy + qx * py) * cr;
       }
-      p = q;
+      px = qx;
+      py = qy;
     }
     const double signed_area = 0.5 * a2;
     const double s = signed_area < 0 ? -1.0 : 1.0;
     area = s * signed_area;
     normal = Vec3(0, 0, signed_area == 0 ? 0.0 : s);
-    const Vec3 g = signed_area == 0 ? Vec3::Zero() : Vec3(cx / (3 * a2), cy / (3 * a2), 0.0);
-    centroid = c0 + g;
+    const double gx = signed_area == 0 ? 0.0 : cx / (3 * a2), gy = signed_area == 0 ? 0.0 : cy / (3 * a2);
+    centroid = Vec3(o.x() + gx, o.y() + gy, o.z());
     if (moments && second_moment) {
       Mat3 m = Mat3::Zero();
-      m(0, 0) = s * ixx / 12 - area * g.x() * g.x();
-      m(1, 1) = s * iyy / 12 - area * g.y() * g.y();
-      m(0, 1) = m(1, 0) = s * ixy / 24 - area * g.x() * g.y();
+      m(0, 0) = s * ixx / 12 - area * gx * gx;
+      m(1, 1) = s * iyy / 12 - area * gy * gy;
+      m(0, 1) = m(1, 0) = s * ixy / 24 - area * gx * gy;
       *second_moment = m;
     }
     return;
   }
+  Vec3 c0 = Vec3::Zero();
+  for (std::size_t i = 0; i < n; ++i) c0 += at(i);
+  c0 /= static_cast<double>(n);
   // General (surface or 3D wall): signed fan from the vertex mean.
   Vec3 vec_area = Vec3::Zero();
   Vec3 p = at(n - 1) - c0;
