@@ -7,7 +7,7 @@
 #include <cmath>
 #include <sstream>
 #include <string>
-#include <unordered_map>
+#include <stdexcept>
 
 #include "polygon_kernels.hpp"
 #include "tessella/tissue/errors.hpp"
@@ -54,6 +54,44 @@ double edgeParameter(const Vec3& a, const Vec3& b, const Vec3& point, EdgeId e) 
                         {1, e.index()});
   return t;
 }
+
+// A tiny map over a handful of keys (a cell's vertices, the nodes of one
+// cut): linear search in a vector beats hashing at these sizes and does not
+// allocate per entry.
+template <typename K, typename V>
+class SmallMap {
+ public:
+  V& operator[](const K& k) {
+    for (auto& [key, value] : items_)
+      if (key == k) return value;
+    items_.emplace_back(k, V{});
+    return items_.back().second;
+  }
+  void set(const K& k, const V& v) {
+    for (auto& [key, value] : items_)
+      if (key == k) {
+        value = v;
+        return;
+      }
+    items_.emplace_back(k, v);
+  }
+  const V& at(const K& k) const {
+    for (const auto& [key, value] : items_)
+      if (key == k) return value;
+    throw std::out_of_range("SmallMap::at");
+  }
+  const V* find(const K& k) const {
+    for (const auto& [key, value] : items_)
+      if (key == k) return &value;
+    return nullptr;
+  }
+  auto begin() const { return items_.begin(); }
+  auto end() const { return items_.end(); }
+  std::size_t size() const { return items_.size(); }
+
+ private:
+  std::vector<std::pair<K, V>> items_;
+};
 
 }  // namespace
 
@@ -295,7 +333,7 @@ CellSplit Tissue::splitCell3D(CellId c, const Plane& plane, const SplitOptions& 
   const double tol = options.snap_tolerance * std::cbrt(volume);
 
   // Signed distances of the cell's vertices, snapped to the plane.
-  std::unordered_map<Index, double> dist;
+  SmallMap<Index, double> dist;
   bool any_pos = false, any_neg = false;
   for (VertexId v : cellVertices(c)) {
     double dv = normal.dot(position(v) - plane.point);
@@ -312,10 +350,10 @@ CellSplit Tissue::splitCell3D(CellId c, const Plane& plane, const SplitOptions& 
   using Key = std::int64_t;
   auto vkey = [](VertexId v) { return static_cast<Key>(v.index()); };
   auto ekey = [](EdgeId e) { return -static_cast<Key>(e.index()) - 1; };
-  std::unordered_map<Key, Vec3> node_point;
+  SmallMap<Key, Vec3> node_point;
   std::vector<std::pair<Key, Key>> segments;
   std::vector<std::tuple<FaceId, Key, Key>> face_cuts;
-  std::unordered_map<Index, int> face_side;
+  SmallMap<Index, int> face_side;
   const std::vector<OrientedFace> faces(complex_.volumeFaces(vol).begin(), complex_.volumeFaces(vol).end());
   for (OrientedFace of : faces) {
     const FaceId f = of.handle();
@@ -328,11 +366,11 @@ CellSplit Tissue::splitCell3D(CellId c, const Plane& plane, const SplitOptions& 
       neg |= da < 0;
       if (da == 0) {
         nodes.push_back(vkey(a));
-        node_point[vkey(a)] = position(a);
+        node_point.set(vkey(a), position(a));
       } else if (da * db < 0) {
         nodes.push_back(ekey(oe.handle()));
         const double t = da / (da - db);
-        node_point[ekey(oe.handle())] = position(a) + t * (position(b) - position(a));
+        node_point.set(ekey(oe.handle()), position(a) + t * (position(b) - position(a)));
       }
     }
     if (pos && neg) {
@@ -350,19 +388,19 @@ CellSplit Tissue::splitCell3D(CellId c, const Plane& plane, const SplitOptions& 
     }
   }
   // Existing edges on the plane between a positive and a negative face.
-  std::unordered_map<Index, int> edge_sides;
+  SmallMap<Index, int> edge_sides;
   for (OrientedFace of : faces) {
-    auto it = face_side.find(of.handle().index());
-    if (it == face_side.end()) continue;
+    const int* side = face_side.find(of.handle().index());
+    if (!side) continue;
     for (OrientedEdge oe : complex_.faceEdges(of.handle())) {
       const VertexId a = complex_.tail(oe), b = complex_.head(oe);
       if (D(a) != 0 || D(b) != 0) continue;
-      edge_sides[oe.handle().index()] += it->second > 0 ? 1 : 2;
+      edge_sides[oe.handle().index()] += *side > 0 ? 1 : 2;
       if (edge_sides[oe.handle().index()] == 3) segments.emplace_back(vkey(a), vkey(b));
     }
   }
   // The segments must form exactly one closed loop.
-  std::unordered_map<Key, std::vector<Key>> adj;
+  SmallMap<Key, std::vector<Key>> adj;
   for (auto [a, b] : segments) {
     adj[a].push_back(b);
     adj[b].push_back(a);
@@ -422,7 +460,7 @@ CellSplit Tissue::splitCell3D(CellId c, const Plane& plane, const SplitOptions& 
 
   // --- edit: split crossed edges, then crossed walls, then the volume --------
   CellSplit result;
-  std::unordered_map<Key, VertexId> node_vertex;
+  SmallMap<Key, VertexId> node_vertex;
   for (Key k : ring) {
     if (k >= 0) {
       node_vertex[k] = VertexId(static_cast<Index>(k));
