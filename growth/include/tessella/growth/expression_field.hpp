@@ -1,0 +1,50 @@
+#pragma once
+// A velocity field written as three expressions (muparser syntax) of x, y, z,
+// t and named parameters, e.g. vx = "r*x", vy = "r*y", vz = "0".
+// Expressions are parsed once, at construction: a syntax error or an unknown
+// name raises InputError quoting the component, the expression, muparser's
+// message and the character position. Batched evaluation uses muparser's bulk
+// mode with one parser set per OpenMP thread (a parser is not thread-safe).
+
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "tessella/growth/velocity_field.hpp"
+
+namespace tessella::growth {
+
+struct ExpressionFieldSpec {
+  std::string vx = "0";
+  std::string vy = "0";
+  std::string vz = "0";
+  /// Named constants usable in the expressions (not x, y, z or t).
+  std::map<std::string, double> parameters{};
+};
+
+class ExpressionField final : public VelocityField {
+ public:
+  explicit ExpressionField(ExpressionFieldSpec spec);
+  ~ExpressionField() override;
+  ExpressionField(const ExpressionField&) = delete;
+  ExpressionField& operator=(const ExpressionField&) = delete;
+
+  Vec3 velocity(const Vec3& x, double t) const override;
+  void velocities(std::span<const Vec3> x, double t, std::span<Vec3> out) const override;
+  std::string describe() const override;
+  const ExpressionFieldSpec& spec() const { return spec_; }
+
+ private:
+  struct Workspace;  // three parsers and their variable buffers
+  std::unique_ptr<Workspace> makeWorkspace() const;
+
+  ExpressionFieldSpec spec_;
+  // One workspace per OpenMP thread, grown before each parallel region; the
+  // mutex makes concurrent calls from outside OpenMP safe (they serialise).
+  mutable std::mutex mutex_;
+  mutable std::vector<std::unique_ptr<Workspace>> workspaces_;
+};
+
+}  // namespace tessella::growth

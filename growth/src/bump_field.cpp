@@ -1,0 +1,42 @@
+#include "tessella/growth/bump_field.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "tessella/tissue/errors.hpp"
+
+namespace tessella::growth {
+
+BumpField::BumpField(const BumpFieldParams& params) : p_(params) {
+  if (!std::isfinite(p_.a) || !std::isfinite(p_.b) || !std::isfinite(p_.h) || !std::isfinite(p_.x0))
+    throw InputError("bump field: parameters a, b, h, x0 must be finite");
+  if (p_.h <= 0)
+    throw InputError("bump field: h = " + std::to_string(p_.h) + " must be > 0 (squared bump width)");
+  if (p_.b < 0)
+    throw InputError("bump field: b = " + std::to_string(p_.b) +
+                     " must be >= 0 (the bump width h + b t would vanish)");
+}
+
+Vec3 BumpField::velocity(const Vec3& x, double t) const {
+  const double w = p_.h + p_.b * t;  // squared width at time t
+  if (w <= 0)
+    throw InputError("bump field evaluated at t = " + std::to_string(t) + " where h + b t <= 0");
+  const double dx = x.x() - p_.x0;
+  const double x2 = dx * dx;
+  return Vec3(0.0, p_.a * (1.0 + p_.b * t * x2 / (w * w)) * std::exp(-x2 / w), 0.0);
+}
+
+double BumpField::displacement(double x, double t0, double t1) const {
+  const double dx = x - p_.x0;
+  const double x2 = dx * dx;
+  auto f = [&](double t) { return t * std::exp(-x2 / (p_.h + p_.b * t)); };
+  return p_.a * (f(t1) - f(t0));
+}
+
+std::string BumpField::describe() const {
+  std::ostringstream s;
+  s << "bump field a=" << p_.a << " b=" << p_.b << " h=" << p_.h << " x0=" << p_.x0;
+  return s.str();
+}
+
+}  // namespace tessella::growth

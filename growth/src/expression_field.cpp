@@ -1,0 +1,130 @@
+#include "tessella/growth/expression_field.hpp"
+
+#include <muParser.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "tessella/tissue/errors.hpp"
+
+namespace tessella::growth {
+
+namespace {
+
+constexpr std::array<const char*, 3> kComponent = {"vx", "vy", "vz"};
+
+bool reservedName(const std::string& name) {
+  return name == "x" || name == "y" || name == "z" || name == "t";
+}
+
+}  // namespace
+
+// In bulk mode muparser reads every variable as an array indexed by the bulk
+// position, so x, y, z and t each get a buffer of the batch size.
+struct ExpressionField::Workspace {
+  std::array<mu::Parser, 3> parsers;
+  std::vector<double> x, y, z, t;
+  std::array<std::vector<double>, 3> result;
+  std::size_t capacity = 0;
+
+  void define(std::size_t n) {
+    if (n <= capacity && capacity > 0) return;
+    capacity = std::max<std::size_t>(n, 1);
+    for (auto* b : {&x, &y, &z, &t}) b->assign(capacity, 0.0);
+    for (auto& r : result) r.assign(capacity, 0.0);
+    for (auto& p : parsers) {  // redefining a variable re-links the parsed bytecode
+      p.DefineVar("x", x.data());
+      p.DefineVar("y", y.data());
+      p.DefineVar("z", z.data());
+      p.DefineVar("t", t.data());
+    }
+  }
+};
+
+std::unique_ptr<ExpressionField::Workspace> ExpressionField::makeWorkspace() const {
+  auto ws = std::make_unique<Workspace>();
+  const std::array<const std::string*, 3> exprs = {&spec_.vx, &spec_.vy, &spec_.vz};
+  for (int c = 0; c < 3; ++c) {
+    mu::Parser& p = ws->parsers[c];
+    try {
+      for (const auto& [name, value] : spec_.parameters) p.DefineConst(name, value);
+      p.SetExpr(*exprs[c]);
+    } catch (const mu::Parser::exception_type& e) {
+      throw InputError(std::string("velocity expression ") + kComponent[c] + " = \"" + *exprs[c] +
+                       "\": " + e.GetMsg() + " (at position " + std::to_string(e.GetPos()) + ")");
+    }
+  }
+  ws->define(1);
+  for (int c = 0; c < 3; ++c) {
+    try {
+      ws->parsers[c].Eval();  // forces the parse: unknown names and syntax errors surface here
+    } catch (const mu::Parser::exception_type& e) {
+      const std::string token = e.GetToken().empty() ? "" : " near '" + e.GetToken() + "'";
+      throw InputError(std::string("velocity expression ") + kComponent[c] + " = \"" + *exprs[c] +
+                       "\": " + e.GetMsg() + token + " (at position " + std::to_string(e.GetPos()) +
+                       ")");
+    }
+  }
+  return ws;
+}
+
+ExpressionField::ExpressionField(ExpressionFieldSpec spec) : spec_(std::move(spec)) {
+  for (const auto& [name, value] : spec_.parameters) {
+    if (reservedName(name))
+      throw InputError("velocity expression parameter '" + name +
+                       "' clashes with a variable (x, y, z and t are reserved)");
+    if (!std::isfinite(value))
+      throw InputError("velocity expression parameter '" + name + "' = " + std::to_string(value) +
+                       " is not finite");
+  }
+  workspaces_.push_back(makeWorkspace());  // parses, so errors surface at construction
+}
+
+ExpressionField::~ExpressionField() = default;
+
+Vec3 ExpressionField::velocity(const Vec3& x, double t) const {
+  std::lock_guard lock(mutex_);
+  Workspace& ws = *workspaces_.front();
+  ws.x[0] = x.x();
+  ws.y[0] = x.y();
+  ws.z[0] = x.z();
+  ws.t[0] = t;
+  Vec3 v;
+  for (int c = 0; c < 3; ++c) v[c] = ws.parsers[c].Eval();
+  return v;
+}
+
+void ExpressionField::velocities(std::span<const Vec3> x, double t, std::span<Vec3> out) const {
+  std::lock_guard lock(mutex_);
+  const std::size_t threads = static_cast<std::size_t>(std::max(1, omp_get_max_threads()));
+  while (workspaces_.size() < threads) workspaces_.push_back(makeWorkspace());
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(x.size());
+  // Each thread evaluates one contiguous chunk in bulk mode with its own parsers.
+#pragma omp parallel num_threads(static_cast<int>(threads))
+  {
+    const std::ptrdiff_t nt = omp_get_num_threads(), id = omp_get_thread_num();
+    const std::ptrdiff_t begin = n * id / nt, end = n * (id + 1) / nt, m = end - begin;
+    if (m > 0) {
+      Workspace& ws = *workspaces_[static_cast<std::size_t>(id)];
+      ws.define(static_cast<std::size_t>(m));
+      for (std::ptrdiff_t i = 0; i < m; ++i) {
+        const Vec3& p = x[begin + i];
+        ws.x[i] = p.x();
+        ws.y[i] = p.y();
+        ws.z[i] = p.z();
+        ws.t[i] = t;
+      }
+      for (int c = 0; c < 3; ++c) ws.parsers[c].Eval(ws.result[c].data(), static_cast<int>(m));
+      for (std::ptrdiff_t i = 0; i < m; ++i)
+        out[begin + i] = Vec3(ws.result[0][i], ws.result[1][i], ws.result[2][i]);
+    }
+  }
+}
+
+std::string ExpressionField::describe() const {
+  return "expression field (" + spec_.vx + ", " + spec_.vy + ", " + spec_.vz + ")";
+}
+
+}  // namespace tessella::growth

@@ -1,0 +1,37 @@
+#include "tessella/growth/linear_field.hpp"
+
+#include <sstream>
+
+#include "tessella/tissue/errors.hpp"
+
+namespace tessella::growth {
+
+LinearField::LinearField(const Mat3& rate, const Vec3& center) : rate_(rate), center_(center) {
+  if (!rate_.allFinite() || !center_.allFinite())
+    throw InputError("linear growth field: the rate tensor and centre must be finite");
+}
+
+Vec3 LinearField::velocity(const Vec3& x, double) const { return rate_ * (x - center_); }
+
+void LinearField::velocities(std::span<const Vec3> x, double, std::span<Vec3> out) const {
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(x.size());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t i = 0; i < n; ++i) out[i] = rate_ * (x[i] - center_);
+}
+
+std::string LinearField::describe() const {
+  std::ostringstream s;
+  s << "linear field G = [" << rate_.row(0) << "; " << rate_.row(1) << "; " << rate_.row(2)
+    << "] about (" << center_.transpose() << ")";
+  return s.str();
+}
+
+LinearField uniformExpansion(double rate, const Vec3& center) {
+  return LinearField(rate * Mat3::Identity(), center);
+}
+
+LinearField anisotropicGrowth(const Vec3& axis_rates, const Vec3& center) {
+  return LinearField(axis_rates.asDiagonal().toDenseMatrix(), center);
+}
+
+}  // namespace tessella::growth

@@ -1,0 +1,37 @@
+#include "tessella/growth/radial_field.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "tessella/tissue/errors.hpp"
+
+namespace tessella::growth {
+
+RadialField::RadialField(const RadialFieldParams& params) : p_(params) {
+  if (!p_.center.allFinite() || !p_.axis.allFinite() || !std::isfinite(p_.rate) ||
+      !std::isfinite(p_.exponent))
+    throw InputError("radial growth field: centre, axis, rate and exponent must be finite");
+  if (p_.exponent < 0)
+    throw InputError("radial growth field: exponent = " + std::to_string(p_.exponent) +
+                     " must be >= 0 (a negative one is singular at the centre)");
+  if (p_.axis.norm() > 0) p_.axis.normalize();
+}
+
+Vec3 RadialField::velocity(const Vec3& x, double) const {
+  Vec3 d = x - p_.center;
+  if (p_.axis.squaredNorm() > 0) d -= d.dot(p_.axis) * p_.axis;
+  const double r = d.norm();
+  if (r == 0) return Vec3::Zero();  // the centre does not move (for any exponent)
+  // speed = rate * r^exponent along d / r
+  return p_.rate * std::pow(r, p_.exponent - 1.0) * d;
+}
+
+std::string RadialField::describe() const {
+  std::ostringstream s;
+  s << "radial field rate " << p_.rate << " exponent " << p_.exponent << " from ("
+    << p_.center.transpose() << ")";
+  if (p_.axis.squaredNorm() > 0) s << " axis (" << p_.axis.transpose() << ")";
+  return s.str();
+}
+
+}  // namespace tessella::growth
