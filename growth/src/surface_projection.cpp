@@ -1,0 +1,55 @@
+#include "tessella/growth/surface_projection.hpp"
+
+#include <cmath>
+#include <string>
+
+#include "tessella/tissue/errors.hpp"
+
+namespace tessella::growth {
+
+SurfaceProjection sphereProjection(const Vec3& center, double radius) {
+  if (!(radius > 0) || !std::isfinite(radius))
+    throw InputError("sphere projection: radius = " + std::to_string(radius) + " must be > 0");
+  return [center, radius](const Vec3& p) -> Vec3 {
+    const Vec3 d = p - center;
+    const double n = d.norm();
+    if (n == 0) return center + radius * Vec3::UnitZ();  // any point is nearest; take the pole
+    return center + (radius / n) * d;
+  };
+}
+
+SurfaceProjection paraboloidProjection(const Vec3& apex, double curvature) {
+  if (!(curvature > 0) || !std::isfinite(curvature))
+    throw InputError("paraboloid projection: curvature = " + std::to_string(curvature) +
+                     " must be > 0");
+  return [apex, curvature](const Vec3& p) -> Vec3 {
+    // Work in the meridian plane: point (r0, z0) relative to the apex, surface
+    // z = -k r^2. The nearest point r minimises (r - r0)^2 + (-k r^2 - z0)^2:
+    // g(r) = r - r0 + 2 k r (k r^2 + z0) = 0, a cubic with g' = 1 + 2k z0 + 6k^2 r^2.
+    const Vec3 d = p - apex;
+    const double r0 = std::hypot(d.x(), d.y()), z0 = d.z(), k = curvature;
+    double r = r0;  // start from the vertical projection
+    for (int it = 0; it < 50; ++it) {
+      const double g = r - r0 + 2 * k * r * (k * r * r + z0);
+      double dg = 1 + 2 * k * z0 + 6 * k * k * r * r;
+      if (dg <= 1e-12) dg = 1e-12;  // far above the focus: the cubic may have 3 roots; stay monotone
+      const double step = g / dg;
+      r -= step;
+      if (r < 0) r = 0;
+      if (std::abs(step) <= 1e-15 * (1 + std::abs(r))) break;
+    }
+    Vec3 out = apex;
+    if (r0 > 0) {
+      out.x() += d.x() * (r / r0);
+      out.y() += d.y() * (r / r0);
+    }
+    out.z() += -k * r * r;
+    return out;
+  };
+}
+
+SurfaceProjection domeProjection(const Dome& dome) {
+  return [dome](const Vec3& p) { return dome.lift(p); };
+}
+
+}  // namespace tessella::growth
