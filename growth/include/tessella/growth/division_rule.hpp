@@ -1,0 +1,29 @@
+#pragma once
+// DivisionRule: where a cell divides. A rule returns the cutting plane for a
+// cell; Tissue::splitCell does the cut (2D, surface and 3D alike). On a
+// surface tissue the plane contains the cell's normal, so it cuts the
+// (non-planar) polygon along a line across the sheet.
+
+#include <random>
+#include <string>
+
+#include "tessella/tissue/tissue.hpp"
+#include "tessella/tissue/vec3.hpp"
+
+namespace tessella::growth {
+
+/// The random engine of every stochastic part of growth/ (reproducible from a seed).
+using Rng = std::mt19937_64;
+
+class DivisionRule {
+ public:
+  virtual ~DivisionRule() = default;
+  /// The plane dividing cell c. Throws GeometryError (naming the cell) when
+  /// the rule has no answer for this cell (e.g. a fixed direction normal to
+  /// a surface cell).
+  virtual Plane plane(const Tissue& t, CellId c, Rng& rng) const = 0;
+  /// The rule's configuration name ("main_axis", "shortest_wall", ...).
+  virtual std::string name() const = 0;
+};
+
+}  // namespace tessella::growth

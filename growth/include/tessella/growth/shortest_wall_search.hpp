@@ -1,0 +1,45 @@
+#pragma once
+// Local minima of the new wall's measure over the orientations of planes
+// through a point (the centroid): the candidate walls of the shortest-wall
+// rule (Errera) and of the stochastic rule of Besson and Dumais.
+//
+// 2D: the length L(theta) is pi-periodic; it is sampled at `samples` angles,
+// every sampled local minimum is bracketed by its neighbours and refined by
+// Brent's method (golden section + parabolic steps) to `angle_tolerance`.
+// 3D: the section area A(n) over the sphere of normals is minimised by
+// Nelder-Mead from 13 starts (the directions of a cube's faces, edges and
+// corners, so every orientation is within 28 degrees of a start), each run in
+// a local chart around its start; minima closer than `merge_angle` merge.
+
+#include <vector>
+
+#include "tessella/growth/new_wall_measure.hpp"
+
+namespace tessella::growth {
+
+struct WallCandidate {
+  Vec3 normal;     ///< unit plane normal
+  double measure;  ///< length (2D) or area (3D) of the new wall
+  double theta = 0;  ///< 2D only: angle of the normal from the frame's e1
+};
+
+struct ShortestWallSearchOptions {
+  int samples = 36;                ///< 2D angle samples over [0, pi)
+  double angle_tolerance = 1e-8;   ///< 2D: Brent stops at this bracket width (rad)
+  double area_tolerance = 1e-12;   ///< 3D: Nelder-Mead relative spread to stop
+  int max_iterations = 400;        ///< 3D: per Nelder-Mead run
+  double merge_angle = 1e-3;       ///< minima within this angle (rad) are one
+};
+
+/// All local minima found, by increasing measure (at least one).
+std::vector<WallCandidate> newWallLocalMinima(const NewWallMeasure& m,
+                                              const ShortestWallSearchOptions& options = {});
+
+/// Brent's minimisation of f on [a, b] (f unimodal there), to tolerance tol
+/// on x. Returns the abscissa of the minimum.
+template <typename F>
+double brentMinimize(F&& f, double a, double b, double tol, int max_iterations = 200);
+
+}  // namespace tessella::growth
+
+#include "tessella/growth/detail/brent.ipp"

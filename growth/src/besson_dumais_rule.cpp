@@ -1,0 +1,45 @@
+#include "tessella/growth/besson_dumais_rule.hpp"
+
+#include <cmath>
+
+#include "tessella/tissue/errors.hpp"
+
+namespace tessella::growth {
+
+BessonDumaisRule::BessonDumaisRule(double beta, ShortestWallSearchOptions options)
+    : beta_(beta), options_(options) {
+  if (!(beta >= 0) || !std::isfinite(beta))
+    throw InputError("besson_dumais rule: beta = " + std::to_string(beta) +
+                     " must be finite and >= 0");
+}
+
+std::vector<std::pair<WallCandidate, double>> BessonDumaisRule::candidates(const Tissue& t,
+                                                                           CellId c) const {
+  const NewWallMeasure m(t, c);
+  const std::vector<WallCandidate> minima = newWallLocalMinima(m, options_);
+  const double shortest = minima.front().measure;
+  std::vector<std::pair<WallCandidate, double>> out;
+  double total = 0;
+  for (const WallCandidate& w : minima) {
+    // exp(-beta L / Lmin) scaled by exp(beta): the same ratios, no underflow.
+    const double weight = shortest > 0 ? std::exp(-beta_ * (w.measure / shortest - 1.0)) : 1.0;
+    out.emplace_back(w, weight);
+    total += weight;
+  }
+  for (auto& [w, p] : out) p /= total;
+  return out;
+}
+
+Plane BessonDumaisRule::plane(const Tissue& t, CellId c, Rng& rng) const {
+  const auto cands = candidates(t, c);
+  const double u = std::uniform_real_distribution<double>(0.0, 1.0)(rng);
+  double acc = 0;
+  const Vec3 point = NewWallMeasure(t, c).point();
+  for (const auto& [w, p] : cands) {
+    acc += p;
+    if (u < acc) return Plane{point, w.normal};
+  }
+  return Plane{point, cands.back().first.normal};
+}
+
+}  // namespace tessella::growth

@@ -1,0 +1,23 @@
+#include "tessella/growth/random_direction_rule.hpp"
+
+#include <numbers>
+
+#include "tessella/growth/cell_frame.hpp"
+
+namespace tessella::growth {
+
+Plane RandomDirectionRule::plane(const Tissue& t, CellId c, Rng& rng) const {
+  const CellFrame f = cellFrame(t, c);
+  if (t.dim() == 2) {
+    const double theta = std::uniform_real_distribution<double>(0.0, std::numbers::pi)(rng);
+    return Plane{f.centroid, f.direction(theta)};
+  }
+  // A normalised Gaussian vector is uniform on the sphere.
+  std::normal_distribution<double> g;
+  Vec3 n;
+  do n = Vec3(g(rng), g(rng), g(rng));
+  while (n.norm() < 1e-12);
+  return Plane{f.centroid, n.normalized()};
+}
+
+}  // namespace tessella::growth

@@ -1,0 +1,93 @@
+#include "tessella/growth/size_threshold.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "tessella/tissue/errors.hpp"
+
+namespace tessella::growth {
+
+SizeThreshold SizeThreshold::fixed(double size) {
+  if (!(size > 0) || !std::isfinite(size))
+    throw InputError("division threshold: size = " + std::to_string(size) +
+                     " must be positive and finite");
+  SizeThreshold s;
+  s.kind_ = Kind::Fixed;
+  s.size_ = size;
+  return s;
+}
+
+SizeThreshold SizeThreshold::fromProperty(std::string name) {
+  if (name.empty()) throw InputError("division threshold: property name must not be empty");
+  SizeThreshold s;
+  s.kind_ = Kind::Property;
+  s.property_ = std::move(name);
+  return s;
+}
+
+SizeThreshold SizeThreshold::noisy(double mean, double stddev, std::string property) {
+  if (!(mean > 0) || !std::isfinite(mean))
+    throw InputError("division threshold: mean = " + std::to_string(mean) +
+                     " must be positive and finite");
+  if (!(stddev >= 0) || !std::isfinite(stddev))
+    throw InputError("division threshold: stddev = " + std::to_string(stddev) +
+                     " must be >= 0 and finite");
+  if (property.empty()) throw InputError("division threshold: property name must not be empty");
+  SizeThreshold s;
+  s.kind_ = Kind::Noisy;
+  s.size_ = mean;
+  s.stddev_ = stddev;
+  s.property_ = std::move(property);
+  return s;
+}
+
+void SizeThreshold::prepare(Tissue& t, Rng& rng) const {
+  PropertyStore& cells = t.cellProperties();
+  if (kind_ == Kind::Property) {
+    cells.get<double>(property_);  // throws InputError naming the property if missing / mistyped
+    return;
+  }
+  if (kind_ != Kind::Noisy) return;
+  if (!cells.has(property_))
+    cells.add<double>(property_, std::numeric_limits<double>::quiet_NaN(), DivisionPolicy::Reset);
+  auto& column = cells.get<double>(property_);
+  std::normal_distribution<double> draw(size_, stddev_);
+  for (CellId c : t.cells()) {
+    double& v = column[c];
+    if (!std::isnan(v)) continue;
+    do v = draw(rng);
+    while (!(v > 0));  // a size threshold must be positive
+  }
+}
+
+double SizeThreshold::threshold(const Tissue& t, CellId c) const {
+  if (kind_ == Kind::Fixed) return size_;
+  return t.cellProperties().get<double>(property_)[c];
+}
+
+std::vector<CellId> SizeThreshold::cellsDue(Tissue& t, const GeometryCache& g, Rng& rng) const {
+  prepare(t, rng);
+  std::vector<CellId> due;
+  if (kind_ == Kind::Fixed) {
+    for (CellId c : t.cells())
+      if (g.cellMeasure(t, c) > size_) due.push_back(c);
+    return due;
+  }
+  const auto& column = t.cellProperties().get<double>(property_);
+  for (CellId c : t.cells())
+    if (g.cellMeasure(t, c) > column[c]) due.push_back(c);  // NaN never triggers
+  return due;
+}
+
+std::string SizeThreshold::describe() const {
+  std::ostringstream s;
+  switch (kind_) {
+    case Kind::Fixed: s << "size > " << size_; break;
+    case Kind::Property: s << "size > property '" << property_ << "'"; break;
+    case Kind::Noisy: s << "size > N(" << size_ << ", " << stddev_ << ") drawn at birth"; break;
+  }
+  return s.str();
+}
+
+}  // namespace tessella::growth
