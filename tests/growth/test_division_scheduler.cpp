@@ -1,0 +1,121 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <set>
+
+#include "growth_fixtures.hpp"
+#include "tessella/growth/division_rule_factory.hpp"
+#include "tessella/growth/division_scheduler.hpp"
+#include "tessella/growth/division_walls.hpp"
+#include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/grids.hpp"
+#include "tessella/tissue/validate.hpp"
+
+using namespace tessella;
+using namespace tessella::growth;
+using Catch::Matchers::Contains;
+
+TEST_CASE("every cell over a fixed threshold divides once", "[growth][scheduler]") {
+  Tissue t = rectangularGrid(4, 4, 1.0, 0.5);  // cells of area 0.5, long along x
+  t.setTime(3.0);
+  DivisionScheduler s(SizeThreshold::fixed(0.4), makeDivisionRule("main_axis"));
+  GeometryCache g;
+  const DivisionReport r = s.step(t, g);
+  CHECK(r.divided.size() == 16);
+  CHECK(r.skipped.empty());
+  CHECK(t.numCells() == 32);
+  REQUIRE(validate(t).ok);
+  const auto& tags = t.wallProperties().get<std::int64_t>(kDivisionWallProperty);
+  std::set<std::int64_t> lineages;
+  for (const DivisionRecord& d : r.divided) {
+    CHECK(t.parentId(d.cell) == d.mother_lineage);
+    CHECK(t.parentId(d.daughter) == d.mother_lineage);
+    CHECK(t.birthTime(d.daughter) == 3.0);
+    CHECK(tags[d.wall] == d.mother_lineage);
+    CHECK(wallMeasure(t, d.wall) == Approx(0.5));  // across the long side
+    CHECK(birthWalls(t, d.daughter) == std::vector<WallId>{d.wall});
+  }
+  for (CellId c : t.cells()) lineages.insert(t.lineageId(c));
+  CHECK(lineages.size() == 32);
+  // The daughters (area 0.25) are below threshold: nothing more happens.
+  CHECK(s.step(t, g).divided.empty());
+}
+
+TEST_CASE("a per-cell threshold property selects the cells", "[growth][scheduler]") {
+  Tissue t = rectangularGrid(3, 1);
+  auto& thr = t.cellProperties().add<double>("my_threshold", 10.0);
+  thr[CellId(1)] = 0.5;
+  DivisionScheduler s(SizeThreshold::fromProperty("my_threshold"), makeDivisionRule("shortest_wall"));
+  GeometryCache g;
+  const DivisionReport r = s.step(t, g);
+  REQUIRE(r.divided.size() == 1);
+  CHECK(r.divided[0].cell == CellId(1));
+
+  DivisionScheduler missing(SizeThreshold::fromProperty("nope"), makeDivisionRule("main_axis"));
+  CHECK_THROWS_WITH(missing.step(t, g), Contains("'nope'"));
+}
+
+TEST_CASE("noisy thresholds are drawn at birth and redrawn by daughters", "[growth][scheduler]") {
+  Tissue t = rectangularGrid(40, 40);
+  const double mean = 1.5, sd = 0.1;
+  DivisionScheduler s(SizeThreshold::noisy(mean, sd), makeDivisionRule("main_axis"),
+                      DivisionOptions{.seed = 11});
+  GeometryCache g;
+  CHECK(s.step(t, g).divided.empty());  // every cell has area 1 = mean - 5 sd
+  const auto& thr = t.cellProperties().get<double>("division_threshold");
+  REQUIRE(t.numCells() == 1600);
+  double m = 0, m2 = 0;
+  for (CellId c : t.cells()) {
+    m += thr[c] / 1600;
+    m2 += thr[c] * thr[c] / 1600;
+  }
+  CHECK(m == Approx(mean).margin(4 * sd / 40));
+  CHECK(std::sqrt(m2 - m * m) == Approx(sd).margin(0.01));  // sampling sd of the sd ~ 0.0018
+
+  // Give one cell a low threshold: its daughters draw fresh values.
+  t.cellProperties().get<double>("division_threshold")[CellId(0)] = 0.5;
+  const DivisionReport r = s.step(t, g);
+  REQUIRE(r.divided.size() == 1);
+  const auto& after = t.cellProperties().get<double>("division_threshold");
+  CHECK(after[r.divided[0].cell] != 0.5);
+  CHECK(after[r.divided[0].daughter] != after[r.divided[0].cell]);
+  CHECK(after[r.divided[0].daughter] > 0);
+
+  CHECK_THROWS_AS(SizeThreshold::noisy(-1, 0.1), InputError);
+  CHECK_THROWS_AS(SizeThreshold::fixed(0.0), InputError);
+}
+
+namespace {
+// A rule whose plane runs along the cell's left wall: splitCell must refuse it.
+class AlongWallRule final : public DivisionRule {
+ public:
+  Plane plane(const Tissue& t, CellId c, Rng&) const override {
+    return Plane{t.position(t.cellVertices(c).front()), Vec3::UnitX()};
+  }
+  std::string name() const override { return "along_wall"; }
+};
+}  // namespace
+
+TEST_CASE("degenerate cuts are retried perturbed, then skipped and reported", "[growth][scheduler]") {
+  GeometryCache g;
+  SECTION("retry succeeds") {
+    Tissue t = testing::rectangleCell(1.0, 1.0);
+    DivisionScheduler s(SizeThreshold::fixed(0.5), std::make_shared<AlongWallRule>());
+    const DivisionReport r = s.step(t, g);
+    REQUIRE(r.divided.size() == 1);
+    CHECK(r.divided[0].attempts > 1);
+    CHECK(validate(t).ok);
+  }
+  SECTION("one attempt only: skipped and reported") {
+    Tissue t = testing::rectangleCell(1.0, 1.0);
+    DivisionScheduler s(SizeThreshold::fixed(0.5), std::make_shared<AlongWallRule>(),
+                        DivisionOptions{.max_attempts = 1});
+    const DivisionReport r = s.step(t, g);
+    CHECK(r.divided.empty());
+    REQUIRE(r.skipped.size() == 1);
+    CHECK(r.skipped[0].lineage == t.lineageId(CellId(0)));
+    CHECK_THAT(r.skipped[0].reason, Contains("along_wall"));
+    CHECK(t.numCells() == 1);
+    CHECK(validate(t).ok);
+  }
+}
