@@ -7,6 +7,8 @@
 #include <optional>
 #include <vector>
 
+#include <Eigen/Geometry>
+
 #include "tessella/tissue/vec3.hpp"
 
 namespace tessella::mesh_detail {

@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "tessella/tissue/tissue.hpp"
+#include <Eigen/Geometry>
+
 #include "tessella/tissue/vec3.hpp"
 
 namespace tessella::mesh_detail {

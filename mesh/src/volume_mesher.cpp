@@ -16,6 +16,7 @@
 #include <sstream>
 #include <string>
 
+#include <Eigen/Geometry>
 #include <tetgen.h>
 
 #include "interior_point.hpp"

@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <Eigen/Geometry>
 #include <map>
 #include <vector>
 

@@ -46,10 +46,12 @@ CellAmountTransfer transferCellAmounts(const Tissue& old_tissue, std::span<const
 std::vector<double> cellIntegrals(const FeMesh& mesh, const Eigen::VectorXd& field,
                                   std::size_t cell_slots);
 
-/// interpolateNodalField() followed by a per-lineage rescaling so that the
-/// amount (integral) of the field in every old cell equals the amount in the
-/// new cells it became: conservative transfer of a concentration. Where the
-/// interpolated amount of a group is zero the interpolated values are kept.
+/// interpolateNodalField() followed by one global rescaling so that the
+/// total amount (integral) of a concentration is the old mesh's: growth then
+/// dilutes it instead of creating substance. A continuous P1 field cannot
+/// conserve every cell's amount separately (wall nodes are shared); use
+/// transferCellAmounts for cell-wise quantities. Where the interpolated total
+/// is zero the interpolated values are returned unscaled.
 Eigen::VectorXd transferConcentration(const Tissue& old_tissue, const FeMesh& old_mesh,
                                       const Eigen::VectorXd& old_field, const Tissue& new_tissue,
                                       const FeMesh& new_mesh);

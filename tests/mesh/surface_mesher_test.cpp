@@ -1,0 +1,86 @@
+// Curved-sheet tissues -> triangles on each cell's fan surface.
+
+#include <catch2/catch.hpp>
+
+#include "mesh_test_support.hpp"
+#include "tessella/mesh/mesh_tissue.hpp"
+#include "tessella/tissue/builders.hpp"
+#include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/grids.hpp"
+
+using namespace tessella;
+using namespace tessella::test;
+
+namespace {
+
+/// A hexagonal sheet lifted onto the paraboloid z = k (x^2 + y^2): every cell
+/// is a non-planar hexagon.
+Tissue curvedHexSheet(std::size_t nx, std::size_t ny, double k) {
+  const Tissue flat = hexagonalGrid(nx, ny, 1.0);
+  std::vector<Vec3> p;
+  std::vector<Index> slot(flat.slots(0), kInvalidIndex);
+  for (VertexId v : flat.vertices()) {
+    const Vec3 q = flat.position(v) - Vec3(nx * 0.8, ny * 0.7, 0);
+    slot[v.index()] = static_cast<Index>(p.size());
+    p.emplace_back(q.x(), q.y(), k * q.squaredNorm());
+  }
+  std::vector<std::vector<Index>> loops;
+  for (CellId c : flat.cells()) {
+    std::vector<Index> loop;
+    for (VertexId v : flat.topology().faceVertices(flat.cellFace(c))) loop.push_back(slot[v.index()]);
+    loops.push_back(loop);
+  }
+  return buildPolygonTissue(p, loops, Embedding::Surface);
+}
+
+}  // namespace
+
+TEST_CASE("curved hexagonal sheet: fan-surface areas, conformity, quality", "[mesh][surface]") {
+  const Tissue t = curvedHexSheet(4, 3, 0.15);
+  MeshOptions o;
+  o.min_angle_degrees = 20.0;
+  o.max_edge_length = 0.3;
+  const FeMesh mesh = meshTissue(t, o);
+  CHECK(mesh.dim == 2);
+  requireMeasuresMatch(t, mesh);
+  requireConforming(mesh);
+  requireWallsMatch(t, mesh);
+  for (int e = 0; e < mesh.numElements(); ++e) {
+    CHECK(triangleMinAngleDegrees(mesh, e) >= o.min_angle_degrees - 1e-6);
+    for (int k = 0; k < 3; ++k) {
+      const Eigen::Vector3d a = mesh.nodes.row(mesh.elements(e, k));
+      const Eigen::Vector3d b = mesh.nodes.row(mesh.elements(e, (k + 1) % 3));
+      CHECK((b - a).norm() <= o.max_edge_length * (1 + 1e-9));
+    }
+  }
+  // Triangles face the same way as their cell (counter-clockwise about its normal).
+  for (int e = 0; e < mesh.numElements(); ++e) {
+    const Eigen::Vector3d a = mesh.nodes.row(mesh.elements(e, 0));
+    const Eigen::Vector3d n = (Eigen::Vector3d(mesh.nodes.row(mesh.elements(e, 1))) - a)
+                                  .cross(Eigen::Vector3d(mesh.nodes.row(mesh.elements(e, 2))) - a);
+    CHECK(n.z() > 0);
+  }
+}
+
+TEST_CASE("curved sheet without a size bound", "[mesh][surface]") {
+  const Tissue t = curvedHexSheet(3, 3, 0.3);
+  MeshOptions o;
+  o.min_angle_degrees = 0.0;
+  const FeMesh mesh = meshTissue(t, o);
+  CHECK(mesh.numElements() == static_cast<int>(6 * t.numCells()));  // exactly the fans
+  requireMeasuresMatch(t, mesh);
+  requireConforming(mesh);
+  requireWallsMatch(t, mesh);
+}
+
+TEST_CASE("a folded surface cell is reported", "[mesh][surface][errors]") {
+  // A non-planar quad whose vertex mean lies outside it (a deep dart).
+  const std::vector<Vec3> p = {{0, 0, 0}, {4, 0, 0.1}, {0.2, 0.2, 0}, {0, 4, 0.1}};
+  const Tissue t = buildPolygonTissue(p, {{0, 1, 2, 3}}, Embedding::Surface);
+  try {
+    meshTissue(t);
+    FAIL("no error");
+  } catch (const GeometryError& e) {
+    CHECK_THAT(e.what(), Catch::Contains("cell 0") && Catch::Contains("folds"));
+  }
+}
