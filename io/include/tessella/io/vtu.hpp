@@ -1,13 +1,19 @@
 #pragma once
 // Tissue snapshots as VTK XML unstructured grids (.vtu), through the VTK library.
 //
-// 2D cells are written as VTK polygons, 3D cells as VTK polyhedra with their
-// faces given. Every registered cell property becomes cell data under its
-// own name, plus the derived `area` (2D) or `volume` (3D). Data are binary,
-// appended, compressed as chosen.
+// 2D cells are written as VTK polygons (with 3D points for surface tissues),
+// 3D cells as VTK polyhedra with their faces given, outward. Only live cells
+// are written, with the live vertices numbered compactly. Every registered
+// cell property becomes cell data under its own name, every vertex property
+// point data, plus the derived `area` (2D) or `volume` (3D). Data are binary,
+// appended, compressed as chosen. Field data record the tissue's dimension,
+// embedding and time, so that reading back restores them. docs/output.md
+// lists every array and the types that can be written.
 
 #include <string>
+#include <vector>
 
+#include "tessella/tissue/properties.hpp"
 #include "tessella/tissue/tissue.hpp"
 
 namespace tessella::io {
@@ -21,16 +27,31 @@ const char* compressionName(Compression c);
 struct VtuOptions {
   /// LZ4 by default: zlib is 30-50x slower to write for a few % smaller files.
   Compression compression = Compression::LZ4;
+  /// 1 (fastest) .. 9 (smallest), as VTK's compressors define it.
+  int compression_level = 5;
+  /// Flush the file to disk (fsync) before it replaces the old one, so that
+  /// even a power cut leaves a complete file. Off by default: renaming a
+  /// finished temporary already protects against a killed or crashed run.
+  bool durable = false;
 };
 
 /// Writes a snapshot atomically (temporary file, then rename): a crash never
-/// leaves a half-written file under `path`.
+/// leaves a half-written file under `path`. Throws InputError naming the path
+/// when the file cannot be written (missing directory, disk full) and when
+/// options.compression_level is outside 1..9.
 void writeTissueVtu(const Tissue& tissue, const std::string& path, const VtuOptions& options = {});
 
 /// Reads a snapshot written by writeTissueVtu back into a tissue (topology,
-/// positions, every cell property with a Copy policy except the built-in
-/// lineage columns, which are restored as lineage). InputError on a missing
-/// or malformed file, naming the path and what is wrong.
+/// positions, time, every cell and vertex property with a Copy policy except
+/// the built-in lineage columns, which are restored as lineage). InputError on
+/// a missing or malformed file, naming the path and what is wrong.
 Tissue readTissueVtu(const std::string& path);
+
+/// Whether a property column has a type writeTissueVtu can store: arithmetic
+/// types (not bool), Vec3, Eigen::Vector2d, Sym3 and Mat3.
+bool isWritableProperty(const PropertyColumnBase& column);
+/// Names of the columns of a store that writeTissueVtu skips (so that a
+/// caller can warn about them).
+std::vector<std::string> unwritableProperties(const PropertyStore& store);
 
 }  // namespace tessella::io

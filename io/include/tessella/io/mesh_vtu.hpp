@@ -1,0 +1,68 @@
+#pragma once
+// Finite-element meshes (tessella::FeMesh) as .vtu files, for looking at the
+// fields a solver computed: the elements (triangles or tetrahedra) with the
+// tissue cell of each element, and, as a second file, the wall facets
+// (segments or triangles) with the tissue wall of each facet.
+//
+//   elements file     cells: VTK_TRIANGLE (dim 2) | VTK_TETRA (dim 3)
+//                     cell data  cell_id (Int32) + MeshFields::element
+//                     point data vertex_id (Int32, -1 for mesher nodes) + MeshFields::point
+//   wall facets file  cells: VTK_LINE (dim 2) | VTK_TRIANGLE (dim 3), same points
+//                     cell data  wall_id (Int32), on_boundary (UInt8) + MeshFields::facet
+//                     point data as the elements file
+//
+// Both files are written atomically with the same options as tissue snapshots.
+
+#include <cstddef>
+#include <map>
+#include <string>
+
+#include <Eigen/Core>
+
+#include "tessella/io/vtu.hpp"
+#include "tessella/mesh/fe_mesh.hpp"
+
+namespace tessella::io {
+
+/// Named scalar fields to write with a mesh (e.g. a concentration per node).
+struct MeshFields {
+  std::map<std::string, Eigen::VectorXd> point;    ///< one value per node
+  std::map<std::string, Eigen::VectorXd> element;  ///< one value per element
+  std::map<std::string, Eigen::VectorXd> facet;    ///< one value per wall facet
+};
+
+/// Checks the mesh's arrays agree (row widths, sizes, node indices in range)
+/// and the fields' sizes; InputError naming the array or field, its size and
+/// the expected one. Called by both writers before anything is written.
+void checkFeMesh(const FeMesh& mesh, const MeshFields& fields = {});
+
+void writeFeMeshVtu(const FeMesh& mesh, const std::string& path, const MeshFields& fields = {},
+                    const VtuOptions& options = {});
+void writeWallFacetsVtu(const FeMesh& mesh, const std::string& path, const MeshFields& fields = {},
+                        const VtuOptions& options = {});
+
+/// Time series of meshes with the conventions of SeriesWriter: DIR/<name>.pvd
+/// lists DIR/<name>_000000.vtu, ... and DIR/<name>_walls.pvd lists
+/// DIR/<name>_walls_000000.vtu, ...; both .pvd files are rewritten
+/// atomically after every step.
+class MeshSeriesWriter {
+ public:
+  MeshSeriesWriter(std::string directory, std::string name = "mesh", VtuOptions options = {});
+
+  /// Writes both files of one step; returns the elements file's path.
+  std::string write(const FeMesh& mesh, double time, const MeshFields& fields = {});
+
+  const std::string& pvdPath() const { return pvd_path_; }
+  const std::string& wallsPvdPath() const { return walls_pvd_path_; }
+  std::size_t steps() const { return times_.size(); }
+
+ private:
+  std::string directory_;
+  std::string name_;
+  std::string pvd_path_;
+  std::string walls_pvd_path_;
+  VtuOptions options_;
+  std::vector<double> times_;
+};
+
+}  // namespace tessella::io

@@ -1,0 +1,20 @@
+#pragma once
+// Atomic replacement of a file: write everything to a temporary file in the
+// same directory, then rename it over the target. rename() within one
+// directory is atomic on POSIX file systems, so readers (and a run that is
+// killed mid-write) see either the old complete file or the new one.
+
+#include <functional>
+#include <string>
+
+namespace tessella::io::detail {
+
+/// Calls write(temporary_path), then renames the temporary file to `path`.
+/// If write throws, or the rename fails, the temporary file is removed and
+/// the target is left untouched; rename failures throw InputError naming
+/// `path`. With `durable`, the data are flushed to disk (fsync) before the
+/// rename, so a power cut cannot leave an empty file under `path` either.
+void replaceAtomically(const std::string& path, const std::function<void(const std::string&)>& write,
+                       bool durable = false);
+
+}  // namespace tessella::io::detail

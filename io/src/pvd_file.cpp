@@ -1,0 +1,102 @@
+#include "tessella/io/pvd.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include <vtkNew.h>
+#include <vtkXMLDataElement.h>
+#include <vtkXMLDataParser.h>
+
+#include "atomic_file.hpp"
+#include "tessella/tissue/errors.hpp"
+#include "vtk_error_capture.hpp"
+
+namespace tessella::io {
+
+namespace {
+
+std::string xmlEscaped(const std::string& s) {
+  std::string out;
+  out.reserve(s.size());
+  for (char ch : s) {
+    switch (ch) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      default: out += ch;
+    }
+  }
+  return out;
+}
+
+std::string exactNumber(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", x);
+  return buffer;
+}
+
+}  // namespace
+
+void writePvdFile(const std::string& path, std::span<const PvdEntry> entries, bool durable) {
+  for (const PvdEntry& e : entries)
+    if (!std::isfinite(e.time)) throw InputError("'" + path + "': time " + exactNumber(e.time) + " of '" + e.file + "' is not finite");
+  detail::replaceAtomically(
+      path,
+      [&](const std::string& tmp) {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        if (!out) throw InputError("cannot write '" + path + "': cannot create '" + tmp + "'");
+        out << "<?xml version=\"1.0\"?>\n"
+               "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+               "  <Collection>\n";
+        for (const PvdEntry& e : entries)
+          out << "    <DataSet timestep=\"" << exactNumber(e.time) << "\" group=\"\" part=\"0\" file=\""
+              << xmlEscaped(e.file) << "\"/>\n";
+        out << "  </Collection>\n</VTKFile>\n";
+        out.close();
+        if (!out) throw InputError("cannot write '" + path + "': writing '" + tmp + "' failed (disk full?)");
+      },
+      durable);
+}
+
+std::vector<PvdEntry> readPvdFile(const std::string& path) {
+  auto fail = [&](const std::string& problem) -> InputError { return InputError("'" + path + "': " + problem); };
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec)) throw fail("no such file");
+  vtkNew<vtkXMLDataParser> parser;
+  vtkNew<detail::VtkErrorCapture> errors;
+  errors->watch(parser);
+  parser->SetFileName(path.c_str());
+  if (!parser->Parse() || errors->failed())
+    throw fail("not a well-formed XML file" + (errors->failed() ? " (" + errors->message() + ")" : std::string()));
+  vtkXMLDataElement* root = parser->GetRootElement();
+  if (!root || std::string(root->GetName()) != "VTKFile" || !root->GetAttribute("type") ||
+      std::string(root->GetAttribute("type")) != "Collection")
+    throw fail("not a ParaView collection (expected <VTKFile type=\"Collection\">)");
+  vtkXMLDataElement* collection = root->FindNestedElementWithName("Collection");
+  if (!collection) throw fail("has no <Collection> element");
+  std::vector<PvdEntry> entries;
+  for (int i = 0; i < collection->GetNumberOfNestedElements(); ++i) {
+    vtkXMLDataElement* dataset = collection->GetNestedElement(i);
+    if (std::string(dataset->GetName()) != "DataSet") continue;
+    const char* timestep = dataset->GetAttribute("timestep");
+    const char* file = dataset->GetAttribute("file");
+    const std::string which = "DataSet " + std::to_string(entries.size());
+    if (!file) throw fail(which + " has no file attribute");
+    if (!timestep) throw fail(which + " ('" + file + "') has no timestep attribute");
+    char* end = nullptr;
+    errno = 0;
+    const double time = std::strtod(timestep, &end);
+    if (end == timestep || *end != '\0' || errno == ERANGE || !std::isfinite(time))
+      throw fail(which + " ('" + file + "') has timestep '" + timestep + "', not a finite number");
+    entries.push_back({time, file});  // the parser has already decoded XML entities
+  }
+  return entries;
+}
+
+}  // namespace tessella::io

@@ -1,0 +1,18 @@
+#pragma once
+// Conventions shared by the tissue and mesh series writers.
+
+#include <string>
+
+namespace tessella::io::detail {
+
+/// A series name becomes part of file names: non-empty, no path separators.
+void checkSeriesName(const std::string& name);
+/// Creates the directory (and parents) if needed; InputError naming it otherwise.
+void createSeriesDirectory(const std::string& directory);
+/// <name>_000042.vtu (6 digits, more when a run goes past a million steps).
+std::string stepFileName(const std::string& name, std::size_t step);
+/// Times must be finite and strictly increasing: ParaView would merge two
+/// steps with the same time into one. `previous` is null for the first step.
+void checkNextTime(const std::string& pvd_path, const double* previous, double time);
+
+}  // namespace tessella::io::detail

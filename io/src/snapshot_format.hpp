@@ -1,0 +1,48 @@
+#pragma once
+// Names of the field-data arrays that make a .vtu a Tessella snapshot. The
+// writer and the reader share them, and docs/output.md documents them.
+
+#include <optional>
+#include <string>
+
+#include "tessella/tissue/tissue.hpp"
+
+namespace tessella::io::detail {
+
+/// Bumped when a change would make older readers misread a snapshot.
+inline constexpr int kSnapshotFormatVersion = 1;
+
+inline constexpr const char* kFormatVersionArray = "tessella_format_version";
+/// ParaView's own name for a dataset's time.
+inline constexpr const char* kTimeArray = "TimeValue";
+inline constexpr const char* kDimArray = "tessella_dim";
+/// "planar" | "surface" | "volume"
+inline constexpr const char* kEmbeddingArray = "tessella_embedding";
+/// Lineage ids below this value were used in the run, perhaps by cells that
+/// no longer exist; recorded for analyses of the lineage.
+inline constexpr const char* kNextLineageArray = "tessella_next_lineage_id";
+/// Which cell-data / point-data arrays are properties (the rest are derived).
+inline constexpr const char* kCellPropertiesArray = "tessella_cell_properties";
+inline constexpr const char* kVertexPropertiesArray = "tessella_vertex_properties";
+
+/// Derived cell measures, written for ParaView and never read back.
+inline constexpr const char* kAreaArray = "area";
+inline constexpr const char* kVolumeArray = "volume";
+
+inline const char* embeddingTag(Embedding e) {
+  switch (e) {
+    case Embedding::Planar: return "planar";
+    case Embedding::Surface: return "surface";
+    case Embedding::Volume: return "volume";
+  }
+  return "unknown";
+}
+
+inline std::optional<Embedding> embeddingFromTag(const std::string& tag) {
+  if (tag == "planar") return Embedding::Planar;
+  if (tag == "surface") return Embedding::Surface;
+  if (tag == "volume") return Embedding::Volume;
+  return std::nullopt;
+}
+
+}  // namespace tessella::io::detail
