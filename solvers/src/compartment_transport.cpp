@@ -87,7 +87,7 @@ void CompartmentTransport::step(Eigen::VectorXd& c, double dt) {
 
 void CompartmentTransport::advance(Eigen::VectorXd& c, double duration, double dt) {
   if (!(duration >= 0.0) || !(dt > 0.0)) bad("advance needs duration >= 0 and dt > 0");
-  const auto steps = static_cast<long>(std::ceil(duration / dt - 1e-12));
+  const auto steps = static_cast<long>(std::ceil(duration / dt * (1.0 - 1e-12)));
   for (long k = 0; k < steps; ++k) step(c, duration / static_cast<double>(steps));
 }
 

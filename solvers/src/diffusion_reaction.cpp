@@ -166,13 +166,13 @@ Eigen::MatrixXd DiffusionReaction::reactionRates(const Eigen::MatrixXd& u) const
   return r;
 }
 
-Eigen::VectorXd DiffusionReaction::solveSpecies(int s, const SparseMatrix& lhs, double lhs_key,
+Eigen::VectorXd DiffusionReaction::solveSpecies(int s, const std::function<SparseMatrix()>& make_lhs, double lhs_key,
                                                 const Eigen::VectorXd& rhs_full, double t,
                                                 const Eigen::VectorXd& guess) {
   SpeciesData& d = data_[static_cast<std::size_t>(s)];
-  if (!(d.lhs_key == lhs_key)) {
+  if (!(d.lhs_key == lhs_key)) {  // the matrix is only built when the key (dt) changes
     SparseMatrix Aff;
-    d.reduction.split(lhs, Aff, d.Afc);
+    d.reduction.split(make_lhs(), Aff, d.Afc);
     d.lhs_key = std::nan("");  // stays invalid if compute() throws
     try {
       d.solver->compute(Aff);
@@ -204,11 +204,10 @@ void DiffusionReaction::step(double dt) {
   Eigen::MatrixXd next(u_.rows(), u_.cols());
   for (int s = 0; s < numSpecies(); ++s) {
     const SpeciesData& d = data_[static_cast<std::size_t>(s)];
-    const SparseMatrix lhs = mass_ / dt + theta * d.A;
     Eigen::VectorXd b = mass_ * u_.col(s) / dt + theta * rhs(s, time_ + dt);
     if (theta < 1.0) b += (1.0 - theta) * (rhs(s, time_) - d.A * u_.col(s));
     if (reaction_) b += mass_ * rates.col(s);
-    next.col(s) = solveSpecies(s, lhs, dt, b, time_ + dt, u_.col(s));
+    next.col(s) = solveSpecies(s, [&] { return SparseMatrix(mass_ / dt + theta * d.A); }, dt, b, time_ + dt, u_.col(s));
   }
   u_prev_ = u_;
   have_prev_ = true;
@@ -218,7 +217,8 @@ void DiffusionReaction::step(double dt) {
 
 void DiffusionReaction::advance(double duration, double dt) {
   if (!(duration >= 0.0) || !(dt > 0.0)) throw InvalidProblemError("DiffusionReaction::advance: need duration >= 0, dt > 0");
-  const auto steps = static_cast<long>(std::ceil(duration / dt - 1e-12));
+  // (1 - 1e-12): a duration that is a whole number of steps up to round-off takes that many.
+  const auto steps = static_cast<long>(std::ceil(duration / dt * (1.0 - 1e-12)));
   if (steps == 0) return;
   const double h = duration / static_cast<double>(steps);
   const double t0 = time_;
@@ -240,7 +240,7 @@ const Eigen::MatrixXd& DiffusionReaction::solveSteady() {
     for (int s = 0; s < numSpecies(); ++s) {
       Eigen::VectorXd b = rhs(s, time_);
       if (reaction_) b += mass_ * rates.col(s);
-      next.col(s) = solveSpecies(s, data_[static_cast<std::size_t>(s)].A, 0.0, b, time_, u.col(s));
+      next.col(s) = solveSpecies(s, [&] { return data_[static_cast<std::size_t>(s)].A; }, 0.0, b, time_, u.col(s));
     }
     const double change = (next - u).cwiseAbs().maxCoeff() / std::max(1.0, next.cwiseAbs().maxCoeff());
     u = next;

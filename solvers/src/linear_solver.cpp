@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace tessella {
@@ -58,9 +59,12 @@ void LinearSolver::compute(const SparseMatrix& A) {
       dmin = std::min(dmin, d[i]);
     }
     if (!(dmax > 0.0) || !std::isfinite(dmax)) throw FactorizationError("LinearSolver: matrix is zero or not finite");
-    if (dmin <= options_.pivot_tolerance * dmax) {
+    // The round-off pivot of a singular matrix grows with its size (measured:
+    // ~1e-11 relative for a 33^3-node pure-Neumann Laplacian), hence the n eps floor.
+    const double tol = std::max(options_.pivot_tolerance, 64.0 * n * std::numeric_limits<double>::epsilon());
+    if (dmin <= tol * dmax) {
       std::ostringstream msg;
-      msg << "LinearSolver: matrix is " << (dmin < -options_.pivot_tolerance * dmax ? "not positive definite" : "singular")
+      msg << "LinearSolver: matrix is " << (dmin < -tol * dmax ? "not positive definite" : "singular")
           << " (smallest LDL^T pivot " << dmin << ", largest " << dmax << ", n = " << n << ")";
       throw FactorizationError(msg.str());
     }

@@ -91,6 +91,31 @@ TEST_CASE("LinearSolver rejects singular and indefinite matrices", "[solvers][li
   indefinite.insert(2, 2) = 2.0;
   CHECK_THROWS_AS(solver.compute(indefinite), FactorizationError);
 
+  // A larger singular matrix, whose round-off pivot is bigger (the pure-Neumann
+  // Laplacian of a 2D grid): still refused.
+  {
+    const int g = 60, nn = g * g;
+    std::vector<Eigen::Triplet<double>> t;
+    auto id = [g](int i, int j) { return j * g + i; };
+    for (int j = 0; j < g; ++j)
+      for (int i = 0; i < g; ++i) {
+        if (i + 1 < g) {
+          t.emplace_back(id(i, j), id(i, j), 1.0), t.emplace_back(id(i + 1, j), id(i + 1, j), 1.0);
+          t.emplace_back(id(i, j), id(i + 1, j), -1.0), t.emplace_back(id(i + 1, j), id(i, j), -1.0);
+        }
+        if (j + 1 < g) {
+          t.emplace_back(id(i, j), id(i, j), 1.0), t.emplace_back(id(i, j + 1), id(i, j + 1), 1.0);
+          t.emplace_back(id(i, j), id(i, j + 1), -1.0), t.emplace_back(id(i, j + 1), id(i, j), -1.0);
+        }
+      }
+    SparseMatrix L(nn, nn);
+    L.setFromTriplets(t.begin(), t.end());
+    CHECK_THROWS_AS(solver.compute(L), FactorizationError);
+    SparseMatrix shifted = L;  // + 1e-3 I is SPD again
+    for (int i = 0; i < nn; ++i) shifted.coeffRef(i, i) += 1e-3;
+    CHECK_NOTHROW(solver.compute(shifted));
+  }
+
   SparseMatrix rect(3, 2);
   CHECK_THROWS_AS(solver.compute(rect), InvalidProblemError);
 }

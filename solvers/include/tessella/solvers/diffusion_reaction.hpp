@@ -117,8 +117,8 @@ class DiffusionReaction {
   Eigen::VectorXd rhs(int s, double t) const;
   Eigen::VectorXd dirichletValues(int s, double t) const;
   Eigen::MatrixXd reactionRates(const Eigen::MatrixXd& u) const;
-  Eigen::VectorXd solveSpecies(int s, const SparseMatrix& lhs, double lhs_key, const Eigen::VectorXd& rhs_full,
-                               double t, const Eigen::VectorXd& guess);
+  Eigen::VectorXd solveSpecies(int s, const std::function<SparseMatrix()>& make_lhs, double lhs_key,
+                               const Eigen::VectorXd& rhs_full, double t, const Eigen::VectorXd& guess);
 
   const FeMesh* mesh_;
   DiffusionOptions options_;

@@ -29,8 +29,8 @@ struct LinearSolverOptions {
   /// Auto picks the direct solver up to this many unknowns, CG above.
   int auto_direct_max_unknowns = 100000;
   /// The direct solver rejects the matrix as singular when its smallest LDL^T
-  /// pivot is below pivot_tolerance times its largest one (a singular SPD
-  /// matrix factorises "successfully" with round-off pivots otherwise).
+  /// pivot is below max(pivot_tolerance, 64 n eps) times its largest one (a
+  /// singular SPD matrix factorises "successfully" with round-off pivots).
   double pivot_tolerance = 1e-12;
 };
 
