@@ -5,7 +5,8 @@
 //   tessella info FILE.vtu
 //   tessella schema          (the config key reference, as in docs/config.md)
 //
-// Exit codes: 0 success, 1 bad input (config, files), 2 internal error,
+// Exit codes: 0 success, 1 an error Tessella reports (bad config or file, a
+// failed step), 2 an unexpected internal error,
 // 3 (info) the tissue was read but fails validate().
 
 #include <CLI/CLI.hpp>
@@ -118,7 +119,7 @@ int main(int argc, char** argv) {
     if (info->parsed()) return infoCommand(vtu_path);
     fmt::print("{}", tessella::sim::schemaReferenceMarkdown(tessella::sim::tessellaSchema()));
     return 0;
-  } catch (const tessella::InputError& e) {
+  } catch (const tessella::Error& e) {  // bad input, or a stage that failed on it
     fmt::print(stderr, "error: {}\n", e.what());
     return 1;
   } catch (const std::exception& e) {

@@ -1,0 +1,79 @@
+#!/usr/bin/env bash
+# End-to-end checks of the tessella CLI: cli_cases.sh TESSELLA SOURCE_DIR CASE
+# Each case runs the real executable and checks exit code, messages and files.
+set -uo pipefail
+tessella="$1"; src="$2"; case_name="$3"
+tmp="$(mktemp -d)"; trap 'rm -rf "$tmp"' EXIT
+fail() { echo "FAIL [$case_name]: $*" >&2; exit 1; }
+
+# expect_error CONFIG REGEX [ARGS...]: exit code 1, REGEX on stderr, no output directory.
+expect_error() {
+  local config="$1" regex="$2"; shift 2
+  "$tessella" run "$config" --out "$tmp/out" "$@" >"$tmp/stdout" 2>"$tmp/stderr"
+  local rc=$?
+  cat "$tmp/stderr"
+  [ "$rc" -eq 1 ] || fail "exit code $rc, expected 1"
+  grep -Eq "$regex" "$tmp/stderr" || fail "stderr does not match: $regex"
+  [ ! -e "$tmp/out" ] || fail "the output directory was created"
+}
+
+bad="$src/tests/apps/bad_configs"
+case "$case_name" in
+  run_and_info)
+    "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/hex" --quiet >"$tmp/stdout" 2>"$tmp/stderr" \
+      || fail "run failed: $(cat "$tmp/stderr")"
+    [ ! -s "$tmp/stdout" ] && [ ! -s "$tmp/stderr" ] || fail "--quiet printed something"
+    n=$(ls "$tmp/hex"/tissue_*.vtu | wc -l)
+    [ "$n" -eq 4 ] || fail "expected 4 snapshots (steps 0, 2, 4, 5), found $n"
+    [ -f "$tmp/hex/run.yaml" ] || fail "no run.yaml"
+    [ "$(grep -c '<DataSet' "$tmp/hex/tissue.pvd")" -eq 4 ] || fail "the .pvd does not list 4 snapshots"
+    "$tessella" info "$tmp/hex/tissue_000003.vtu" >"$tmp/info" || fail "info failed"
+    cat "$tmp/info"
+    grep -Eq '^cells +48$' "$tmp/info" || fail "info: expected 48 cells"
+    grep -Eq '^validate +ok$' "$tmp/info" || fail "info: expected validate ok"
+    # 48 regular hexagons of circumradius 1: area 48 * 3 sqrt(3) / 2 = 124.708
+    grep -Eq '^total area +124\.708' "$tmp/info" || fail "info: expected total area 124.708"
+    ;;
+  rerun_from_record)
+    "$tessella" run "$src/configs/voronoi_disk_2d.yaml" --out "$tmp/a" -q --set tissue.voronoi.count=20 \
+      || fail "first run failed"
+    "$tessella" run "$tmp/a/run.yaml" --out "$tmp/b" -q || fail "re-run from run.yaml failed"
+    "$tessella" info "$tmp/a/tissue_000004.vtu" | grep -v '^file' >"$tmp/ia"
+    "$tessella" info "$tmp/b/tissue_000004.vtu" | grep -v '^file' >"$tmp/ib"
+    diff "$tmp/ia" "$tmp/ib" || fail "the re-run differs"
+    ;;
+  progress_and_notes)
+    "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/p" --set tissue.dome.height=1 \
+      >"$tmp/stdout" 2>"$tmp/stderr" || fail "run failed"
+    cat "$tmp/stderr" "$tmp/stdout"
+    grep -q 'note: .*tissue.dome is ignored: tissue.generator is hexagonal_grid' "$tmp/stderr" || fail "no note"
+    grep -q 'step 5/5 (100%)' "$tmp/stderr" || fail "no final progress line"
+    grep -q 'wrote 4 snapshots' "$tmp/stdout" || fail "no summary"
+    ;;
+  refuse_existing_run)
+    "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/out" -q || fail "first run failed"
+    "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/out" -q 2>"$tmp/stderr"
+    [ $? -eq 1 ] || fail "a second run into the same directory was not refused"
+    grep -q 'already holds a run' "$tmp/stderr" || fail "unclear refusal: $(cat "$tmp/stderr")"
+    "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/out" -q --overwrite || fail "--overwrite failed"
+    ;;
+  unknown_key)
+    expect_error "$bad/unknown_key.yaml" "unknown_key.yaml:4:5: tissue.voronoi.cuont: unknown key 'cuont'; did you mean 'count'\?" ;;
+  wrong_type)
+    expect_error "$bad/wrong_type.yaml" "wrong_type.yaml:4:12: tissue.voronoi.count: expected an integer .*got 'many'" ;;
+  out_of_range)
+    expect_error "$bad/out_of_range.yaml" "out_of_range.yaml:4:7: time.dt: value -0.5 is out of range; expected a number > 0" ;;
+  missing_seed_file)
+    expect_error "$bad/missing_seed_file.yaml" "missing_seed_file.yaml:4:16: tissue.voronoi.seed_file: file not found: 'no_such_seeds.csv'" ;;
+  malformed_yaml)
+    expect_error "$bad/malformed.yaml" "malformed.yaml:[0-9]+:[0-9]+: malformed YAML" ;;
+  bad_set)
+    expect_error "$src/configs/hex_grid_2d.yaml" "--set tissue.hexagonal_grid.radus=2: tissue.hexagonal_grid.radus: unknown key 'radus'; did you mean 'tissue.hexagonal_grid.radius'\?" \
+      --set tissue.hexagonal_grid.radus=2 ;;
+  bad_set_value)
+    expect_error "$src/configs/hex_grid_2d.yaml" "--set time.end=soon: time.end: expected a number, got 'soon'" --set time.end=soon ;;
+  missing_config)
+    expect_error "$tmp/nowhere.yaml" "nowhere.yaml: config file not found" ;;
+  *) fail "unknown case" ;;
+esac
+echo "ok [$case_name]"

@@ -1,0 +1,199 @@
+// End-to-end: example configs -> PreparedRun -> series on disk -> read back.
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "tessella/io/vtu.hpp"
+#include "tessella/sim/run.hpp"
+#include "tessella/sim/run_record.hpp"
+#include "tessella/tissue/geometry.hpp"
+#include "tessella/tissue/validate.hpp"
+#include "test_support.hpp"
+
+namespace fs = std::filesystem;
+using namespace tessella;
+using namespace tessella::sim;
+using tessella::sim::test::configErrorOf;
+using tessella::sim::test::ScratchDir;
+using tessella::sim::test::sourcePath;
+using Catch::Matchers::Contains;
+
+namespace {
+
+std::string readText(const fs::path& p) {
+  std::ifstream f(p, std::ios::binary);
+  std::ostringstream s;
+  s << f.rdbuf();
+  return s.str();
+}
+
+std::vector<fs::path> snapshotsIn(const fs::path& dir, const std::string& name = "tissue") {
+  std::vector<fs::path> files;
+  const std::regex pattern(name + R"(_\d+\.vtu)");
+  for (const auto& e : fs::directory_iterator(dir))
+    if (std::regex_match(e.path().filename().string(), pattern)) files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+/// The timestep attributes of a .pvd, in file order.
+std::vector<double> pvdTimes(const fs::path& pvd) {
+  const std::string text = readText(pvd);
+  std::vector<double> times;
+  const std::regex dataset(R"(<DataSet[^>]*timestep="([^"]+)")");
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), dataset); it != std::sregex_iterator(); ++it)
+    times.push_back(std::stod((*it)[1]));
+  return times;
+}
+
+struct RunResult {
+  std::string directory;
+  std::size_t steps = 0;
+  std::size_t every = 1;
+  std::size_t cells = 0;
+  double start = 0, end = 0;
+};
+
+RunResult runConfig(const std::string& config_path, const std::string& out,
+                    const std::vector<std::string>& overrides = {}, bool overwrite = false) {
+  PreparedRun run = PreparedRun::prepare(loadSimulationConfigFile(config_path, overrides), RunOptions{out, overwrite});
+  CHECK_FALSE(fs::exists(out));  // nothing written before execute()
+  const std::size_t cells = run.simulation().tissue().numCells();
+  run.execute();
+  return RunResult{run.outputDirectory(), run.simulation().stepsDone(), run.config().output.every, cells,
+                   run.config().time.start, run.config().time.end};
+}
+
+void checkSeries(const RunResult& r) {
+  const fs::path dir = r.directory;
+  const auto snapshots = snapshotsIn(dir);
+  const std::size_t expected = expectedSnapshots(r.steps, r.every);
+  CHECK(snapshots.size() == expected);
+  const auto times = pvdTimes(dir / "tissue.pvd");
+  REQUIRE(times.size() == expected);
+  CHECK(times.front() == Approx(r.start));
+  CHECK(times.back() == Approx(r.end));
+  CHECK(std::is_sorted(times.begin(), times.end()));
+  REQUIRE(fs::exists(dir / kRunRecordName));
+  // The last snapshot reads back as a valid tissue with every cell.
+  const Tissue last = io::readTissueVtu(snapshots.back().string());
+  CHECK(last.numCells() == r.cells);
+  const ValidationReport report = validate(last);
+  CHECK(report.ok);
+  INFO(report.message);
+}
+
+}  // namespace
+
+TEST_CASE("every example config runs end to end and writes a complete series", "[sim][run][configs]") {
+  std::vector<fs::path> configs;
+  for (const auto& e : fs::directory_iterator(sourcePath("configs")))
+    if (e.path().extension() == ".yaml") configs.push_back(e.path());
+  std::sort(configs.begin(), configs.end());
+  REQUIRE(configs.size() >= 4);
+  for (const fs::path& config : configs) {
+    DYNAMIC_SECTION(config.filename().string()) {
+      ScratchDir scratch;
+      const RunResult r = runConfig(config.string(), scratch / "out");
+      CHECK(r.cells > 0);
+      checkSeries(r);
+      // run.yaml reloads to the same resolved configuration.
+      const fs::path record = fs::path(r.directory) / kRunRecordName;
+      const SimulationConfig reloaded = loadSimulationConfigFile(record.string());
+      CHECK(resolvedConfigYaml(reloaded.config) == readText(record));
+    }
+  }
+}
+
+TEST_CASE("the example configs are what their comments say", "[sim][run][configs]") {
+  const auto hex = loadSimulationConfigFile(sourcePath("configs/hex_grid_2d.yaml"));
+  CHECK(hex.time.numSteps() == 5);
+  CHECK(expectedSnapshots(5, hex.output.every) == 4);  // steps 0, 2, 4, 5
+  const auto disk = loadSimulationConfigFile(sourcePath("configs/voronoi_disk_2d.yaml"));
+  CHECK(std::get<VoronoiSpec>(disk.tissue).dim() == 2);
+  const auto box = loadSimulationConfigFile(sourcePath("configs/voronoi_box_3d.yaml"));
+  CHECK(std::get<VoronoiSpec>(box.tissue).dim() == 3);
+  const auto dome = loadSimulationConfigFile(sourcePath("configs/dome.yaml"));
+  CHECK(std::holds_alternative<DomeSpec>(dome.tissue));
+}
+
+TEST_CASE("re-running from run.yaml reproduces the run, random seed included", "[sim][run]") {
+  ScratchDir scratch;
+  // No rng_seed: one is drawn, and run.yaml must record it.
+  const std::string config = scratch.write(
+      "random.yaml",
+      "tissue:\n  generator: voronoi\n  voronoi:\n    domain: disk\n    count: 25\n    lloyd_iterations: 1\n"
+      "    disk: {radius: 3, boundary_segments: 64}\n"
+      "time: {end: 2, dt: 1}\n");
+  const RunResult first = runConfig(config, scratch / "first");
+  const std::string record = (fs::path(first.directory) / kRunRecordName).string();
+  CHECK_THAT(readText(record), Contains("rng_seed: "));
+  const RunResult second = runConfig(record, scratch / "second");
+
+  const auto a = snapshotsIn(first.directory), b = snapshotsIn(second.directory);
+  REQUIRE(a.size() == b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const Tissue ta = io::readTissueVtu(a[i].string()), tb = io::readTissueVtu(b[i].string());
+    REQUIRE(ta.numCells() == tb.numCells());
+    REQUIRE(ta.numVertices() == tb.numVertices());
+    REQUIRE(ta.positions().size() == tb.positions().size());
+    for (std::size_t v = 0; v < ta.positions().size(); ++v) CHECK(ta.positions()[v] == tb.positions()[v]);
+  }
+  // The second run.yaml differs from the first only in its output directory.
+  auto withoutDirectory = [](std::string text) {
+    return std::regex_replace(text, std::regex(R"(\n  directory: [^\n]*)"), "");
+  };
+  CHECK(withoutDirectory(readText(record)) ==
+        withoutDirectory(readText(fs::path(second.directory) / kRunRecordName)));
+}
+
+TEST_CASE("a directory that holds a run is refused unless overwriting", "[sim][run]") {
+  ScratchDir scratch;
+  const std::string config = sourcePath("configs/hex_grid_2d.yaml");
+  const std::string out = scratch / "out";
+  runConfig(config, out, {"time.end=6"});
+  REQUIRE(snapshotsIn(out).size() == expectedSnapshots(6, 2));
+
+  const ConfigError e = configErrorOf(
+      [&] { PreparedRun::prepare(loadSimulationConfigFile(config), RunOptions{out, false}); });
+  CHECK(e.keyPath() == "output.directory");
+  CHECK_THAT(e.what(), Contains("--out " + out) && Contains("already holds a run") && Contains("--overwrite"));
+
+  // Overwriting a longer run with a shorter one leaves no stale snapshots.
+  PreparedRun again =
+      PreparedRun::prepare(loadSimulationConfigFile(config, {"time.end=1"}), RunOptions{out, true});
+  again.execute();
+  CHECK(snapshotsIn(out).size() == expectedSnapshots(1, 2));
+  CHECK(pvdTimes(fs::path(out) / "tissue.pvd").size() == expectedSnapshots(1, 2));
+}
+
+TEST_CASE("bad input found while building the tissue writes nothing", "[sim][run]") {
+  ScratchDir scratch;
+  scratch.write("bad.csv", "x,y\n1,1\n2,oops\n3,1\n");
+  const std::string config = scratch.write(
+      "c.yaml", "tissue:\n  generator: voronoi\n  voronoi:\n    seed_file: bad.csv\n");
+  const std::string out = scratch / "out";
+  const ConfigError e =
+      configErrorOf([&] { PreparedRun::prepare(loadSimulationConfigFile(config), RunOptions{out, false}); });
+  CHECK(e.keyPath() == "tissue.voronoi.seed_file");
+  CHECK_THAT(e.what(), Contains("c.yaml:4:16") && Contains("bad.csv"));
+  CHECK_FALSE(fs::exists(out));
+}
+
+TEST_CASE("the default output directory is runs/<config name>", "[sim][run]") {
+  ScratchDir scratch;
+  const std::string config = scratch.write("my_tissue.yaml", "tissue: {generator: rectangular_grid}\n");
+  const fs::path cwd = fs::current_path();
+  fs::current_path(scratch.path());
+  const std::string dir = [&] {
+    PreparedRun run = PreparedRun::prepare(loadSimulationConfigFile(config));
+    return run.outputDirectory();
+  }();
+  fs::current_path(cwd);
+  CHECK(dir == (scratch.path() / "runs" / "my_tissue").string());
+  CHECK_FALSE(fs::exists(dir));
+}
