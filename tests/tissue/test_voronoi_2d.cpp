@@ -294,3 +294,25 @@ TEST_CASE("Lloyd relaxation evens out 2D cell areas", "[voronoi][voronoi2d][lloy
   INFO("CV before " << before << " after " << after);
   CHECK(after < 0.5 * before);
 }
+
+TEST_CASE("nearly cocircular seeds (a jittered grid) still give a valid tiling",
+          "[voronoi][voronoi2d][degenerate]") {
+  // Jitter below, at and above the weld tolerance (1e-10 of the domain size):
+  // the tiny Voronoi edges are either merged or kept, never left half-merged.
+  for (double jitter : {1e-13, 1e-11, 1e-10, 1e-9, 1e-7}) {
+    for (std::uint64_t rng = 0; rng < 5; ++rng) {
+      const int n = 8;
+      const auto noise = randomSeeds(Rectangle{Vec3(-1, -1, 0), Vec3(1, 1, 0)}, n * n, rng);
+      std::vector<Vec3> seeds;
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i)
+          seeds.push_back(Vec3((i + 0.5) / n, (j + 0.5) / n, 0) + jitter * noise[j * n + i]);
+      const Tissue t = voronoiTissue(seeds, Rectangle{});
+      const auto report = validate(t);
+      INFO("jitter " << jitter << " rng " << rng << ": " << report.message);
+      REQUIRE(report.ok);
+      CHECK(totalMeasure(t) == Approx(1.0).epsilon(1e-12));
+      for (CellId c : t.cells()) CHECK(cellContains(t, c, seeds[c.index()], 1e-12));
+    }
+  }
+}

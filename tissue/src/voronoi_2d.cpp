@@ -9,9 +9,14 @@
 #include <utility>
 #include <vector>
 
+// CGAL headers trip -Wnull-dereference in GCC 12 optimised builds (in CGAL's
+// own code); silence it for them only.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wnull-dereference"
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#pragma GCC diagnostic pop
 
 #include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/errors.hpp"

@@ -13,10 +13,17 @@
 #include <utility>
 #include <vector>
 
+// CGAL headers trip -Wnull-dereference in GCC 12 optimised builds (in CGAL's
+// own code); silence it for them only.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wnull-dereference"
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Delaunay_triangulation_cell_base_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
+#pragma GCC diagnostic pop
+
+#include <Eigen/Dense>
 
 #include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/errors.hpp"
@@ -72,6 +79,55 @@ Delaunay triangulate(std::span<const Vec3> seeds, double duplicate_distance) {
       throwDuplicate(seeds, va->info(), vb->info());
   }
   return dt;
+}
+
+// The position of a cell vertex computed from the planes through it, named
+// canonically (sorted seed indices, domain faces) so that every cell sharing
+// the vertex gets the same bits -- clipping interpolates along edges, which
+// is ill-conditioned where a bisector grazes an edge (nearly cospherical
+// seeds), and different cells would disagree by more than the weld
+// tolerance. Falls back to the clipped position if the planes do not pin
+// down a point near it.
+Vec3 canonicalPosition(const Vec3& clipped, Index cell, std::span<const int> labels,
+                       std::span<const Vec3> seeds, const ConvexDomain3& domain) {
+  std::array<Index, ClipPolytope::kMaxLabels + 1> generators{};
+  std::array<int, ClipPolytope::kMaxLabels> faces{};
+  std::size_t ng = 0, nf = 0;
+  generators[ng++] = cell;
+  for (int l : labels) {
+    if (l >= 0) generators[ng++] = static_cast<Index>(l);
+    else if (l != kScaffoldLabel) faces[nf++] = -1 - l;
+  }
+  if (ng - 1 + nf < 3) return clipped;
+  std::sort(generators.begin(), generators.begin() + ng);
+  std::sort(faces.begin(), faces.begin() + nf);
+  Eigen::Matrix<double, Eigen::Dynamic, 3, 0, ClipPolytope::kMaxLabels + 1, 3> a(ng - 1 + nf, 3);
+  Eigen::Matrix<double, Eigen::Dynamic, 1, 0, ClipPolytope::kMaxLabels + 1, 1> b(ng - 1 + nf);
+  const Vec3& s0 = seeds[generators[0]];
+  for (std::size_t m = 1; m < ng; ++m) {  // equidistant from s0 and s_m
+    const Vec3& sm = seeds[generators[m]];
+    a.row(m - 1) = (sm - s0).transpose();
+    b(m - 1) = (sm - s0).dot((sm + s0) / 2);
+  }
+  for (std::size_t k = 0; k < nf; ++k) {
+    const HalfSpace& f = domain.faces[faces[k]];
+    a.row(ng - 1 + k) = f.normal.transpose();
+    b(ng - 1 + k) = f.offset;
+  }
+  Vec3 x;
+  if (a.rows() == 3) {
+    const Mat3 a3 = a;
+    x = a3.fullPivLu().solve(Vec3(b));
+  } else {
+    x = (a.transpose() * a).ldlt().solve(a.transpose() * b);
+  }
+  if (!x.allFinite() || (x - clipped).norm() > 1e-7 * domain.scale) return clipped;
+  if (domain.is_box)  // exactly on the box faces it lies on
+    for (std::size_t k = 0; k < nf; ++k) {
+      const int axis = faces[k] / 2;
+      x[axis] = faces[k] % 2 ? domain.hi[axis] : domain.lo[axis];
+    }
+  return x;
 }
 
 // Collects the welded walls of every cell into faces/cells arrays, storing a
@@ -191,7 +247,9 @@ ClippedCells3 clipVoronoi3(std::span<const Vec3> seeds, const ConvexDomain3& dom
     if (!complex) continue;
 
     local_to_global.clear();
-    for (const Vec3& p : cell.vertices()) local_to_global.push_back(welder.weld(p));
+    for (std::size_t v = 0; v < cell.vertices().size(); ++v)
+      local_to_global.push_back(welder.weld(canonicalPosition(
+          cell.vertices()[v], static_cast<Index>(i), cell.vertexLabels(v), seeds, domain)));
     for (std::size_t f = 0; f < cell.numFaces(); ++f) {
       const int label = cell.faceLabel(f);
       if (label == kScaffoldLabel)

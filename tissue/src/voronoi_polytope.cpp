@@ -14,8 +14,14 @@ namespace tessella::detail {
 
 void ClipPolytope::resetToBox(const Vec3& lo, const Vec3& hi, const std::array<int, 6>& box_labels) {
   vertices_.clear();
-  for (int v = 0; v < 8; ++v)
+  labels_.assign(8, Labels{});
+  label_count_.assign(8, 3);
+  for (int v = 0; v < 8; ++v) {
     vertices_.emplace_back(v & 1 ? hi.x() : lo.x(), v & 2 ? hi.y() : lo.y(), v & 4 ? hi.z() : lo.z());
+    labels_[v][0] = box_labels[v & 1 ? 1 : 0];
+    labels_[v][1] = box_labels[v & 2 ? 3 : 2];
+    labels_[v][2] = box_labels[v & 4 ? 5 : 4];
+  }
   // Counter-clockwise seen from outside: -x, +x, -y, +y, -z, +z.
   static constexpr int kLoops[6][4] = {{0, 4, 6, 2}, {1, 3, 7, 5}, {0, 1, 5, 4},
                                        {2, 6, 7, 3}, {0, 2, 3, 1}, {4, 5, 7, 6}};
@@ -41,10 +47,16 @@ bool ClipPolytope::clip(const Vec3& normal, double offset, int label, double on)
 
   remap_.assign(nv, -1);
   new_vertices_.clear();
+  new_labels_.clear();
+  new_label_count_.clear();
   for (std::size_t v = 0; v < nv; ++v) {
     if (side_[v] <= on) {
       remap_[v] = static_cast<int>(new_vertices_.size());
       new_vertices_.push_back(vertices_[v]);
+      new_labels_.push_back(labels_[v]);
+      new_label_count_.push_back(label_count_[v]);
+      // A vertex taken as lying on the plane is on it: remember the plane.
+      if (side_[v] >= -on) addLabel(new_labels_, new_label_count_, new_vertices_.size() - 1, label);
     }
   }
   cut_edges_.clear();
@@ -58,6 +70,16 @@ bool ClipPolytope::clip(const Vec3& normal, double offset, int label, double on)
     const double s_lo = side_[lo], s_hi = side_[hi];
     new_vertices_.push_back(vertices_[lo] + (vertices_[hi] - vertices_[lo]) * (s_lo / (s_lo - s_hi)));
     const int id = static_cast<int>(new_vertices_.size()) - 1;
+    // On the planes shared by both ends (those of the edge) and on the cut.
+    new_labels_.emplace_back();
+    new_label_count_.push_back(0);
+    for (int k = 0; k < label_count_[lo]; ++k) {
+      const int l = labels_[lo][k];
+      const auto hi_begin = labels_[hi].begin();
+      if (std::find(hi_begin, hi_begin + label_count_[hi], l) != hi_begin + label_count_[hi])
+        addLabel(new_labels_, new_label_count_, static_cast<std::size_t>(id), l);
+    }
+    addLabel(new_labels_, new_label_count_, static_cast<std::size_t>(id), label);
     cut_edges_.push_back({lo, hi, id});
     return id;
   };
@@ -118,16 +140,28 @@ bool ClipPolytope::clip(const Vec3& normal, double offset, int label, double on)
   remap_.assign(new_vertices_.size(), -1);
   for (int v : new_loops_) remap_[v] = 0;
   vertices_.clear();
+  labels_.clear();
+  label_count_.clear();
   for (std::size_t v = 0; v < new_vertices_.size(); ++v) {
     if (remap_[v] < 0) continue;
     remap_[v] = static_cast<int>(vertices_.size());
     vertices_.push_back(new_vertices_[v]);
+    labels_.push_back(new_labels_[v]);
+    label_count_.push_back(new_label_count_[v]);
   }
   for (int& v : new_loops_) v = remap_[v];
   loops_.swap(new_loops_);
   face_start_.swap(new_start_);
   face_label_.swap(new_label_);
   return true;
+}
+
+void ClipPolytope::addLabel(std::vector<Labels>& labels, std::vector<int>& count, std::size_t v,
+                            int label) {
+  int& n = count[v];
+  for (int k = 0; k < n; ++k)
+    if (labels[v][k] == label) return;
+  if (n < kMaxLabels) labels[v][n++] = label;
 }
 
 double ClipPolytope::reach(const Vec3& p) const {

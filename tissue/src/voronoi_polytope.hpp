@@ -4,6 +4,7 @@
 // in 3D is a box cut by the bisector planes of its Delaunay neighbours.
 
 #include <array>
+#include <span>
 #include <vector>
 
 #include "tessella/tissue/vec3.hpp"
@@ -28,6 +29,12 @@ class ClipPolytope {
   const int* faceBegin(std::size_t f) const { return loops_.data() + face_start_[f]; }
   const int* faceEnd(std::size_t f) const { return loops_.data() + face_start_[f + 1]; }
   const std::vector<Vec3>& vertices() const { return vertices_; }
+  /// The labels of the planes through vertex v (at least 3; more where
+  /// several planes meet at one point), in no particular order.
+  std::span<const int> vertexLabels(std::size_t v) const {
+    return {labels_[v].data(), static_cast<std::size_t>(label_count_[v])};
+  }
+  static constexpr int kMaxLabels = 12;
 
   /// Largest distance from p to a vertex.
   double reach(const Vec3& p) const;
@@ -35,7 +42,12 @@ class ClipPolytope {
   void volumeAndCentroid(double& volume, Vec3& centroid) const;
 
  private:
+  using Labels = std::array<int, kMaxLabels>;
+  void addLabel(std::vector<Labels>& labels, std::vector<int>& count, std::size_t v, int label);
+
   std::vector<Vec3> vertices_;
+  std::vector<Labels> labels_;
+  std::vector<int> label_count_;
   std::vector<int> face_start_{0};
   std::vector<int> loops_;
   std::vector<int> face_label_;
@@ -43,6 +55,8 @@ class ClipPolytope {
   std::vector<double> side_;
   std::vector<int> remap_;
   std::vector<Vec3> new_vertices_;
+  std::vector<Labels> new_labels_;
+  std::vector<int> new_label_count_;
   std::vector<int> new_start_, new_loops_, new_label_;
   std::vector<std::array<int, 3>> cut_edges_;  // (a, b, new vertex) on crossed edges
   std::vector<std::array<int, 2>> cap_;         // cap segments (from, to)
