@@ -117,7 +117,7 @@ Vec3 canonicalPosition(const Vec3& clipped, Index cell, std::span<const int> lab
   Vec3 x;
   if (a.rows() == 3) {
     const Mat3 a3 = a;
-    x = a3.fullPivLu().solve(Vec3(b));
+    x = a3.partialPivLu().solve(Vec3(b));
   } else {
     x = (a.transpose() * a).ldlt().solve(a.transpose() * b);
   }
@@ -220,6 +220,12 @@ ClippedCells3 clipVoronoi3(std::span<const Vec3> seeds, const ConvexDomain3& dom
     cell.resetToBox(domain.lo - margin, domain.hi + margin, box_labels);
     neighbours.clear();
     dt.finite_adjacent_vertices(handle[i], std::back_inserter(neighbours));
+    // Nearest first: the cell shrinks early, so later planes cut less or nothing.
+    const Point& si = handle[i]->point();
+    std::sort(neighbours.begin(), neighbours.end(), [&](const auto& a, const auto& b) {
+      return std::make_pair(CGAL::squared_distance(si, a->point()), a->info()) <
+             std::make_pair(CGAL::squared_distance(si, b->point()), b->info());
+    });
     try {
       for (const auto& v : neighbours) {
         const Vec3 t(v->point().x(), v->point().y(), v->point().z());
