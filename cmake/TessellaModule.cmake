@@ -1,7 +1,15 @@
 # tessella_add_module(name PUBLIC_DEPS ... PRIVATE_DEPS ...)
 # One module = one directory = one library target `tessella_<name>` with the
-# alias `tessella::<name>`. Sources are every src/*.cpp (so that adding a file
-# needs no CMake edit); headers live in include/tessella/<name>/.
+# aliases `tessella::<name>` and `Tessella::<name>` (the latter is the name an
+# installed package exports, so code written against either works unchanged).
+# Sources are every src/*.cpp (so that adding a file needs no CMake edit);
+# headers live in include/tessella/<name>/.
+#
+# With TESSELLA_INSTALL on, the module also installs itself: its library into
+# the `TessellaTargets` export set (exported as Tessella::<name>) and its
+# whole include/ tree. cmake/TessellaPackage.cmake writes the package files.
+include(GNUInstallDirs)
+
 function(tessella_add_module name)
   cmake_parse_arguments(ARG "" "" "PUBLIC_DEPS;PRIVATE_DEPS" ${ARGN})
   file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/src/*.cpp)
@@ -9,16 +17,38 @@ function(tessella_add_module name)
   if(sources)
     add_library(${target} STATIC ${sources})
     target_include_directories(${target} PUBLIC
-      $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include> $<INSTALL_INTERFACE:include>)
-    target_link_libraries(${target} PUBLIC ${ARG_PUBLIC_DEPS} PRIVATE ${ARG_PRIVATE_DEPS} tessella_warnings)
+      $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include> $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+    # Warnings are a build-tree concern: BUILD_INTERFACE keeps the target out
+    # of the export (a static library's private deps are exported as LINK_ONLY).
+    target_link_libraries(${target} PUBLIC ${ARG_PUBLIC_DEPS}
+      PRIVATE ${ARG_PRIVATE_DEPS} $<BUILD_INTERFACE:tessella_warnings>)
     if(TESSELLA_PARANOID)
       target_compile_definitions(${target} PUBLIC TESSELLA_PARANOID=1)
     endif()
   else()
     add_library(${target} INTERFACE)
     target_include_directories(${target} INTERFACE
-      $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include> $<INSTALL_INTERFACE:include>)
+      $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include> $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
     target_link_libraries(${target} INTERFACE ${ARG_PUBLIC_DEPS})
   endif()
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${name})
   add_library(tessella::${name} ALIAS ${target})
+  add_library(Tessella::${name} ALIAS ${target})
+  # The package (umbrella target, dependency list) is built from this list.
+  set_property(GLOBAL APPEND PROPERTY TESSELLA_MODULE_TARGETS ${target})
+  # At the end of the module's CMakeLists.txt: its imported targets are
+  # visible there, and later target_link_libraries() calls are included.
+  # (EVAL bakes the name in: DEFER expands variables only when it runs.)
+  cmake_language(EVAL CODE "cmake_language(DEFER CALL _tessella_record_dependencies [[${target}]])")
+
+  if(TESSELLA_INSTALL)
+    install(TARGETS ${target} EXPORT TessellaTargets
+      ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+      LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
+    if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/include)
+      install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/include/
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+        FILES_MATCHING PATTERN "*.hpp" PATTERN "*.h" PATTERN "*.inl")
+    endif()
+  endif()
 endfunction()

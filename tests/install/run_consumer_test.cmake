@@ -1,0 +1,62 @@
+# cmake -DSOURCE_DIR=... -DBUILD_DIR=... -DCONSUMER_DIR=... -DWORK_DIR=... -DMODULES=a,b
+#       [-DGENERATOR=...] [-DCXX=...] -P run_consumer_test.cmake
+# Installs the build tree into BUILD_DIR/install-test, checks what was installed,
+# then configures, builds and runs the outside consumer project against it.
+# Any failure stops with a message saying which step failed and why.
+foreach(var SOURCE_DIR BUILD_DIR CONSUMER_DIR WORK_DIR MODULES)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "run_consumer_test.cmake: -D${var}=... is required")
+  endif()
+endforeach()
+string(REPLACE "," ";" MODULES "${MODULES}")
+set(prefix ${BUILD_DIR}/install-test)
+set(consumer_build ${WORK_DIR}/consumer-build)
+file(REMOVE_RECURSE ${prefix} ${consumer_build})
+
+function(run step)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message("${out}${err}")
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "install test: step '${step}' failed (exit ${rc}): ${ARGN}")
+  endif()
+endfunction()
+
+run("install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
+
+# What a consumer needs must be there, and nothing of the build tree.
+set(pkg ${prefix}/lib/cmake/Tessella)
+foreach(file ${pkg}/TessellaConfig.cmake ${pkg}/TessellaConfigVersion.cmake
+             ${pkg}/TessellaTargets.cmake ${prefix}/include/tessella/tissue.hpp)
+  if(NOT EXISTS ${file})
+    message(FATAL_ERROR "install test: ${file} was not installed")
+  endif()
+endforeach()
+foreach(module IN LISTS MODULES)
+  if(NOT IS_DIRECTORY ${prefix}/include/tessella/${module})
+    message(FATAL_ERROR "install test: headers of module ${module} were not installed")
+  endif()
+endforeach()
+# Exported files use paths relative to the prefix: a source or build-tree
+# path, or the build-only warnings target, means the export leaked.
+file(GLOB package_files ${pkg}/*.cmake)
+foreach(file IN LISTS package_files)
+  file(READ ${file} text)
+  foreach(leak tessella_warnings "${SOURCE_DIR}/" "${BUILD_DIR}/")
+    string(FIND "${text}" "${leak}" at)
+    if(NOT at EQUAL -1)
+      message(FATAL_ERROR "install test: ${file} refers to '${leak}' (the build tree leaked into the package)")
+    endif()
+  endforeach()
+endforeach()
+
+set(configure_args -S ${CONSUMER_DIR} -B ${consumer_build} -DCMAKE_BUILD_TYPE=Release
+    -DCMAKE_PREFIX_PATH=${prefix} "-DTESSELLA_EXPECTED_MODULES=${MODULES}")
+if(GENERATOR)
+  list(APPEND configure_args -G ${GENERATOR})
+endif()
+if(CXX)
+  list(APPEND configure_args -DCMAKE_CXX_COMPILER=${CXX})
+endif()
+run("configure consumer" ${CMAKE_COMMAND} ${configure_args})
+run("build consumer" ${CMAKE_COMMAND} --build ${consumer_build} -j2)
+run("run consumer" ${consumer_build}/consumer)
