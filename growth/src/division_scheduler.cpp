@@ -18,10 +18,10 @@ DivisionScheduler::DivisionScheduler(SizeThreshold trigger, std::shared_ptr<cons
                      " must be >= 1");
 }
 
-DivisionRecord DivisionScheduler::divide(Tissue& t, CellId c) {
+DivisionRecord DivisionScheduler::divide(Tissue& t, CellId c, Rng& rng) {
   if (options_.tag_walls) divisionWallTags(t);
   const std::int64_t mother = t.lineageId(c);
-  const Plane base = rule_->plane(t, c, rng_);
+  const Plane base = rule_->plane(t, c, rng);
   // Perturbations for degenerate cuts: rotate about the cell normal (2D) or
   // an axis perpendicular to the plane normal (3D), and shift along it.
   const Vec3 n0 = base.normal.normalized();
@@ -52,21 +52,21 @@ DivisionRecord DivisionScheduler::divide(Tissue& t, CellId c) {
                       ElementId{t.dim(), c.index()});
 }
 
-DivisionReport DivisionScheduler::step(Tissue& t, GeometryCache& geometry) {
+DivisionReport DivisionScheduler::step(Tissue& t, GeometryCache& geometry, Rng& rng) {
   if (!geometry.fresh(t))
     recomputeGeometry(t, geometry, GeometryOptions{.edges = false, .second_moments = false});
   DivisionReport report;
-  const std::vector<CellId> due = trigger_.cellsDue(t, geometry, rng_);
+  const std::vector<CellId> due = trigger_.cellsDue(t, geometry, rng);
   for (CellId c : due) {
     try {
-      report.divided.push_back(divide(t, c));
+      report.divided.push_back(divide(t, c, rng));
     } catch (const GeometryError& e) {
       report.skipped.push_back(SkippedDivision{c, t.lineageId(c), e.what()});
     }
   }
   // New cells (daughters) draw their noisy thresholds now, so they are set
   // before any caller reads them.
-  if (!report.divided.empty()) trigger_.prepare(t, rng_);
+  if (!report.divided.empty()) trigger_.prepare(t, rng);
   return report;
 }
 

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 
+#include "tessella/growth/parallel_threshold.hpp"
 #include "tessella/tissue/errors.hpp"
 
 namespace tessella::growth {
@@ -102,7 +103,7 @@ void ExpressionField::velocities(std::span<const Vec3> x, double t, std::span<Ve
   while (workspaces_.size() < threads) workspaces_.push_back(makeWorkspace());
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(x.size());
   // Each thread evaluates one contiguous chunk in bulk mode with its own parsers.
-#pragma omp parallel num_threads(static_cast<int>(threads))
+#pragma omp parallel num_threads(static_cast<int>(threads)) if(n >= kParallelMinItems)
   {
     const std::ptrdiff_t nt = omp_get_num_threads(), id = omp_get_thread_num();
     const std::ptrdiff_t begin = n * id / nt, end = n * (id + 1) / nt, m = end - begin;

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "tessella/growth/parallel_threshold.hpp"
 #include "tessella/tissue/errors.hpp"
 
 namespace tessella::growth {
@@ -42,11 +43,11 @@ void GrowthIntegrator::velocities(const Tissue& t, std::span<const Vec3> x, doub
 void GrowthIntegrator::constrain(const Tissue& t, std::span<Vec3> x) const {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(x.size());
   if (t.embedding() == Embedding::Planar) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if(n >= kParallelMinItems)
     for (std::ptrdiff_t i = 0; i < n; ++i) x[i].z() = 0.0;
   } else if (options_.projection) {
     const auto& alive = t.topology().aliveFlags(0);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if(n >= kParallelMinItems)
     for (std::ptrdiff_t i = 0; i < n; ++i)
       if (alive[i]) x[i] = options_.projection(x[i]);
   }
@@ -65,7 +66,7 @@ void GrowthIntegrator::step(Tissue& t, double dt) {
     normal_before_.assign(t.slots(2), Vec3::Zero());
     const auto& alive = t.topology().aliveFlags(2);
     const std::ptrdiff_t nf = static_cast<std::ptrdiff_t>(t.slots(2));
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if(nf >= kParallelMinItems)
     for (std::ptrdiff_t f = 0; f < nf; ++f)
       if (alive[f]) normal_before_[f] = polygonMeasures(t, FaceId(static_cast<Index>(f))).normal;
   }
@@ -74,17 +75,17 @@ void GrowthIntegrator::step(Tissue& t, double dt) {
   std::span<Vec3> x = t.mutablePositions();  // bumps the geometry counter
   const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(n);
   if (options_.scheme == IntegrationScheme::Euler) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if(m >= kParallelMinItems)
     for (std::ptrdiff_t i = 0; i < m; ++i) x[i] = x0_[i] + dt * k1_[i];
     constrain(t, x);
   } else {
     // Heun: predictor x1 = x0 + dt k1, corrector x0 + dt/2 (k1 + v(x1, t1)).
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if(m >= kParallelMinItems)
     for (std::ptrdiff_t i = 0; i < m; ++i) x[i] = x0_[i] + dt * k1_[i];
     constrain(t, x);
     k2_.resize(n);
     velocities(t, x, t1, k2_);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if(m >= kParallelMinItems)
     for (std::ptrdiff_t i = 0; i < m; ++i) x[i] = x0_[i] + (0.5 * dt) * (k1_[i] + k2_[i]);
     constrain(t, x);
   }
@@ -99,7 +100,7 @@ void GrowthIntegrator::checkCells(Tissue& t, double t0, double t1) {
   const std::ptrdiff_t nc = static_cast<std::ptrdiff_t>(t.cellSlots());
   const auto& alive = t.topology().aliveFlags(dim);
   std::ptrdiff_t bad = nc;  // lowest offending cell slot (deterministic report)
-#pragma omp parallel for schedule(static) reduction(min : bad)
+#pragma omp parallel for schedule(static) reduction(min : bad) if(nc >= kParallelMinItems)
   for (std::ptrdiff_t c = 0; c < nc; ++c) {
     if (!alive[c]) continue;
     bool wrong;

@@ -49,7 +49,15 @@ SurfaceProjection paraboloidProjection(const Vec3& apex, double curvature) {
 }
 
 SurfaceProjection domeProjection(const Dome& dome) {
-  return [dome](const Vec3& p) { return dome.lift(p); };
+  const double r = dome.base_radius, h = dome.height;
+  if (!(r > 0) || !(h > 0))
+    throw InputError("dome projection: base_radius and height must be > 0");
+  const Vec3 summit = dome.base_center + Vec3(0, 0, h);
+  if (dome.shape == Dome::Shape::Paraboloid)
+    return paraboloidProjection(summit, h / (r * r));  // z = h (1 - rho^2 / r^2)
+  // The cap's sphere passes through the summit and the base circle.
+  const double radius = (r * r + h * h) / (2 * h);
+  return sphereProjection(summit - Vec3(0, 0, radius), radius);
 }
 
 }  // namespace tessella::growth

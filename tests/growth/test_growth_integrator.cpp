@@ -177,3 +177,28 @@ TEST_CASE("boundary-driven growth equals field growth for a linear field on a gr
   for (VertexId v : a.vertices()) CHECK((a.position(v) - b.position(v)).norm() < 1e-12);
   CHECK(boundary.interpolator().factorisations() == 1);  // topology never changed
 }
+
+TEST_CASE("the dome projection fixes the dome's own surface", "[growth][integrator]") {
+  for (Dome::Shape shape : {Dome::Shape::SphericalCap, Dome::Shape::Paraboloid}) {
+    Dome dome;
+    dome.shape = shape;
+    dome.base_radius = 5.0;
+    dome.height = 2.0;
+    dome.base_center = Vec3(1, -1, 0.5);
+    const SurfaceProjection proj = domeProjection(dome);
+    // Points the generator puts on the dome stay where they are...
+    for (double r : {0.0, 1.0, 3.0, 4.9}) {
+      const Vec3 on = dome.lift(dome.base_center + Vec3(r * 0.6, r * 0.8, 0));
+      CHECK((proj(on) - on).norm() < 1e-12);
+    }
+    // ... and points beyond the base land on the continued surface.
+    const Vec3 out = proj(dome.base_center + Vec3(7, 0, 0));
+    if (shape == Dome::Shape::SphericalCap) {
+      const double R = (25.0 + 4.0) / 4.0;
+      CHECK((out - (dome.base_center + Vec3(0, 0, 2.0 - R))).norm() == Approx(R));
+    } else {
+      const double rho = std::hypot(out.x() - 1, out.y() + 1);
+      CHECK(out.z() == Approx(0.5 + 2.0 * (1 - rho * rho / 25.0)));
+    }
+  }
+}

@@ -59,10 +59,14 @@ class DivisionScheduler {
 
   /// Divides every due cell. `geometry` must be fresh for t (e.g. the
   /// integrator's cache after its step); if it is stale it is recomputed.
-  DivisionReport step(Tissue& t, GeometryCache& geometry);
+  DivisionReport step(Tissue& t, GeometryCache& geometry) { return step(t, geometry, rng_); }
+  /// The same, drawing from a caller's random stream (a simulation's single
+  /// stream, so a run is reproducible from one seed).
+  DivisionReport step(Tissue& t, GeometryCache& geometry, Rng& rng);
   /// Divides one cell with the rule (and retries); throws GeometryError if
   /// every attempt fails.
-  DivisionRecord divide(Tissue& t, CellId c);
+  DivisionRecord divide(Tissue& t, CellId c) { return divide(t, c, rng_); }
+  DivisionRecord divide(Tissue& t, CellId c, Rng& rng);
 
   const SizeThreshold& trigger() const { return trigger_; }
   const DivisionRule& rule() const { return *rule_; }

@@ -23,8 +23,10 @@ SurfaceProjection sphereProjection(const Vec3& center, double radius);
 /// Throws InputError for a non-positive curvature.
 SurfaceProjection paraboloidProjection(const Vec3& apex, double curvature);
 
-/// Vertical projection onto a tissue-module Dome (Dome::lift): the surface
-/// the dome generator puts the vertices on.
+/// Nearest-point projection onto the surface of a tissue-module Dome (the
+/// one the dome generator puts the vertices on), extended past the dome's
+/// base so cells can flow down the flanks: the whole sphere of a spherical
+/// cap, the whole paraboloid of a paraboloid dome.
 SurfaceProjection domeProjection(const Dome& dome);
 
 }  // namespace tessella::growth
