@@ -17,7 +17,7 @@ import json
 import os
 import sys
 
-from paraview.simple import (ColorBy, CreateView, GetColorTransferFunction, PVDReader, ResetCamera,
+from paraview.simple import (ColorBy, CreateView, GetColorTransferFunction, GetScalarBar, PVDReader, ResetCamera,
                              SaveScreenshot, Show)
 
 
@@ -94,6 +94,8 @@ def main(argv):
 
     view = CreateView("RenderView")
     view.ViewSize = [width, height]
+    if hasattr(view, "UseColorPaletteForBackground"):  # ParaView >= 5.10 ignores Background otherwise
+        view.UseColorPaletteForBackground = 0
     view.Background = [1.0, 1.0, 1.0]
     view.OrientationAxesVisibility = 0
     display = Show(reader, view)
@@ -103,6 +105,9 @@ def main(argv):
     lut.RescaleTransferFunction(low, high)
     lut.AutomaticRescaleRangeMode = "Never"
     display.SetScalarBarVisibility(view, True)
+    bar = GetScalarBar(lut, view)
+    bar.TitleColor = [0.0, 0.0, 0.0]  # dark text: the background is white
+    bar.LabelColor = [0.0, 0.0, 0.0]
 
     # The camera frames the last (largest, for a growing tissue) step and stays.
     view.ViewTime = times[-1]

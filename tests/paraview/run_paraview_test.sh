@@ -35,8 +35,18 @@ fi
 
 rm -rf "$work" && mkdir -p "$work"
 "$writer" "$work/series" "$work/expected.json"
-PYTHONPATH=${pvpython_dir}${PYTHONPATH:+:$PYTHONPATH} \
-  xvfb-run -a -s "-screen 0 1280x1024x24" \
-  pvbatch "$script" "$work/series/tissue.pvd" --property auxin --size 640x480 \
-  --output-dir "$work/png" --summary "$work/summary.json"
+# Xvfb can lose a race for its display number on a busy shared machine
+# ("bad X server connection"): try up to three times.
+for attempt in 1 2 3; do
+  rm -rf "$work/png" "$work/summary.json"
+  if PYTHONPATH=${pvpython_dir}${PYTHONPATH:+:$PYTHONPATH} \
+     xvfb-run -a -s "-screen 0 1280x1024x24" \
+     pvbatch "$script" "$work/series/tissue.pvd" --property auxin --size 640x480 \
+     --output-dir "$work/png" --summary "$work/summary.json"; then
+    break
+  fi
+  echo "pvbatch attempt $attempt failed"
+  [ "$attempt" = 3 ] && exit 1
+  sleep 2
+done
 python3 "$checker" "$work/expected.json" "$work/summary.json"
