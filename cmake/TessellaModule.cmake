@@ -46,9 +46,10 @@ function(tessella_add_module name)
       ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
       LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR})
     if(EXISTS ${CMAKE_CURRENT_SOURCE_DIR}/include)
+      # The whole tree: everything under include/ is public by convention,
+      # implementation files included by headers (detail/*.ipp) too.
       install(DIRECTORY ${CMAKE_CURRENT_SOURCE_DIR}/include/
-        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
-        FILES_MATCHING PATTERN "*.hpp" PATTERN "*.h" PATTERN "*.inl")
+        DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
     endif()
   endif()
 endfunction()

@@ -50,7 +50,10 @@ foreach(file IN LISTS package_files)
 endforeach()
 
 set(configure_args -S ${CONSUMER_DIR} -B ${consumer_build} -DCMAKE_BUILD_TYPE=Release
-    -DCMAKE_PREFIX_PATH=${prefix} "-DTESSELLA_EXPECTED_MODULES=${MODULES}")
+    -DCMAKE_PREFIX_PATH=${prefix})
+# Comma-separated: execute_process would split a ';' list into arguments.
+string(REPLACE ";" "," modules_arg "${MODULES}")
+list(APPEND configure_args -DTESSELLA_EXPECTED_MODULES=${modules_arg})
 if(GENERATOR)
   list(APPEND configure_args -G ${GENERATOR})
 endif()
