@@ -32,6 +32,13 @@ std::string str(const Vec3& p) {
   return s.str();
 }
 
+std::string num(double x) {
+  std::ostringstream s;
+  s.precision(6);
+  s << x;
+  return s.str();
+}
+
 MeshabilityReport defect(const std::string& message, ElementId element) {
   return MeshabilityReport{false, message, element};
 }
@@ -97,7 +104,7 @@ MeshabilityReport checkEdges(const Tissue& t, double tol) {
     if (!(len > tol)) {
       const auto [a, b] = topo.edgeVertices(e);
       return defect("edge " + std::to_string(e.index()) + " between vertices " + std::to_string(a.index()) +
-                        " and " + std::to_string(b.index()) + " has zero length (" + std::to_string(len) +
+                        " and " + std::to_string(b.index()) + " has zero length (" + num(len) +
                         ") at " + str(t.position(a)) + "; coincident vertices cannot be meshed",
                     ElementId{1, e.index()});
     }
@@ -117,10 +124,10 @@ MeshabilityReport checkPlanar(const Tissue& t, double tol, double scale) {
     const double signed_area = fanVectorArea(loop, loopMean(loop)).z();
     if (signed_area < 0.0)
       return defect("cell " + std::to_string(c.index()) + " is inverted: its loop runs clockwise (signed area " +
-                        std::to_string(signed_area) + ")",
+                        num(signed_area) + ")",
                     ElementId{2, c.index()});
     if (!(signed_area > tol * scale))
-      return defect("cell " + std::to_string(c.index()) + " has zero area (" + std::to_string(signed_area) + ")",
+      return defect("cell " + std::to_string(c.index()) + " has zero area (" + num(signed_area) + ")",
                     ElementId{2, c.index()});
   }
   // Wall edges may meet only at shared vertices.
@@ -167,7 +174,7 @@ MeshabilityReport checkSurface(const Tissue& t, double tol, double scale) {
     const auto loop = loopPositions(t, t.cellFace(c));
     const FanSurface fan = fanSurface(loop);
     if (!(fan.area > tol * scale))
-      return defect("cell " + std::to_string(c.index()) + " has zero area (" + std::to_string(fan.area) + ")",
+      return defect("cell " + std::to_string(c.index()) + " has zero area (" + num(fan.area) + ")",
                     ElementId{2, c.index()});
     if (!(fan.min_triangle_area > 1e-12 * fan.area)) {
       const auto verts = t.topology().faceVertices(t.cellFace(c));
@@ -175,7 +182,7 @@ MeshabilityReport checkSurface(const Tissue& t, double tol, double scale) {
       return defect("cell " + std::to_string(c.index()) + " folds over: its fan triangle from the vertex mean " +
                         str(fan.center) + " to vertices " + std::to_string(verts[i].index()) + " and " +
                         std::to_string(verts[(i + 1) % verts.size()].index()) + " has signed area " +
-                        std::to_string(fan.min_triangle_area) +
+                        num(fan.min_triangle_area) +
                         " (the cell is inverted, self-intersecting or not star-shaped from its vertex mean)",
                     ElementId{2, c.index()});
     }
@@ -224,7 +231,7 @@ MeshabilityReport triangulateWalls(const Tissue& t, double tolerance, WallTriang
     const FanSurface fan = fanSurface(loop);
     if (!(fan.area > tol * scale))
       return defect("wall " + std::to_string(w.index()) + " " + wallCellsText(t, w) + " has zero area (" +
-                        std::to_string(fan.area) + ")",
+                        num(fan.area) + ")",
                     ElementId{2, w.index()});
     out.wall_normal[w.index()] = fan.normal;
     out.points[out.centerPoint(w)] = fan.center;
@@ -247,10 +254,10 @@ MeshabilityReport triangulateWalls(const Tissue& t, double tolerance, WallTriang
     } else {
       const std::size_t i = static_cast<std::size_t>(fan.min_triangle);
       return defect("wall " + std::to_string(w.index()) + " " + wallCellsText(t, w) +
-                        " is non-planar (deviation " + std::to_string(fan.planarity_deviation) +
+                        " is non-planar (deviation " + num(fan.planarity_deviation) +
                         ") and its fan surface folds: the fan triangle to vertices " +
                         std::to_string(verts[i].index()) + " and " + std::to_string(verts[(i + 1) % verts.size()].index()) +
-                        " has signed area " + std::to_string(fan.min_triangle_area),
+                        " has signed area " + num(fan.min_triangle_area),
                     ElementId{2, w.index()});
     }
   }
@@ -274,10 +281,10 @@ MeshabilityReport checkVolumeGeometry(const Tissue& t, const MeshOptions& option
       }
     if (volume < 0.0)
       return defect("cell " + std::to_string(c.index()) + " is inverted: its volume is negative (" +
-                        std::to_string(volume) + ")",
+                        num(volume) + ")",
                     ElementId{3, c.index()});
     if (!(volume > tol * scale * scale))
-      return defect("cell " + std::to_string(c.index()) + " has zero volume (" + std::to_string(volume) + ")",
+      return defect("cell " + std::to_string(c.index()) + " has zero volume (" + num(volume) + ")",
                     ElementId{3, c.index()});
   }
   // Wall triangles may meet only at shared vertices and edges.

@@ -24,6 +24,7 @@
 #include <CGAL/Delaunay_mesh_size_criteria_2.h>
 #include <CGAL/Delaunay_mesh_vertex_base_2.h>
 #include <CGAL/Delaunay_mesher_2.h>
+#include <CGAL/Delaunay_mesher_no_edge_refinement_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
@@ -48,6 +49,9 @@ using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>;
 using Criteria = CGAL::Delaunay_mesh_size_criteria_2<Cdt>;
 using Mesher = CGAL::Delaunay_mesher_2<Cdt, Criteria>;
+/// Refines inside a triangle only, never splitting its sides: the last resort
+/// when side splits keep bouncing between neighbouring fan triangles.
+using InteriorMesher = CGAL::Delaunay_mesher_no_edge_refinement_2<Cdt, Criteria>;
 
 /// A segment shared by fan triangles: a wall edge or a spoke.
 struct Segment {
@@ -77,6 +81,7 @@ K::Point_2 local(const FanTriangle& f, const Vec3& p) { return {(p - f.corners[0
 
 /// Meshes one fan triangle in its plane; appends (segment, param) for every
 /// point the refinement put on a side.
+template <typename RefineMesher>
 LocalMesh meshFanTriangle(const FanTriangle& f, const std::vector<Segment>& segments, double shape_bound,
                           double max_edge, std::vector<std::pair<int, double>>& new_side_points) {
   Cdt cdt;
@@ -98,7 +103,7 @@ LocalMesh meshFanTriangle(const FanTriangle& f, const std::vector<Segment>& segm
   }
   for (std::size_t i = 0; i < boundary.size(); ++i) cdt.insert_constraint(boundary[i], boundary[(i + 1) % boundary.size()]);
   if (shape_bound > 0.0 || max_edge > 0.0) {
-    Mesher mesher(cdt, Criteria(shape_bound, max_edge));
+    RefineMesher mesher(cdt, Criteria(shape_bound, max_edge));
     mesher.refine_mesh();  // domain: everything inside the constrained boundary
   } else {
     Mesher::mark_facets(cdt, static_cast<K::Point_2*>(nullptr), static_cast<K::Point_2*>(nullptr));
@@ -223,6 +228,10 @@ FeMesh meshSurfaceTissue(const Tissue& t, const MeshOptions& options) {
       const Vec3 normal = (f.corners[1] - f.corners[0]).cross(f.corners[2] - f.corners[0]).normalized();
       f.u = (f.corners[1] - f.corners[0]).normalized();
       f.v = normal.cross(f.u);
+      if (!f.u.allFinite() || !f.v.allFinite())
+        throw GeometryError("surface mesher: cell " + std::to_string(c.index()) + " has a degenerate fan triangle at loop position " +
+                                std::to_string(i),
+                            ElementId{2, c.index()});
       const int id = static_cast<int>(fans.size());
       for (int s : f.side_segment) segments[static_cast<std::size_t>(s)].triangles.push_back(id);
       fans.push_back(f);
@@ -234,17 +243,28 @@ FeMesh meshSurfaceTissue(const Tissue& t, const MeshOptions& options) {
   std::vector<LocalMesh> local(fans.size());
   std::vector<int> dirty(fans.size());
   for (std::size_t i = 0; i < fans.size(); ++i) dirty[i] = static_cast<int>(i);
-  constexpr int kMaxRounds = 100;
-  int round = 0;
-  for (; !dirty.empty(); ++round) {
-    if (round == kMaxRounds)
-      throw GeometryError("surface mesher: side refinement did not settle after " + std::to_string(kMaxRounds) +
-                              " rounds (cell " + std::to_string(fans[static_cast<std::size_t>(dirty[0])].cell) +
-                              "); try a smaller min_angle_degrees",
-                          ElementId{2, static_cast<Index>(fans[static_cast<std::size_t>(dirty[0])].cell)});
+  // Side splits normally settle in a round or two. Near very sharp corners
+  // they can bounce between neighbouring triangles (each side of a sharp
+  // wedge refines the other), with side points multiplying each round. So
+  // after kMaxRounds, or as soon as a later round adds more side points than
+  // there were, the remaining triangles are refined inside only, keeping
+  // their shared side points: the mesh stays conforming and exact, and the
+  // angle bound may be missed next to those sides.
+  constexpr int kMaxRounds = 2;
+  std::size_t side_points = 0;
+  for (const Segment& s : segments) side_points += s.params.size();
+  bool bouncing = false;
+  for (int round = 0; !dirty.empty(); ++round) {
     std::vector<std::pair<int, double>> splits;
+    if (round == kMaxRounds || bouncing) {
+      for (int i : dirty)
+        local[static_cast<std::size_t>(i)] =
+            meshFanTriangle<InteriorMesher>(fans[static_cast<std::size_t>(i)], segments, shape_bound, max_edge, splits);
+      break;
+    }
     for (int i : dirty)
-      local[static_cast<std::size_t>(i)] = meshFanTriangle(fans[static_cast<std::size_t>(i)], segments, shape_bound, max_edge, splits);
+      local[static_cast<std::size_t>(i)] =
+          meshFanTriangle<Mesher>(fans[static_cast<std::size_t>(i)], segments, shape_bound, max_edge, splits);
     std::vector<char> mark(fans.size(), 0);
     for (const auto& [seg, param] : splits) {
       Segment& s = segments[static_cast<std::size_t>(seg)];
@@ -253,6 +273,11 @@ FeMesh meshSurfaceTissue(const Tissue& t, const MeshOptions& options) {
       if (s.params.size() != before)
         for (int tri : s.triangles) mark[static_cast<std::size_t>(tri)] = 1;
     }
+    std::size_t added = 0;
+    for (const Segment& s : segments) added += s.params.size();
+    added -= side_points;
+    bouncing = round >= 1 && added > std::max<std::size_t>(side_points, 64);
+    side_points += added;
     // A triangle that split its own side must be remeshed too, so its side
     // points are the segment's (bit-identical) points.
     dirty.clear();
