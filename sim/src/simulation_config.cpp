@@ -32,8 +32,11 @@ SimulationConfig readSimulationConfig(Config config) {
   TissueSpec tissue = readTissueSection(config);
   TimeSpan time = readTimeSection(config);
   OutputSpec output = readOutputSection(config);
+  GrowthSpec growth = readGrowthSection(config, tissue);
+  DivisionSpec division = readDivisionSection(config);
   // Extension point: read new sections here.
-  return SimulationConfig{std::move(config), seed, std::move(tissue), time, std::move(output)};
+  return SimulationConfig{std::move(config), seed,           std::move(tissue),  time,
+                          std::move(output), std::move(growth), std::move(division)};
 }
 
 SimulationConfig loadSimulationConfigFile(const std::string& path, const std::vector<std::string>& overrides) {

@@ -1,5 +1,6 @@
 #include "tessella/sim/tessella_schema.hpp"
 
+#include "tessella/sim/growth_section.hpp"
 #include "tessella/sim/output_section.hpp"
 #include "tessella/sim/time_section.hpp"
 #include "tessella/sim/tissue_section.hpp"
@@ -24,6 +25,8 @@ Schema makeSchema() {
       .whenAbsent("drawn from the system's random source and recorded in run.yaml");
   declareTissueSection(s);
   declareTimeSection(s);
+  declareGrowthSection(s);
+  declareDivisionSection(s);
   declareOutputSection(s);
   // Extension point: declare new sections here (declareGrowthSection(s); ...).
   return s;

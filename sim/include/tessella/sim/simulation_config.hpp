@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "tessella/sim/config.hpp"
+#include "tessella/sim/growth_section.hpp"
 #include "tessella/sim/output_section.hpp"
 #include "tessella/sim/time_section.hpp"
 #include "tessella/sim/tissue_section.hpp"
@@ -23,6 +24,8 @@ struct SimulationConfig {
   TissueSpec tissue;
   TimeSpan time;
   OutputSpec output;
+  GrowthSpec growth;
+  DivisionSpec division;
   // Extension point: one member per new section (GrowthSpec growth; ...),
   // filled in readSimulationConfig().
 };

@@ -1,0 +1,160 @@
+// The growth: and division: sections and the example configs that use them.
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <set>
+#include <string>
+
+#include "tessella/growth/bump_field.hpp"
+#include "tessella/sim/config_error.hpp"
+#include "tessella/sim/growth_stages.hpp"
+#include "tessella/sim/simulation.hpp"
+#include "tessella/tissue/geometry.hpp"
+#include "tessella/tissue/validate.hpp"
+#include "test_support.hpp"
+
+using namespace tessella;
+using namespace tessella::sim;
+using Catch::Matchers::Contains;
+using tessella::sim::test::sourcePath;
+
+namespace {
+
+// Runs a simulation, validating the tissue and the uniqueness of lineage ids
+// after every step; returns the number of divisions.
+std::size_t runValidated(Simulation& sim) {
+  sim.onStep([](const Simulation& s) {
+    const ValidationReport v = validate(s.tissue());
+    INFO("t = " << s.time() << ": " << v.message);
+    REQUIRE(v.ok);
+    std::set<std::int64_t> ids;
+    for (CellId c : s.tissue().cells()) ids.insert(s.tissue().lineageId(c));
+    REQUIRE(ids.size() == s.tissue().numCells());
+  });
+  sim.run();
+  for (std::size_t i = 0; i < sim.numStages(); ++i)
+    if (const auto* d = dynamic_cast<const DivisionStage*>(&sim.stage(i))) return d->divisions();
+  return 0;
+}
+
+}  // namespace
+
+TEST_CASE("figure17.yaml: the paper's bump run", "[sim][growth][configs]") {
+  Simulation sim = Simulation::fromFile(sourcePath("configs/figure17.yaml"), {"time.end=2.0"});
+  REQUIRE(sim.numStages() == 2);
+  CHECK(sim.stage(0).name() == "growth");
+  CHECK(sim.stage(1).name() == "division");
+  const Tissue start = sim.tissue();
+  runValidated(sim);
+  // Boundary vertices move with the field itself: the top of the sheet above
+  // the bump's centre has risen by the exact displacement a t exp(...).
+  const growth::BumpField bump(growth::BumpFieldParams{.a = 1.0, .b = 1.0, .h = 4.0, .x0 = 10.0});
+  bool found = false;
+  for (VertexId v : start.vertices()) {
+    const Vec3 p0 = start.position(v);
+    if (p0.x() != 10.0 || p0.y() != 5.0) continue;
+    found = true;
+    CHECK(sim.tissue().position(v).y() == Approx(5.0 + bump.displacement(10.0, 0.0, 2.0)).epsilon(1e-4));
+  }
+  CHECK(found);
+}
+
+TEST_CASE("voronoi_growth.yaml runs with every division rule", "[sim][growth][configs]") {
+  for (const char* rule : {"main_axis", "shortest_wall", "perpendicular_to_mother_wall", "random", "fixed",
+                           "besson_dumais"}) {
+    INFO(rule);
+    Simulation sim = Simulation::fromFile(sourcePath("configs/voronoi_growth.yaml"),
+                                          {std::string("division.rule=") + rule, "time.end=6.0"});
+    const std::size_t cells = sim.tissue().numCells();
+    const double area = totalMeasure(sim.tissue());
+    const std::size_t divisions = runValidated(sim);
+    CHECK(divisions > 20);
+    CHECK(sim.tissue().numCells() == cells + divisions);
+    CHECK(totalMeasure(sim.tissue()) == Approx(area * std::exp(2 * 0.1 * 6.0)).epsilon(1e-4));
+  }
+}
+
+TEST_CASE("the same config and seed give the same run", "[sim][growth][configs]") {
+  auto run = [] {
+    Simulation sim = Simulation::fromFile(sourcePath("configs/voronoi_growth.yaml"),
+                                          {"division.rule=random", "time.end=4.0"});
+    sim.run();
+    return std::vector<Vec3>(sim.tissue().positions().begin(), sim.tissue().positions().end());
+  };
+  CHECK(run() == run());
+}
+
+TEST_CASE("dome_meristem.yaml keeps the sheet on its dome", "[sim][growth][configs]") {
+  Simulation sim = Simulation::fromFile(sourcePath("configs/dome_meristem.yaml"), {"time.end=3.0"});
+  const double area = totalMeasure(sim.tissue());
+  // Vertices a division creates lie on the straight edge it cut, below the
+  // dome; the next growth step projects them. So every vertex that existed
+  // before the last step must be on the surface.
+  std::size_t before_last = 0, current = sim.tissue().slots(0);
+  sim.onStep([&](const Simulation& s) {
+    before_last = current;
+    current = s.tissue().slots(0);
+  });
+  const std::size_t divisions = runValidated(sim);
+  CHECK(divisions > 0);
+  CHECK(totalMeasure(sim.tissue()) > area);
+  // Spherical cap of base radius 5 and height 2.5: sphere of radius 6.25
+  // centred 3.75 below the base plane.
+  for (VertexId v : sim.tissue().vertices()) {
+    const double r = (sim.tissue().position(v) - Vec3(0, 0, -3.75)).norm();
+    if (v.index() < before_last) CHECK(r == Approx(6.25).epsilon(1e-12));
+    else CHECK(r == Approx(6.25).epsilon(0.02));  // on an edge chord
+  }
+}
+
+TEST_CASE("box_growth_3d.yaml grows and divides polyhedra", "[sim][growth][configs]") {
+  Simulation sim = Simulation::fromFile(sourcePath("configs/box_growth_3d.yaml"), {"time.end=3.0"});
+  const double volume = totalMeasure(sim.tissue());
+  const std::size_t divisions = runValidated(sim);
+  CHECK(divisions > 10);
+  // A linear field: the volume grows as exp(trace(G) t), trace = 0.45.
+  CHECK(totalMeasure(sim.tissue()) == Approx(volume * std::exp(0.45 * 3.0)).epsilon(1e-3));
+}
+
+TEST_CASE("growth and division config errors name their key", "[sim][growth][configs]") {
+  const std::string grid = "tissue: {generator: rectangular_grid}\n";
+  SECTION("a bad expression") {
+    try {
+      Simulation::fromYaml(grid + "growth:\n  field: expression\n  expression:\n    vy: \"2*/y\"\n");
+      FAIL("no error");
+    } catch (const ConfigError& e) {
+      CHECK(e.keyPath() == "growth.expression.vy");
+      CHECK_THAT(e.what(), Contains("2*/y") && Contains("position"));
+    }
+  }
+  SECTION("bad expression parameters") {
+    CHECK_THROWS_WITH(Simulation::fromYaml(grid + "growth:\n  field: expression\n  expression:\n"
+                                                  "    vx: r*x\n    parameters: \"r=abc\"\n"),
+                      Contains("growth.expression.parameters") && Contains("r=abc"));
+  }
+  SECTION("a dome projection without a dome") {
+    CHECK_THROWS_WITH(Simulation::fromYaml(grid + "growth:\n  field: uniform\n  surface: dome\n"),
+                      Contains("growth.surface") && Contains("dome"));
+  }
+  SECTION("an unknown rule") {
+    CHECK_THROWS_WITH(Simulation::fromYaml(grid + "division:\n  rule: errera\n"),
+                      Contains("division.rule") && Contains("shortest_wall"));
+  }
+  SECTION("a zero fixed normal") {
+    CHECK_THROWS_WITH(Simulation::fromYaml(grid + "division:\n  rule: fixed\n  fixed_normal: [0, 0, 0]\n"),
+                      Contains("division.fixed_normal"));
+  }
+  SECTION("a negative bump width") {
+    CHECK_THROWS_WITH(Simulation::fromYaml(grid + "growth:\n  field: bump\n  bump:\n    h: -1\n"),
+                      Contains("growth.bump.h"));
+  }
+}
+
+TEST_CASE("a step that inverts a cell names the stage, the cell and the time", "[sim][growth][configs]") {
+  Simulation sim = Simulation::fromYaml(
+      "tissue: {generator: rectangular_grid}\n"
+      "growth:\n  field: anisotropic\n  scheme: euler\n  anisotropic:\n    rates: [-3.0, 0.0, 0.0]\n"
+      "time: {end: 2.0, dt: 1.0}\n");
+  CHECK_THROWS_WITH(sim.step(), Contains("growth") && Contains("lineage id") && Contains("t = 0"));
+}
