@@ -250,7 +250,7 @@ FeMesh meshSurfaceTissue(const Tissue& t, const MeshOptions& options) {
   // there were, the remaining triangles are refined inside only, keeping
   // their shared side points: the mesh stays conforming and exact, and the
   // angle bound may be missed next to those sides.
-  constexpr int kMaxRounds = 2;
+  constexpr int kMaxRounds = 8;
   std::size_t side_points = 0;
   for (const Segment& s : segments) side_points += s.params.size();
   bool bouncing = false;
