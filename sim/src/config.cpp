@@ -56,7 +56,7 @@ bool Config::isActive(const std::string& path) const {
   if (const SectionSpec* s = schema_->findSection(path))
     return !s->active_when || conditionHolds(*s->active_when);
   if (const KeySpec* k = schema_->findKey(path))
-    return !k->active_when || conditionHolds(*k->active_when);
+    return (!k->active_when || conditionHolds(*k->active_when)) && (k->unless_set.empty() || !has(k->unless_set));
   return false;
 }
 

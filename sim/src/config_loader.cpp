@@ -127,7 +127,10 @@ class Loader {
   std::string inactiveReason(const std::string& path) const {
     std::optional<Condition> c;
     if (const SectionSpec* s = schema_.findSection(path)) c = s->active_when;
-    if (const KeySpec* k = schema_.findKey(path)) c = k->active_when;
+    if (const KeySpec* k = schema_.findKey(path)) {
+      if (!k->unless_set.empty() && config_.has(k->unless_set)) return k->unless_set + " is given";
+      c = k->active_when;
+    }
     if (!c || !config_.has(c->key)) return "it does not apply";
     return c->key + " is " + formatValue(config_.entry(c->key).value);
   }

@@ -38,8 +38,10 @@ void table(std::string& out, const Schema& schema, const std::string& section) {
   for (const std::string& name : schema.childNames(section)) {
     const KeySpec* k = schema.findKey(joinPath(section, name));
     if (!k) continue;
+    const std::string unless = k->unless_set.empty() ? "" : "Not used when `" + k->unless_set + "` is given. ";
     rows += "| `" + k->path + "` | " + valueTypeName(k->type) + " | " + escapeCell(defaultText(*k)) + " | " +
-            escapeCell(allowedText(*k)) + " | " + escapeCell(conditionText(k->active_when) + k->doc) + " |\n";
+            escapeCell(allowedText(*k)) + " | " + escapeCell(conditionText(k->active_when) + unless + k->doc) +
+            " |\n";
   }
   if (rows.empty()) return;
   out += "| key | type | default | allowed | meaning |\n|---|---|---|---|---|\n" + rows + "\n";

@@ -17,7 +17,8 @@ void declareSeedKeys(Schema& s, const std::string& section, int default_count) {
         "Number of seed points (one per cell), drawn uniformly at random with `rng_seed`.")
       .byDefault(std::int64_t{default_count})
       .atLeast(3)
-      .atMost(kMaxCells);
+      .atMost(kMaxCells)
+      .unlessSet(section + ".seed_file");
   s.key(section + ".seed_file", ValueType::Path,
         "CSV file of seed points instead of random ones: one `x,y` (2D) or `x,y,z` (3D) row per "
         "cell, an optional header row; relative to the config file. Give either this or `count`.")

@@ -41,6 +41,8 @@ struct KeySpec {
   bool min_exclusive = false, max_exclusive = false;
   std::vector<std::string> choices;  ///< Enum only
   std::optional<Condition> active_when;
+  /// The key does not apply when this other key has a value (count vs seed_file).
+  std::string unless_set;
 
   // Fluent setters, so declarations read like a table.
   KeySpec& byDefault(ConfigValue v) { default_value = std::move(v); return *this; }
@@ -54,6 +56,7 @@ struct KeySpec {
     active_when = Condition{std::move(key), std::move(values)};
     return *this;
   }
+  KeySpec& unlessSet(std::string key) { unless_set = std::move(key); return *this; }
 
   /// The leaf name ("count" for "tissue.voronoi.count").
   std::string name() const;
