@@ -13,7 +13,7 @@ expect_error() {
   local rc=$?
   cat "$tmp/stderr"
   [ "$rc" -eq 1 ] || fail "exit code $rc, expected 1"
-  grep -Eq "$regex" "$tmp/stderr" || fail "stderr does not match: $regex"
+  grep -Eq -- "$regex" "$tmp/stderr" || fail "stderr does not match: $regex"
   [ ! -e "$tmp/out" ] || fail "the output directory was created"
 }
 
