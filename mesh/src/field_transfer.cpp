@@ -8,6 +8,7 @@
 
 #include <Eigen/Dense>
 
+#include "closest_point.hpp"
 #include "tessella/mesh/mesh_measures.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
@@ -15,26 +16,6 @@
 namespace tessella {
 namespace {
 
-/// Closest point on triangle abc to p (Ericson, Real-Time Collision Detection 5.1.5).
-Vec3 closestOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return a;
-  const Vec3 bp = p - b;
-  const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return b;
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return a + (d1 / (d1 - d3)) * ab;
-  const Vec3 cp = p - c;
-  const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return c;
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return a + (d2 / (d2 - d6)) * ac;
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return b + ((d4 - d3) / ((d4 - d3) + (d5 - d6))) * (c - b);
-  const double denom = 1.0 / (va + vb + vc);
-  return a + ab * (vb * denom) + ac * (vc * denom);
-}
 
 /// Barycentric coordinates of q (assumed in the element's span) in element e.
 Eigen::Vector4d barycentric(const FeMesh& m, int e, const Vec3& q) {
@@ -67,13 +48,13 @@ double locate(const FeMesh& m, int e, const Vec3& p, Eigen::Vector4d& lambda) {
     Vec3 best_q;
     for (int skip = 0; skip < 4; ++skip) {
       const int i = (skip + 1) % 4, j = (skip + 2) % 4, k = (skip + 3) % 4;
-      const Vec3 q = closestOnTriangle(p, corner(i), corner(j), corner(k));
+      const Vec3 q = mesh_detail::closestPointOnTriangle(p, corner(i), corner(j), corner(k));
       if ((q - p).norm() < best) best = (q - p).norm(), best_q = q;
     }
     lambda = barycentric(m, e, best_q);
     return best;
   }
-  const Vec3 q = closestOnTriangle(p, corner(0), corner(1), corner(2));
+  const Vec3 q = mesh_detail::closestPointOnTriangle(p, corner(0), corner(1), corner(2));
   lambda = barycentric(m, e, q);
   return (q - p).norm();
 }
