@@ -33,6 +33,7 @@
 #include "tessella/mesh/mesh_tissue.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "triangle_criteria.hpp"
+#include "wall_segments.hpp"
 
 namespace tessella {
 namespace {
@@ -346,15 +347,7 @@ FeMesh meshSurfaceTissue(const Tissue& t, const MeshOptions& options) {
       prev = next;
     }
   }
-  mesh.wall_facets.resize(static_cast<Eigen::Index>(facets.size()), 2);
-  mesh.facet_wall.resize(static_cast<Eigen::Index>(facets.size()));
-  mesh.facet_on_boundary.resize(static_cast<Eigen::Index>(facets.size()));
-  for (std::size_t i = 0; i < facets.size(); ++i) {
-    const auto r = static_cast<Eigen::Index>(i);
-    mesh.wall_facets.row(r) << facets[i][0], facets[i][1];
-    mesh.facet_wall(r) = facets[i][2];
-    mesh.facet_on_boundary(r) = boundary[i];
-  }
+  mesh_detail::storeWallSegments(mesh, facets, boundary);
   return mesh;
 }
 
