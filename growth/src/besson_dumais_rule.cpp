@@ -15,7 +15,10 @@ BessonDumaisRule::BessonDumaisRule(double beta, ShortestWallSearchOptions option
 
 std::vector<std::pair<WallCandidate, double>> BessonDumaisRule::candidates(const Tissue& t,
                                                                            CellId c) const {
-  const NewWallMeasure m(t, c);
+  return candidates(NewWallMeasure(t, c));
+}
+
+std::vector<std::pair<WallCandidate, double>> BessonDumaisRule::candidates(const NewWallMeasure& m) const {
   const std::vector<WallCandidate> minima = newWallLocalMinima(m, options_);
   const double shortest = minima.front().measure;
   std::vector<std::pair<WallCandidate, double>> out;
@@ -31,10 +34,11 @@ std::vector<std::pair<WallCandidate, double>> BessonDumaisRule::candidates(const
 }
 
 Plane BessonDumaisRule::plane(const Tissue& t, CellId c, Rng& rng) const {
-  const auto cands = candidates(t, c);
+  const NewWallMeasure m(t, c);  // gathered once: candidates and plane point
+  const auto cands = candidates(m);
   const double u = std::uniform_real_distribution<double>(0.0, 1.0)(rng);
   double acc = 0;
-  const Vec3 point = NewWallMeasure(t, c).point();
+  const Vec3& point = m.point();
   for (const auto& [w, p] : cands) {
     acc += p;
     if (u < acc) return Plane{point, w.normal};

@@ -26,38 +26,48 @@ NewWallMeasure::NewWallMeasure(const Tissue& t, CellId c, const Vec3& point)
     return;
   }
   const VolumeId vol = t.cellVolume(c);
+  loop_start_.push_back(0);
   for (OrientedFace of : k.volumeFaces(vol)) {
     const auto loop = k.faceVertices(of.handle());
-    std::vector<Vec3> q;
-    q.reserve(loop.size());
-    for (VertexId v : loop) q.push_back(t.position(v) - point_);
+    const std::size_t first = loops_.size();
+    for (VertexId v : loop) loops_.push_back(t.position(v) - point_);
     // Orient every loop outward: a reversed face is traversed backwards.
-    if (of.reversed()) std::reverse(q.begin(), q.end());
-    faces_.push_back(std::move(q));
+    if (of.reversed()) std::reverse(loops_.begin() + first, loops_.end());
+    loop_start_.push_back(static_cast<std::uint32_t>(loops_.size()));
   }
 }
 
-double NewWallMeasure::length(double theta) const { return chord(std::cos(theta), std::sin(theta)); }
+double NewWallMeasure::length(double theta) const {
+  const Chord c = chord(std::cos(theta), std::sin(theta));
+  return c.hi - c.lo;
+}
 
 double NewWallMeasure::measure(const Vec3& normal) const {
-  if (dim_ == 2) return chord(normal.dot(frame_.e1), normal.dot(frame_.e2));
+  if (dim_ == 2) {
+    const Chord c = chord(normal.dot(frame_.e1), normal.dot(frame_.e2));
+    return c.hi - c.lo;
+  }
   return section(normal.normalized());
 }
 
-double NewWallMeasure::chord(double nx, double ny) const {
+NewWallMeasure::Chord NewWallMeasure::chord(double nx, double ny) const {
   // Crossings of the line {n . p = 0} with the loop, as abscissae along the
   // line direction d = (-ny, nx); the chord through the origin (the plane
   // point) is the pair of consecutive crossings enclosing 0.
-  const double norm = std::hypot(nx, ny);
+  const double norm = std::sqrt(nx * nx + ny * ny);  // (not hypot: slower, and no overflow risk here)
   nx /= norm;
   ny /= norm;
   const std::size_t n = u_.size();
-  std::array<double, 64> small;
-  std::vector<double> large;
-  double* tau = small.data();
+  struct Crossing {
+    double tau;
+    int edge;
+  };
+  std::array<Crossing, 64> small;  // no allocation for cells of up to 64 sides
+  std::vector<Crossing> large;
+  Crossing* x = small.data();
   if (n > small.size()) {
     large.resize(n);
-    tau = large.data();
+    x = large.data();
   }
   std::size_t count = 0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -66,20 +76,23 @@ double NewWallMeasure::chord(double nx, double ny) const {
     if ((si > 0) == (sj > 0)) continue;  // half-open: a vertex on the line counts once
     const double a = si / (si - sj);
     const double pu = u_[i] + a * (u_[j] - u_[i]), pv = v_[i] + a * (v_[j] - v_[i]);
-    tau[count++] = -ny * pu + nx * pv;
+    x[count++] = Crossing{-ny * pu + nx * pv, static_cast<int>(i)};
   }
-  if (count < 2) return 0.0;
-  std::sort(tau, tau + count);
-  double best = std::numeric_limits<double>::infinity(), best_len = 0.0;
+  Chord out;
+  out.crossings = count;
+  if (count < 2) return out;
+  std::sort(x, x + count, [](const Crossing& a, const Crossing& b) { return a.tau < b.tau; });
+  double best = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i + 1 < count; i += 2) {
-    if (tau[i] <= 0 && 0 <= tau[i + 1]) return tau[i + 1] - tau[i];
-    const double gap = std::min(std::abs(tau[i]), std::abs(tau[i + 1]));
-    if (gap < best) {
+    const bool contains = x[i].tau <= 0 && 0 <= x[i + 1].tau;
+    const double gap = contains ? 0.0 : std::min(std::abs(x[i].tau), std::abs(x[i + 1].tau));
+    if (gap < best) {  // the point is outside the cell: the nearest piece
       best = gap;
-      best_len = tau[i + 1] - tau[i];
+      out = Chord{x[i].tau, x[i + 1].tau, x[i].edge, x[i + 1].edge, contains, count};
     }
+    if (contains) break;
   }
-  return best_len;  // the point is outside the cell: the nearest piece
+  return out;
 }
 
 double NewWallMeasure::section(const Vec3& n) const {
@@ -90,15 +103,18 @@ double NewWallMeasure::section(const Vec3& n) const {
   // instead of along the line gives the same sum (it is linear in the
   // crossings' abscissae), so non-convex walls are handled too.
   double twice_area = 0.0;
-  for (const auto& q : faces_) {
-    const std::size_t m = q.size();
+  for (std::size_t f = 0; f + 1 < loop_start_.size(); ++f) {
+    const Vec3* q = loops_.data() + loop_start_[f];
+    const std::size_t m = loop_start_[f + 1] - loop_start_[f];
     bool have_b = false;
     Vec3 first_b = Vec3::Zero(), b = Vec3::Zero();
     bool pending_a_before_b = false;
     Vec3 first_a = Vec3::Zero();
+    double sj = n.dot(q[0]);
     for (std::size_t i = 0; i < m; ++i) {
       const std::size_t j = i + 1 == m ? 0 : i + 1;
-      const double si = n.dot(q[i]), sj = n.dot(q[j]);
+      const double si = sj;
+      sj = n.dot(q[j]);
       const bool pi = si > 0, pj = sj > 0;
       if (pi == pj) continue;
       const Vec3 x = q[i] + (si / (si - sj)) * (q[j] - q[i]);

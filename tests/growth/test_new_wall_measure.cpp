@@ -1,11 +1,14 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "growth_fixtures.hpp"
 #include "tessella/growth/new_wall_measure.hpp"
 #include "tessella/growth/shortest_wall_search.hpp"
 #include "tessella/tissue/builders.hpp"
+#include "tessella/tissue/voronoi.hpp"
 
 using namespace tessella;
 using namespace tessella::growth;
@@ -48,4 +51,98 @@ TEST_CASE("Brent's method finds a smooth minimum to the tolerance", "[growth][wa
   // A kink (|a - 1|): golden-section steps still converge.
   CHECK(brentMinimize([](double a) { return std::abs(a - 1.0); }, -3.0, 2.0, 1e-9) ==
         Approx(1.0).margin(1e-8));
+}
+
+namespace {
+
+// Checks the 2D search against a dense sampling of L(theta): the global
+// minimum agrees (the search cannot be beaten by any sample, and no sample
+// is far below it), every candidate is a local minimum of L, and every
+// sampled local minimum is one of the candidates.
+void checkAgainstSampling(const NewWallMeasure& m) {
+  const std::vector<WallCandidate> minima = newWallLocalMinima(m);
+  REQUIRE(!minima.empty());
+  const int n = 20000;
+  const double step = M_PI / n;
+  std::vector<double> len(n);
+  for (int i = 0; i < n; ++i) len[i] = m.length(i * step);
+  const double sampled_min = *std::min_element(len.begin(), len.end());
+  const double scale = *std::max_element(len.begin(), len.end());
+  CHECK(minima.front().measure <= sampled_min + 1e-12 * scale);
+  // |dL/dtheta| <= L_max^2 / (2 * distance to the boundary): a loose bound
+  // is enough to tell "found the minimum" from "missed it".
+  CHECK(minima.front().measure >= sampled_min - 1e-3 * scale);
+  for (const WallCandidate& w : minima) {
+    INFO("candidate theta " << w.theta << " length " << w.measure);
+    CHECK(w.measure == Approx(m.length(w.theta)).epsilon(1e-12));
+    for (double d : {1e-4, -1e-4}) CHECK(m.length(w.theta + d) >= w.measure - 1e-12 * scale);
+  }
+  for (int i = 0; i < n; ++i) {
+    const double prev = len[(i + n - 1) % n], next = len[(i + 1) % n];
+    if (!(len[i] < prev && len[i] < next)) continue;
+    const double theta = i * step;
+    bool found = false;
+    for (const WallCandidate& w : minima)
+      found = found || std::abs(std::remainder(w.theta - theta, M_PI)) <= 2 * step;
+    INFO("sampled local minimum at theta " << theta << " length " << len[i]);
+    CHECK(found);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("the exact 2D search agrees with dense sampling on Voronoi cells", "[growth][wall_measure]") {
+  const Rectangle domain{Vec3(0, 0, 0), Vec3(10, 10, 0)};
+  const Tissue t = voronoiTissue(randomSeeds(domain, 60, 11), domain);
+  for (CellId c : t.cells()) {
+    INFO("cell " << c.index());
+    checkAgainstSampling(NewWallMeasure(t, c));
+  }
+}
+
+TEST_CASE("the 2D search on concave cells", "[growth][wall_measure]") {
+  SECTION("an L shape: the centroid is inside, some lines cross four times") {
+    const std::vector<Vec3> p = {Vec3(0, 0, 0), Vec3(3, 0, 0), Vec3(3, 1, 0),
+                                 Vec3(1, 1, 0), Vec3(1, 3, 0), Vec3(0, 3, 0)};
+    Tissue t = buildPolygonTissue(p, {{0, 1, 2, 3, 4, 5}});
+    checkAgainstSampling(NewWallMeasure(t, CellId(0)));
+  }
+  SECTION("an arrow head with a deep notch") {
+    const std::vector<Vec3> p = {Vec3(0, 0, 0), Vec3(4, 1.5, 0), Vec3(0, 3, 0), Vec3(1.5, 1.5, 0)};
+    Tissue t = buildPolygonTissue(p, {{0, 1, 2, 3}});
+    checkAgainstSampling(NewWallMeasure(t, CellId(0)));
+  }
+  SECTION("a U shape through a point outside the cell (sampled fallback)") {
+    const std::vector<Vec3> p = {Vec3(0, 0, 0), Vec3(3, 0, 0), Vec3(3, 3, 0), Vec3(2, 3, 0),
+                                 Vec3(2, 1, 0), Vec3(1, 1, 0), Vec3(1, 3, 0), Vec3(0, 3, 0)};
+    Tissue t = buildPolygonTissue(p, {{0, 1, 2, 3, 4, 5, 6, 7}});
+    const NewWallMeasure m(t, CellId(0), Vec3(1.5, 2.0, 0));  // in the notch
+    const auto minima = newWallLocalMinima(m);
+    const int n = 20000;
+    double sampled_min = 1e300;
+    for (int i = 0; i < n; ++i) sampled_min = std::min(sampled_min, m.length(i * M_PI / n));
+    CHECK(minima.front().measure <= sampled_min + 1e-9);
+  }
+}
+
+TEST_CASE("the 3D search is not beaten by a dense sampling of normals on Voronoi cells",
+          "[growth][wall_measure]") {
+  const Box domain{Vec3(0, 0, 0), Vec3(3, 3, 3)};
+  const Tissue t = voronoiTissue(randomSeeds(domain, 12, 4), domain);
+  for (CellId c : t.cells()) {
+    INFO("cell " << c.index());
+    const NewWallMeasure m(t, c);
+    const auto minima = newWallLocalMinima(m);
+    REQUIRE(!minima.empty());
+    // Fibonacci points on the unit sphere: normals about 1.4 degrees apart.
+    const int n = 20000;
+    double sampled_min = 1e300;
+    for (int i = 0; i < n; ++i) {
+      const double z = 1.0 - (2.0 * i + 1.0) / n, r = std::sqrt(1.0 - z * z);
+      const double phi = i * M_PI * (3.0 - std::sqrt(5.0));
+      sampled_min = std::min(sampled_min, m.measure(Vec3(r * std::cos(phi), r * std::sin(phi), z)));
+    }
+    CHECK(minima.front().measure <= sampled_min * (1 + 1e-9));
+    for (const WallCandidate& w : minima) CHECK(w.measure == Approx(m.measure(w.normal)).epsilon(1e-12));
+  }
 }

@@ -24,6 +24,7 @@ class BessonDumaisRule final : public DivisionRule {
   double beta() const { return beta_; }
 
  private:
+  std::vector<std::pair<WallCandidate, double>> candidates(const NewWallMeasure& m) const;
   double beta_;
   ShortestWallSearchOptions options_;
 };

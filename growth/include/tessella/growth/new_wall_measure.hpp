@@ -10,6 +10,8 @@
 // section of a non-convex cell), from the divergence theorem over the
 // boundary segments where the plane crosses each wall.
 
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include "tessella/growth/cell_frame.hpp"
@@ -34,19 +36,35 @@ class NewWallMeasure {
   /// 2D and 3D: measure of the new wall for the plane with this normal.
   double measure(const Vec3& normal) const;
 
+  /// 2D: the chord of the line through the point with in-plane normal
+  /// (nx, ny): its ends as abscissae along the direction (-ny, nx), the loop
+  /// edges they lie on (edge i runs from loop vertex i to vertex i + 1), and
+  /// whether the point lies on it (else it is the nearest piece of the line
+  /// inside the cell). crossings < 2 when the line misses the cell.
+  struct Chord {
+    double lo = 0, hi = 0;
+    int edge_lo = -1, edge_hi = -1;
+    bool contains_point = false;
+    std::size_t crossings = 0;
+  };
+  Chord chord(double nx, double ny) const;
+  /// 2D: the loop in tangent coordinates about the point.
+  std::span<const double> loopU() const { return u_; }
+  std::span<const double> loopV() const { return v_; }
+
   /// The plane with this (3D) normal or (2D) normal angle.
   Plane plane(const Vec3& normal) const { return Plane{point_, normal.normalized()}; }
   Plane plane(double theta) const { return Plane{point_, frame_.direction(theta)}; }
 
  private:
-  double chord(double nx, double ny) const;
   double section(const Vec3& n) const;
 
   int dim_;
   CellFrame frame_;
   Vec3 point_;
   std::vector<double> u_, v_;             // 2D: loop in tangent coordinates about point_
-  std::vector<std::vector<Vec3>> faces_;  // 3D: outward-oriented wall loops relative to point_
+  std::vector<Vec3> loops_;               // 3D: outward-oriented wall loops relative to point_,
+  std::vector<std::uint32_t> loop_start_;  //     back to back; loop i is [start[i], start[i + 1])
 };
 
 }  // namespace tessella::growth

@@ -3,9 +3,15 @@
 // through a point (the centroid): the candidate walls of the shortest-wall
 // rule (Errera) and of the stochastic rule of Besson and Dumais.
 //
-// 2D: the length L(theta) is pi-periodic; it is sampled at `samples` angles,
-// every sampled local minimum is bracketed by its neighbours and refined by
-// Brent's method (golden section + parabolic steps) to `angle_tolerance`.
+// 2D: the length L(theta) is pi-periodic and, between the angles where the
+// line passes through a loop vertex (the crossed edges change only there),
+// the chord joins two fixed edges and L is strictly convex when the point
+// lies on the chord. So [0, pi) is cut at the n vertex angles, each piece's
+// minimum is found by safeguarded Newton on L' (or is a piece end), and the
+// local minima are exact to `angle_tolerance`: a minimisation over all
+// directions, O(n) pieces per cell. For a point outside some chord (very
+// concave cells) L is sampled at `samples` angles and each sampled minimum
+// refined by Brent's method.
 // 3D: the section area A(n) over the sphere of normals is minimised by
 // Nelder-Mead from 13 starts (the directions of a cube's faces, edges and
 // corners, so every orientation is within 28 degrees of a start), each run in
@@ -24,8 +30,8 @@ struct WallCandidate {
 };
 
 struct ShortestWallSearchOptions {
-  int samples = 36;                ///< 2D angle samples over [0, pi)
-  double angle_tolerance = 1e-8;   ///< 2D: Brent stops at this bracket width (rad)
+  int samples = 36;                ///< 2D sampled fallback: angles over [0, pi)
+  double angle_tolerance = 1e-12;  ///< 2D: Newton / Brent stop at this step (rad)
   double area_tolerance = 1e-12;   ///< 3D: Nelder-Mead relative spread to stop
   int max_iterations = 400;        ///< 3D: per Nelder-Mead run
   double merge_angle = 1e-3;       ///< minima within this angle (rad) are one
