@@ -40,12 +40,10 @@ void GrowthIntegrator::velocities(const Tissue& t, std::span<const Vec3> x, doub
   interpolator_.interpolate(t, out);
 }
 
-void GrowthIntegrator::constrain(const Tissue& t, std::span<Vec3> x) const {
+void GrowthIntegrator::project(const Tissue& t, std::span<Vec3> x) const {
+  // Curved sheets only: planar tissues are flattened in the update loops.
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(x.size());
-  if (t.embedding() == Embedding::Planar) {
-#pragma omp parallel for schedule(static) if(n >= kParallelMinItems)
-    for (std::ptrdiff_t i = 0; i < n; ++i) x[i].z() = 0.0;
-  } else if (options_.projection) {
+  if (options_.projection) {
     const auto& alive = t.topology().aliveFlags(0);
 #pragma omp parallel for schedule(static) if(n >= kParallelMinItems)
     for (std::ptrdiff_t i = 0; i < n; ++i)
@@ -74,20 +72,24 @@ void GrowthIntegrator::step(Tissue& t, double dt) {
   velocities(t, x0_, t0, k1_);
   std::span<Vec3> x = t.mutablePositions();  // bumps the geometry counter
   const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(n);
-  if (options_.scheme == IntegrationScheme::Euler) {
+  // Planar tissues are put back at z = 0 in the same pass (one sweep less).
+  const bool planar = t.embedding() == Embedding::Planar;
 #pragma omp parallel for schedule(static) if(m >= kParallelMinItems)
-    for (std::ptrdiff_t i = 0; i < m; ++i) x[i] = x0_[i] + dt * k1_[i];
-    constrain(t, x);
-  } else {
-    // Heun: predictor x1 = x0 + dt k1, corrector x0 + dt/2 (k1 + v(x1, t1)).
-#pragma omp parallel for schedule(static) if(m >= kParallelMinItems)
-    for (std::ptrdiff_t i = 0; i < m; ++i) x[i] = x0_[i] + dt * k1_[i];
-    constrain(t, x);
+  for (std::ptrdiff_t i = 0; i < m; ++i) {
+    x[i] = x0_[i] + dt * k1_[i];
+    if (planar) x[i].z() = 0.0;
+  }
+  if (!planar) project(t, x);
+  if (options_.scheme == IntegrationScheme::Heun) {
+    // Heun: predictor x1 = x0 + dt k1 (above), corrector x0 + dt/2 (k1 + v(x1, t1)).
     k2_.resize(n);
     velocities(t, x, t1, k2_);
 #pragma omp parallel for schedule(static) if(m >= kParallelMinItems)
-    for (std::ptrdiff_t i = 0; i < m; ++i) x[i] = x0_[i] + (0.5 * dt) * (k1_[i] + k2_[i]);
-    constrain(t, x);
+    for (std::ptrdiff_t i = 0; i < m; ++i) {
+      x[i] = x0_[i] + (0.5 * dt) * (k1_[i] + k2_[i]);
+      if (planar) x[i].z() = 0.0;
+    }
+    if (!planar) project(t, x);
   }
   t.setTime(t1);
   recomputeGeometry(t, cache_, GeometryOptions{.edges = false, .second_moments = false});

@@ -70,7 +70,7 @@ class GrowthIntegrator {
   HarmonicInterpolator& interpolator() { return interpolator_; }
 
  private:
-  void constrain(const Tissue& t, std::span<Vec3> x) const;
+  void project(const Tissue& t, std::span<Vec3> x) const;
   void checkCells(Tissue& t, double t0, double t1);
 
   std::shared_ptr<const VelocityField> field_;
