@@ -8,76 +8,77 @@ namespace tessella {
 
 namespace {
 
-void addVertices(Tissue& t, std::span<const Vec3> positions) {
-  for (std::size_t i = 0; i < positions.size(); ++i) {
-    if (!positions[i].allFinite())
-      throw InputError("vertex " + std::to_string(i) + " has a non-finite coordinate");
-    t.addVertex(positions[i]);
+// Nested lists -> CSR offsets and items.
+template <typename T>
+void flatten(const std::vector<std::vector<T>>& lists, std::vector<Index>& offsets, std::vector<T>& items) {
+  offsets.assign(1, 0);
+  offsets.reserve(lists.size() + 1);
+  std::size_t total = 0;
+  for (const auto& l : lists) total += l.size();
+  items.reserve(total);
+  for (const auto& l : lists) {
+    items.insert(items.end(), l.begin(), l.end());
+    offsets.push_back(static_cast<Index>(items.size()));
   }
 }
 
-std::vector<VertexId> loopOf(const std::vector<Index>& loop, std::size_t nverts, const char* what,
-                             std::size_t which) {
-  if (loop.size() < 3)
-    throw InputError(std::string(what) + " " + std::to_string(which) + " has " + std::to_string(loop.size()) +
-                     " vertices (at least 3 needed)");
-  std::vector<VertexId> out;
-  out.reserve(loop.size());
-  for (Index v : loop) {
-    if (v >= nverts)
-      throw InputError(std::string(what) + " " + std::to_string(which) + " uses vertex " + std::to_string(v) +
-                       " but there are only " + std::to_string(nverts) + " vertices");
-    out.emplace_back(v);
+// Loops as a complex; a bad loop becomes an InputError naming it as `what`.
+CellComplex loopsComplex(int dim, std::size_t num_vertices, std::span<const Index> offsets,
+                         std::span<const Index> loop_vertices, const char* what) {
+  try {
+    return CellComplex::fromLoops(dim, num_vertices, offsets, loop_vertices);
+  } catch (const TopologyError& e) {
+    throw InputError(std::string(what) + " " + std::to_string(e.element().index) + ": " + e.what());
   }
-  return out;
 }
 
 }  // namespace
 
 Tissue buildPolygonTissue(std::span<const Vec3> positions, const std::vector<std::vector<Index>>& polygons,
                           Embedding embedding) {
-  Tissue t(2, embedding);
-  addVertices(t, positions);
-  for (std::size_t p = 0; p < polygons.size(); ++p) {
-    const auto loop = loopOf(polygons[p], positions.size(), "polygon", p);
-    try {
-      t.addPolygon(loop);
-    } catch (const TopologyError& e) {
-      throw InputError("polygon " + std::to_string(p) + ": " + e.what());
-    }
-  }
-  return t;
+  std::vector<Index> offsets, items;
+  flatten(polygons, offsets, items);
+  return buildPolygonTissue(std::vector<Vec3>(positions.begin(), positions.end()), offsets, items, embedding);
+}
+
+Tissue buildPolygonTissue(std::vector<Vec3> positions, std::span<const Index> offsets,
+                          std::span<const Index> loop_vertices, Embedding embedding) {
+  CellComplex c = loopsComplex(2, positions.size(), offsets, loop_vertices, "polygon");
+  return Tissue(std::move(c), std::move(positions), embedding);
 }
 
 Tissue buildPolyhedralTissue(std::span<const Vec3> positions, const std::vector<std::vector<Index>>& faces,
                              const std::vector<std::vector<CellFace>>& cells) {
-  Tissue t(3, Embedding::Volume);
-  addVertices(t, positions);
-  std::vector<FaceId> face_ids(faces.size());
-  for (std::size_t f = 0; f < faces.size(); ++f) {
-    const auto loop = loopOf(faces[f], positions.size(), "face", f);
-    try {
-      face_ids[f] = t.addPolygon(loop);
-    } catch (const TopologyError& e) {
-      throw InputError("face " + std::to_string(f) + ": " + e.what());
-    }
-  }
+  std::vector<Index> face_offsets, face_items, cell_offsets;
+  std::vector<CellFace> cell_items;
+  flatten(faces, face_offsets, face_items);
+  flatten(cells, cell_offsets, cell_items);
+  return buildPolyhedralTissue(std::vector<Vec3>(positions.begin(), positions.end()), face_offsets, face_items,
+                               cell_offsets, cell_items);
+}
+
+Tissue buildPolyhedralTissue(std::vector<Vec3> positions, std::span<const Index> face_offsets,
+                             std::span<const Index> face_vertices, std::span<const Index> cell_offsets,
+                             std::span<const CellFace> cell_faces) {
+  CellComplex c = loopsComplex(3, positions.size(), face_offsets, face_vertices, "face");
+  const std::size_t nf = c.slots(2);
   std::vector<OrientedFace> oriented;
-  for (std::size_t c = 0; c < cells.size(); ++c) {
-    oriented.clear();
-    for (const CellFace& cf : cells[c]) {
-      if (cf.face >= faces.size())
-        throw InputError("cell " + std::to_string(c) + " uses face " + std::to_string(cf.face) + " but there are only " +
-                         std::to_string(faces.size()) + " faces");
-      oriented.emplace_back(face_ids[cf.face], cf.reversed);
+  oriented.reserve(cell_faces.size());
+  const std::size_t ncells = cell_offsets.empty() ? 0 : cell_offsets.size() - 1;
+  for (std::size_t k = 0; k < ncells; ++k)
+    for (Index i = cell_offsets[k]; i < cell_offsets[k + 1]; ++i) {
+      const CellFace& cf = cell_faces[i];
+      if (cf.face >= nf)
+        throw InputError("cell " + std::to_string(k) + " uses face " + std::to_string(cf.face) +
+                         " but there are only " + std::to_string(nf) + " faces");
+      oriented.emplace_back(FaceId(cf.face), cf.reversed);
     }
-    try {
-      t.addVolume(oriented);
-    } catch (const TopologyError& e) {
-      throw InputError("cell " + std::to_string(c) + ": " + e.what());
-    }
+  try {
+    c.addVolumes(cell_offsets, oriented);
+  } catch (const TopologyError& e) {
+    throw InputError("cell " + std::to_string(e.element().index) + ": " + e.what());
   }
-  return t;
+  return Tissue(std::move(c), std::move(positions), Embedding::Volume);
 }
 
 }  // namespace tessella

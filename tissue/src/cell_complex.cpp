@@ -178,6 +178,184 @@ VolumeId CellComplex::addVolume(std::span<const OrientedFace> faces) {
   return VolumeId(c);
 }
 
+CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<const Index> loop_offsets,
+                                   std::span<const Index> loop_vertices) {
+  CellComplex c(dim);
+  const std::size_t nf = loop_offsets.empty() ? 0 : loop_offsets.size() - 1;
+  const std::size_t total = nf ? loop_offsets[nf] : 0;
+  if (nf && (loop_offsets[0] != 0 || total != loop_vertices.size()))
+    throw TopologyError("fromLoops: offsets do not cover the vertex list");
+  // Check every loop first, so that an error leaves nothing half built.
+  std::vector<std::uint32_t> star_size(num_vertices + 1, 0);
+  std::vector<Index> sorted;
+  for (std::size_t f = 0; f < nf; ++f) {
+    const auto loop = loop_vertices.subspan(loop_offsets[f], loop_offsets[f + 1] - loop_offsets[f]);
+    if (loop.size() < 3)
+      throw TopologyError(id("face", static_cast<Index>(f)) + " has " + std::to_string(loop.size()) +
+                              " vertices (at least 3 needed)",
+                          {2, static_cast<Index>(f)});
+    sorted.assign(loop.begin(), loop.end());
+    std::sort(sorted.begin(), sorted.end());
+    if (sorted.back() >= num_vertices)
+      throw TopologyError(id("face", static_cast<Index>(f)) + " uses vertex " + std::to_string(sorted.back()) +
+                              " but there are only " + std::to_string(num_vertices) + " vertices",
+                          {2, static_cast<Index>(f)});
+    if (auto it = std::adjacent_find(sorted.begin(), sorted.end()); it != sorted.end())
+      throw TopologyError(id("face", static_cast<Index>(f)) + " passes twice through " + id("vertex", *it),
+                          {2, static_cast<Index>(f)});
+    for (Index v : loop) star_size[v] += 2;  // each loop edge at v: an upper bound on v's edges
+  }
+  // Vertex stars in a flat scratch array: star of v at star_start[v], star_count[v] used.
+  std::vector<std::size_t> star_start(num_vertices + 1, 0);
+  for (std::size_t v = 0; v < num_vertices; ++v) star_start[v + 1] = star_start[v] + star_size[v];
+  std::vector<EdgeId> star(star_start[num_vertices]);
+  std::vector<std::uint32_t> star_count(num_vertices, 0);
+  std::vector<OrientedEdge> face_edges(total);
+  std::vector<std::uint32_t> edge_face_count;
+  edge_face_count.reserve(total / 2 + 1);
+  for (std::size_t f = 0; f < nf; ++f) {
+    const std::size_t b = loop_offsets[f], m = loop_offsets[f + 1] - b;
+    for (std::size_t i = 0; i < m; ++i) {
+      const VertexId a(loop_vertices[b + i]), h(loop_vertices[b + (i + 1) % m]);
+      EdgeId e;
+      const EdgeId* s = star.data() + star_start[a.index()];
+      for (std::uint32_t k = 0; k < star_count[a.index()]; ++k) {
+        const auto& ev = c.edge_vertices_[s[k].index()];
+        if (ev[0] == h || ev[1] == h) {
+          e = s[k];
+          break;
+        }
+      }
+      if (!e) {
+        e = EdgeId(static_cast<Index>(c.edge_vertices_.size()));
+        c.edge_vertices_.push_back({a, h});
+        edge_face_count.push_back(0);
+        star[star_start[a.index()] + star_count[a.index()]++] = e;
+        star[star_start[h.index()] + star_count[h.index()]++] = e;
+      }
+      if (dim == 2 && edge_face_count[e.index()] == 2)
+        throw TopologyError(id("face", static_cast<Index>(f)) + ": " + id("edge", e.index()) +
+                                " (vertices " + std::to_string(a.index()) + ", " + std::to_string(h.index()) +
+                                ") already bounds two faces",
+                            {2, static_cast<Index>(f)});
+      ++edge_face_count[e.index()];
+      face_edges[b + i] = OrientedEdge(e, c.edge_vertices_[e.index()][0] != a);
+    }
+  }
+  const std::size_t ne = c.edge_vertices_.size();
+  c.alive_[0].assign(num_vertices, 1);
+  c.alive_[1].assign(ne, 1);
+  c.alive_[2].assign(nf, 1);
+  c.live_count_ = {num_vertices, ne, nf, 0};
+  c.vertex_edges_.reserve(num_vertices, 2 * ne);
+  for (std::size_t v = 0; v < num_vertices; ++v)
+    c.vertex_edges_.pushList(std::span<const EdgeId>(star.data() + star_start[v], star_count[v]));
+  c.face_edges_.reserve(nf, total);
+  c.face_vertices_.reserve(nf, total);
+  c.face_volumes_.reserve(nf, 0);
+  std::vector<VertexId> verts;
+  for (std::size_t f = 0; f < nf; ++f) {
+    const std::size_t b = loop_offsets[f], m = loop_offsets[f + 1] - b;
+    c.face_edges_.pushList(std::span<const OrientedEdge>(face_edges.data() + b, m));
+    verts.assign(m, VertexId());
+    for (std::size_t i = 0; i < m; ++i) verts[i] = VertexId(loop_vertices[b + i]);
+    c.face_vertices_.pushList(std::span<const VertexId>(verts));
+    c.face_volumes_.pushList({});
+  }
+  // Edge -> faces, each list in face order (as addFace would append them).
+  std::vector<std::size_t> ef_start(ne + 1, 0);
+  for (std::size_t e = 0; e < ne; ++e) ef_start[e + 1] = ef_start[e] + edge_face_count[e];
+  std::vector<FaceId> ef(ef_start[ne]);
+  std::fill(edge_face_count.begin(), edge_face_count.end(), 0);
+  for (std::size_t f = 0; f < nf; ++f)
+    for (Index k = loop_offsets[f]; k < loop_offsets[f + 1]; ++k) {
+      const Index e = face_edges[k].handle().index();
+      ef[ef_start[e] + edge_face_count[e]++] = FaceId(static_cast<Index>(f));
+    }
+  c.edge_faces_.reserve(ne, ef.size());
+  for (std::size_t e = 0; e < ne; ++e)
+    c.edge_faces_.pushList(std::span<const FaceId>(ef.data() + ef_start[e], edge_face_count[e]));
+  c.version_ = num_vertices + ne + nf;
+  return c;
+}
+
+void CellComplex::addVolumes(std::span<const Index> offsets, std::span<const OrientedFace> faces) {
+  if (dim_ != 3) throw TopologyError("volumes exist only in a 3D complex");
+  const std::size_t nv = offsets.empty() ? 0 : offsets.size() - 1;
+  if (nv && (offsets[0] != 0 || offsets[nv] != faces.size()))
+    throw TopologyError("addVolumes: offsets do not cover the face list");
+  // Per-volume checks are independent: run them in parallel, report the first.
+  std::vector<std::uint8_t> bad(nv, 0);
+  const std::int64_t nvs = static_cast<std::int64_t>(nv);
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::int64_t k = 0; k < nvs; ++k) {
+    const auto list = faces.subspan(offsets[k], offsets[k + 1] - offsets[k]);
+    if (list.size() < 4) { bad[k] = 1; continue; }
+    std::vector<Index> seen;
+    seen.reserve(list.size());
+    for (OrientedFace of : list) {
+      if (!alive(of.handle())) { bad[k] = 1; break; }
+      seen.push_back(of.handle().index());
+    }
+    if (bad[k]) continue;
+    std::sort(seen.begin(), seen.end());
+    if (std::adjacent_find(seen.begin(), seen.end()) != seen.end() ||
+        !closedOrientedSurface(list, [&](FaceId f) { return faceEdges(f); }, nullptr))
+      bad[k] = 1;
+  }
+  std::vector<std::uint32_t> uses(face_volumes_.size(), 0);
+  for (std::size_t f = 0; f < uses.size(); ++f) uses[f] = face_volumes_.listSize(f);
+  for (std::size_t k = 0; k < nv; ++k) {
+    const auto list = faces.subspan(offsets[k], offsets[k + 1] - offsets[k]);
+    const std::string vol = "volume " + std::to_string(volume_faces_.size() + k);
+    const ElementId where{3, static_cast<Index>(volume_faces_.size() + k)};
+    if (bad[k]) {
+      if (list.size() < 4)
+        throw TopologyError(vol + " needs at least 4 faces, got " + std::to_string(list.size()), where);
+      std::vector<Index> seen;
+      for (OrientedFace of : list) {
+        if (!alive(of.handle()))
+          throw TopologyError(vol + " uses dead or invalid " + id("face", of.handle().index()), where);
+        seen.push_back(of.handle().index());
+      }
+      std::sort(seen.begin(), seen.end());
+      if (auto it = std::adjacent_find(seen.begin(), seen.end()); it != seen.end())
+        throw TopologyError(vol + " uses " + id("face", *it) + " twice", where);
+      Index bad_edge = kInvalidIndex;
+      closedOrientedSurface(list, [&](FaceId f) { return faceEdges(f); }, &bad_edge);
+      throw TopologyError(vol + ": surface is not closed and consistently oriented at " + id("edge", bad_edge),
+                          where);
+    }
+    for (OrientedFace of : list)
+      if (++uses[of.handle().index()] > 2)
+        throw TopologyError(vol + ": " + id("face", of.handle().index()) + " already bounds two volumes", where);
+  }
+  // Rebuild face -> volumes in one pass (old lists first, then the new volumes in order).
+  const Index first = static_cast<Index>(volume_faces_.size());
+  std::vector<std::size_t> start(uses.size() + 1, 0);
+  for (std::size_t f = 0; f < uses.size(); ++f) start[f + 1] = start[f] + uses[f];
+  std::vector<VolumeId> fv(start.back());
+  std::vector<std::uint32_t> fill(uses.size(), 0);
+  for (std::size_t f = 0; f < uses.size(); ++f)
+    for (VolumeId v : face_volumes_[f]) fv[start[f] + fill[f]++] = v;
+  for (std::size_t k = 0; k < nv; ++k)
+    for (Index i = offsets[k]; i < offsets[k + 1]; ++i) {
+      const Index f = faces[i].handle().index();
+      fv[start[f] + fill[f]++] = VolumeId(first + static_cast<Index>(k));
+    }
+  RaggedArray<VolumeId> rebuilt;
+  rebuilt.reserve(uses.size(), fv.size());
+  for (std::size_t f = 0; f < uses.size(); ++f)
+    rebuilt.pushList(std::span<const VolumeId>(fv.data() + start[f], uses[f]));
+  face_volumes_ = std::move(rebuilt);
+  volume_faces_.reserve(volume_faces_.size() + nv, faces.size());
+  alive_[3].reserve(alive_[3].size() + nv);
+  for (std::size_t k = 0; k < nv; ++k) {
+    (void)newSlot(3);
+    volume_faces_.pushList(faces.subspan(offsets[k], offsets[k + 1] - offsets[k]));
+  }
+}
+
 void CellComplex::remove(int degree, Index i) {
   if (degree < 0 || degree > dim_ || !alive(degree, i))
     throw TopologyError("cannot remove " + id(degreeName(degree), i) + ": not alive", {degree, i});

@@ -29,6 +29,22 @@ Tissue::Tissue(int dim, Embedding embedding) : complex_(dim), embedding_(embeddi
   for (const char* n : {kLineageName, kParentName, kBirthTimeName}) cells.lock(n);
 }
 
+Tissue::Tissue(CellComplex complex, std::vector<Vec3> positions, Embedding embedding)
+    : Tissue(complex.dim(), embedding) {
+  if (positions.size() != complex.slots(0))
+    throw InputError(std::to_string(positions.size()) + " positions given for " +
+                     std::to_string(complex.slots(0)) + " vertices");
+  for (std::size_t i = 0; i < positions.size(); ++i)
+    if (!positions[i].allFinite())
+      throw InputError("vertex " + std::to_string(i) + " has a non-finite coordinate");
+  complex_ = std::move(complex);
+  positions_ = std::move(positions);
+  for (int d = 0; d <= dim(); ++d) grew(d);
+  for (Index c = 0; c < complex_.slots(dim()); ++c)
+    if (complex_.alive(dim(), c)) newCell(c);
+  ++geometry_version_;
+}
+
 Tissue::Tissue(const Tissue& other)
     : complex_(other.complex_),
       embedding_(other.embedding_),
@@ -87,6 +103,8 @@ void Tissue::restoreLineage(CellId c, std::int64_t lineage, std::int64_t parent,
   (*birth_)[c] = birth_time;
   next_lineage_ = std::max(next_lineage_, lineage + 1);
 }
+
+void Tissue::reserveLineageIds(std::int64_t next) { next_lineage_ = std::max(next_lineage_, next); }
 
 void Tissue::paranoidCheck([[maybe_unused]] const char* where) const {
 #ifdef TESSELLA_PARANOID

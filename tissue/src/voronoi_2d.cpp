@@ -1,7 +1,12 @@
-// 2D Voronoi tissues: CGAL's Delaunay triangulation gives each seed its
-// neighbours; the seed's cell is the domain polygon clipped by the bisector of
-// every Delaunay neighbour (so walls are exactly the dual of Delaunay edges),
-// and the cells' vertices are welded into one conforming complex.
+// 2D Voronoi tissues from CGAL's Delaunay triangulation. Voronoi vertices are
+// the circumcentres of Delaunay triangles (triangles whose circumcentres lie
+// within the weld tolerance, e.g. 4 cocircular seeds, are one vertex). A cell
+// whose triangles' circumcentres all lie inside the domain is read off its
+// triangles directly; only the cells reaching the boundary are clipped (the
+// domain cut by the bisector of every Delaunay neighbour) and their vertices
+// welded onto those circumcentres, so walls are exactly the dual of Delaunay
+// edges. Per-cell work runs in parallel; numbering is sequential, so the
+// result does not depend on the thread count.
 
 #include <algorithm>
 #include <cmath>
@@ -15,6 +20,7 @@
 #pragma GCC diagnostic ignored "-Wnull-dereference"
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #pragma GCC diagnostic pop
 
@@ -32,7 +38,8 @@ namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using VertexBase = CGAL::Triangulation_vertex_base_with_info_2<Index, Kernel>;
-using Tds = CGAL::Triangulation_data_structure_2<VertexBase>;
+using FaceBase = CGAL::Triangulation_face_base_with_info_2<Index, Kernel>;
+using Tds = CGAL::Triangulation_data_structure_2<VertexBase, FaceBase>;
 using Delaunay = CGAL::Delaunay_triangulation_2<Kernel, Tds>;
 using Point = Kernel::Point_2;
 
@@ -112,65 +119,177 @@ Delaunay triangulate(std::span<const Vec3> seeds, double duplicate_distance) {
 
 ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& domain,
                            double duplicate_tolerance, CellOutput output) {
-  const Delaunay dt = triangulate(seeds, duplicate_tolerance * domain.scale);
+  Delaunay dt = triangulate(seeds, duplicate_tolerance * domain.scale);
   const std::size_t n = seeds.size();
   std::vector<Delaunay::Vertex_handle> handle(n);
   for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) handle[v->info()] = v;
 
+  // Finite triangles numbered in CGAL's (deterministic) order, with their circumcentres.
+  std::vector<Delaunay::Face_handle> tri;
+  tri.reserve(2 * n);
+  for (auto f = dt.all_faces_begin(); f != dt.all_faces_end(); ++f) f->info() = kInvalidIndex;
+  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
+    f->info() = static_cast<Index>(tri.size());
+    tri.push_back(f);
+  }
+  const std::int64_t nt = static_cast<std::int64_t>(tri.size());
+  std::vector<Vec2> cc(tri.size());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t t = 0; t < nt; ++t) {
+    const Point c = CGAL::circumcenter(tri[t]->vertex(0)->point(), tri[t]->vertex(1)->point(),
+                                       tri[t]->vertex(2)->point());
+    cc[t] = Vec2(c.x(), c.y());
+  }
+  // One Voronoi vertex per group of adjacent triangles with (nearly) equal
+  // circumcentres; the group's id is its lowest triangle.
+  const double weld = kWeldTolerance * domain.scale;
+  std::vector<Index> group(tri.size());
+  for (std::size_t t = 0; t < tri.size(); ++t) group[t] = static_cast<Index>(t);
+  auto root = [&](Index t) {
+    while (group[t] != t) t = group[t] = group[group[t]];
+    return t;
+  };
+  for (std::size_t t = 0; t < tri.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const Index u = tri[t]->neighbor(k)->info();
+      if (u == kInvalidIndex || u < t || (cc[t] - cc[u]).squaredNorm() > weld * weld) continue;
+      const Index a = root(static_cast<Index>(t)), b = root(u);
+      group[std::max(a, b)] = std::min(a, b);
+    }
+  for (std::size_t t = 0; t < tri.size(); ++t) group[t] = root(static_cast<Index>(t));
+
+  // A cell is interior when all its triangles are finite and their circumcentres
+  // lie inside the domain by a margin far above the clipping tolerances.
+  const double margin = kInteriorMargin * domain.scale;
+  auto inside = [&](const Vec2& p) {
+    if (!domain.is_rectangle && (p - domain.center).norm() < domain.inner_radius - margin) return true;
+    return domain.excess(p) < -margin;
+  };
   const double on = kOnTolerance * domain.scale;
   const std::vector<Vec2> start =
       domain.is_rectangle ? domain.corners
                           : std::vector<Vec2>{domain.lo, {domain.hi.x(), domain.lo.y()}, domain.hi,
                                               {domain.lo.x(), domain.hi.y()}};
+  const bool complex = output == CellOutput::Complex;
   ClippedCells2 out;
   out.centroids.resize(n);
-  const bool complex = output == CellOutput::Complex;
-  VertexWelder welder(Vec3(domain.lo.x(), domain.lo.y(), 0), kWeldTolerance * domain.scale,
-                      complex ? 2 * n + domain.corners.size() : 0);
-  if (complex) out.polygons.resize(n);
-
-  std::vector<Vec2> poly, scratch;
-  std::vector<double> side;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec2 s(seeds[i].x(), seeds[i].y());
-    poly = start;
-    auto circ = dt.incident_vertices(handle[i]), done = circ;
-    do {
-      if (dt.is_infinite(circ)) continue;
-      const Vec2 t(circ->point().x(), circ->point().y());
-      const Vec2 d = t - s;
-      const Vec2 normal = d / d.norm();
-      clipPolygon(poly, scratch, side, normal, normal.dot((s + t) / 2), on);
-    } while (++circ != done);
-    if (!domain.is_rectangle) {
-      // Only cells reaching past the polygon's inscribed circle meet its sides.
-      double reach = 0;
-      for (const Vec2& p : poly) reach = std::max(reach, (p - s).norm());
-      if ((s - domain.center).norm() + reach >= domain.inner_radius) {
-        for (const HalfPlane& hp : domain.sides)
-          if (hp.offset - hp.normal.dot(s) < reach + on)
-            clipPolygon(poly, scratch, side, hp.normal, hp.offset, on);
+  std::vector<std::vector<Index>> keys(complex ? n : 0);  // interior cells: triangle groups
+  std::vector<std::vector<Vec2>> clipped(n);              // boundary cells: clipped polygon
+  std::vector<std::uint8_t> vanished(n, 0);
+  const std::int64_t ns = static_cast<std::int64_t>(n);
+#pragma omp parallel
+  {
+    std::vector<Vec2> poly, scratch;
+    std::vector<double> side;
+    std::vector<Index> loop;
+#pragma omp for schedule(dynamic, 1024)
+    for (std::int64_t i = 0; i < ns; ++i) {
+      const Vec2 s(seeds[i].x(), seeds[i].y());
+      bool interior = true;
+      loop.clear();
+      auto fc = dt.incident_faces(handle[i]), done = fc;
+      do {
+        const Index t = fc->info();
+        if (t == kInvalidIndex || !inside(cc[t])) {
+          interior = false;
+          break;
+        }
+        if (loop.empty() || loop.back() != group[t]) loop.push_back(group[t]);
+      } while (++fc != done);
+      while (interior && loop.size() > 1 && loop.back() == loop.front()) loop.pop_back();
+      if (interior && loop.size() >= 3) {
+        poly.clear();
+        for (Index g : loop) poly.push_back(cc[g]);
+        const Vec2 c = polygonCentroid(poly);
+        out.centroids[i] = Vec3(c.x(), c.y(), 0);
+        if (complex) keys[i] = loop;
+        continue;
       }
+      poly = start;
+      auto circ = dt.incident_vertices(handle[i]), vdone = circ;
+      do {
+        if (dt.is_infinite(circ)) continue;
+        const Vec2 t(circ->point().x(), circ->point().y());
+        const Vec2 d = t - s;
+        const Vec2 normal = d / d.norm();
+        clipPolygon(poly, scratch, side, normal, normal.dot((s + t) / 2), on);
+      } while (++circ != vdone);
+      if (!domain.is_rectangle) {
+        // Only cells reaching past the polygon's inscribed circle meet its sides.
+        double reach = 0;
+        for (const Vec2& p : poly) reach = std::max(reach, (p - s).norm());
+        if ((s - domain.center).norm() + reach >= domain.inner_radius) {
+          for (const HalfPlane& hp : domain.sides)
+            if (hp.offset - hp.normal.dot(s) < reach + on)
+              clipPolygon(poly, scratch, side, hp.normal, hp.offset, on);
+        }
+      }
+      if (poly.size() < 3) {
+        vanished[i] = 1;
+        continue;
+      }
+      const Vec2 c = polygonCentroid(poly);
+      out.centroids[i] = Vec3(c.x(), c.y(), 0);
+      if (complex) clipped[i] = poly;
     }
-    if (poly.size() < 3)
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    if (vanished[i])
       throw GeometryError("the Voronoi cell of " + describeSeed(i, seeds[i]) +
                           " vanished when clipped to the domain");
-    const Vec2 c = polygonCentroid(poly);
-    out.centroids[i] = Vec3(c.x(), c.y(), 0);
-    if (!complex) continue;
+  if (!complex) return out;
 
-    std::vector<Index>& loop = out.polygons[i];
-    loop.reserve(poly.size());
-    for (const Vec2& p : poly) {
-      const Index v = welder.weld(Vec3(p.x(), p.y(), 0));
-      if (loop.empty() || loop.back() != v) loop.push_back(v);
+  // Vertex keys: a triangle group (< nt), or nt + k for the k-th point made
+  // by clipping. Clipped points weld onto the circumcentres of the boundary
+  // cells' triangles first (entered before any of them), then onto each other.
+  VertexWelder welder(Vec3(domain.lo.x(), domain.lo.y(), 0), weld, 0);
+  std::vector<Index> key_of_weld;
+  std::vector<Vec3> extra;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (clipped[i].empty()) continue;
+    auto fc = dt.incident_faces(handle[i]), done = fc;
+    do {
+      const Index t = fc->info();
+      // A circumcentre on the boundary (to the weld tolerance) is left to the
+      // clipped points, which lie exactly on it.
+      if (t == kInvalidIndex || domain.excess(cc[t]) > -2 * weld) continue;
+      const Index w = welder.weld(Vec3(cc[t].x(), cc[t].y(), 0));
+      if (w == key_of_weld.size()) key_of_weld.push_back(group[t]);
+    } while (++fc != done);
+  }
+  for (std::size_t i = 0; i < n; ++i) {
+    if (clipped[i].empty()) continue;
+    std::vector<Index>& loop = keys[i];
+    for (const Vec2& p : clipped[i]) {
+      const Index w = welder.weld(Vec3(p.x(), p.y(), 0));
+      if (w == key_of_weld.size()) {
+        key_of_weld.push_back(static_cast<Index>(nt + extra.size()));
+        extra.push_back(Vec3(p.x(), p.y(), 0));
+      }
+      const Index k = key_of_weld[w];
+      if (loop.empty() || loop.back() != k) loop.push_back(k);
     }
     while (loop.size() > 1 && loop.back() == loop.front()) loop.pop_back();
     if (loop.size() < 3)
       throw GeometryError("the Voronoi cell of " + describeSeed(i, seeds[i]) +
                           " collapsed to fewer than 3 vertices when its vertices were welded");
   }
-  out.positions = welder.takePositions();
+  // Vertices numbered by first use, cell by cell.
+  std::vector<Index> id(tri.size() + extra.size(), kInvalidIndex);
+  out.offsets.reserve(n + 1);
+  out.offsets.push_back(0);
+  out.loops.reserve(7 * n);
+  out.positions.reserve(2 * n + extra.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    for (Index k : keys[i]) {
+      if (id[k] == kInvalidIndex) {
+        id[k] = static_cast<Index>(out.positions.size());
+        out.positions.push_back(k < tri.size() ? Vec3(cc[k].x(), cc[k].y(), 0) : extra[k - tri.size()]);
+      }
+      out.loops.push_back(id[k]);
+    }
+    out.offsets.push_back(static_cast<Index>(out.loops.size()));
+  }
   return out;
 }
 
@@ -190,7 +309,7 @@ Tissue planarVoronoi(std::span<const Vec3> seeds, const Domain& d, const Voronoi
   }
   detail::ClippedCells2 cells =
       detail::clipVoronoi2(seeds, domain, options.duplicate_tolerance, detail::CellOutput::Complex);
-  return buildPolygonTissue(cells.positions, cells.polygons, Embedding::Planar);
+  return buildPolygonTissue(std::move(cells.positions), cells.offsets, cells.loops, Embedding::Planar);
 }
 
 }  // namespace

@@ -12,16 +12,19 @@
 namespace tessella::detail {
 
 struct ClippedCells2 {
-  std::vector<Vec3> positions;               // welded vertices (z = 0)
-  std::vector<std::vector<Index>> polygons;  // cell k = seed k, counter-clockwise
-  std::vector<Vec3> centroids;               // of each clipped cell
+  std::vector<Vec3> positions;  // vertices (z = 0), numbered by first use
+  std::vector<Index> offsets;   // cell k = seed k: loops[offsets[k] .. offsets[k+1]),
+  std::vector<Index> loops;     //   counter-clockwise
+  std::vector<Vec3> centroids;  // of each clipped cell
 };
 
 struct ClippedCells3 {
-  std::vector<Vec3> positions;                 // welded vertices
-  std::vector<std::vector<Index>> faces;       // walls, each listed once
-  std::vector<std::vector<CellFace>> cells;    // cell k = seed k
-  std::vector<Vec3> centroids;                 // of each clipped cell
+  std::vector<Vec3> positions;      // vertices, numbered by first use
+  std::vector<Index> face_offsets;  // walls, each listed once: face k is
+  std::vector<Index> face_loops;    //   face_loops[face_offsets[k] .. face_offsets[k+1])
+  std::vector<Index> cell_offsets;  // cell k = seed k: its walls are
+  std::vector<CellFace> cell_faces; //   cell_faces[cell_offsets[k] .. cell_offsets[k+1])
+  std::vector<Vec3> centroids;      // of each clipped cell
 };
 
 /// What to compute: Lloyd relaxation needs the centroids only.

@@ -77,5 +77,8 @@ Icosphere makeIcosphere(const Ball& b);
 inline constexpr double kOnTolerance = 1e-12;
 inline constexpr double kWeldTolerance = 1e-10;
 inline constexpr double kMinDuplicateTolerance = 1e-9;
+/// A Voronoi cell is read off the Delaunay triangulation (not clipped) when
+/// all its vertices lie this far inside the domain.
+inline constexpr double kInteriorMargin = 1e-8;
 
 }  // namespace tessella::detail

@@ -17,6 +17,12 @@ Tissue buildPolygonTissue(std::span<const Vec3> positions,
                           const std::vector<std::vector<Index>>& polygons,
                           Embedding embedding = Embedding::Planar);
 
+/// The same from flat (CSR) arrays: polygon k is
+/// loop_vertices[offsets[k] .. offsets[k+1]). Built in bulk (no search per
+/// edge); the result is identical to the nested-vector form.
+Tissue buildPolygonTissue(std::vector<Vec3> positions, std::span<const Index> offsets,
+                          std::span<const Index> loop_vertices, Embedding embedding = Embedding::Planar);
+
 /// One face of a polyhedral cell as used by buildPolyhedralTissue: an index
 /// into the face list and whether its loop normal points into the cell.
 struct CellFace {
@@ -29,5 +35,11 @@ struct CellFace {
 Tissue buildPolyhedralTissue(std::span<const Vec3> positions,
                              const std::vector<std::vector<Index>>& faces,
                              const std::vector<std::vector<CellFace>>& cells);
+
+/// The same from flat (CSR) arrays: face k is face_vertices[face_offsets[k] ..
+/// face_offsets[k+1]), cell k is cell_faces[cell_offsets[k] .. cell_offsets[k+1]).
+Tissue buildPolyhedralTissue(std::vector<Vec3> positions, std::span<const Index> face_offsets,
+                             std::span<const Index> face_vertices, std::span<const Index> cell_offsets,
+                             std::span<const CellFace> cell_faces);
 
 }  // namespace tessella

@@ -89,6 +89,22 @@ class CellComplex {
   /// and consistently oriented (each edge used once in each direction).
   VolumeId addVolume(std::span<const OrientedFace> faces);
 
+  // --- bulk construction (generators, readers) --------------------------------
+  /// A complex of `num_vertices` vertices and one face per vertex loop, given
+  /// in CSR form: face k is loop_vertices[loop_offsets[k] .. loop_offsets[k+1]).
+  /// Edges are created at their first use, in loop order: the result (ids and
+  /// the order of every region list) is the one addVertex x n then one
+  /// polygon per loop would give, without a search per edge. Throws
+  /// TopologyError naming face k for a loop of fewer than 3 vertices, a vertex
+  /// out of range or repeated in the loop, or (2D) an edge bounding a third face.
+  static CellComplex fromLoops(int dim, std::size_t num_vertices,
+                               std::span<const Index> loop_offsets,
+                               std::span<const Index> loop_vertices);
+  /// Appends volumes in bulk (3D): volume k is faces[offsets[k] .. offsets[k+1]).
+  /// Same checks as addVolume (run in parallel, the first bad volume is
+  /// reported); on error nothing is added.
+  void addVolumes(std::span<const Index> offsets, std::span<const OrientedFace> faces);
+
   /// Removes an element that bounds nothing (its regions are empty); its
   /// borders lose it from their regions.
   void remove(int degree, Index i);

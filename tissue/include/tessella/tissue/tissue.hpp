@@ -93,6 +93,11 @@ struct SplitOptions {
 class Tissue {
  public:
   Tissue(int dim, Embedding embedding);
+  /// A tissue around a complete complex (bulk-built with
+  /// CellComplex::fromLoops / addVolumes) and one position per vertex; every
+  /// cell is a founder cell (fresh lineage id, parent -1, birth time 0).
+  /// Throws InputError for a count mismatch or a non-finite position.
+  Tissue(CellComplex complex, std::vector<Vec3> positions, Embedding embedding);
 
   // --- kind -----------------------------------------------------------------
   int dim() const { return complex_.dim(); }
@@ -165,6 +170,9 @@ class Tissue {
   /// Restores lineage read back from a file (restart). Ids stay unique: the
   /// next new id is larger than every restored one.
   void restoreLineage(CellId c, std::int64_t lineage, std::int64_t parent, double birth_time);
+  /// Makes the next new lineage id at least `next` (a restart whose saved
+  /// history used ids of cells no longer alive). Never lowers it.
+  void reserveLineageIds(std::int64_t next);
   static constexpr const char* kLineageName = "lineage_id";
   static constexpr const char* kParentName = "parent_id";
   static constexpr const char* kBirthTimeName = "birth_time";
