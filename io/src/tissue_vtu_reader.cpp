@@ -268,6 +268,15 @@ Tissue readTissueVtu(const std::string& path) {
   restoreProperties(tissue.properties(0), grid->GetPointData(), stringList(field, detail::kVertexPropertiesArray, src),
                     grid->GetNumberOfPoints(), "vertex", src);
   restoreLineage(tissue, grid->GetCellData(), grid->GetNumberOfCells(), src);
+  // Ids of cells that were removed before the save stay used: a restart must
+  // not hand them out again. Optional, files of other writers may lack it.
+  if (vtkDataArray* next = field->GetArray(detail::kNextLineageArray)) {
+    const double value = next->GetNumberOfTuples() > 0 ? next->GetComponent(0, 0) : -1.0;
+    if (!(value >= 0) || value != std::floor(value))
+      src.fail(std::string(detail::kNextLineageArray) + " = " + std::to_string(value) +
+               " is not a non-negative integer");
+    tissue.reserveLineageIds(static_cast<std::int64_t>(value));
+  }
   return tissue;
 }
 

@@ -30,6 +30,16 @@ SimulationConfig readSimulationConfig(Config config) {
     config.set("rng_seed", static_cast<std::int64_t>(seed), {}, ValueOrigin::Derived);
   }
   TissueSpec tissue = readTissueSection(config);
+  // A restart continues the snapshot's clock unless the file says otherwise.
+  if (const auto* snap = std::get_if<SnapshotSpec>(&tissue)) {
+    const double saved = snap->tissue->time();
+    if (!config.isGiven("time.start"))
+      config.set("time.start", saved, {}, ValueOrigin::Derived);
+    else if (config.getFloat("time.start") != saved)
+      config.addNote(config.entry("time.start").where.str() + ": the clock starts at time.start = " +
+                     formatValue(config.entry("time.start").value) + ", not at the snapshot's time " +
+                     formatValue(saved) + " (leave time.start out to continue the snapshot's clock)");
+  }
   TimeSpan time = readTimeSection(config);
   OutputSpec output = readOutputSection(config);
   GrowthSpec growth = readGrowthSection(config, tissue);

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "tessella/io/vtu.hpp"
 #include "tessella/sim/config_error.hpp"
 #include "tessella/tissue/grids.hpp"
 
@@ -83,7 +84,7 @@ void declareTissueSection(Schema& s) {
   s.section("tissue", "The initial tissue. `generator` picks one of the subsections below; only that "
                       "one is read (the others may stay in the file, unused).");
   s.key("tissue.generator", ValueType::Enum, "Which generator builds the initial tissue.")
-      .oneOf({"rectangular_grid", "hexagonal_grid", "box_grid", "voronoi", "dome"})
+      .oneOf({"rectangular_grid", "hexagonal_grid", "box_grid", "voronoi", "dome", "snapshot"})
       .isRequired();
 
   s.section("tissue.rectangular_grid", "`nx` x `ny` rectangular cells: a flat 2D tissue.")
@@ -175,6 +176,13 @@ void declareTissueSection(Schema& s) {
   s.key("tissue.dome.base_center", ValueType::Vec2, "Centre of the footprint disk.")
       .byDefault(std::vector<double>{0, 0});
   declareSeedKeys(s, "tissue.dome", 100);
+
+  s.section("tissue.snapshot",
+            "A snapshot written by Tessella (any `.vtu` of a series): the run restarts from it with its "
+            "topology, positions, properties and lineage (new cells get lineage ids above every saved "
+            "one). The clock starts at the snapshot's time unless `time.start` is given.")
+      .activeWhen("tissue.generator", {"snapshot"});
+  s.key("tissue.snapshot.file", ValueType::Path, "The `.vtu` file, relative to the config file.").isRequired();
 }
 
 TissueSpec readTissueSection(const Config& c) {
@@ -220,6 +228,15 @@ TissueSpec readTissueSection(const Config& c) {
     v.seeds = readSeeds(c, p, v.dim());
     return v;
   }
+  if (generator == "snapshot") {
+    SnapshotSpec snap{c.getString("tissue.snapshot.file"), nullptr};
+    try {
+      snap.tissue = std::make_shared<const Tissue>(io::readTissueVtu(snap.file));
+    } catch (const InputError& e) {
+      throw c.errorAt("tissue.snapshot.file", e.what());
+    }
+    return snap;
+  }
   // dome
   const std::string p = "tissue.dome";
   DomeSpec d;
@@ -262,6 +279,10 @@ struct TissueBuilder {
     const auto seeds = d.seeds.file.empty() ? randomSeeds(footprint, d.seeds.count, rng_seed)
                                             : readSeedsCsv(d.seeds.file, 2);
     return domeTissue(seeds, d.dome, d.seeds.options);
+  }
+  Tissue operator()(const SnapshotSpec& s) const {
+    if (!s.tissue) return io::readTissueVtu(s.file);
+    return *s.tissue;
   }
 };
 }  // namespace

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
 #include <sstream>
 
@@ -198,4 +199,56 @@ TEST_CASE("the default output directory is runs/<config name>", "[sim][run]") {
   fs::current_path(cwd);
   CHECK(dir == (scratch.path() / "runs" / "my_tissue").string());
   CHECK_FALSE(fs::exists(dir));
+}
+
+TEST_CASE("a run restarted from a snapshot ends where the uninterrupted run ends", "[sim][run][restart]") {
+  ScratchDir scratch;
+  // figure17 is deterministic (fixed threshold, main-axis division): the
+  // restart must reproduce every cell, by lineage id, of the whole run.
+  const std::string config = sourcePath("configs/figure17.yaml");
+  const RunResult whole = runConfig(config, scratch / "whole", {"time.end=2", "output.every=20"});
+  const auto snapshots = snapshotsIn(whole.directory);
+  const auto times = pvdTimes(fs::path(whole.directory) / "tissue.pvd");
+  REQUIRE(snapshots.size() == 3);
+  REQUIRE(times[1] == Approx(1.0));
+  const Tissue middle = io::readTissueVtu(snapshots[1].string());
+  const Tissue end = io::readTissueVtu(snapshots.back().string());
+  REQUIRE(end.numCells() > middle.numCells());  // divisions happen after the restart point
+
+  const std::vector<std::string> restart{"tissue.generator=snapshot",
+                                         "tissue.snapshot.file=" + snapshots[1].string(), "time.end=2",
+                                         "output.every=20"};
+  PreparedRun run = PreparedRun::prepare(loadSimulationConfigFile(config, restart), RunOptions{scratch / "rest", false});
+  CHECK(run.config().time.start == Approx(1.0));  // the clock continues the snapshot's
+  REQUIRE(run.simulation().tissue().numCells() == middle.numCells());
+  run.execute();
+  const Tissue& resumed = run.simulation().tissue();
+  REQUIRE(resumed.numCells() == end.numCells());
+  std::map<std::int64_t, CellId> by_lineage;
+  for (CellId c : end.cells()) by_lineage[end.lineageId(c)] = c;
+  for (CellId c : resumed.cells()) {
+    const auto it = by_lineage.find(resumed.lineageId(c));
+    REQUIRE(it != by_lineage.end());
+    CHECK(resumed.parentId(c) == end.parentId(it->second));
+    CHECK(resumed.birthTime(c) == Approx(end.birthTime(it->second)));
+    CHECK(cellMeasure(resumed, c) == Approx(cellMeasure(end, it->second)).epsilon(1e-9));
+    CHECK((cellCentroid(resumed, c) - cellCentroid(end, it->second)).norm() < 1e-9);
+  }
+  CHECK(validate(resumed).ok);
+}
+
+TEST_CASE("a bad restart snapshot is a located error", "[sim][run][restart]") {
+  ScratchDir scratch;
+  scratch.write("not_a_snapshot.vtu", "this is not VTK XML\n");
+  const std::string config = scratch.write(
+      "restart.yaml", "tissue:\n  generator: snapshot\n  snapshot:\n    file: not_a_snapshot.vtu\n");
+  const ConfigError bad = configErrorOf([&] { loadSimulationConfigFile(config); });
+  CHECK(bad.keyPath() == "tissue.snapshot.file");
+  CHECK_THAT(bad.what(), Contains("restart.yaml:4:11") && Contains("not_a_snapshot.vtu"));
+
+  const std::string missing = scratch.write(
+      "missing.yaml", "tissue:\n  generator: snapshot\n  snapshot:\n    file: nowhere.vtu\n");
+  CHECK(configErrorOf([&] { loadSimulationConfigFile(missing); }).keyPath() == "tissue.snapshot.file");
+  const std::string absent = scratch.write("absent.yaml", "tissue:\n  generator: snapshot\n");
+  CHECK(configErrorOf([&] { loadSimulationConfigFile(absent); }).keyPath() == "tissue.snapshot.file");
 }

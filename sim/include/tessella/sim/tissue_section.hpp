@@ -10,9 +10,11 @@
 //                     disk (2D) or to a box or ball (3D)
 //   dome              Voronoi cells of a disk lifted onto a dome (curved 2D
 //                     sheet, the L1 layer of a shoot apical meristem)
+//   snapshot          a .vtu written by Tessella: a run restarts from it
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <variant>
 
@@ -61,8 +63,15 @@ struct DomeSpec {
   SeedSpec seeds;
 };
 
+/// A saved snapshot to restart from. It is read while the configuration is
+/// read (its dimension and time decide other keys), so the tissue is kept.
+struct SnapshotSpec {
+  std::string file;  ///< absolute path
+  std::shared_ptr<const Tissue> tissue;
+};
+
 using TissueSpec =
-    std::variant<RectangularGridSpec, HexagonalGridSpec, BoxGridSpec, VoronoiSpec, DomeSpec>;
+    std::variant<RectangularGridSpec, HexagonalGridSpec, BoxGridSpec, VoronoiSpec, DomeSpec, SnapshotSpec>;
 
 /// Declares tissue.* in the schema.
 void declareTissueSection(Schema& schema);
