@@ -1,0 +1,19 @@
+// The Python module `tessella`: the C++ library's public API for models
+// written in Python (docs/embedding.md, "Python").
+#include "bindings.hpp"
+
+PYBIND11_MODULE(tessella, m) {
+  using namespace tessella::python;
+  m.doc() = "Tessella: plant cell-tissue growth (tissues, growth fields, division, simulations, ParaView output).";
+#ifdef TESSELLA_VERSION
+  m.attr("__version__") = TESSELLA_VERSION;
+#endif
+  bindErrors(m);
+  py::class_<tessella::Tissue> tissue = bindTissue(m);
+  bindProperties(tissue);
+  bindGenerators(m);
+  bindGrowth(m);
+  bindDivision(m);
+  bindIo(m);
+  bindSim(m);
+}

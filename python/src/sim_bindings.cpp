@@ -1,0 +1,180 @@
+// The simulation loop from Python: from a YAML file or string, or from code
+// with a tissue and stages (integrators, schedulers, Python functions); step
+// callbacks in Python; ParaView series output.
+#include <memory>
+
+#include "bindings.hpp"
+#include "safe_step.hpp"
+#include "tessella/growth/division_scheduler.hpp"
+#include "tessella/growth/growth_integrator.hpp"
+#include "tessella/sim/run.hpp"
+#include "tessella/sim/series_output.hpp"
+#include "tessella/sim/simulation.hpp"
+#include "tessella/sim/simulation_config.hpp"
+
+namespace tessella::python {
+
+namespace {
+
+using sim::Simulation;
+using sim::Stage;
+using sim::StepContext;
+
+/// Moves the vertices with a Python-built integrator (as sim::GrowthStage does).
+class IntegratorStage final : public Stage {
+ public:
+  explicit IntegratorStage(std::shared_ptr<growth::GrowthIntegrator> g) : g_(std::move(g)) {}
+  std::string name() const override { return "growth"; }
+  void apply(Tissue& t, const StepContext& c) override {
+    t.setTime(c.time);  // the integrator runs from the tissue's clock
+    stepRestoringOnError(*g_, t, c.dt);
+  }
+
+ private:
+  std::shared_ptr<growth::GrowthIntegrator> g_;
+};
+
+/// Divides with a Python-built scheduler, drawing from the run's random
+/// stream (as sim::DivisionStage does); daughters are born at the step's end.
+class SchedulerStage final : public Stage {
+ public:
+  explicit SchedulerStage(std::shared_ptr<growth::DivisionScheduler> s) : s_(std::move(s)) {}
+  std::string name() const override { return "division"; }
+  void apply(Tissue& t, const StepContext& c) override {
+    t.setTime(c.time + c.dt);
+    if (c.rng) s_->step(t, geometry_, *c.rng);
+    else s_->step(t, geometry_);
+  }
+
+ private:
+  std::shared_ptr<growth::DivisionScheduler> s_;
+  GeometryCache geometry_;
+};
+
+/// A stage written in Python: fn(tissue, step, time, dt), run on the calling thread.
+class PythonStage final : public Stage {
+ public:
+  PythonStage(py::function fn, std::string name) : fn_(std::move(fn)), name_(std::move(name)) {}
+  ~PythonStage() override {
+    py::gil_scoped_acquire gil;
+    fn_ = py::function();
+  }
+  std::string name() const override { return name_; }
+  void apply(Tissue& t, const StepContext& c) override {
+    py::gil_scoped_acquire gil;
+    fn_(py::cast(&t, py::return_value_policy::reference), c.step, c.time, c.dt);
+  }
+
+ private:
+  py::function fn_;
+  std::string name_;
+};
+
+sim::OutputSpec outputSpec(std::size_t every, const std::string& name, const std::string& compression) {
+  if (every == 0) throw InputError("attach_series: every must be >= 1");
+  sim::OutputSpec o;
+  o.every = every;
+  o.name = name;
+  o.vtu.compression = io::parseCompression(compression);
+  return o;
+}
+
+}  // namespace
+
+void bindSim(py::module_& m) {
+  py::class_<sim::SeriesOutput, std::shared_ptr<sim::SeriesOutput>>(
+      m, "SeriesOutput", "A ParaView series a Simulation keeps up to date (see Simulation.attach_series).")
+      .def_property_readonly("snapshots", &sim::SeriesOutput::snapshots)
+      .def_property_readonly("pvd_path", &sim::SeriesOutput::pvdPath);
+
+  py::class_<Simulation>(m, "Simulation", R"doc(
+A tissue, a time span [start, end] in steps of dt, and stages run each step in
+order (growth, division, Python functions), then the clock advances, then the
+on_step callbacks run. Simulation.from_file / from_yaml build everything a
+configuration describes (docs/config.md); Simulation(tissue, ...) starts from
+code, with add_stage(). The simulation owns its tissue (a copy of the one
+given): read and edit it through sim.tissue, which stays valid while the
+simulation lives. A stage's exception is raised as SimulationError naming the
+stage, step and time, followed by the cause's message.
+)doc")
+      .def(py::init([](const Tissue& t, double start, double end, double dt, std::uint64_t seed) {
+             if (!(dt > 0.0)) throw InputError("Simulation: dt must be > 0, got " + std::to_string(dt));
+             if (!(end >= start))
+               throw InputError("Simulation: end (" + std::to_string(end) + ") must be >= start (" + std::to_string(start) + ")");
+             return Simulation(t, sim::SimulationParameters{.time = {start, end, dt}, .rng_seed = seed});
+           }),
+           py::arg("tissue"), py::arg("start") = 0.0, py::arg("end") = 10.0, py::arg("dt") = 1.0, py::arg("rng_seed") = 0)
+      .def_static("from_file", &Simulation::fromFile, py::arg("path"), py::arg("overrides") = std::vector<std::string>{},
+                  "From a YAML configuration file; overrides are 'key.path=value' strings (the CLI's --set).")
+      .def_static("from_yaml", &Simulation::fromYaml, py::arg("yaml"), py::arg("overrides") = std::vector<std::string>{},
+                  py::arg("base_directory") = ".", "From YAML text; InputError (ValueError) names the key, line and value.")
+      .def_property_readonly("tissue", py::overload_cast<>(&Simulation::tissue), py::return_value_policy::reference_internal,
+                             "The simulated tissue (no copy; valid while the simulation lives).")
+      .def_property_readonly("time", &Simulation::time)
+      .def_property_readonly("steps_done", &Simulation::stepsDone)
+      .def_property_readonly("num_steps", &Simulation::numSteps)
+      .def_property_readonly("finished", &Simulation::finished)
+      .def_property_readonly("dt", [](const Simulation& s) { return s.parameters().time.dt; })
+      .def_property_readonly("stage_names",
+                             [](const Simulation& s) {
+                               std::vector<std::string> names;
+                               for (std::size_t i = 0; i < s.numStages(); ++i) names.push_back(s.stage(i).name());
+                               return names;
+                             })
+      .def(
+          "add_stage",
+          [](Simulation& s, py::object stage, const std::string& name) {
+            if (py::isinstance<growth::GrowthIntegrator>(stage))
+              s.addStage(std::make_unique<IntegratorStage>(stage.cast<std::shared_ptr<growth::GrowthIntegrator>>()));
+            else if (py::isinstance<growth::DivisionScheduler>(stage))
+              s.addStage(std::make_unique<SchedulerStage>(stage.cast<std::shared_ptr<growth::DivisionScheduler>>()));
+            else if (PyCallable_Check(stage.ptr()))
+              s.addStage(std::make_unique<PythonStage>(stage.cast<py::function>(), name.empty() ? "python" : name));
+            else
+              throw InputError("add_stage: expected a GrowthIntegrator, a DivisionScheduler or a callable "
+                               "fn(tissue, step, time, dt), got " + std::string(py::str(py::type::of(stage))));
+          },
+          py::arg("stage"), py::arg("name") = "",
+          "Appends a stage: a GrowthIntegrator, a DivisionScheduler (drawing from the run's random stream) or a "
+          "Python function fn(tissue, step, time, dt).")
+      .def(
+          "on_step",
+          [](Simulation& s, py::function fn) {
+            s.onStep([fn](const Simulation& sim) {
+              py::gil_scoped_acquire gil;
+              fn(py::cast(&sim, py::return_value_policy::reference));
+            });
+          },
+          py::arg("callback"), "callback(simulation) after every step (exceptions propagate out of step/run).")
+      .def("step", &Simulation::step, "One step (RuntimeError once finished).")
+      .def("run_until", &Simulation::runUntil, py::arg("time"), "Steps while time < t (stops at the end of the span).")
+      .def("run", &Simulation::run, "Steps to the end of the time span.")
+      .def(
+          "attach_series",
+          [](Simulation& s, const std::string& directory, std::size_t every, const std::string& name,
+             const std::string& compression) {
+            return sim::attachSeriesOutput(s, directory, outputSpec(every, name, compression));
+          },
+          py::arg("directory"), py::arg("every") = 1, py::arg("name") = "tissue", py::arg("compression") = "lz4",
+          "Writes the current state now, then every `every` steps and the final state, as a ParaView series.");
+
+  m.def(
+      "run_config",
+      [](const std::string& path, const std::string& out, const std::vector<std::string>& overrides, bool overwrite) {
+        sim::PreparedRun run = sim::PreparedRun::prepare(sim::loadSimulationConfigFile(path, overrides),
+                                                         sim::RunOptions{.output_directory = out, .overwrite = overwrite});
+        run.execute();
+        py::dict d;
+        d["directory"] = run.outputDirectory();
+        d["snapshots"] = run.snapshots();
+        d["run_record"] = run.runRecordPath();
+        d["steps"] = run.simulation().stepsDone();
+        d["cells"] = run.simulation().tissue().numCells();
+        return d;
+      },
+      py::arg("path"), py::arg("out") = "", py::arg("overrides") = std::vector<std::string>{}, py::arg("overwrite") = false,
+      "What `tessella run` does: checks the config, writes run.yaml and the series into `out` (or output.directory, or "
+      "runs/<name>). A directory holding a run is refused unless overwrite=True.");
+}
+
+}  // namespace tessella::python
