@@ -56,6 +56,35 @@ Vec3 vertexMean(const Tissue& t, FaceId f) {
   return c / static_cast<double>(loop.size());
 }
 
+// Measures of every face into the cache (sized by the caller).
+template <bool Planar, bool Moments>
+void facesLoop(const Tissue& t, GeometryCache& cache) {
+  const CellComplex& k = t.topology();
+  const auto& face_alive = k.aliveFlags(2);
+  const std::int64_t nf = static_cast<std::int64_t>(k.slots(2));
+  const Vec3* x = t.positions().data();
+  double* area = cache.face_area.data();
+  Vec3* centroid = cache.face_centroid.data();
+  Vec3* normal = cache.face_normal.data();
+  Sym3* second = Moments ? cache.face_second_moment.data() : nullptr;
+#pragma omp parallel for schedule(static)
+  for (std::int64_t f = 0; f < nf; ++f) {
+    if (!face_alive[f]) {
+      area[f] = 0;
+      centroid[f].setZero();
+      normal[f].setZero();
+      if constexpr (Moments) second[f] = Sym3{};
+      continue;
+    }
+    const auto loop = k.faceVertices(FaceId(static_cast<Index>(f)));
+    Mat3 m;
+    detail::polygonKernel(
+        loop.size(), [&](std::size_t i) -> const Vec3& { return x[loop[i].index()]; }, Planar, Moments,
+        area[f], centroid[f], normal[f], Moments ? &m : nullptr);
+    if constexpr (Moments) second[f] = Sym3::fromMatrix(m);
+  }
+}
+
 }  // namespace
 
 PrincipalAxes principalAxes(const Mat3& second_moment) {
@@ -170,22 +199,12 @@ void recomputeGeometry(const Tissue& t, GeometryCache& cache, const GeometryOpti
   cache.face_centroid.resize(nf);
   cache.face_normal.resize(nf);
   if (moments) cache.face_second_moment.resize(nf);
-#pragma omp parallel for schedule(static)
-  for (std::int64_t f = 0; f < nf; ++f) {
-    if (!face_alive[f]) {
-      cache.face_area[f] = 0;
-      cache.face_centroid[f].setZero();
-      cache.face_normal[f].setZero();
-      if (moments) cache.face_second_moment[f] = Sym3{};
-      continue;
-    }
-    const auto loop = k.faceVertices(FaceId(static_cast<Index>(f)));
-    Mat3 m;
-    detail::polygonKernel(
-        loop.size(), [&](std::size_t i) -> const Vec3& { return t.position(loop[i]); }, flat,
-        moments, cache.face_area[f], cache.face_centroid[f], cache.face_normal[f], moments ? &m : nullptr);
-    if (moments) cache.face_second_moment[f] = Sym3::fromMatrix(m);
-  }
+  // The embedding and the moments flag as template arguments: each of the
+  // four loops is compiled with its own straight kernel (same arithmetic).
+  if (flat)
+    moments ? facesLoop<true, true>(t, cache) : facesLoop<true, false>(t, cache);
+  else
+    moments ? facesLoop<false, true>(t, cache) : facesLoop<false, false>(t, cache);
 
   if (t.dim() == 3) {
     const auto& vol_alive = k.aliveFlags(3);
