@@ -1,6 +1,7 @@
 #include "tessella/sim/tessella_schema.hpp"
 
 #include "tessella/sim/growth_section.hpp"
+#include "tessella/sim/mesh_section.hpp"
 #include "tessella/sim/output_section.hpp"
 #include "tessella/sim/time_section.hpp"
 #include "tessella/sim/tissue_section.hpp"
@@ -28,6 +29,7 @@ Schema makeSchema() {
   declareGrowthSection(s);
   declareDivisionSection(s);
   declareOutputSection(s);
+  declareMeshSection(s);
   // Extension point: declare new sections here (declareGrowthSection(s); ...).
   return s;
 }

@@ -1,0 +1,69 @@
+#include <catch2/catch.hpp>
+
+#include "tessella/sim/config_loader.hpp"
+#include "tessella/sim/mesh_section.hpp"
+#include "tessella/sim/tessella_schema.hpp"
+#include "test_support.hpp"
+
+using namespace tessella::sim;
+using tessella::sim::test::configErrorOf;
+using Catch::Matchers::Contains;
+
+namespace {
+Config load(const std::string& yaml, const std::vector<std::string>& overrides = {}) {
+  return loadConfigString(yaml, overrides, tessellaSchema(), "simulation", "<string>", ".");
+}
+}  // namespace
+
+TEST_CASE("mesh: defaults are MeshOptions' defaults, no mesh output", "[sim][config][mesh]") {
+  const Config c = load("tissue: {generator: hexagonal_grid}\n");
+  const MeshSpec m = readMeshSection(c);
+  const tessella::MeshOptions defaults;
+  CHECK(m.options.min_angle_degrees == defaults.min_angle_degrees);
+  CHECK(m.options.max_edge_length == defaults.max_edge_length);
+  CHECK(m.options.max_volume == defaults.max_volume);
+  CHECK(m.options.radius_edge_ratio == defaults.radius_edge_ratio);
+  CHECK(m.options.min_dihedral_degrees == defaults.min_dihedral_degrees);
+  CHECK(m.options.tolerance == defaults.tolerance);
+  CHECK_FALSE(m.output);
+  CHECK(m.every == 0);
+}
+
+TEST_CASE("mesh: every key reaches its MeshOptions field", "[sim][config][mesh]") {
+  const Config c = load(
+      "tissue: {generator: hexagonal_grid}\n"
+      "mesh:\n  max_edge_length: 0.25\n  min_angle: 25\n  max_volume: 0.01\n  radius_edge_ratio: 1.2\n"
+      "  min_dihedral_angle: 12\n  tolerance: 1.0e-9\n  output: true\n  every: 3\n");
+  const MeshSpec m = readMeshSection(c);
+  CHECK(m.options.max_edge_length == 0.25);
+  CHECK(m.options.min_angle_degrees == 25.0);
+  CHECK(m.options.max_volume == 0.01);
+  CHECK(m.options.radius_edge_ratio == 1.2);
+  CHECK(m.options.min_dihedral_degrees == 12.0);
+  CHECK(m.options.tolerance == 1e-9);
+  CHECK(m.output);
+  CHECK(m.every == 3);
+  CHECK(meshOptionsFromConfig(c).max_edge_length == 0.25);
+}
+
+TEST_CASE("mesh: out-of-range values are errors at their key", "[sim][config][mesh]") {
+  const std::string base = "tissue: {generator: hexagonal_grid}\n";
+  struct Case {
+    std::string override_, key;
+  };
+  for (const Case& k : {Case{"mesh.min_angle=40", "mesh.min_angle"}, Case{"mesh.max_edge_length=-1", "mesh.max_edge_length"},
+                        Case{"mesh.radius_edge_ratio=1", "mesh.radius_edge_ratio"},
+                        Case{"mesh.min_dihedral_angle=70", "mesh.min_dihedral_angle"},
+                        Case{"mesh.tolerance=0.001", "mesh.tolerance"}, Case{"mesh.every=0", "mesh.every"},
+                        Case{"mesh.max_volume=-0.5", "mesh.max_volume"}}) {
+    INFO(k.override_);
+    const ConfigError e = configErrorOf([&] { load(base, {k.override_}); });
+    CHECK_THAT(e.what(), Contains(k.key));
+  }
+}
+
+TEST_CASE("mesh: the mesh series name cannot be the tissue series name", "[sim][config][mesh]") {
+  const Config c = load("tissue: {generator: hexagonal_grid}\noutput: {name: mesh}\nmesh: {output: true}\n");
+  const ConfigError e = configErrorOf([&] { readMeshSection(c); });
+  CHECK_THAT(e.what(), Contains("output.name"));
+}
