@@ -9,6 +9,8 @@
 // before refinement (to mark the mesh domain, so holes between cells stay
 // empty) and once after it (refinement replaces faces).
 
+#include <algorithm>
+#include <limits>
 #include <queue>
 #include <string>
 
@@ -22,9 +24,11 @@
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include "bounded_refinement.hpp"
 #include "tessella/mesh/geometry_check.hpp"
 #include "tessella/mesh/mesh_tissue.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/geometry.hpp"
 #include "triangle_criteria.hpp"
 #include "wall_segments.hpp"
 
@@ -132,9 +136,23 @@ FeMesh meshPlanarTissue(const Tissue& t, const MeshOptions& options) {
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->set_in_domain(f->info() >= 0);
   const double angle_bound = mesh_detail::shapeBound(options.min_angle_degrees);
   if (angle_bound > 0.0 || options.max_edge_length > 0.0) {
+    double shortest = std::numeric_limits<double>::infinity();
+    for (EdgeId e : t.edges()) shortest = std::min(shortest, (t.position(topo.edgeTo(e)) - t.position(topo.edgeFrom(e))).norm());
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (VertexId v : t.vertices()) lo = lo.cwiseMin(t.position(v)), hi = hi.cwiseMax(t.position(v));
+    const std::size_t budget =
+        mesh_detail::refinementBudget(t.numVertices(), totalMeasure(t), (hi - lo).norm(), shortest, options.max_edge_length);
     Mesher mesher(cdt, Criteria(angle_bound, options.max_edge_length));
-    mesher.init(true);  // the domain is the tagged faces
-    mesher.refine_mesh();
+    // The domain is the tagged faces.
+    mesh_detail::refineWithinBudget(
+        mesher, cdt, budget,
+        [&](std::size_t vertices) {
+          throw GeometryError("planar mesher: refinement did not finish within " + std::to_string(vertices) +
+                              " vertices (" + std::to_string(t.numVertices()) + " tissue vertices, shortest wall " +
+                              std::to_string(shortest) + ", min_angle_degrees " +
+                              std::to_string(options.min_angle_degrees) + "); lower min_angle_degrees");
+        },
+        true);
     tagCells(cdt, t, constraint);
   }
 

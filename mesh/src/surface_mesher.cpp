@@ -12,10 +12,23 @@
 // conforms across walls and spokes. When the refinement of one triangle
 // splits a side (to respect the angle bound), that point is added to the
 // shared segment and the triangles on the other side are remeshed; the
-// rounds repeat until no side changes.
+// rounds repeat until no side changes (at most kMaxRounds).
+//
+// Sharp fan triangles — a fan angle below the angle bound, e.g. the sliver
+// from the centre to a short wall edge — cannot meet the bound, and Delaunay
+// refinement of a wedge of angle theta puts O(1/theta) points on its sides
+// (edges must get as short as the wedge is wide). Through the shared spokes
+// those points spread to the neighbouring triangles, round after round: a
+// 1e-4 rad sliver on a dome tissue made tens of thousands of side points and
+// never finished. Sharp triangles are therefore refined inside only (their
+// sides keep the points the uniform subdivision and the neighbours give
+// them), and every refinement runs within a vertex budget
+// (bounded_refinement.hpp) that raises a GeometryError naming the cell.
 
+#include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -28,6 +41,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
+#include "bounded_refinement.hpp"
 #include "polygon_fan.hpp"
 #include "tessella/mesh/geometry_check.hpp"
 #include "tessella/mesh/mesh_tissue.hpp"
@@ -70,7 +84,19 @@ struct FanTriangle {
   std::array<int, 3> side_segment{};      // sides: 0 centre->vi, 1 vi->vi+1, 2 vi+1->centre
   std::array<bool, 3> side_reversed{};    // traversed from the segment's b to a
   Vec3 u, v;                              // orthonormal in-plane frame at corners[0]
+  int loop_position = 0;                  // i: the triangle (centre, v_i, v_i+1)
+  double min_angle_degrees = 0;           // its smallest angle
+  bool sharp = false;                     // min angle below the bound: refined inside only
 };
+
+double smallestAngleDegrees(const std::array<Vec3, 3>& c) {
+  double smallest = 180.0;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const Vec3 a = c[(k + 1) % 3] - c[k], b = c[(k + 2) % 3] - c[k];
+    smallest = std::min(smallest, std::atan2(a.cross(b).norm(), a.dot(b)) * 180.0 / std::numbers::pi);
+  }
+  return smallest;
+}
 
 struct LocalMesh {
   std::vector<PointTag> tags;
@@ -104,8 +130,26 @@ LocalMesh meshFanTriangle(const FanTriangle& f, const std::vector<Segment>& segm
   }
   for (std::size_t i = 0; i < boundary.size(); ++i) cdt.insert_constraint(boundary[i], boundary[(i + 1) % boundary.size()]);
   if (shape_bound > 0.0 || max_edge > 0.0) {
+    double min_spacing = std::numeric_limits<double>::infinity(), extent = 0;
+    for (std::size_t i = 0; i < boundary.size(); ++i) {
+      const auto d = boundary[(i + 1) % boundary.size()]->point() - boundary[i]->point();
+      min_spacing = std::min(min_spacing, std::sqrt(d.squared_length()));
+      extent = std::max(extent, std::sqrt(d.squared_length()));
+    }
+    extent = std::max({extent, (f.corners[1] - f.corners[0]).norm(), (f.corners[2] - f.corners[0]).norm(),
+                       (f.corners[2] - f.corners[1]).norm()});
+    const double area = 0.5 * (f.corners[1] - f.corners[0]).cross(f.corners[2] - f.corners[0]).norm();
+    const std::size_t budget = mesh_detail::refinementBudget(boundary.size(), area, extent, min_spacing, max_edge);
     RefineMesher mesher(cdt, Criteria(shape_bound, max_edge));
-    mesher.refine_mesh();  // domain: everything inside the constrained boundary
+    // Domain: everything inside the constrained boundary.
+    mesh_detail::refineWithinBudget(mesher, cdt, budget, [&](std::size_t vertices) {
+      throw GeometryError("surface mesher: refining cell " + std::to_string(f.cell) + " (fan triangle " +
+                              std::to_string(f.loop_position) + ", smallest angle " +
+                              std::to_string(f.min_angle_degrees) + " degrees, " + std::to_string(boundary.size()) +
+                              " boundary points) did not finish within " + std::to_string(vertices) +
+                              " vertices; lower min_angle_degrees or check the cell's geometry",
+                          ElementId{2, static_cast<Index>(f.cell)});
+    });
   } else {
     Mesher::mark_facets(cdt, static_cast<K::Point_2*>(nullptr), static_cast<K::Point_2*>(nullptr));
   }
@@ -229,6 +273,9 @@ FeMesh meshSurfaceTissue(const Tissue& t, const MeshOptions& options) {
       const Vec3 normal = (f.corners[1] - f.corners[0]).cross(f.corners[2] - f.corners[0]).normalized();
       f.u = (f.corners[1] - f.corners[0]).normalized();
       f.v = normal.cross(f.u);
+      f.loop_position = i;
+      f.min_angle_degrees = smallestAngleDegrees(f.corners);
+      f.sharp = options.min_angle_degrees > 0.0 && f.min_angle_degrees < options.min_angle_degrees;
       if (!f.u.allFinite() || !f.v.allFinite())
         throw GeometryError("surface mesher: cell " + std::to_string(c.index()) + " has a degenerate fan triangle at loop position " +
                                 std::to_string(i),
@@ -263,9 +310,12 @@ FeMesh meshSurfaceTissue(const Tissue& t, const MeshOptions& options) {
             meshFanTriangle<InteriorMesher>(fans[static_cast<std::size_t>(i)], segments, shape_bound, max_edge, splits);
       break;
     }
-    for (int i : dirty)
+    for (int i : dirty) {
+      const FanTriangle& f = fans[static_cast<std::size_t>(i)];
       local[static_cast<std::size_t>(i)] =
-          meshFanTriangle<Mesher>(fans[static_cast<std::size_t>(i)], segments, shape_bound, max_edge, splits);
+          f.sharp ? meshFanTriangle<InteriorMesher>(f, segments, shape_bound, max_edge, splits)
+                  : meshFanTriangle<Mesher>(f, segments, shape_bound, max_edge, splits);
+    }
     std::vector<char> mark(fans.size(), 0);
     for (const auto& [seg, param] : splits) {
       Segment& s = segments[static_cast<std::size_t>(seg)];
