@@ -1,5 +1,6 @@
 #include "tessella/solvers/linear_solver.hpp"
 
+#include "external_solver.hpp"
 #include "tessella/solvers/errors.hpp"
 
 #include <algorithm>
@@ -14,14 +15,31 @@ std::string toString(SolverMethod method) {
     case SolverMethod::Auto: return "auto";
     case SolverMethod::Direct: return "direct (SimplicialLDLT)";
     case SolverMethod::ConjugateGradient: return "conjugate gradient";
+    case SolverMethod::Cholmod: return "direct (CHOLMOD)";
+    case SolverMethod::AmgCG: return "conjugate gradient + BoomerAMG (hypre)";
   }
   return "unknown";
+}
+
+bool solverAvailable(SolverMethod method) {
+  switch (method) {
+    case SolverMethod::Cholmod: return detail::cholmodBuilt();
+    case SolverMethod::AmgCG: return detail::hypreBuilt();
+    default: return true;
+  }
 }
 
 LinearSolver::LinearSolver(LinearSolverOptions options) : options_(options) {
   if (!(options_.tolerance > 0.0)) throw InvalidProblemError("LinearSolver: tolerance must be > 0");
   if (options_.max_iterations < 0) throw InvalidProblemError("LinearSolver: max_iterations must be >= 0");
+  if (!(options_.amg_strong_threshold > 0.0 && options_.amg_strong_threshold < 1.0))
+    throw InvalidProblemError("LinearSolver: amg_strong_threshold must be in (0, 1)");
+  // Fail at construction, not at the first solve, when a back-end is missing.
+  if (options_.method == SolverMethod::Cholmod && !detail::cholmodBuilt()) detail::makeCholmodSolver(options_);
+  if (options_.method == SolverMethod::AmgCG && !detail::hypreBuilt()) detail::makeHypreSolver(options_);
 }
+
+LinearSolver::~LinearSolver() = default;
 
 // GCC 12 reports a false "null pointer dereference" inside Eigen's inlined
 // IncompleteCholesky code; silenced for this function only.
@@ -38,15 +56,21 @@ void LinearSolver::compute(const SparseMatrix& A) {
   }
   const int n = static_cast<int>(A.rows());
   method_ = options_.method;
-  if (method_ == SolverMethod::Auto)
-    method_ = n <= options_.auto_direct_max_unknowns ? SolverMethod::Direct : SolverMethod::ConjugateGradient;
+  if (method_ == SolverMethod::Auto) {
+    const SolverMethod iterative = detail::hypreBuilt() ? SolverMethod::AmgCG : SolverMethod::ConjugateGradient;
+    method_ = n <= options_.auto_direct_max_unknowns ? SolverMethod::Direct : iterative;
+  }
   matrix_ = A;
+  external_.reset();
   if (n == 0) {
     ready_ = true;
     return;
   }
 
-  if (method_ == SolverMethod::Direct) {
+  if (method_ == SolverMethod::Cholmod || method_ == SolverMethod::AmgCG) {
+    external_ = method_ == SolverMethod::Cholmod ? detail::makeCholmodSolver(options_) : detail::makeHypreSolver(options_);
+    external_->compute(A);
+  } else if (method_ == SolverMethod::Direct) {
     ldlt_.compute(A);
     if (ldlt_.info() != Eigen::Success)
       throw FactorizationError("LinearSolver: LDL^T factorisation failed (matrix singular or not SPD)");
@@ -104,7 +128,22 @@ Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b, const Eigen::Vecto
   if (n == 0 || bnorm == 0.0) return Eigen::VectorXd::Zero(n);  // A SPD => x = 0 exactly
 
   Eigen::VectorXd x;
-  if (method_ == SolverMethod::Direct) {
+  if (external_) {
+    int iterations = 0;
+    x = external_->solve(b, x0, iterations);
+    report_.iterations = iterations;
+    if (method_ == SolverMethod::AmgCG) {
+      // hypre's own stopping test is on its recursive residual; check the true one.
+      const double res = (b - matrix_ * x).norm() / bnorm;
+      if (!(res <= 10.0 * options_.tolerance)) {
+        std::ostringstream msg;
+        msg << "LinearSolver: conjugate gradient + BoomerAMG did not converge in " << iterations
+            << " iterations (relative residual " << res << ", tolerance " << options_.tolerance << ", n = " << n
+            << "; is the matrix symmetric positive definite?)";
+        throw ConvergenceError(msg.str());
+      }
+    }
+  } else if (method_ == SolverMethod::Direct) {
     x = ldlt_.solve(b);
     if (ldlt_.info() != Eigen::Success) throw FactorizationError("LinearSolver: LDL^T solve failed");
   } else {

@@ -1,33 +1,50 @@
 #pragma once
-// One small interface over Eigen's sparse SPD solvers: a direct LDL^T for small
-// systems, preconditioned conjugate gradients for large ones. Every FE problem
+// One small interface over sparse SPD solvers: Eigen's direct LDL^T for small
+// systems and preconditioned conjugate gradients for large ones (always built),
+// plus two optional back-ends chosen at build time: SuiteSparse's CHOLMOD
+// (supernodal Cholesky) and conjugate gradients preconditioned by hypre's
+// BoomerAMG (iterations nearly independent of the mesh size). Every FE problem
 // in solvers/ is symmetric positive definite after Dirichlet elimination, so
-// these two cover them; failures become exceptions instead of silent garbage.
+// these cover them; failures become exceptions instead of silent garbage.
 
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
+#include <memory>
 #include <string>
 
 namespace tessella {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
-enum class SolverMethod { Auto, Direct, ConjugateGradient };
+/// Direct and ConjugateGradient are Eigen's (always available); Cholmod and
+/// AmgCG exist when Tessella was built with TESSELLA_WITH_CHOLMOD /
+/// TESSELLA_WITH_HYPRE (solverAvailable() tells). Requesting a back-end that is
+/// not built throws InvalidProblemError naming the CMake option.
+enum class SolverMethod { Auto, Direct, ConjugateGradient, Cholmod, AmgCG };
 enum class Preconditioner { Jacobi, IncompleteCholesky };
 
 std::string toString(SolverMethod method);
+/// Whether this build of Tessella contains the back-end (Auto is always available).
+bool solverAvailable(SolverMethod method);
+
+namespace detail {
+class ExternalSolver;  // CHOLMOD / hypre back-ends (solvers/src/external_solver.hpp)
+}
 
 struct LinearSolverOptions {
   SolverMethod method = SolverMethod::Auto;
   Preconditioner preconditioner = Preconditioner::IncompleteCholesky;
-  /// CG stops when ||b - A x|| <= tolerance * ||b||.
+  /// CG (Eigen's or hypre's) stops when ||b - A x|| <= tolerance * ||b||.
   double tolerance = 1e-10;
   /// CG iteration cap; 0 means 2 * (number of unknowns).
   int max_iterations = 0;
-  /// Auto picks the direct solver up to this many unknowns, CG above.
+  /// Auto picks the direct solver (Eigen LDL^T) up to this many unknowns;
+  /// above, AMG-preconditioned CG when hypre is built, else Eigen's CG.
   int auto_direct_max_unknowns = 100000;
+  /// BoomerAMG strength threshold (hypre's advice: 0.25 in 2D, 0.5 in 3D).
+  double amg_strong_threshold = 0.5;
   /// The direct solver rejects the matrix as singular when its smallest LDL^T
   /// pivot is below max(pivot_tolerance, 64 n eps) times its largest one (a
   /// singular SPD matrix factorises "successfully" with round-off pivots).
@@ -37,7 +54,7 @@ struct LinearSolverOptions {
 struct SolveReport {
   SolverMethod method = SolverMethod::Auto;  ///< the method actually used
   int unknowns = 0;
-  int iterations = 0;              ///< CG iterations (0 for the direct solver)
+  int iterations = 0;              ///< CG iterations (0 for the direct solvers)
   double relative_residual = 0.0;  ///< ||b - A x|| / ||b|| of the returned x
 };
 
@@ -46,6 +63,9 @@ struct SolveReport {
 class LinearSolver {
  public:
   explicit LinearSolver(LinearSolverOptions options = {});
+  ~LinearSolver();
+  LinearSolver(const LinearSolver&) = delete;  // owns factorisations; hold it by pointer to move it
+  LinearSolver& operator=(const LinearSolver&) = delete;
 
   /// Sets up the solver for the square SPD matrix A (a copy is kept, so A may die).
   void compute(const SparseMatrix& A);
@@ -73,6 +93,7 @@ class LinearSolver {
   Eigen::SimplicialLDLT<SparseMatrix> ldlt_;
   CgJacobi cg_jacobi_;
   CgIchol cg_ichol_;
+  std::unique_ptr<detail::ExternalSolver> external_;  // Cholmod / AmgCG
   SolveReport report_;
 };
 
