@@ -9,7 +9,6 @@ packages=(
   libvtk9-dev libyaml-cpp-dev libcli11-dev libfmt-dev libmuparser-dev
   catch2
   libsuitesparse-dev libhypre-dev
-  libsuitesparse-dev libhypre-dev
   python3-dev pybind11-dev python3-numpy python3-pytest
 )
 
