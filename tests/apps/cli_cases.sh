@@ -74,6 +74,52 @@ case "$case_name" in
     expect_error "$src/configs/hex_grid_2d.yaml" "--set time.end=soon: time.end: expected a number, got 'soon'" --set time.end=soon ;;
   missing_config)
     expect_error "$tmp/nowhere.yaml" "nowhere.yaml: config file not found" ;;
+  mesh_snapshot)
+    "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/hex" -q --set time.end=0 || fail "run failed"
+    "$tessella" mesh "$tmp/hex/tissue_000000.vtu" --out "$tmp/m.vtu" --walls "$tmp/w.vtu" --size 0.4 --min-angle 25 \
+      >"$tmp/stdout" 2>"$tmp/stderr" || fail "mesh failed: $(cat "$tmp/stderr")"
+    cat "$tmp/stdout"
+    [ -s "$tmp/m.vtu" ] && [ -s "$tmp/w.vtu" ] || fail "no mesh files"
+    grep -Eq '^mesh +[0-9]+ nodes, [0-9]+ triangles' "$tmp/stdout" || fail "no mesh summary"
+    grep -Eq 'min_angle 25 deg, max_edge_length 0.4' "$tmp/stdout" || fail "the flags were not applied"
+    # Per-cell areas agree to 1e-9: the worst difference is printed as e-1x or 0.
+    grep -Eq '^cell area +worst relative difference (0|[0-9.]+e-(1[0-9]|09)) ' "$tmp/stdout" \
+      || fail "per-cell areas disagree"
+    # The mesh: section of a config, overridden by a flag.
+    printf 'tissue: {generator: hexagonal_grid}\nmesh: {max_edge_length: 0.3, min_angle: 22}\n' >"$tmp/c.yaml"
+    "$tessella" mesh "$tmp/hex/tissue_000000.vtu" --out "$tmp/m2.vtu" --config "$tmp/c.yaml" --min-angle 21 \
+      >"$tmp/stdout" 2>&1 || fail "mesh --config failed: $(cat "$tmp/stdout")"
+    grep -Eq 'min_angle 21 deg, max_edge_length 0.3' "$tmp/stdout" || fail "config/flag precedence: $(cat "$tmp/stdout")"
+    ;;
+  mesh_snapshot_3d)
+    "$tessella" run "$src/configs/voronoi_box_3d.yaml" --out "$tmp/box" -q --set time.end=0 \
+      --set tissue.voronoi.count=30 || fail "run failed"
+    "$tessella" mesh "$tmp/box/tissue_000000.vtu" --out "$tmp/m.vtu" >"$tmp/stdout" 2>"$tmp/stderr" \
+      || fail "mesh failed: $(cat "$tmp/stderr")"
+    cat "$tmp/stdout"
+    grep -Eq '^mesh +[0-9]+ nodes, [0-9]+ tetrahedra' "$tmp/stdout" || fail "no mesh summary"
+    grep -Eq '^cell volume +worst relative difference (0|[0-9.]+e-(1[0-9]|09)) ' "$tmp/stdout" \
+      || fail "per-cell volumes disagree"
+    ;;
+  mesh_errors)
+    "$tessella" mesh "$tmp/none.vtu" --out "$tmp/m.vtu" 2>"$tmp/stderr"
+    [ $? -eq 1 ] || fail "a missing snapshot was not an error"
+    grep -q 'none.vtu' "$tmp/stderr" || fail "the error does not name the file: $(cat "$tmp/stderr")"
+    [ ! -e "$tmp/m.vtu" ] || fail "an output file was left"
+    echo 'not a vtu' >"$tmp/bad.vtu"
+    "$tessella" mesh "$tmp/bad.vtu" --out "$tmp/m.vtu" 2>"$tmp/stderr"
+    [ $? -eq 1 ] || fail "a bad snapshot was not an error"
+    grep -q 'bad.vtu' "$tmp/stderr" || fail "the error does not name the file: $(cat "$tmp/stderr")"
+    [ ! -e "$tmp/m.vtu" ] || fail "an output file was left"
+    "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/hex" -q --set time.end=0 || fail "run failed"
+    "$tessella" mesh "$tmp/hex/tissue_000000.vtu" --out "$tmp/m.vtu" --min-angle 50 2>"$tmp/stderr"
+    [ $? -eq 1 ] || fail "--min-angle 50 was accepted"
+    grep -q 'min_angle_degrees = 50' "$tmp/stderr" || fail "unclear option error: $(cat "$tmp/stderr")"
+    "$tessella" mesh "$tmp/hex/tissue_000000.vtu" --out "$tmp/no_dir/m.vtu" 2>"$tmp/stderr"
+    [ $? -eq 1 ] || fail "writing into a missing directory was not an error"
+    [ ! -e "$tmp/no_dir" ] || fail "a directory was created"
+    [ ! -e "$tmp/m.vtu" ] || fail "an output file was left"
+    ;;
   *) fail "unknown case" ;;
 esac
 echo "ok [$case_name]"
