@@ -31,7 +31,7 @@ Eigen::MatrixXd elasticityMatrix(ElasticModel model, double E, double nu) {
     return D;
   }
   Eigen::MatrixXd D = Eigen::MatrixXd::Zero(3, 3);
-  if (model == ElasticModel::PlaneStress) {
+  if (model == ElasticModel::PlaneStress || model == ElasticModel::Membrane) {
     const double c = E / (1 - nu * nu);
     D << c, c * nu, 0, c * nu, c, 0, 0, 0, c * (1 - nu) / 2;
   } else {
@@ -63,6 +63,50 @@ StrainB strainMatrix(const ElementGeometry& g, int dim) {
     }
   }
   return B;
+}
+
+// Orthonormal in-plane frame [e1 e2] of a triangle in R^3 (e1 along its first
+// edge) and its unit normal n = e1 x e2, along (x1 - x0) x (x2 - x0).
+struct MembraneFrame {
+  Eigen::Matrix<double, 3, 2> Q;
+  Eigen::Vector3d normal;
+};
+
+MembraneFrame membraneFrame(const FeMesh& mesh, int e) {
+  const Eigen::Vector3d x0 = mesh.nodes.row(mesh.elements(e, 0)).transpose();
+  const Eigen::Vector3d a = mesh.nodes.row(mesh.elements(e, 1)).transpose() - x0;
+  const Eigen::Vector3d b = mesh.nodes.row(mesh.elements(e, 2)).transpose() - x0;
+  MembraneFrame f;
+  f.normal = a.cross(b).normalized();
+  f.Q.col(0) = a.normalized();
+  f.Q.col(1) = f.normal.cross(f.Q.col(0));
+  return f;
+}
+
+// In-plane strain [e11, e22, gamma12] of a membrane triangle from its nine
+// nodal displacement components: e_ij = sym(e_i . (sum_a u_a (x) grad phi_a) e_j),
+// the tangential gradients of elementGeometry projected on the frame.
+StrainB membraneStrainMatrix(const ElementGeometry& g, const MembraneFrame& f) {
+  StrainB B = StrainB::Zero(3, 9);
+  const Eigen::Vector3d e1 = f.Q.col(0), e2 = f.Q.col(1);
+  for (int a = 0; a < 3; ++a) {
+    const Eigen::Vector3d grad = g.gradients.row(a).transpose();
+    const double g1 = grad.dot(e1), g2 = grad.dot(e2);
+    for (int c = 0; c < 3; ++c) {
+      B(0, 3 * a + c) = e1[c] * g1;
+      B(1, 3 * a + c) = e2[c] * g2;
+      B(2, 3 * a + c) = e1[c] * g2 + e2[c] * g1;
+    }
+  }
+  return B;
+}
+
+// Voigt [xx, yy, zz, yz, xz, xy] of a symmetric tensor; engineering shears when `strain`.
+Eigen::Matrix<double, 1, 6> tensorToVoigt(const Eigen::Matrix3d& t, bool strain) {
+  const double k = strain ? 2.0 : 1.0;
+  Eigen::Matrix<double, 1, 6> v;
+  v << t(0, 0), t(1, 1), t(2, 2), k * t(1, 2), k * t(0, 2), k * t(0, 1);
+  return v;
 }
 
 [[noreturn]] void bad(const std::string& what) { throw InvalidProblemError("elasticity: " + what); }
@@ -115,15 +159,18 @@ Eigen::Matrix3d voigtToTensor(const Eigen::Matrix<double, 1, 6>& v) {
 ElasticityResult solveElasticity(const FeMesh& mesh, const ElasticityProblem& problem) {
   checkMesh(mesh);
   const ElasticModel model = problem.model;
+  const bool membrane = model == ElasticModel::Membrane;
   const int dim = mesh.dim;
   if ((model == ElasticModel::Solid) != (dim == 3))
     bad(model == ElasticModel::Solid ? "the 3D (Solid) model needs a tetrahedral mesh (dim 3)"
-                                     : "plane stress/strain needs a triangle mesh (dim 2)");
-  if (dim == 2) {
+                                     : "plane stress/strain and membranes need a triangle mesh (dim 2)");
+  if (dim == 2 && !membrane) {
     const double extent = std::max(mesh.nodes.cwiseAbs().maxCoeff(), 1e-300);
     if (mesh.numNodes() > 0 && (mesh.nodes.col(2).array() - mesh.nodes(0, 2)).abs().maxCoeff() > 1e-12 * extent)
-      bad("plane stress/strain needs a flat mesh in the xy-plane (membrane elasticity on curved sheets is not implemented)");
+      bad("plane stress/strain needs a flat mesh in the xy-plane (use the Membrane model for curved or tilted sheets)");
   }
+  if (!membrane && problem.membrane_pressure != 0.0) bad("membrane_pressure needs the Membrane model");
+  if (!std::isfinite(problem.membrane_pressure)) bad("membrane_pressure must be finite");
   if (!(problem.thickness > 0.0)) bad("thickness must be > 0");
   const Eigen::VectorXd E = cellToElement(mesh, problem.young, "elasticity: Young's modulus", true);
   const Eigen::VectorXd nu = cellToElement(mesh, problem.poisson, "elasticity: Poisson's ratio");
@@ -132,16 +179,19 @@ ElasticityResult solveElasticity(const FeMesh& mesh, const ElasticityProblem& pr
     if (!(nu[e] > -1.0 && nu[e] < 0.5))
       bad("Poisson's ratio of cell " + std::to_string(mesh.element_cell[e]) + " must be in (-1, 0.5)");
   }
-  const int nc = dim;  // displacement components
+  const int nc = membrane ? 3 : dim;  // displacement components
   const int nn = dim + 1;
   const int ndof = nc * mesh.numNodes();
   const double thick = dim == 2 ? problem.thickness : 1.0;
+  auto elementStrainMatrix = [&](int e, const ElementGeometry& g) {
+    return membrane ? membraneStrainMatrix(g, membraneFrame(mesh, e)) : strainMatrix(g, dim);
+  };
 
   // Element stiffness t |e| B^T D B, assembled deterministically in parallel.
   const SparseMatrix K = detail::assembleElementwise(
       mesh.numElements(), nc * nn, ndof, [&](int e, detail::LocalMatrix& ke, int* dofs) {
         const ElementGeometry g = elementGeometry(mesh, e);
-        const StrainB B = strainMatrix(g, dim);
+        const StrainB B = elementStrainMatrix(e, g);
         const Eigen::MatrixXd D = elasticityMatrix(model, E[e], nu[e]);
         ke.noalias() = (thick * g.measure) * (B.transpose() * D * B);
         for (int a = 0; a < nn; ++a)
@@ -155,6 +205,13 @@ ElasticityResult solveElasticity(const FeMesh& mesh, const ElasticityProblem& pr
       const double share = thick * elementGeometry(mesh, e).measure / nn;
       for (int a = 0; a < nn; ++a)
         for (int c = 0; c < nc; ++c) F[nc * mesh.elements(e, a) + c] += share * problem.body_force[c];
+    }
+  }
+  if (problem.membrane_pressure != 0.0) {
+    for (int e = 0; e < mesh.numElements(); ++e) {
+      const Eigen::Vector3d f =
+          (problem.membrane_pressure * elementGeometry(mesh, e).measure / 3.0) * membraneFrame(mesh, e).normal;
+      for (int a = 0; a < 3; ++a) F.segment<3>(3 * mesh.elements(e, a)) += f;
     }
   }
   auto addFacetForce = [&](int f, const Eigen::Vector3d& t) {
@@ -204,8 +261,11 @@ ElasticityResult solveElasticity(const FeMesh& mesh, const ElasticityProblem& pr
   try {
     solver.compute(Kff);
   } catch (const FactorizationError& err) {
-    bad(std::string("stiffness matrix is singular or indefinite after applying the displacement conditions: ") +
-        err.what());
+    bad(std::string("stiffness matrix is singular or indefinite after applying the displacement conditions") +
+        (membrane ? " (a membrane has no bending stiffness: a flat or open curved sheet needs its normal "
+                    "displacement fixed wherever it could fold without stretching)"
+                  : "") +
+        ": " + err.what());
   }
   Eigen::VectorXd b = red.freePart(F);
   if (red.numFixed() > 0) b -= Kfc * red.fixedPart(g);
@@ -225,7 +285,7 @@ ElasticityResult solveElasticity(const FeMesh& mesh, const ElasticityProblem& pr
   detail::parallelFor(mesh.numElements(), [&](int e) {
     const ElementGeometry geo = elementGeometry(mesh, e);
     measure[e] = geo.measure;
-    const StrainB B = strainMatrix(geo, dim);
+    const StrainB B = elementStrainMatrix(e, geo);
     Eigen::VectorXd ue(nc * nn);
     for (int a = 0; a < nn; ++a)
       for (int c = 0; c < nc; ++c) ue[nc * a + c] = u[nc * mesh.elements(e, a) + c];
@@ -235,6 +295,15 @@ ElasticityResult solveElasticity(const FeMesh& mesh, const ElasticityProblem& pr
     if (dim == 3) {
       es = eps.transpose();
       ss = sig.transpose();
+    } else if (membrane) {
+      // Local 2x2 tensors rotated to global axes: Q t Q^T (+ the normal strain).
+      const MembraneFrame f = membraneFrame(mesh, e);
+      Eigen::Matrix2d el, sl;
+      el << eps[0], eps[2] / 2, eps[2] / 2, eps[1];
+      sl << sig[0], sig[2], sig[2], sig[1];
+      const double enn = -nu[e] / (1 - nu[e]) * (eps[0] + eps[1]);
+      es = tensorToVoigt(f.Q * el * f.Q.transpose() + enn * f.normal * f.normal.transpose(), true);
+      ss = tensorToVoigt(f.Q * sl * f.Q.transpose(), false);
     } else {
       es << eps[0], eps[1], 0, 0, 0, eps[2];
       ss << sig[0], sig[1], 0, 0, 0, sig[2];
@@ -250,9 +319,11 @@ ElasticityResult solveElasticity(const FeMesh& mesh, const ElasticityProblem& pr
   // Cell averages (serial, element order: deterministic) and principal stresses.
   const int cells = numCells(mesh);
   out.cell_stress = Eigen::Matrix<double, Eigen::Dynamic, 6, Eigen::RowMajor>::Zero(cells, 6);
+  out.cell_strain = out.cell_stress;
   Eigen::VectorXd cell_measure = Eigen::VectorXd::Zero(cells);
   for (int e = 0; e < mesh.numElements(); ++e) {
     out.cell_stress.row(mesh.element_cell[e]) += measure[e] * out.stress.row(e);
+    out.cell_strain.row(mesh.element_cell[e]) += measure[e] * out.strain.row(e);
     cell_measure[mesh.element_cell[e]] += measure[e];
   }
   out.principal_stress = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>::Zero(cells, 3);
@@ -260,6 +331,7 @@ ElasticityResult solveElasticity(const FeMesh& mesh, const ElasticityProblem& pr
   for (int c = 0; c < cells; ++c) {
     if (cell_measure[c] <= 0.0) continue;  // cell id without elements
     out.cell_stress.row(c) /= cell_measure[c];
+    out.cell_strain.row(c) /= cell_measure[c];
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(voigtToTensor(out.cell_stress.row(c)));
     out.principal_stress.row(c) = eig.eigenvalues().transpose();
     out.principal_directions[static_cast<std::size_t>(c)] = eig.eigenvectors();
