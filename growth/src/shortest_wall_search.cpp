@@ -266,7 +266,7 @@ WallCandidate nelderMead(const NewWallMeasure& m, const Vec3& n0, double step, d
 std::vector<WallCandidate> minima3D(const NewWallMeasure& m,
                                     const std::vector<Vec3>& starts,
                                     const ShortestWallSearchOptions& o) {
-  constexpr double kCoarseSize = 1e-3, kBasinAngle = 0.02, kRefineStep = 0.02;
+  constexpr double kCoarseSize = 1e-2, kBasinAngle = 0.05, kRefineStep = 0.05;
   std::vector<WallCandidate> coarse;
   for (const Vec3& n0 : starts)
     addCandidate(coarse, nelderMead(m, n0.normalized(), 0.25, kCoarseSize, 1e-6, o.max_iterations),
