@@ -1,8 +1,20 @@
-// solvers_bench: assembly throughput and linear-solve times of the P1 solvers
-// on structured meshes (2D triangles, 3D tetrahedra) of 10^4 .. 10^6 unknowns.
-// Usage: solvers_bench [--quick | --large]   (--quick: up to ~10^5 nodes; --large adds a
-// 10^6-node tetrahedral mesh)
-// Prints one line per measurement; no assertions (the tests check correctness).
+// solvers_bench: assembly rate and time to solution of the P1 solvers on
+// structured meshes (2D triangles, 3D Kuhn tetrahedra) of ~10^4, 10^5 and 10^6
+// unknowns, for every linear-solver back-end built in.
+//
+// Usage: solvers_bench [--quick] [--full] [--write-meshes DIR] [--backends LIST]
+//   default      ~10^4 and 10^5 nodes in 2D and 3D
+//   --quick      ~10^4 nodes only
+//   --full       adds ~10^6 nodes in 2D and 3D (minutes and several GB: keep it
+//                for an idle machine)
+//   --write-meshes DIR  also writes each mesh as raw little-endian arrays
+//                (DIR/<name>.nodes: float64 N x 3, DIR/<name>.cells: int64
+//                M x (d+1)) for bench/dolfinx_compare.py
+//   --backends   comma list of direct,cholmod,cg,amg (default: all built)
+// Problems: steady -lap u = 1 with u = 0 on x = 0 and zero flux elsewhere, and
+// one implicit-Euler diffusion step (dt = 1e-3) from u = 0 of the same problem.
+// Each measurement is one line; lines starting with RESULT are key=value for
+// scripts. No assertions (the tests check correctness).
 
 #include "tessella/solvers/assembly.hpp"
 #include "tessella/solvers/diffusion_reaction.hpp"
@@ -14,7 +26,12 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdint>
 #include <cstring>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
 #include <vector>
 
 using namespace tessella;
@@ -84,60 +101,158 @@ FeMesh structured(int dim, int n) {
   return m;
 }
 
-void run(int dim, int n) {
+struct Config {
+  std::vector<SolverMethod> backends;
+  std::string mesh_dir;
+};
+
+const char* key(SolverMethod m) {
+  switch (m) {
+    case SolverMethod::Direct: return "direct";
+    case SolverMethod::Cholmod: return "cholmod";
+    case SolverMethod::ConjugateGradient: return "cg";
+    case SolverMethod::AmgCG: return "amg";
+    default: return "auto";
+  }
+}
+
+void writeMesh(const FeMesh& m, const std::string& dir, const std::string& name) {
+  const std::string base = dir + "/" + name;
+  std::FILE* f = std::fopen((base + ".nodes").c_str(), "wb");
+  if (!f) throw std::runtime_error("cannot write " + base + ".nodes");
+  std::fwrite(m.nodes.data(), sizeof(double), static_cast<std::size_t>(m.nodes.size()), f);
+  std::fclose(f);
+  const Eigen::Matrix<std::int64_t, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> cells =
+      m.elements.cast<std::int64_t>();
+  f = std::fopen((base + ".cells").c_str(), "wb");
+  if (!f) throw std::runtime_error("cannot write " + base + ".cells");
+  std::fwrite(cells.data(), sizeof(std::int64_t), static_cast<std::size_t>(cells.size()), f);
+  std::fclose(f);
+}
+
+void run(int dim, int n, const Config& cfg) {
   const FeMesh m = structured(dim, n);
-  std::printf("dim %d  n %d  nodes %d  elements %d\n", dim, n, m.numNodes(), m.numElements());
+  const std::string name = std::to_string(dim) + "d_" + std::to_string(n);
+  std::printf("mesh %s  dim %d  n %d  nodes %d  elements %d\n", name.c_str(), dim, n, m.numNodes(), m.numElements());
+  if (!cfg.mesh_dir.empty()) writeMesh(m, cfg.mesh_dir, name);
   const int max_threads = omp_get_max_threads();
+  double reassembly = 0.0;
   for (int threads : {1, max_threads}) {
     omp_set_num_threads(threads);
-    auto t0 = std::chrono::steady_clock::now();
-    const SparseMatrix K = assembleStiffness(m);
-    const double t = seconds(t0);
-    std::printf("  stiffness assembly  threads %d  %.3f s  %.3g elements/s  nnz %ld\n", threads, t,
-                m.numElements() / t, static_cast<long>(K.nonZeros()));
+    // The second assembly is the "re-assembly" rate (allocator warm, as in a time loop).
+    double t = 0.0;
+    long nnz = 0;
+    for (int rep = 0; rep < 2; ++rep) {
+      auto t0 = std::chrono::steady_clock::now();
+      const SparseMatrix K = assembleStiffness(m);
+      t = seconds(t0);
+      nnz = static_cast<long>(K.nonZeros());
+    }
+    reassembly = t;
+    std::printf("  stiffness re-assembly  threads %d  %.3f s  %.3g elements/s  nnz %ld\n", threads, t,
+                m.numElements() / t, nnz);
+    std::printf("RESULT mesh=%s dim=%d nodes=%d elements=%d what=assembly threads=%d seconds=%.6g\n", name.c_str(),
+                dim, m.numNodes(), m.numElements(), threads, t);
     if (threads == max_threads) break;
   }
+  (void)reassembly;
   omp_set_num_threads(max_threads);
-  // Steady -lap u = 1 with u = 0 on x = 0, zero flux elsewhere.
-  for (SolverMethod method : {SolverMethod::Direct, SolverMethod::ConjugateGradient}) {
-    if (method == SolverMethod::Direct && m.numNodes() > (dim == 2 ? 1100000 : 150000)) {
-      std::printf("  solve %-22s skipped (fill-in too large for this machine)\n", toString(method).c_str());
+
+  Species s;
+  s.production = Eigen::VectorXd::Ones(1);
+  s.dirichlet.push_back({boundaryFacets(m), 0.0, {}});
+  for (SolverMethod method : cfg.backends) {
+    const bool direct = method == SolverMethod::Direct || method == SolverMethod::Cholmod;
+    // 3D direct fill-in grows like n^(4/3) and the work like n^2: measured here
+    // ~2 s for 10^4 nodes, so 10^5 would take minutes. 2D is fine up to 10^6.
+    const int direct_limit = dim == 2 ? 1100000 : 50000;
+    if (direct && m.numNodes() > direct_limit) {
+      std::printf("  %-40s skipped (direct fill-in too large for this machine)\n", toString(method).c_str());
       continue;
     }
-    Species s;
-    s.production = Eigen::VectorXd::Ones(1);
-    s.dirichlet.push_back({boundaryFacets(m), 0.0, {}});
+    // Eigen's Jacobi CG needs O(n^(1/d)) iterations; skip the 10^6 runs (minutes each).
+    if (method == SolverMethod::ConjugateGradient && m.numNodes() > 300000) {
+      std::printf("  %-40s skipped (Jacobi CG: too many iterations at this size)\n", toString(method).c_str());
+      continue;
+    }
     DiffusionOptions opt;
     opt.linear.method = method;
+    opt.linear.preconditioner = Preconditioner::Jacobi;
     opt.linear.tolerance = 1e-8;
-    auto t0 = std::chrono::steady_clock::now();
-    DiffusionReaction solver(m, {s}, opt);
-    const double t_setup = seconds(t0);
-    t0 = std::chrono::steady_clock::now();
-    solver.solveSteady();
-    const double t_solve = seconds(t0);
-    const SolveReport& r = solver.lastReport();
-    std::printf("  solve %-22s setup %.3f s  factorise+solve %.3f s  unknowns %d  iterations %d  residual %.2e  max u %.6f\n",
-                toString(method).c_str(), t_setup, t_solve, r.unknowns, r.iterations, r.relative_residual,
-                solver.state().maxCoeff());
+    opt.linear.amg_strong_threshold = dim == 2 ? 0.25 : 0.5;
+    opt.scheme = TimeScheme::ImplicitEuler;
+    for (const char* problem : {"steady", "step"}) {
+      auto t0 = std::chrono::steady_clock::now();
+      DiffusionReaction solver(m, {s}, opt);
+      const double t_setup = seconds(t0);  // matrices and boundary data
+      t0 = std::chrono::steady_clock::now();
+      if (std::strcmp(problem, "steady") == 0)
+        solver.solveSteady();
+      else
+        solver.step(1e-3);
+      const double t_solve = seconds(t0);  // factorisation or preconditioner setup + solve
+      const SolveReport& r = solver.lastReport();
+      std::printf("  %-6s %-40s setup %.3f s  solve %.3f s  unknowns %d  iterations %d  residual %.2e  max u %.6f\n",
+                  problem, toString(method).c_str(), t_setup, t_solve, r.unknowns, r.iterations,
+                  r.relative_residual, solver.state().maxCoeff());
+      std::printf("RESULT mesh=%s dim=%d nodes=%d elements=%d what=%s backend=%s setup=%.6g seconds=%.6g "
+                  "iterations=%d residual=%.3g maxu=%.9g\n",
+                  name.c_str(), dim, m.numNodes(), m.numElements(), problem, key(method), t_setup, t_solve,
+                  r.iterations, r.relative_residual, solver.state().maxCoeff());
+    }
   }
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool large = argc > 1 && std::strcmp(argv[1], "--large") == 0;
-  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
   std::setvbuf(stdout, nullptr, _IOLBF, 0);  // lines appear as measured, even if the run is cut short
-  std::printf("solvers_bench: OpenMP max threads %d\n", omp_get_max_threads());
-  if (quick) {  // ~10^4 and 10^5 nodes only
-    run(2, 100);
-    run(2, 316);
-    run(3, 21);
-    return 0;
+  bool quick = false, full = false;
+  Config cfg;
+  std::string backends = "direct,cholmod,cg,amg";
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    if (a == "--quick") {
+      quick = true;
+    } else if (a == "--full" || a == "--large") {
+      full = true;
+    } else if (a == "--write-meshes" && i + 1 < argc) {
+      cfg.mesh_dir = argv[++i];
+    } else if (a == "--backends" && i + 1 < argc) {
+      backends = argv[++i];
+    } else {
+      std::fprintf(stderr, "solvers_bench: unknown argument '%s'\n"
+                   "usage: solvers_bench [--quick] [--full] [--write-meshes DIR] [--backends direct,cholmod,cg,amg]\n",
+                   a.c_str());
+      return 2;
+    }
   }
-  for (int n : {100, 316, 1000}) run(2, n);  // ~10^4, 10^5, 10^6 nodes
-  for (int n : {21, 46}) run(3, n);           // ~10^4, 10^5 nodes
-  if (large) run(3, 99);                      // ~10^6 nodes
+  std::stringstream list(backends);
+  for (std::string item; std::getline(list, item, ',');) {
+    SolverMethod m;
+    if (item == "direct") m = SolverMethod::Direct;
+    else if (item == "cholmod") m = SolverMethod::Cholmod;
+    else if (item == "cg") m = SolverMethod::ConjugateGradient;
+    else if (item == "amg") m = SolverMethod::AmgCG;
+    else {
+      std::fprintf(stderr, "solvers_bench: unknown back-end '%s' (direct, cholmod, cg, amg)\n", item.c_str());
+      return 2;
+    }
+    if (solverAvailable(m))
+      cfg.backends.push_back(m);
+    else
+      std::printf("solvers_bench: back-end %s not built, skipped\n", item.c_str());
+  }
+  std::printf("solvers_bench: OpenMP max threads %d\n", omp_get_max_threads());
+  // hypre's first use initialises MPI (a fraction of a second): not part of any figure.
+  if (solverAvailable(SolverMethod::AmgCG)) {
+    LinearSolverOptions warm;
+    warm.method = SolverMethod::AmgCG;
+    solveLinear(SparseMatrix(Eigen::VectorXd::Ones(4).asDiagonal()), Eigen::VectorXd::Ones(4), warm);
+  }
+  std::vector<std::pair<int, int>> runs = {{2, 100}, {3, 21}};  // ~10^4 nodes
+  if (!quick) runs.insert(runs.end(), {{2, 316}, {3, 46}});      // ~10^5
+  if (full) runs.insert(runs.end(), {{2, 1000}, {3, 99}});       // ~10^6
+  for (const auto& [dim, n] : runs) run(dim, n, cfg);
   return 0;
 }
