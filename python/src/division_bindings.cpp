@@ -3,6 +3,7 @@
 #include <memory>
 
 #include "bindings.hpp"
+#include "deferred_error.hpp"
 #include "tessella/growth/division_rule_factory.hpp"
 #include "tessella/growth/division_scheduler.hpp"
 #include "tessella/growth/fixed_direction_rule.hpp"
@@ -127,6 +128,7 @@ the next step. Property columns divide by their policies; lineage follows.
           [](growth::DivisionScheduler& s, Tissue& t) {
             GeometryCache geometry;  // stale: the scheduler computes it
             const growth::DivisionReport r = s.step(t, geometry);
+            raiseDeferredError();
             py::list divided, skipped;
             for (const auto& d : r.divided) divided.append(recordDict(d));
             for (const auto& k : r.skipped) skipped.append(py::make_tuple(k.cell.index(), k.lineage, k.reason));
@@ -137,7 +139,12 @@ the next step. Property columns divide by their policies; lineage follows.
           },
           py::arg("tissue"),
           "Divides every due cell. Returns {'divided': [record dicts], 'skipped': [(cell, lineage, reason)]}.")
-      .def("divide", [](growth::DivisionScheduler& s, Tissue& t, long long c) { return recordDict(s.divide(t, checkedCell(t, c))); },
+      .def("divide",
+           [](growth::DivisionScheduler& s, Tissue& t, long long c) {
+             const growth::DivisionRecord r = s.divide(t, checkedCell(t, c));
+             raiseDeferredError();
+             return recordDict(r);
+           },
            py::arg("tissue"), py::arg("cell"), "Divides one cell now (GeometryError if every attempt fails).");
 }
 

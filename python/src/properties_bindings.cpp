@@ -8,6 +8,7 @@
 #include <typeindex>
 
 #include "bindings.hpp"
+#include "deferred_error.hpp"
 
 namespace tessella::python {
 
@@ -84,16 +85,24 @@ PropertyColumnBase& findColumn(PropertyStore& store, const std::string& name, in
 
 /// A Python function (mother_value, fraction) -> (stays, part) as a C++
 /// custom division. Division runs on the calling thread, which holds the GIL.
+/// Its errors never unwind through the division (deferred_error.hpp): both
+/// parts keep the mother's value and the error is raised after the split.
 template <typename T>
 typename PropertyColumn<T>::CustomDivision customDivision(py::function fn, const std::string& name) {
   return [fn, name](const T& mother, T& stays, T& part, double fraction) {
     py::gil_scoped_acquire gil;
-    py::object r = fn(mother, fraction);
-    py::tuple tup = py::reinterpret_borrow<py::object>(r).cast<py::tuple>();
-    if (tup.size() != 2)
-      throw InputError("property '" + name + "': the division function must return (stays, part)");
-    stays = tup[0].cast<T>();
-    part = tup[1].cast<T>();
+    try {
+      py::object r = fn(mother, fraction);
+      if (!py::isinstance<py::sequence>(r) || py::len(r) != 2)
+        throw InputError("property '" + name + "': the division function must return (stays, part), got " +
+                         std::string(py::repr(r)));
+      const T s = r[py::int_(0)].cast<T>(), p = r[py::int_(1)].cast<T>();
+      stays = s;
+      part = p;
+    } catch (...) {
+      stays = part = mother;
+      if (!deferredError()) deferredError() = std::current_exception();
+    }
   };
 }
 

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "bindings.hpp"
+#include "deferred_error.hpp"
 #include "safe_step.hpp"
 #include "tessella/growth/division_scheduler.hpp"
 #include "tessella/growth/growth_integrator.hpp"
@@ -44,6 +45,7 @@ class SchedulerStage final : public Stage {
     t.setTime(c.time + c.dt);
     if (c.rng) s_->step(t, geometry_, *c.rng);
     else s_->step(t, geometry_);
+    raiseDeferredError();
   }
 
  private:
@@ -146,9 +148,28 @@ stage, step and time, followed by the cause's message.
             });
           },
           py::arg("callback"), "callback(simulation) after every step (exceptions propagate out of step/run).")
-      .def("step", &Simulation::step, "One step (RuntimeError once finished).")
-      .def("run_until", &Simulation::runUntil, py::arg("time"), "Steps while time < t (stops at the end of the span).")
-      .def("run", &Simulation::run, "Steps to the end of the time span.")
+      // Step by step, so that an error a division deferred (deferred_error.hpp)
+      // is raised after the step it happened in.
+      .def("step", [](Simulation& s) { s.step(); raiseDeferredError(); }, "One step (RuntimeError once finished).")
+      .def(
+          "run_until",
+          [](Simulation& s, double t) {
+            const double slack = 1e-6 * s.parameters().time.dt;  // as Simulation::runUntil
+            while (!s.finished() && s.time() < t - slack) {
+              s.step();
+              raiseDeferredError();
+            }
+          },
+          py::arg("time"), "Steps while time < t (stops at the end of the span).")
+      .def(
+          "run",
+          [](Simulation& s) {
+            while (!s.finished()) {
+              s.step();
+              raiseDeferredError();
+            }
+          },
+          "Steps to the end of the time span.")
       .def(
           "attach_series",
           [](Simulation& s, const std::string& directory, std::size_t every, const std::string& name,

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "bindings.hpp"
+#include "deferred_error.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/validate.hpp"
 
@@ -186,6 +187,7 @@ geometry_version: call mark_geometry_changed() after editing through an old view
            [](Tissue& t, long long c, const Vec3& point, const Vec3& normal, double snap, double min_fraction) {
              const CellSplit s = t.splitCell(checkedCell(t, c), Plane{point, normal},
                                              SplitOptions{.snap_tolerance = snap, .min_fraction = min_fraction});
+             raiseDeferredError();  // a custom property division failed (the split is done)
              py::dict d;
              d["daughter"] = s.daughter.index();
              d["wall"] = s.wall.index();

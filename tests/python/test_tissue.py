@@ -141,6 +141,23 @@ def test_property_policies_on_division():
     assert {"auxin", "kind", "age", "custom", "lineage_id"} <= set(t.property_names())
 
 
+def test_failing_custom_division_is_raised_after_a_complete_split():
+    t = tessella.rectangular_grid(2, 1)
+    t.add_property("marker", 4.0, policy="custom", divide=lambda value, fraction: 1 / 0)
+    with pytest.raises(ZeroDivisionError):
+        t.split_cell(0, point=[0.5, 0.5, 0.0], normal=[1, 0, 0])
+    # The split happened and the tissue is whole: lineage updated, values copied.
+    assert t.num_cells == 3 and t.validate()[0]
+    ids = [t.lineage_id(c) for c in t.cells()]
+    assert len(set(ids)) == 3 and t.parent_id(2) == 0
+    assert list(t.property("marker")) == [4.0, 4.0, 4.0]
+    t.remove_property("marker")
+    t.add_property("bad_shape", 1.0, policy="custom", divide=lambda value, fraction: value)
+    with pytest.raises(ValueError, match=r"property 'bad_shape': the division function must return \(stays, part\)"):
+        t.split_cell(1, point=t.cell_centroid(1), normal=[1, 0, 0])
+    assert t.num_cells == 4 and t.validate()[0]
+
+
 def test_property_view_reflects_edits_both_ways():
     t = tessella.hexagonal_grid(3, 3)
     t.add_property("signal", 0.0)
