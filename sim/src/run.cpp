@@ -66,6 +66,7 @@ PreparedRun PreparedRun::prepare(SimulationConfig config, const RunOptions& opti
   }
 
   Simulation simulation = Simulation::fromConfig(config);  // the tissue, before anything is written
+  readMeshSection(config.config);  // its errors too (read again by execute())
   config.output.directory = dir.string();
   config.config.set("output.directory", dir.string(), {}, ValueOrigin::Derived);
   return PreparedRun(std::move(config), std::move(simulation), dir.string(), options.overwrite);
@@ -83,8 +84,15 @@ void PreparedRun::execute() {
       fs::remove(file, ec);
       if (ec) throw InputError("cannot remove the previous run's " + file.string() + ": " + ec.message());
     }
+  if (overwrite_)
+    for (const std::string& series : {MeshSpec{}.name, MeshSpec{}.name + "_walls"})  // a previous mesh.output
+      for (const fs::path& file : previousRunFiles(directory_, series)) {
+        fs::remove(file, ec);
+        if (ec) throw InputError("cannot remove the previous run's " + file.string() + ": " + ec.message());
+      }
   writeRunRecord(config_.config, runRecordPath());
   output_ = attachSeriesOutput(simulation_, directory_, config_.output);
+  mesh_output_ = attachMeshOutput(simulation_, directory_, readMeshSection(config_.config), config_.output);
   simulation_.run();
 }
 

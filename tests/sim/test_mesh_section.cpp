@@ -1,7 +1,11 @@
 #include <catch2/catch.hpp>
 
+#include <filesystem>
+
 #include "tessella/sim/config_loader.hpp"
 #include "tessella/sim/mesh_section.hpp"
+#include "tessella/sim/run.hpp"
+#include "tessella/sim/simulation_config.hpp"
 #include "tessella/sim/tessella_schema.hpp"
 #include "test_support.hpp"
 
@@ -66,4 +70,42 @@ TEST_CASE("mesh: the mesh series name cannot be the tissue series name", "[sim][
   const Config c = load("tissue: {generator: hexagonal_grid}\noutput: {name: mesh}\nmesh: {output: true}\n");
   const ConfigError e = configErrorOf([&] { readMeshSection(c); });
   CHECK_THAT(e.what(), Contains("output.name"));
+}
+
+namespace {
+/// Runs a hexagonal-grid config with mesh.output into a scratch directory.
+tessella::sim::PreparedRun runWithMesh(const std::string& dir, const std::string& extra) {
+  const std::string yaml = "rng_seed: 1\ntissue: {generator: hexagonal_grid, hexagonal_grid: {nx: 3, ny: 3}}\n"
+                           "time: {end: 4, dt: 1}\nmesh: {output: true, every: 2, max_edge_length: 0.5}\n" +
+                           extra;
+  PreparedRun run = PreparedRun::prepare(loadSimulationConfigString(yaml), RunOptions{dir, false});
+  run.execute();
+  return run;
+}
+}  // namespace
+
+TEST_CASE("mesh.output writes the mesh series beside the tissue series", "[sim][run][mesh]") {
+  namespace fs = std::filesystem;
+  tessella::sim::test::ScratchDir scratch;
+  SECTION("a still tissue is meshed once") {
+    const PreparedRun run = runWithMesh(scratch / "still", "");
+    CHECK(run.meshSnapshots() == expectedSnapshots(4, 2));  // steps 0, 2, 4
+    CHECK(run.meshesBuilt() == 1);
+    for (const char* f : {"mesh.pvd", "mesh_walls.pvd", "mesh_000000.vtu", "mesh_000002.vtu", "mesh_walls_000002.vtu"})
+      CHECK(fs::exists(fs::path(scratch / "still") / f));
+    CHECK(run.snapshots() == 5);  // the tissue series keeps output.every = 1
+  }
+  SECTION("a growing tissue is remeshed at every mesh snapshot") {
+    const PreparedRun run =
+        runWithMesh(scratch / "grow", "growth: {field: uniform, uniform: {rate: 0.1, center: [0, 0, 0]}}\n");
+    CHECK(run.meshSnapshots() == 3);
+    CHECK(run.meshesBuilt() == 3);
+  }
+  SECTION("without mesh.output no mesh file is written") {
+    PreparedRun run = PreparedRun::prepare(
+        loadSimulationConfigString("tissue: {generator: hexagonal_grid}\ntime: {end: 1}\n"), RunOptions{scratch / "none", false});
+    run.execute();
+    CHECK(run.meshSnapshots() == 0);
+    CHECK_FALSE(fs::exists(fs::path(scratch / "none") / "mesh.pvd"));
+  }
 }

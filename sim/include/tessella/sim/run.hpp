@@ -15,6 +15,7 @@
 #include <memory>
 #include <string>
 
+#include "tessella/sim/mesh_output.hpp"
 #include "tessella/sim/series_output.hpp"
 #include "tessella/sim/simulation.hpp"
 #include "tessella/sim/simulation_config.hpp"
@@ -41,6 +42,9 @@ class PreparedRun {
   void execute();
   /// Snapshots written by execute().
   std::size_t snapshots() const { return output_ ? output_->snapshots() : 0; }
+  /// Mesh snapshots written (mesh.output), and how many times the tissue was meshed for them.
+  std::size_t meshSnapshots() const { return mesh_output_ ? mesh_output_->snapshots() : 0; }
+  std::size_t meshesBuilt() const { return mesh_output_ ? mesh_output_->meshes() : 0; }
   std::string runRecordPath() const;
 
  private:
@@ -51,6 +55,7 @@ class PreparedRun {
   std::string directory_;
   bool overwrite_;
   std::shared_ptr<SeriesOutput> output_;
+  std::shared_ptr<MeshOutput> mesh_output_;  // null unless mesh.output
 };
 
 /// File name of the run record inside the output directory.
