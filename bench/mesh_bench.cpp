@@ -4,11 +4,13 @@
 // assembly) in the same run. The overhead ratio is tessella / mesher alone.
 //
 //   mesh_bench [max_cells_2d [max_cells_3d]]     defaults: 100000 10000
+//   mesh_bench --quick                           the smallest sizes only (1000 2D, 100 3D)
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -98,8 +100,9 @@ void row(const char* kind, std::size_t cells, std::size_t elements, double t_tes
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::size_t max2d = argc > 1 ? std::strtoul(argv[1], nullptr, 10) : 100000;
-  const std::size_t max3d = argc > 2 ? std::strtoul(argv[2], nullptr, 10) : 10000;
+  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  const std::size_t max2d = quick ? 1000 : argc > 1 ? std::strtoul(argv[1], nullptr, 10) : 100000;
+  const std::size_t max3d = quick ? 100 : argc > 2 ? std::strtoul(argv[2], nullptr, 10) : 10000;
   std::printf("mesh_bench: Voronoi tissues with unit mean cell size; times are wall-clock, single run\n");
 
   for (std::size_t n = 1000; n <= max2d; n *= 10) {
