@@ -58,6 +58,7 @@ DivisionReport DivisionScheduler::step(Tissue& t, GeometryCache& geometry, Rng& 
   DivisionReport report;
   const std::vector<CellId> due = trigger_.cellsDue(t, geometry, rng);
   for (CellId c : due) {
+    if (options_.gate && !options_.gate(t, c)) continue;
     try {
       report.divided.push_back(divide(t, c, rng));
     } catch (const GeometryError& e) {

@@ -1,5 +1,6 @@
 #include "tessella/sim/growth_section.hpp"
 
+#include <algorithm>
 #include <map>
 #include <sstream>
 #include <string>
@@ -247,6 +248,15 @@ void declareDivisionSection(Schema& s) {
       .atLeast(1)
       .atMost(100)
       .activeWhen("division.rule", actualRules());
+  s.section("division.gate",
+            "Division gated by a field: a cell over its size threshold divides only if the cell "
+            "average of `field` (a diffusion species or compartment field, or another cell property "
+            "the solver sections write) exceeds `above`. Before the field's first solve no cell divides.")
+      .activeWhen("division.rule", actualRules());
+  s.key("division.gate.field", ValueType::String, "The gating field (e.g. the diffusion species' name).")
+      .whenAbsent("no gate");
+  s.key("division.gate.above", ValueType::Float, "Cells divide only where the field is above this value.")
+      .byDefault(0.0);
 }
 
 GrowthSpec readGrowthSection(const Config& c, const TissueSpec& tissue) {
@@ -327,7 +337,20 @@ DivisionSpec readDivisionSection(const Config& c) {
   if (threshold == "noisy")
     d.threshold = growth::SizeThreshold::noisy(c.getFloat("division.mean"), c.getFloat("division.stddev"));
   d.options.max_attempts = static_cast<int>(c.getInt("division.max_attempts"));
+  if (c.has("division.gate.field")) {
+    d.gate_field = c.getString("division.gate.field");
+    d.gate_above = c.getFloat("division.gate.above");
+  }
   return d;
+}
+
+void checkDivisionGate(const Config& c, const DivisionSpec& d, const std::vector<std::string>& fields) {
+  if (d.gate_field.empty() || !d.rule) return;
+  if (std::find(fields.begin(), fields.end(), d.gate_field) != fields.end()) return;
+  std::string known;
+  for (const auto& f : fields) known += (known.empty() ? "" : ", ") + f;
+  throw c.errorAt("division.gate.field", "'" + d.gate_field + "' is not a field of the solver sections" +
+                                             (known.empty() ? std::string(" (none is on)") : " (known: " + known + ")"));
 }
 
 }  // namespace tessella::sim

@@ -1,6 +1,7 @@
 #include "tessella/sim/growth_stages.hpp"
 
 #include <cmath>
+#include <typeindex>
 
 namespace tessella::sim {
 
@@ -13,8 +14,23 @@ void GrowthStage::apply(Tissue& tissue, const StepContext& context) {
   integrator_.step(tissue, context.dt);
 }
 
+namespace {
+growth::DivisionOptions withGate(const DivisionSpec& spec) {
+  growth::DivisionOptions options = spec.options;
+  if (spec.gate_field.empty()) return options;
+  // The field is a cell property a solver stage writes after each solve;
+  // until it exists (before the first solve) the gate stays closed.
+  options.gate = [name = spec.gate_field, above = spec.gate_above](const Tissue& t, CellId c) {
+    const PropertyColumnBase* column = t.cellProperties().find(name);
+    if (!column || column->type() != std::type_index(typeid(double))) return false;
+    return t.cellProperties().get<double>(name)[c] > above;
+  };
+  return options;
+}
+}  // namespace
+
 DivisionStage::DivisionStage(const DivisionSpec& spec)
-    : scheduler_(*spec.threshold, spec.rule, spec.options) {}
+    : scheduler_(*spec.threshold, spec.rule, withGate(spec)) {}
 
 void DivisionStage::apply(Tissue& tissue, const StepContext& context) {
   tissue.setTime(context.time + context.dt);  // daughters are born at the end of the step

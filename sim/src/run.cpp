@@ -4,6 +4,7 @@
 #include <functional>
 #include <regex>
 
+#include "tessella/sim/field_output.hpp"
 #include "tessella/sim/run_record.hpp"
 
 namespace fs = std::filesystem;
@@ -12,16 +13,19 @@ namespace tessella::sim {
 
 namespace {
 
-/// The files of a previous run of series `name` in `dir`.
-std::vector<fs::path> previousRunFiles(const fs::path& dir, const std::string& name) {
+/// The files of a previous run of series `name` in `dir` (with_fields: and
+/// of the solver-field series).
+std::vector<fs::path> previousRunFiles(const fs::path& dir, const std::string& name, bool with_fields = false) {
   std::vector<fs::path> files;
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) return files;
   const std::regex snapshot(std::regex_replace(name, std::regex(R"([.^$|()\[\]{}*+?\\-])"), R"(\$&)") +
                             R"(_\d+\.vtu)");
+  const std::regex fields(std::string(kFieldSeriesName) + R"((_walls)?(\.pvd|_\d+\.vtu))");
   for (const auto& entry : fs::directory_iterator(dir, ec)) {
     const std::string file = entry.path().filename().string();
-    if (file == kRunRecordName || file == name + ".pvd" || std::regex_match(file, snapshot))
+    if (file == kRunRecordName || file == name + ".pvd" || std::regex_match(file, snapshot) ||
+        (with_fields && std::regex_match(file, fields)))
       files.push_back(entry.path());
   }
   return files;
@@ -80,7 +84,7 @@ void PreparedRun::execute() {
   fs::create_directories(directory_, ec);
   if (ec) throw InputError("cannot create the output directory " + directory_ + ": " + ec.message());
   if (overwrite_)
-    for (const fs::path& file : previousRunFiles(directory_, config_.output.name)) {
+    for (const fs::path& file : previousRunFiles(directory_, config_.output.name, true)) {
       fs::remove(file, ec);
       if (ec) throw InputError("cannot remove the previous run's " + file.string() + ": " + ec.message());
     }
@@ -92,6 +96,7 @@ void PreparedRun::execute() {
       }
   writeRunRecord(config_.config, runRecordPath());
   output_ = attachSeriesOutput(simulation_, directory_, config_.output);
+  field_output_ = attachFieldOutput(simulation_, directory_, config_.output);
   mesh_output_ = attachMeshOutput(simulation_, directory_, readMeshSection(config_.config), config_.output);
   simulation_.run();
 }

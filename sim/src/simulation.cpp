@@ -49,6 +49,11 @@ Simulation Simulation::fromYaml(const std::string& yaml, const std::vector<std::
 
 void Simulation::addStage(std::unique_ptr<Stage> stage) {
   if (!stage) throw std::invalid_argument("Simulation::addStage: null stage");
+  try {
+    stage->prepare(tissue_, time());
+  } catch (const std::exception& e) {
+    throw SimulationError("t = " + number(time()) + ", preparing stage '" + stage->name() + "': " + e.what());
+  }
   stages_.push_back(std::move(stage));
 }
 

@@ -44,9 +44,16 @@ SimulationConfig readSimulationConfig(Config config) {
   OutputSpec output = readOutputSection(config);
   GrowthSpec growth = readGrowthSection(config, tissue);
   DivisionSpec division = readDivisionSection(config);
+  DiffusionSpec diffusion = readDiffusionSection(config);
+  CompartmentSpec compartments = readCompartmentSection(config);
+  ElasticitySpec elasticity = readElasticitySection(config);
+  checkDivisionGate(config, division, coupledCellProperties(diffusion, compartments, elasticity));
   // Extension point: read new sections here.
-  return SimulationConfig{std::move(config), seed,           std::move(tissue),  time,
-                          std::move(output), std::move(growth), std::move(division)};
+  return SimulationConfig{std::move(config),      seed,
+                          std::move(tissue),      time,
+                          std::move(output),      std::move(growth),
+                          std::move(division),    std::move(diffusion),
+                          std::move(compartments), std::move(elasticity)};
 }
 
 SimulationConfig loadSimulationConfigFile(const std::string& path, const std::vector<std::string>& overrides) {

@@ -1,5 +1,6 @@
 #include "tessella/sim/tessella_schema.hpp"
 
+#include "tessella/sim/coupling_section.hpp"
 #include "tessella/sim/growth_section.hpp"
 #include "tessella/sim/mesh_section.hpp"
 #include "tessella/sim/output_section.hpp"
@@ -29,6 +30,9 @@ Schema makeSchema() {
   declareGrowthSection(s);
   declareDivisionSection(s);
   declareOutputSection(s);
+  declareDiffusionSection(s);
+  declareCompartmentSection(s);
+  declareElasticitySection(s);
   declareMeshSection(s);
   // Extension point: declare new sections here (declareGrowthSection(s); ...).
   return s;

@@ -12,6 +12,7 @@
 // in the report (it is tried again next step).
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -31,6 +32,9 @@ struct DivisionOptions {
   std::uint64_t seed = 1;   ///< seeds the scheduler's random engine
   /// Tag new walls with the mother's lineage id (division_walls.hpp).
   bool tag_walls = true;
+  /// When set, a cell over its threshold divides only if gate(t, c) is true
+  /// (e.g. a morphogen's concentration in the cell exceeds a value).
+  std::function<bool(const Tissue&, CellId)> gate;
 };
 
 struct SkippedDivision {

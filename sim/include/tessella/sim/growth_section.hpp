@@ -7,6 +7,8 @@
 
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "tessella/growth/division_rule.hpp"
 #include "tessella/growth/division_scheduler.hpp"
@@ -30,6 +32,11 @@ struct DivisionSpec {
   std::shared_ptr<const growth::DivisionRule> rule;
   std::optional<growth::SizeThreshold> threshold;
   growth::DivisionOptions options;
+  /// division.gate: a cell divides only where the double cell property
+  /// `gate_field` (a solver field's cell average) exceeds `gate_above`.
+  /// Empty: no gate.
+  std::string gate_field;
+  double gate_above = 0.0;
 };
 
 void declareGrowthSection(Schema& schema);
@@ -37,5 +44,8 @@ void declareDivisionSection(Schema& schema);
 /// `tissue` is needed for growth.surface: dome (the dome the tissue was built on).
 GrowthSpec readGrowthSection(const Config& config, const TissueSpec& tissue);
 DivisionSpec readDivisionSection(const Config& config);
+/// division.gate.field must name one of the cell properties the solver
+/// sections write (`fields`); ConfigError at the key otherwise.
+void checkDivisionGate(const Config& config, const DivisionSpec& division, const std::vector<std::string>& fields);
 
 }  // namespace tessella::sim

@@ -16,6 +16,7 @@
 #include <string>
 
 #include "tessella/sim/mesh_output.hpp"
+#include "tessella/sim/field_output.hpp"
 #include "tessella/sim/series_output.hpp"
 #include "tessella/sim/simulation.hpp"
 #include "tessella/sim/simulation_config.hpp"
@@ -55,6 +56,7 @@ class PreparedRun {
   std::string directory_;
   bool overwrite_;
   std::shared_ptr<SeriesOutput> output_;
+  std::shared_ptr<FieldSeriesOutput> field_output_;  // null without solver stages on a mesh
   std::shared_ptr<MeshOutput> mesh_output_;  // null unless mesh.output
 };
 

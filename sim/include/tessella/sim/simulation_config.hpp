@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "tessella/sim/config.hpp"
+#include "tessella/sim/coupling_section.hpp"
 #include "tessella/sim/growth_section.hpp"
 #include "tessella/sim/output_section.hpp"
 #include "tessella/sim/time_section.hpp"
@@ -26,6 +27,9 @@ struct SimulationConfig {
   OutputSpec output;
   GrowthSpec growth;
   DivisionSpec division;
+  DiffusionSpec diffusion;
+  CompartmentSpec compartments;
+  ElasticitySpec elasticity;
   // Extension point: one member per new section (GrowthSpec growth; ...),
   // filled in readSimulationConfig().
 };

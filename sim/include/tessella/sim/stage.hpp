@@ -31,6 +31,10 @@ class Stage {
   /// Advances the tissue over [context.time, context.time + context.dt].
   /// Throws on failure; the Simulation reports which stage and step failed.
   virtual void apply(Tissue& tissue, const StepContext& context) = 0;
+  /// Called once when the stage joins a Simulation, with its tissue at that
+  /// time, before any step: a stage with state on the tissue (a solver's
+  /// initial field) sets it up here, so the initial snapshot shows it.
+  virtual void prepare(Tissue& /*tissue*/, double /*time*/) {}
 };
 
 }  // namespace tessella::sim
