@@ -96,8 +96,8 @@ void PreparedRun::execute() {
       }
   writeRunRecord(config_.config, runRecordPath());
   output_ = attachSeriesOutput(simulation_, directory_, config_.output);
-  field_output_ = attachFieldOutput(simulation_, directory_, config_.output);
   mesh_output_ = attachMeshOutput(simulation_, directory_, readMeshSection(config_.config), config_.output);
+  field_output_ = attachFieldOutput(simulation_, directory_, config_.output);
   simulation_.run();
 }
 

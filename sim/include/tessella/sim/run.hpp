@@ -15,8 +15,8 @@
 #include <memory>
 #include <string>
 
-#include "tessella/sim/mesh_output.hpp"
 #include "tessella/sim/field_output.hpp"
+#include "tessella/sim/mesh_output.hpp"
 #include "tessella/sim/series_output.hpp"
 #include "tessella/sim/simulation.hpp"
 #include "tessella/sim/simulation_config.hpp"
@@ -56,8 +56,8 @@ class PreparedRun {
   std::string directory_;
   bool overwrite_;
   std::shared_ptr<SeriesOutput> output_;
-  std::shared_ptr<FieldSeriesOutput> field_output_;  // null without solver stages on a mesh
   std::shared_ptr<MeshOutput> mesh_output_;  // null unless mesh.output
+  std::shared_ptr<FieldSeriesOutput> field_output_;  // null without solver stages on a mesh
 };
 
 /// File name of the run record inside the output directory.
