@@ -81,7 +81,9 @@ NewWallMeasure::Chord NewWallMeasure::chord(double nx, double ny) const {
   Chord out;
   out.crossings = count;
   if (count < 2) return out;
-  std::sort(x, x + count, [](const Crossing& a, const Crossing& b) { return a.tau < b.tau; });
+  // Insertion sort: 2 crossings for a convex cell, a handful otherwise.
+  for (std::size_t i = 1; i < count; ++i)
+    for (std::size_t j = i; j > 0 && x[j].tau < x[j - 1].tau; --j) std::swap(x[j], x[j - 1]);
   double best = std::numeric_limits<double>::infinity();
   for (std::size_t i = 0; i + 1 < count; i += 2) {
     const bool contains = x[i].tau <= 0 && 0 <= x[i + 1].tau;
