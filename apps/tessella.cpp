@@ -123,12 +123,12 @@ int meshCommand(const MeshArgs& a) {
 
   // Per-cell agreement of the mesh measures with the tissue's.
   const std::vector<double> sums = cellMeasuresOfMesh(mesh, tissue.slots(tissue.dim()));
-  double worst = 0.0;
+  double worst = -1.0;
   Index worst_cell = kInvalidIndex;
   for (CellId c : tissue.cells()) {
     const double m = cellMeasure(tissue, c);
     const double rel = std::abs(sums[c.index()] - m) / std::abs(m);
-    if (!(rel <= worst)) worst = rel, worst_cell = c.index();
+    if (!(rel <= worst)) worst = rel, worst_cell = c.index();  // NaN counts as worst
   }
   const double total = totalMeasure(tissue);
   const double total_rel = std::abs(totalMeasureOfMesh(mesh) - total) / std::abs(total);
