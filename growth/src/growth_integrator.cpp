@@ -56,7 +56,7 @@ void GrowthIntegrator::step(Tissue& t, double dt) {
     throw InputError("growth step: dt = " + std::to_string(dt) + " must be positive and finite");
   const double t0 = t.time(), t1 = t0 + dt;
   const std::size_t n = t.slots(0);
-  x0_.assign(t.positions().begin(), t.positions().end());
+  x0_.resize(n);  // filled by the first update sweep
   k1_.resize(n);
 
   // Surface cells are checked against their orientation before the step.
@@ -69,13 +69,15 @@ void GrowthIntegrator::step(Tissue& t, double dt) {
       if (alive[f]) normal_before_[f] = polygonMeasures(t, FaceId(static_cast<Index>(f))).normal;
   }
 
-  velocities(t, x0_, t0, k1_);
+  velocities(t, t.positions(), t0, k1_);
   std::span<Vec3> x = t.mutablePositions();  // bumps the geometry counter
   const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(n);
-  // Planar tissues are put back at z = 0 in the same pass (one sweep less).
+  // One sweep keeps x0 (for Heun and for undoing a refused step) and moves
+  // the vertices; planar tissues are put back at z = 0 in the same sweep.
   const bool planar = t.embedding() == Embedding::Planar;
 #pragma omp parallel for schedule(static) if(m >= kParallelMinItems)
   for (std::ptrdiff_t i = 0; i < m; ++i) {
+    x0_[i] = x[i];
     x[i] = x0_[i] + dt * k1_[i];
     if (planar) x[i].z() = 0.0;
   }
