@@ -16,6 +16,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
+#include <omp.h>
 
 #include "tessella/tissue/voronoi.hpp"
 
@@ -65,7 +66,9 @@ void run(const char* label, const Domain& domain, std::size_t n, MakePoint make_
 
 int main(int argc, char** argv) {
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
-  std::printf("Voronoi generation (random seeds, rng_seed 2024; single thread)\n");
+  // CGAL's Delaunay runs on one thread; voronoiTissue uses OMP_NUM_THREADS.
+  std::printf("Voronoi generation (random seeds, rng_seed 2024; CGAL Delaunay 1 thread, voronoiTissue %d threads)\n",
+              omp_get_max_threads());
   const auto p2 = [](const Vec3& p) { return Kernel::Point_2(p.x(), p.y()); };
   const auto p3 = [](const Vec3& p) { return Kernel::Point_3(p.x(), p.y(), p.z()); };
   for (std::size_t n : {std::size_t{10000}, std::size_t{100000}, std::size_t{1000000}}) {

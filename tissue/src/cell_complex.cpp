@@ -209,6 +209,7 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
   std::vector<std::size_t> star_start(num_vertices + 1, 0);
   for (std::size_t v = 0; v < num_vertices; ++v) star_start[v + 1] = star_start[v] + star_size[v];
   std::vector<EdgeId> star(star_start[num_vertices]);
+  std::vector<Index> star_other(star.size());  // the edge's other end: no lookup in edge_vertices_
   std::vector<std::uint32_t> star_count(num_vertices, 0);
   std::vector<OrientedEdge> face_edges(total);
   std::vector<std::uint32_t> edge_face_count;
@@ -218,20 +219,21 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
     for (std::size_t i = 0; i < m; ++i) {
       const VertexId a(loop_vertices[b + i]), h(loop_vertices[b + (i + 1) % m]);
       EdgeId e;
-      const EdgeId* s = star.data() + star_start[a.index()];
-      for (std::uint32_t k = 0; k < star_count[a.index()]; ++k) {
-        const auto& ev = c.edge_vertices_[s[k].index()];
-        if (ev[0] == h || ev[1] == h) {
-          e = s[k];
+      const std::size_t sa = star_start[a.index()];
+      for (std::uint32_t k = 0; k < star_count[a.index()]; ++k)
+        if (star_other[sa + k] == h.index()) {
+          e = star[sa + k];
           break;
         }
-      }
       if (!e) {
         e = EdgeId(static_cast<Index>(c.edge_vertices_.size()));
         c.edge_vertices_.push_back({a, h});
         edge_face_count.push_back(0);
-        star[star_start[a.index()] + star_count[a.index()]++] = e;
-        star[star_start[h.index()] + star_count[h.index()]++] = e;
+        const std::size_t ka = sa + star_count[a.index()]++;
+        const std::size_t kh = star_start[h.index()] + star_count[h.index()]++;
+        star[ka] = star[kh] = e;
+        star_other[ka] = h.index();
+        star_other[kh] = a.index();
       }
       if (dim == 2 && edge_face_count[e.index()] == 2)
         throw TopologyError(id("face", static_cast<Index>(f)) + ": " + id("edge", e.index()) +

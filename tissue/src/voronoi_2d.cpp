@@ -79,7 +79,7 @@ Vec2 polygonCentroid(const std::vector<Vec2>& poly) {
   return poly[0] + c / twice_area;
 }
 
-Delaunay triangulate(std::span<const Vec3> seeds, double duplicate_distance) {
+Delaunay triangulate(std::span<const Vec3> seeds) {
   std::vector<std::pair<Point, Index>> points;
   points.reserve(seeds.size());
   for (std::size_t i = 0; i < seeds.size(); ++i)
@@ -104,14 +104,8 @@ Delaunay triangulate(std::span<const Vec3> seeds, double duplicate_distance) {
                      describeSeed(a, seeds[a]) + " to " + describeSeed(b, seeds[b]) +
                      ": their Voronoi cells are strips, not a tissue");
   }
-  // The nearest neighbour of every seed is a Delaunay neighbour.
-  const double d2 = duplicate_distance * duplicate_distance;
-  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
-    const auto va = e->first->vertex(Delaunay::cw(e->second));
-    const auto vb = e->first->vertex(Delaunay::ccw(e->second));
-    if (CGAL::squared_distance(va->point(), vb->point()) < d2)
-      throwDuplicate(seeds, va->info(), vb->info());
-  }
+  // Seeds closer than duplicate_distance are found among Delaunay neighbours
+  // (the nearest neighbour of every seed is one) by clipVoronoi2.
   return dt;
 }
 
@@ -119,10 +113,17 @@ Delaunay triangulate(std::span<const Vec3> seeds, double duplicate_distance) {
 
 ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& domain,
                            double duplicate_tolerance, CellOutput output) {
-  Delaunay dt = triangulate(seeds, duplicate_tolerance * domain.scale);
+  Delaunay dt = triangulate(seeds);
   const std::size_t n = seeds.size();
   std::vector<Delaunay::Vertex_handle> handle(n);
-  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) handle[v->info()] = v;
+  // Seeds in CGAL's storage order (along its Hilbert sort): cells visited in
+  // this order touch nearby memory one after the other.
+  std::vector<Index> order;
+  order.reserve(n);
+  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+    handle[v->info()] = v;
+    order.push_back(v->info());
+  }
 
   // Finite triangles numbered in CGAL's (deterministic) order, with their circumcentres.
   std::vector<Delaunay::Face_handle> tri;
@@ -132,13 +133,25 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
     f->info() = static_cast<Index>(tri.size());
     tri.push_back(f);
   }
+  // A cell is interior when all its triangles are finite and their circumcentres
+  // lie inside the domain by a margin far above the clipping tolerances.
+  const double margin = kInteriorMargin * domain.scale;
+  auto inside = [&](const Vec2& p) {
+    if (domain.is_rectangle)
+      return p.x() > domain.lo.x() + margin && p.x() < domain.hi.x() - margin &&
+             p.y() > domain.lo.y() + margin && p.y() < domain.hi.y() - margin;
+    if ((p - domain.center).norm() < domain.inner_radius - margin) return true;
+    return domain.excess(p) < -margin;
+  };
   const std::int64_t nt = static_cast<std::int64_t>(tri.size());
   std::vector<Vec2> cc(tri.size());
+  std::vector<std::uint8_t> cc_inside(tri.size());
 #pragma omp parallel for schedule(static)
   for (std::int64_t t = 0; t < nt; ++t) {
     const Point c = CGAL::circumcenter(tri[t]->vertex(0)->point(), tri[t]->vertex(1)->point(),
                                        tri[t]->vertex(2)->point());
     cc[t] = Vec2(c.x(), c.y());
+    cc_inside[t] = inside(cc[t]);
   }
   // One Voronoi vertex per group of adjacent triangles with (nearly) equal
   // circumcentres; the group's id is its lowest triangle.
@@ -158,13 +171,6 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
     }
   for (std::size_t t = 0; t < tri.size(); ++t) group[t] = root(static_cast<Index>(t));
 
-  // A cell is interior when all its triangles are finite and their circumcentres
-  // lie inside the domain by a margin far above the clipping tolerances.
-  const double margin = kInteriorMargin * domain.scale;
-  auto inside = [&](const Vec2& p) {
-    if (!domain.is_rectangle && (p - domain.center).norm() < domain.inner_radius - margin) return true;
-    return domain.excess(p) < -margin;
-  };
   const double on = kOnTolerance * domain.scale;
   const std::vector<Vec2> start =
       domain.is_rectangle ? domain.corners
@@ -176,6 +182,8 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
   std::vector<std::vector<Index>> keys(complex ? n : 0);  // interior cells: triangle groups
   std::vector<std::vector<Vec2>> clipped(n);              // boundary cells: clipped polygon
   std::vector<std::uint8_t> vanished(n, 0);
+  std::vector<Index> duplicate(n, kInvalidIndex);  // a neighbour closer than duplicate_distance
+  const double d2 = std::pow(duplicate_tolerance * domain.scale, 2);
   const std::int64_t ns = static_cast<std::int64_t>(n);
 #pragma omp parallel
   {
@@ -183,17 +191,20 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
     std::vector<double> side;
     std::vector<Index> loop;
 #pragma omp for schedule(dynamic, 1024)
-    for (std::int64_t i = 0; i < ns; ++i) {
+    for (std::int64_t q = 0; q < ns; ++q) {
+      const Index i = order[q];
       const Vec2 s(seeds[i].x(), seeds[i].y());
       bool interior = true;
       loop.clear();
       auto fc = dt.incident_faces(handle[i]), done = fc;
       do {
         const Index t = fc->info();
-        if (t == kInvalidIndex || !inside(cc[t])) {
+        if (t == kInvalidIndex || !cc_inside[t]) {
           interior = false;
           break;
         }
+        const auto nb = fc->vertex(Delaunay::ccw(fc->index(handle[i])));
+        if ((seeds[nb->info()] - seeds[i]).squaredNorm() < d2) duplicate[i] = nb->info();
         if (loop.empty() || loop.back() != group[t]) loop.push_back(group[t]);
       } while (++fc != done);
       while (interior && loop.size() > 1 && loop.back() == loop.front()) loop.pop_back();
@@ -209,6 +220,7 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
       auto circ = dt.incident_vertices(handle[i]), vdone = circ;
       do {
         if (dt.is_infinite(circ)) continue;
+        if ((seeds[circ->info()] - seeds[i]).squaredNorm() < d2) duplicate[i] = circ->info();
         const Vec2 t(circ->point().x(), circ->point().y());
         const Vec2 d = t - s;
         const Vec2 normal = d / d.norm();
@@ -233,6 +245,8 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
       if (complex) clipped[i] = poly;
     }
   }
+  for (std::size_t i = 0; i < n; ++i)
+    if (duplicate[i] != kInvalidIndex) throwDuplicate(seeds, i, duplicate[i]);
   for (std::size_t i = 0; i < n; ++i)
     if (vanished[i])
       throw GeometryError("the Voronoi cell of " + describeSeed(i, seeds[i]) +

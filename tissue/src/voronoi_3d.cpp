@@ -58,7 +58,7 @@ using Point = Kernel::Point_3;
 constexpr int kScaffoldLabel = -1000000000;
 int domainLabel(std::size_t face) { return -1 - static_cast<int>(face); }
 
-Delaunay triangulate(std::span<const Vec3> seeds, double duplicate_distance) {
+Delaunay triangulate(std::span<const Vec3> seeds) {
   std::vector<std::pair<Point, Index>> points;
   points.reserve(seeds.size());
   for (std::size_t i = 0; i < seeds.size(); ++i)
@@ -79,13 +79,8 @@ Delaunay triangulate(std::span<const Vec3> seeds, double duplicate_distance) {
                      describeSeed(2, seeds[2]) +
                      ", ...): their Voronoi cells are unbounded slabs, not a tissue");
   }
-  const double d2 = duplicate_distance * duplicate_distance;
-  for (auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e) {
-    const auto va = e->first->vertex(e->second);
-    const auto vb = e->first->vertex(e->third);
-    if (CGAL::squared_distance(va->point(), vb->point()) < d2)
-      throwDuplicate(seeds, va->info(), vb->info());
-  }
+  // Seeds closer than duplicate_distance are found among Delaunay neighbours
+  // (the nearest neighbour of every seed is one) by clipVoronoi3.
   return dt;
 }
 
@@ -125,8 +120,9 @@ Delaunay triangulate(std::span<const Vec3> seeds, double duplicate_distance) {
 // is ill-conditioned where a bisector grazes an edge (nearly cospherical
 // seeds), and different cells would disagree by more than the weld
 // tolerance. Falls back to the clipped position if the planes do not pin
-// down a point near it.
-Vec3 canonicalPosition(const Vec3& clipped, Index cell, std::span<const int> labels,
+// down a point near it. (Not inlined: GCC 12 then warns falsely about the
+// bounds of the sorts below.)
+[[gnu::noinline]] Vec3 canonicalPosition(const Vec3& clipped, Index cell, std::span<const int> labels,
                        std::span<const Vec3> seeds, const ConvexDomain3& domain) {
   std::array<Index, ClipPolytope::kMaxLabels + 1> generators{};
   std::array<int, ClipPolytope::kMaxLabels> faces{};
@@ -180,7 +176,7 @@ bool reverseOf(std::span<const Index> a, std::span<const Index> b) {
 
 ClippedCells3 clipVoronoi3(std::span<const Vec3> seeds, const ConvexDomain3& domain,
                            double duplicate_tolerance, CellOutput output) {
-  Delaunay dt = triangulate(seeds, duplicate_tolerance * domain.scale);
+  Delaunay dt = triangulate(seeds);
   const std::size_t n = seeds.size();
 
   // The tetrahedralisation as plain arrays (CGAL's incidence queries mark
@@ -206,6 +202,11 @@ ClippedCells3 clipVoronoi3(std::span<const Vec3> seeds, const ConvexDomain3& dom
     }
   }
   for (std::size_t i = 0; i < n; ++i) inc_start[i + 1] += inc_start[i];
+  // Seeds in CGAL's storage order (along its Hilbert sort): cells visited in
+  // this order touch nearby memory one after the other.
+  std::vector<Index> order;
+  order.reserve(n);
+  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) order.push_back(v->info());
   std::vector<Index> inc(inc_start[n]);
   {
     std::vector<Index> fill(inc_start.begin(), inc_start.end() - 1);
@@ -213,7 +214,15 @@ ClippedCells3 clipVoronoi3(std::span<const Vec3> seeds, const ConvexDomain3& dom
       for (Index v : tv[t])
         if (v != kInvalidIndex) inc[fill[v]++] = static_cast<Index>(t);
   }
+  const double margin = kInteriorMargin * domain.scale;
+  auto inside = [&](const Vec3& p) {
+    if (domain.is_box)
+      return (p.array() > domain.lo.array() + margin).all() && (p.array() < domain.hi.array() - margin).all();
+    if ((p - domain.center).norm() < domain.inner_radius - margin) return true;
+    return domain.excess(p) < -margin;
+  };
   std::vector<Vec3> cc(nt, Vec3::Zero());
+  std::vector<std::uint8_t> cc_inside(nt, 0);  // finite and inside the domain by the margin
   const std::int64_t nts = static_cast<std::int64_t>(nt);
 #pragma omp parallel for schedule(static)
   for (std::int64_t t = 0; t < nts; ++t) {
@@ -221,6 +230,7 @@ ClippedCells3 clipVoronoi3(std::span<const Vec3> seeds, const ConvexDomain3& dom
     std::array<Index, 4> g = tv[t];
     std::sort(g.begin(), g.end());
     cc[t] = planesPoint(g, {}, seeds, domain);
+    cc_inside[t] = inside(cc[t]);
   }
   // One Voronoi vertex per group of adjacent cells with (nearly) equal
   // circumcentres; the group's id is its lowest cell.
@@ -241,11 +251,6 @@ ClippedCells3 clipVoronoi3(std::span<const Vec3> seeds, const ConvexDomain3& dom
   }
   for (std::size_t t = 0; t < nt; ++t) group[t] = root(static_cast<Index>(t));
 
-  const double margin = kInteriorMargin * domain.scale;
-  auto inside = [&](const Vec3& p) {
-    if (!domain.is_box && (p - domain.center).norm() < domain.inner_radius - margin) return true;
-    return domain.excess(p) < -margin;
-  };
   const double on = kOnTolerance * domain.scale;
   const bool complex = output == CellOutput::Complex;
   // The ball starts from a box a little larger than its bounding box, so that
@@ -263,6 +268,8 @@ ClippedCells3 clipVoronoi3(std::span<const Vec3> seeds, const ConvexDomain3& dom
   std::vector<std::vector<Vec3>> clipped_points(complex ? n : 0);
   std::vector<std::uint8_t> is_boundary(n, 0);
   std::vector<std::string> errors(n);
+  std::vector<Index> duplicate(n, kInvalidIndex);  // a neighbour closer than duplicate_distance
+  const double d2 = std::pow(duplicate_tolerance * domain.scale, 2);
   const std::int64_t ns = static_cast<std::int64_t>(n);
 #pragma omp parallel
   {
@@ -270,19 +277,21 @@ ClippedCells3 clipVoronoi3(std::span<const Vec3> seeds, const ConvexDomain3& dom
     std::vector<Index> nbrs, loop;
     CellWalls local;
 #pragma omp for schedule(dynamic, 256)
-    for (std::int64_t si = 0; si < ns; ++si) {
-      const Index i = static_cast<Index>(si);
+    for (std::int64_t q = 0; q < ns; ++q) {
+      const Index i = order[q];
       const Vec3& s = seeds[i];
       bool interior = true;
       nbrs.clear();
       for (Index k = inc_start[i]; k < inc_start[i + 1]; ++k) {
         const Index t = inc[k];
-        if (!finite[t] || !inside(cc[t])) interior = false;
+        if (!cc_inside[t]) interior = false;
         for (Index v : tv[t])
           if (v != kInvalidIndex && v != i) nbrs.push_back(v);
       }
       std::sort(nbrs.begin(), nbrs.end());
       nbrs.erase(std::unique(nbrs.begin(), nbrs.end()), nbrs.end());
+      for (Index j : nbrs)
+        if ((seeds[j] - s).squaredNorm() < d2 && duplicate[i] == kInvalidIndex) duplicate[i] = j;
       if (interior) {
         local = CellWalls{};
         double v6 = 0;
@@ -382,6 +391,8 @@ ClippedCells3 clipVoronoi3(std::span<const Vec3> seeds, const ConvexDomain3& dom
     }
   }
   for (std::size_t i = 0; i < n; ++i)
+    if (duplicate[i] != kInvalidIndex) throwDuplicate(seeds, i, duplicate[i]);
+  for (std::size_t i = 0; i < n; ++i)
     if (!errors[i].empty()) throw GeometryError(errors[i]);
   if (!complex) return out;
 
@@ -396,7 +407,7 @@ ClippedCells3 clipVoronoi3(std::span<const Vec3> seeds, const ConvexDomain3& dom
     if (!is_boundary[i]) continue;
     for (Index k = inc_start[i]; k < inc_start[i + 1]; ++k) {
       const Index t = inc[k];
-      if (!finite[t] || domain.excess(cc[t]) > -2 * weld) continue;
+      if (!finite[t] || domain.excess(cc[t]) > -2 * weld) continue;  // see 2D
       const Index w = welder.weld(cc[t]);
       if (w == key_of_weld.size()) key_of_weld.push_back(group[t]);
     }
