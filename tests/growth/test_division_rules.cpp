@@ -82,7 +82,7 @@ TEST_CASE("a regular hexagon's three midlines are equally short", "[growth][rule
   for (std::size_t i = 0; i < 3; ++i) {
     CHECK(alignment(cands[i].first.normal, cands[(i + 1) % 3].first.normal) == Approx(0.5).margin(1e-9));
     const double angle = std::atan2(cands[i].first.normal.y(), cands[i].first.normal.x()) - 0.17;
-    CHECK(std::abs(std::remainder(angle, M_PI / 3)) < 1e-7);  // Brent's tolerance is 1e-8 rad
+    CHECK(std::abs(std::remainder(angle, M_PI / 3)) < 1e-9);  // the search's tolerance is 1e-12 rad
   }
 }
 
