@@ -1,5 +1,7 @@
 #include "coupling_values.hpp"
 
+#include "tessella/sim/suggest.hpp"
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -60,7 +62,9 @@ BoundaryRegion parseRegion(const Config& c, const std::string& key, const std::s
   if (it == names.end()) {
     std::string known;
     for (const auto& n : names) known += (known.empty() ? "" : ", ") + n;
-    throw c.errorAt(key, "unknown boundary region '" + name + "'; expected one of " + known);
+    std::string problem = "unknown boundary region '" + name + "'";
+    if (const auto m = closestMatch(name, names)) problem += "; did you mean '" + *m + "'?";
+    throw c.errorAt(key, problem + " (regions: " + known + ")");
   }
   return static_cast<BoundaryRegion>(it - names.begin());
 }

@@ -5,11 +5,15 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <numeric>
 
 #include "tessella/sim/coupling_stages.hpp"
+#include "tessella/sim/run.hpp"
 #include "tessella/sim/simulation.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "test_support.hpp"
@@ -229,7 +233,7 @@ TEST_CASE("solver section errors name their key", "[sim][coupling][errors]") {
   };
   ConfigError e = error("diffusion: {mode: steady, dirichlet: \"x_mn=1\"}\n");
   CHECK(e.keyPath() == "diffusion.dirichlet");
-  CHECK_THAT(e.what(), Catch::Contains("unknown boundary region 'x_mn'"));
+  CHECK_THAT(e.what(), Catch::Contains("unknown boundary region 'x_mn'; did you mean 'x_min'?"));
 
   e = error("diffusion: {mode: steady}\n");
   CHECK(e.keyPath() == "diffusion.mode");
@@ -297,4 +301,54 @@ TEST_CASE("runtime problems of the solver stages name the stage and the key", "[
       "elasticity: {model: solid, fixed: \"x_min=xyz\"}\n"
       "time: {end: 1, dt: 1}\n");
   CHECK_THROWS_WITH(wrong.run(), Catch::Contains("solid needs a 3D tissue"));
+}
+
+TEST_CASE("a run writes the solver fields as point data of the fields series", "[sim][coupling][run]") {
+  test::ScratchDir dir;
+  PreparedRun run = PreparedRun::prepare(loadSimulationConfigFile(sourcePath("configs/morphogen_gradient_2d.yaml"),
+                                                                  {"time.end=1", "output.every=2"}),
+                                         RunOptions{dir.path().string(), false});
+  run.execute();
+  const std::filesystem::path pvd = dir.path() / "fields.pvd";
+  REQUIRE(std::filesystem::exists(pvd));
+  REQUIRE(std::filesystem::exists(dir.path() / "fields_walls.pvd"));
+  // Steps 0, 2, 4 of 4: the initial field (a transient species is meshed at the start) and two more.
+  std::size_t snapshots = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir.path())) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind("fields_0", 0) != 0) continue;
+    ++snapshots;
+    std::ifstream in(e.path(), std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    CHECK(text.find("Name=\"auxin\"") != std::string::npos);
+  }
+  CHECK(snapshots == 3);
+  // A second run into the same directory with --overwrite replaces the field series too.
+  PreparedRun again = PreparedRun::prepare(
+      loadSimulationConfigFile(sourcePath("configs/morphogen_gradient_2d.yaml"), {"time.end=0.5", "output.every=2"}),
+      RunOptions{dir.path().string(), true});
+  again.execute();
+  std::size_t after = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir.path()))
+    if (e.path().filename().string().rfind("fields_0", 0) == 0) ++after;
+  CHECK(after == 2);
+}
+
+TEST_CASE("every: the solver runs every N steps over the time since its last solve", "[sim][coupling]") {
+  // Compartments, no transport between cells (permeability 0), decay k: each
+  // cell follows c' = -k c; implicit Euler with one step over N dt gives
+  // c = 1 / (1 + k N dt) per solve, whatever the step count in between.
+  Simulation sim = Simulation::fromYaml(
+      "tissue: {generator: rectangular_grid, rectangular_grid: {nx: 2, ny: 1}}\n"
+      "compartments: {mode: transient, initial: 1, permeability: 0, decay: 0.5, every: 3}\n"
+      "time: {end: 6, dt: 1}\n");
+  const auto value = [&] { return sim.tissue().cellProperties().get<double>("c")[CellId(0)]; };
+  sim.step();
+  sim.step();
+  CHECK(value() == 1.0);  // not solved yet
+  sim.step();
+  CHECK(value() == Approx(1.0 / 2.5).epsilon(1e-14));
+  sim.run();
+  CHECK(value() == Approx(1.0 / 6.25).epsilon(1e-14));
+  CHECK(stageOf<CompartmentStage>(sim).solves() == 2);
 }
