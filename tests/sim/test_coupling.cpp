@@ -352,3 +352,50 @@ TEST_CASE("every: the solver runs every N steps over the time since its last sol
   CHECK(value() == Approx(1.0 / 6.25).epsilon(1e-14));
   CHECK(stageOf<CompartmentStage>(sim).solves() == 2);
 }
+
+TEST_CASE("2D elasticity from YAML: a stretch gives uniaxial stress, a traction balances the stresses",
+          "[sim][coupling]") {
+  const std::string base =
+      "tissue: {generator: hexagonal_grid, hexagonal_grid: {nx: 4, ny: 3}}\n"
+      "time: {end: 1, dt: 1}\n";
+  const auto stressXX = [](const Simulation& sim) {
+    std::vector<double> v;
+    const auto& s = sim.tissue().cellProperties().get<double>("stress_xx");
+    for (CellId c : sim.tissue().cells()) v.push_back(s[c]);
+    return v;
+  };
+  // Hexagons (pointy side up) have vertical walls at the ends of the rows that
+  // reach x_min / x_max; their bottom is jagged, so x_min also holds y.
+  Simulation pulled = Simulation::fromYaml(
+      base + "elasticity: {model: plane_stress, young: 3, fixed: \"x_min=xy\", traction_region: x_max, "
+             "traction: [0.2, 0, 0]}\n");
+  pulled.run();
+  // On a rectangle with rollers the uniaxial state u = (eps x, -nu eps y) is exact.
+  Simulation stretched = Simulation::fromYaml(
+      "tissue: {generator: rectangular_grid, rectangular_grid: {nx: 4, ny: 3}}\n"
+      "time: {end: 1, dt: 1}\n"
+      "elasticity: {model: plane_stress, young: 3, fixed: \"x_min=x, y_min=y\", stretch_region: x_max, "
+      "stretch: 0.05}\n");
+  stretched.run();
+  // Stretch: every node has u_x = eps x, so sigma_xx = E eps in every cell,
+  // eps = 0.05 / width.
+  const FeMesh& mesh = fieldMeshOf(stretched).mesh();
+  const double width = mesh.nodes.col(0).maxCoeff() - mesh.nodes.col(0).minCoeff();
+  for (double s : stressXX(stretched)) CHECK(s == Approx(3 * 0.05 / width).epsilon(1e-8));
+  // Traction on part of a jagged boundary is not uniaxial everywhere, but with
+  // v = (x, 0) in the discrete equilibrium (no body force; x reactions only on
+  // x = x_min): integral of sigma_xx = T * L * (x_max - x_min), L the loaded length.
+  const FeMesh& pm = fieldMeshOf(pulled).mesh();
+  const double x_min = pm.nodes.col(0).minCoeff(), x_max = pm.nodes.col(0).maxCoeff();
+  double loaded = 0;
+  for (int f = 0; f < pm.numWallFacets(); ++f) {
+    const int i = pm.wall_facets(f, 0), j = pm.wall_facets(f, 1);
+    if (pm.facet_on_boundary[f] && std::abs(pm.nodes(i, 0) - x_max) < 1e-9 && std::abs(pm.nodes(j, 0) - x_max) < 1e-9)
+      loaded += (pm.nodes.row(i) - pm.nodes.row(j)).norm();
+  }
+  REQUIRE(loaded > 0);
+  double integral = 0;
+  const auto& sxx = pulled.tissue().cellProperties().get<double>("stress_xx");
+  for (CellId c : pulled.tissue().cells()) integral += sxx[c] * cellMeasure(pulled.tissue(), c);
+  CHECK(integral == Approx(0.2 * loaded * (x_max - x_min)).epsilon(1e-8));
+}
