@@ -337,6 +337,10 @@ ClippedCells3 clipVoronoi3(std::span<const Vec3> seeds, const ConvexDomain3& dom
             moment += d * (q0 + q1 + q2) / 4;
           }
         }
+        if (local.labels.size() < 4 || !(v6 > 0)) {
+          errors[i] = "the Voronoi cell of " + describeSeed(i, s) + " has no volume";
+          continue;
+        }
         out.centroids[i] = s + moment / v6;
         if (complex) walls[i] = std::move(local);
         continue;
