@@ -204,9 +204,9 @@ geometry_version: call mark_geometry_changed() after editing through an old view
              const Renumbering r = t.compact();
              py::list maps;
              for (const auto& v : r.old_to_new) {
-               std::vector<std::int64_t> m(v.size());
-               for (std::size_t i = 0; i < v.size(); ++i) m[i] = v[i] == kInvalidIndex ? -1 : std::int64_t(v[i]);
-               maps.append(py::array_t<std::int64_t>(static_cast<py::ssize_t>(m.size()), m.data()));
+               std::vector<std::int64_t> map(v.size());
+               for (std::size_t i = 0; i < v.size(); ++i) map[i] = v[i] == kInvalidIndex ? -1 : std::int64_t(v[i]);
+               maps.append(py::array_t<std::int64_t>(static_cast<py::ssize_t>(map.size()), map.data()));
              }
              return maps;
            },

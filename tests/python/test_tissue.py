@@ -236,3 +236,18 @@ def test_copy_is_deep():
     u.split_cell(0, point=u.cell_centroid(0), normal=[1, 0, 0])
     assert t.num_cells == 4 and (t.property("x") == 1.0).all()
     assert u.num_cells == 5
+
+
+def test_remove_cell_leaves_tombstones_until_compact():
+    t = tessella.rectangular_grid(3, 1)
+    lineage = [t.lineage_id(c) for c in (0, 2)]
+    t.remove_cell(1)
+    assert t.num_cells == 2 and t.cell_slots == 3
+    assert list(t.cells()) == [0, 2]
+    assert t.cell_measures()[1] == 0.0  # dead slot
+    with pytest.raises(ValueError, match=r"cell 1 is not a live cell"):
+        t.cell_measure(1)
+    maps = t.compact()
+    assert list(maps[2]) == [0, -1, 1]
+    assert t.cell_slots == 2 and [t.lineage_id(c) for c in t.cells()] == lineage
+    assert t.validate()[0]
