@@ -119,3 +119,18 @@ TEST_CASE("degenerate cuts are retried perturbed, then skipped and reported", "[
     CHECK(validate(t).ok);
   }
 }
+
+TEST_CASE("a division gate lets only the cells it accepts divide", "[growth][scheduler]") {
+  Tissue t = rectangularGrid(4, 1);  // four unit cells, all over the threshold
+  DivisionOptions options;
+  // Divide only the cells left of x = 2 (a stand-in for a field above a value).
+  options.gate = [](const Tissue& tissue, CellId c) { return cellCentroid(tissue, c).x() < 2.0; };
+  DivisionScheduler s(SizeThreshold::fixed(0.5), makeDivisionRule("main_axis"), options);
+  GeometryCache g;
+  const DivisionReport r = s.step(t, g);
+  REQUIRE(r.divided.size() == 2);
+  CHECK(r.skipped.empty());  // gated cells are not "skipped": they were never tried
+  for (const DivisionRecord& d : r.divided) CHECK(cellCentroid(t, d.cell).x() < 2.0);
+  CHECK(t.numCells() == 6);
+  REQUIRE(validate(t).ok);
+}
