@@ -399,3 +399,27 @@ TEST_CASE("2D elasticity from YAML: a stretch gives uniaxial stress, a traction 
   for (CellId c : pulled.tissue().cells()) integral += sxx[c] * cellMeasure(pulled.tissue(), c);
   CHECK(integral == Approx(0.2 * loaded * (x_max - x_min)).epsilon(1e-8));
 }
+
+TEST_CASE("steady diffusion with decay and an influx: the exponential profile of a strip", "[sim][coupling]") {
+  // -D u'' + k u = 0 on [0, L], D u'(0) = -g (influx g at x = 0), u'(L) = 0:
+  // u = g lambda / D cosh((L - x) / lambda) / sinh(L / lambda), lambda = sqrt(D / k).
+  const double D = 1.0, k = 0.25, g = 1.0, L = 10.0, lambda = std::sqrt(D / k);
+  Simulation sim = Simulation::fromYaml(
+      "tissue: {generator: rectangular_grid, rectangular_grid: {nx: 10, ny: 1}}\n"
+      "diffusion: {mode: steady, species: m, diffusivity: 1, decay: 0.25, flux: \"x_min=1\"}\n"
+      "mesh: {max_edge_length: 0.1}\n"
+      "time: {end: 1, dt: 1}\n");
+  sim.run();
+  const Tissue& t = sim.tissue();
+  const auto& m = t.cellProperties().get<double>("m");
+  const double scale = g * lambda / D / std::sinh(L / lambda);
+  for (CellId c : t.cells()) {
+    const double x0 = cellCentroid(t, c).x() - 0.5;
+    // The cell average of the exact solution over [x0, x0 + 1].
+    const double exact = scale * lambda * (std::sinh((L - x0) / lambda) - std::sinh((L - x0 - 1) / lambda));
+    INFO("cell at x0 = " << x0);
+    CHECK(m[c] == Approx(exact).epsilon(2e-3));
+  }
+  // The steady balance: everything that enters decays, k * total = g * (strip height 1).
+  CHECK(k * sumProperty(t, "m_amount") == Approx(g * 1.0).epsilon(1e-9));
+}
