@@ -187,23 +187,22 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
     throw TopologyError("fromLoops: offsets do not cover the vertex list");
   // Check every loop first, so that an error leaves nothing half built.
   std::vector<std::uint32_t> star_size(num_vertices + 1, 0);
-  std::vector<Index> sorted;
+  std::vector<Index> last_face(num_vertices, kInvalidIndex);  // a repeat within a loop shows here
   for (std::size_t f = 0; f < nf; ++f) {
     const auto loop = loop_vertices.subspan(loop_offsets[f], loop_offsets[f + 1] - loop_offsets[f]);
+    const Index fi = static_cast<Index>(f);
     if (loop.size() < 3)
-      throw TopologyError(id("face", static_cast<Index>(f)) + " has " + std::to_string(loop.size()) +
-                              " vertices (at least 3 needed)",
-                          {2, static_cast<Index>(f)});
-    sorted.assign(loop.begin(), loop.end());
-    std::sort(sorted.begin(), sorted.end());
-    if (sorted.back() >= num_vertices)
-      throw TopologyError(id("face", static_cast<Index>(f)) + " uses vertex " + std::to_string(sorted.back()) +
-                              " but there are only " + std::to_string(num_vertices) + " vertices",
-                          {2, static_cast<Index>(f)});
-    if (auto it = std::adjacent_find(sorted.begin(), sorted.end()); it != sorted.end())
-      throw TopologyError(id("face", static_cast<Index>(f)) + " passes twice through " + id("vertex", *it),
-                          {2, static_cast<Index>(f)});
-    for (Index v : loop) star_size[v] += 2;  // each loop edge at v: an upper bound on v's edges
+      throw TopologyError(id("face", fi) + " has " + std::to_string(loop.size()) + " vertices (at least 3 needed)",
+                          {2, fi});
+    for (Index v : loop) {
+      if (v >= num_vertices)
+        throw TopologyError(id("face", fi) + " uses vertex " + std::to_string(v) + " but there are only " +
+                                std::to_string(num_vertices) + " vertices",
+                            {2, fi});
+      if (last_face[v] == fi) throw TopologyError(id("face", fi) + " passes twice through " + id("vertex", v), {2, fi});
+      last_face[v] = fi;
+      star_size[v] += 2;  // each loop edge at v: an upper bound on v's edges
+    }
   }
   // Vertex stars in a flat scratch array: star of v at star_start[v], star_count[v] used.
   std::vector<std::size_t> star_start(num_vertices + 1, 0);
