@@ -423,3 +423,29 @@ TEST_CASE("steady diffusion with decay and an influx: the exponential profile of
   // The steady balance: everything that enters decays, k * total = g * (strip height 1).
   CHECK(k * sumProperty(t, "m_amount") == Approx(g * 1.0).epsilon(1e-9));
 }
+
+TEST_CASE("a Robin end and a production: exact linear profile and exact amount growth", "[sim][coupling]") {
+  SECTION("u = 1 at x = 0, -D u' = h u at x = L: u = 1 - h x / (D + h L), exact for P1") {
+    const double D = 2.0, h = 0.5, L = 4.0;
+    Simulation sim = Simulation::fromYaml(
+        "tissue: {generator: rectangular_grid, rectangular_grid: {nx: 4, ny: 2}}\n"
+        "diffusion: {mode: steady, diffusivity: 2, dirichlet: \"x_min=1\", robin: \"x_max=0.5\", exterior: 0}\n"
+        "time: {end: 1, dt: 1}\n");
+    sim.run();
+    const FieldMesh& fm = fieldMeshOf(sim);
+    for (int n = 0; n < fm.mesh().numNodes(); ++n)
+      CHECK(fm.field("u")[n] == Approx(1.0 - h * fm.mesh().nodes(n, 0) / (D + h * L)).margin(1e-10));
+  }
+  SECTION("zero-flux boundaries, production p: the amount grows by p * area * t in both schemes") {
+    for (const char* scheme : {"implicit_euler", "crank_nicolson"}) {
+      INFO(scheme);
+      Simulation sim = Simulation::fromYaml(
+          std::string("tissue: {generator: hexagonal_grid, hexagonal_grid: {nx: 3, ny: 3}}\n"
+                      "diffusion: {mode: transient, production: 0.3, initial: 0.5, dt: 0.1, scheme: ") +
+          scheme + "}\ntime: {end: 2, dt: 0.5}\n");
+      const double area = totalMeasure(sim.tissue());
+      sim.run();
+      CHECK(stageOf<DiffusionStage>(sim).totalAmount() == Approx(area * (0.5 + 0.3 * 2.0)).epsilon(1e-11));
+    }
+  }
+}
