@@ -1,6 +1,7 @@
 #include "tessella/solvers/assembly.hpp"
 
 #include "assemble_detail.hpp"
+#include "tessella/solvers/assembly_pattern.hpp"
 #include "tessella/solvers/element_geometry.hpp"
 #include "tessella/solvers/errors.hpp"
 
@@ -36,36 +37,19 @@ void simplexMass(double measure, int n, Mat& m) {
 
 }  // namespace
 
+// One-off assemblies build the pattern for the call: less memory than n^2
+// triplets per element. Repeated assemblies on one mesh should keep an
+// AssemblyPattern instead.
 SparseMatrix assembleMass(const FeMesh& mesh, MassType type, const Eigen::VectorXd& element_coefficient) {
   checkMesh(mesh);
   checkCoefficient(element_coefficient, mesh.numElements(), "assembleMass");
-  const int n = mesh.dim + 1;
-  return detail::assembleElementwise(
-      mesh.numElements(), n, mesh.numNodes(), [&](int e, detail::LocalMatrix& ke, int* dofs) {
-        const double c = element_coefficient.size() ? element_coefficient[e] : 1.0;
-        const double measure = elementGeometry(mesh, e).measure;
-        if (type == MassType::Consistent) {
-          simplexMass(c * measure, n, ke);
-        } else {
-          ke.setZero();
-          ke.diagonal().setConstant(c * measure / n);
-        }
-        for (int a = 0; a < n; ++a) dofs[a] = mesh.elements(e, a);
-      });
+  return AssemblyPattern(mesh).mass(mesh, type, element_coefficient);
 }
 
 SparseMatrix assembleStiffness(const FeMesh& mesh, const Eigen::VectorXd& element_coefficient) {
   checkMesh(mesh);
   checkCoefficient(element_coefficient, mesh.numElements(), "assembleStiffness");
-  const int n = mesh.dim + 1;
-  return detail::assembleElementwise(
-      mesh.numElements(), n, mesh.numNodes(), [&](int e, detail::LocalMatrix& ke, int* dofs) {
-        const double c = element_coefficient.size() ? element_coefficient[e] : 1.0;
-        const ElementGeometry g = elementGeometry(mesh, e);
-        const auto G = g.gradients.topRows(n);
-        ke.noalias() = (c * g.measure) * (G * G.transpose());
-        for (int a = 0; a < n; ++a) dofs[a] = mesh.elements(e, a);
-      });
+  return AssemblyPattern(mesh).stiffness(mesh, element_coefficient);
 }
 
 Eigen::VectorXd elementMeasures(const FeMesh& mesh) {

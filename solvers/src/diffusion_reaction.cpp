@@ -1,6 +1,7 @@
 #include "tessella/solvers/diffusion_reaction.hpp"
 
 #include "dof_reduction.hpp"
+#include "tessella/solvers/assembly_pattern.hpp"
 #include "tessella/solvers/element_geometry.hpp"
 #include "tessella/solvers/errors.hpp"
 #include "tessella/solvers/facets.hpp"
@@ -56,13 +57,16 @@ DiffusionReaction::DiffusionReaction(const FeMesh& mesh, std::vector<Species> sp
   checkMesh(mesh);
   if (species.empty()) throw InvalidProblemError("DiffusionReaction: no species given");
   const int n = mesh.numNodes();
-  mass_ = assembleMass(mesh, options_.mass);
+  // One sparsity pattern for the mass and every species' stiffness and decay
+  // mass: built once, each matrix is then a fast re-assembly into it.
+  const AssemblyPattern pattern(mesh);
+  mass_ = pattern.mass(mesh, options_.mass);
   for (std::size_t s = 0; s < species.size(); ++s) {
     SpeciesData d;
     d.spec = std::move(species[s]);
     const std::string who = "species '" + d.spec.name + "'";
     const Eigen::VectorXd D = cellToElement(mesh, d.spec.diffusivity, who + ": diffusivity", true);
-    d.A = assembleStiffness(mesh, D);
+    d.A = pattern.stiffness(mesh, D);
     d.load = Eigen::VectorXd::Zero(n);
     bool has_decay = false;
     if (d.spec.decay.size()) {
@@ -70,7 +74,7 @@ DiffusionReaction::DiffusionReaction(const FeMesh& mesh, std::vector<Species> sp
       // the indefinite system if it makes a step or the steady state ill-posed.
       const Eigen::VectorXd k = cellToElement(mesh, d.spec.decay, who + ": decay");
       has_decay = k.cwiseAbs().maxCoeff() > 0.0;
-      if (has_decay) d.A += assembleMass(mesh, options_.mass, k);
+      if (has_decay) d.A += pattern.mass(mesh, options_.mass, k);
     }
     if (d.spec.production.size()) d.load += assembleLoad(mesh, cellToElement(mesh, d.spec.production, who + ": production"));
 

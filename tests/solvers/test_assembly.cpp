@@ -5,6 +5,7 @@
 
 #include "structured_meshes.hpp"
 #include "tessella/solvers/assembly.hpp"
+#include "tessella/solvers/assembly_pattern.hpp"
 #include "tessella/solvers/element_geometry.hpp"
 #include "tessella/solvers/elasticity.hpp"
 #include "tessella/solvers/errors.hpp"
@@ -145,4 +146,99 @@ TEST_CASE("Assembly is bit-identical with 1 and 2 OpenMP threads", "[solvers][as
                     static_cast<std::size_t>(one.second.displacement.size()) * sizeof(double)) == 0);
   CHECK(std::memcmp(one.second.stress.data(), two.second.stress.data(),
                     static_cast<std::size_t>(one.second.stress.size()) * sizeof(double)) == 0);
+}
+
+namespace {
+
+// Independent reference: element matrices from elementGeometry summed as
+// triplets (Eigen's setFromTriplets), the textbook assembly.
+SparseMatrix tripletReference(const FeMesh& m, bool stiffness, const Eigen::VectorXd& c) {
+  const int nn = m.dim + 1;
+  std::vector<Eigen::Triplet<double>> t;
+  for (int e = 0; e < m.numElements(); ++e) {
+    const ElementGeometry g = elementGeometry(m, e);
+    for (int a = 0; a < nn; ++a)
+      for (int b = 0; b < nn; ++b) {
+        const double v = stiffness ? g.measure * g.gradients.row(a).dot(g.gradients.row(b))
+                                   : g.measure * (a == b ? 2.0 : 1.0) / (nn * (nn + 1));
+        t.emplace_back(m.elements(e, a), m.elements(e, b), c[e] * v);
+      }
+  }
+  SparseMatrix A(m.numNodes(), m.numNodes());
+  A.setFromTriplets(t.begin(), t.end());
+  return A;
+}
+
+}  // namespace
+
+TEST_CASE("AssemblyPattern re-assembly equals triplet assembly; invariants; thread-independent",
+          "[solvers][assembly][pattern]") {
+  FeMesh box = boxMesh(6, 5, 4, 1.0, 2.0, 0.5, true);
+  test::perturbInterior(box, 0.1, 0.2);
+  FeMesh square = rectangleMesh(10, 7, 2.0, 1.5, true);
+  test::perturbInterior(square, 1.5 / 7, 0.2);
+  const double pi = std::acos(-1.0);
+  struct Case {
+    const char* name;
+    FeMesh mesh;
+    double measure;
+  };
+  const Case cases[] = {{"3D box", box, 1.0},
+                        {"2D rectangle", square, 3.0},
+                        {"curved strip", cylinderStrip(12, 5, 2.0, pi / 2, 3.0),
+                         12 * 2 * 2.0 * std::sin(pi / 2 / 12 / 2) * 3.0}};
+  const int saved = omp_get_max_threads();
+  for (const Case& k : cases) {
+    INFO(k.name);
+    const FeMesh& m = k.mesh;
+    // Per-element coefficients with many distinct values.
+    Eigen::VectorXd c(m.numElements());
+    for (int e = 0; e < m.numElements(); ++e) c[e] = 0.5 + std::fmod(0.37 * e, 1.3);
+    const AssemblyPattern p(m);
+    CHECK(p.numColours() >= m.dim + 1);  // neighbouring elements need distinct colours
+    const SparseMatrix K = p.stiffness(m, c);
+    const SparseMatrix M = p.mass(m, MassType::Consistent, c);
+    const SparseMatrix Kref = tripletReference(m, true, c);
+    const SparseMatrix Mref = tripletReference(m, false, c);
+    CHECK(K.nonZeros() == Kref.nonZeros());
+    const double kscale = Eigen::MatrixXd(Kref).cwiseAbs().maxCoeff();
+    CHECK((Eigen::MatrixXd(K) - Eigen::MatrixXd(Kref)).cwiseAbs().maxCoeff() <= 1e-13 * kscale);
+    const double mscale = Eigen::MatrixXd(Mref).cwiseAbs().maxCoeff();
+    CHECK((Eigen::MatrixXd(M) - Eigen::MatrixXd(Mref)).cwiseAbs().maxCoeff() <= 1e-14 * mscale);
+
+    // Invariants with c = 1: stiffness rows sum to zero, mass sums to the measure.
+    const Eigen::VectorXd one = Eigen::VectorXd::Ones(m.numNodes());
+    CHECK((p.stiffness(m) * one).cwiseAbs().maxCoeff() <= 1e-12 * kscale);
+    CHECK(one.dot(p.mass(m, MassType::Consistent) * one) == Approx(k.measure).epsilon(1e-13));
+    const SparseMatrix ML = p.mass(m, MassType::Lumped);
+    CHECK(one.dot(ML * one) == Approx(k.measure).epsilon(1e-13));
+    CHECK((Eigen::MatrixXd(ML) - Eigen::MatrixXd(ML.diagonal().asDiagonal())).cwiseAbs().maxCoeff() == 0.0);
+
+    // Re-assembly into an existing matrix keeps its storage and gives the same values.
+    SparseMatrix into = p.mass(m, MassType::Lumped);
+    const double* storage = into.valuePtr();
+    p.stiffness(m, c, into);
+    CHECK(into.valuePtr() == storage);
+    CHECK(bitIdentical(into, K));
+
+    // Bit-identical with 1 and 2 threads.
+    omp_set_num_threads(1);
+    const SparseMatrix K1 = p.stiffness(m, c), M1 = p.mass(m, MassType::Consistent, c);
+    omp_set_num_threads(2);
+    const SparseMatrix K2 = p.stiffness(m, c), M2 = p.mass(m, MassType::Consistent, c);
+    omp_set_num_threads(saved);
+    CHECK(bitIdentical(K1, K2));
+    CHECK(bitIdentical(M1, M2));
+  }
+}
+
+TEST_CASE("AssemblyPattern rejects a different mesh, bad coefficients and degenerate elements",
+          "[solvers][assembly][pattern]") {
+  FeMesh m = boxMesh(2, 2, 2);
+  const AssemblyPattern p(m);
+  CHECK_THROWS_AS(p.stiffness(boxMesh(3, 2, 2)), InvalidProblemError);
+  CHECK_THROWS_AS(p.mass(m, MassType::Consistent, Eigen::VectorXd::Ones(3)), InvalidProblemError);
+  m.nodes.row(m.elements(5, 3)) = m.nodes.row(m.elements(5, 0));  // collapse element 5
+  CHECK_THROWS_WITH(p.stiffness(m), Catch::Contains("degenerate"));
+  CHECK_THROWS_WITH(p.mass(m, MassType::Lumped), Catch::Contains("degenerate"));
 }

@@ -1,0 +1,62 @@
+#pragma once
+// Cached sparsity pattern of the P1 element matrices of one FeMesh, for fast
+// re-assembly. Built once from the connectivity: the compressed matrix
+// structure, for every element and local entry (a, b) the slot of that entry in
+// the value array, and a greedy colouring of the elements (elements of one
+// colour share no node). Re-assembly computes each element matrix and adds it
+// straight into the value array, colour by colour, in parallel within a
+// colour. Every nonzero receives its contributions in colour order, at most one
+// per colour, so the sums are the same for any thread count: bit-identical
+// results. They agree with the triplet summation to round-off only (different
+// order of the additions).
+//
+// Memory: (d+1)^2 int slots per element (64 bytes per tetrahedron) plus the
+// matrix structure; about 0.4 GB for 10^6 tetrahedral nodes (5.8 M elements).
+
+#include "tessella/mesh/fe_mesh.hpp"
+#include "tessella/solvers/assembly.hpp"
+#include "tessella/solvers/linear_solver.hpp"
+
+#include <Eigen/Core>
+
+#include <vector>
+
+namespace tessella {
+
+class AssemblyPattern {
+ public:
+  /// Builds the pattern of `mesh`'s elements (checks the mesh first).
+  explicit AssemblyPattern(const FeMesh& mesh);
+
+  /// K_ij = sum_e c_e * int_e grad phi_i . grad phi_j. Empty c means c = 1.
+  /// `mesh` must have the connectivity the pattern was built from (node
+  /// coordinates may differ); its sizes are checked.
+  SparseMatrix stiffness(const FeMesh& mesh, const Eigen::VectorXd& element_coefficient = {}) const;
+  /// M_ij = sum_e c_e * int_e phi_i phi_j (or its lumped diagonal; the
+  /// off-diagonal entries are then stored zeros of the same pattern).
+  SparseMatrix mass(const FeMesh& mesh, MassType type, const Eigen::VectorXd& element_coefficient = {}) const;
+
+  /// Same, writing into `out`: when `out` already has this pattern's structure
+  /// (e.g. from an earlier call) only its values are overwritten, no allocation.
+  void stiffness(const FeMesh& mesh, const Eigen::VectorXd& element_coefficient, SparseMatrix& out) const;
+  void mass(const FeMesh& mesh, MassType type, const Eigen::VectorXd& element_coefficient, SparseMatrix& out) const;
+
+  int numNodes() const { return static_cast<int>(structure_.rows()); }
+  int numElements() const { return num_elements_; }
+  int numColours() const { return static_cast<int>(colour_ptr_.size()) - 1; }
+  long nonZeros() const { return static_cast<long>(structure_.nonZeros()); }
+
+ private:
+  enum class Kind { Stiffness, ConsistentMass, LumpedMass };
+  void assemble(const FeMesh& mesh, Kind kind, const Eigen::VectorXd& c, SparseMatrix& out) const;
+  void prepare(const FeMesh& mesh, const Eigen::VectorXd& c, const char* what, SparseMatrix& out) const;
+
+  int dim_ = 0;
+  int num_elements_ = 0;
+  SparseMatrix structure_;         // all-zero values, compressed
+  std::vector<int> colour_ptr_;    // elements of colour k: order_[colour_ptr_[k] .. colour_ptr_[k+1])
+  std::vector<int> order_;         // element indices grouped by colour, increasing within a colour
+  std::vector<int> slots_;         // (d+1)^2 value slots per position in order_, row-major (a, b)
+};
+
+}  // namespace tessella
