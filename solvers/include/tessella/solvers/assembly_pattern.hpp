@@ -2,12 +2,12 @@
 // Cached sparsity pattern of the P1 element matrices of one FeMesh, for fast
 // re-assembly. Built once from the connectivity: the compressed matrix
 // structure, for every element and local entry (a, b) the slot of that entry in
-// the value array, and a greedy colouring of the elements (elements of one
-// colour share no node). Re-assembly computes each element matrix and adds it
-// straight into the value array, colour by colour, in parallel within a
-// colour. Every nonzero receives its contributions in colour order, at most one
-// per colour, so the sums are the same for any thread count: bit-identical
-// results. They agree with the triplet summation to round-off only (different
+// the value array, and a greedy colouring of chunks of elements (chunks of
+// one colour share no node). Re-assembly computes each element matrix and adds
+// it straight into the value array, colour by colour, the chunks of a colour
+// in parallel, the elements of a chunk in a fixed order. Every nonzero receives
+// its contributions in that fixed order (at most one chunk per colour touches
+// it), so the sums are the same for any thread count: bit-identical results. They agree with the triplet summation to round-off only (different
 // order of the additions).
 //
 // Memory: (d+1)^2 int slots per element (64 bytes per tetrahedron) plus the
@@ -44,6 +44,10 @@ class AssemblyPattern {
   int numNodes() const { return static_cast<int>(structure_.rows()); }
   int numElements() const { return num_elements_; }
   int numColours() const { return static_cast<int>(colour_ptr_.size()) - 1; }
+  int numChunks() const { return static_cast<int>(chunk_ptr_.size()) - 1; }
+  /// Elements per chunk (the last may be shorter): small enough for many
+  /// chunks per colour, large enough that a chunk's writes stay in cache.
+  static constexpr int kChunk = 64;
   long nonZeros() const { return static_cast<long>(structure_.nonZeros()); }
 
  private:
@@ -54,8 +58,9 @@ class AssemblyPattern {
   int dim_ = 0;
   int num_elements_ = 0;
   SparseMatrix structure_;         // all-zero values, compressed
-  std::vector<int> colour_ptr_;    // elements of colour k: order_[colour_ptr_[k] .. colour_ptr_[k+1])
-  std::vector<int> order_;         // element indices grouped by colour, increasing within a colour
+  std::vector<int> colour_ptr_;    // chunks of colour k: colour_ptr_[k] .. colour_ptr_[k+1]
+  std::vector<int> chunk_ptr_;     // elements of chunk q: order_[chunk_ptr_[q] .. chunk_ptr_[q+1])
+  std::vector<int> order_;         // element indices, chunk by chunk, chunks grouped by colour
   std::vector<int> slots_;         // (d+1)^2 value slots per position in order_, row-major (a, b)
 };
 
