@@ -179,16 +179,29 @@ VolumeId CellComplex::addVolume(std::span<const OrientedFace> faces) {
 }
 
 CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<const Index> loop_offsets,
-                                   std::span<const Index> loop_vertices) {
+                                   std::span<const Index> loop_vertices, std::span<const Index> face_order) {
   CellComplex c(dim);
   const std::size_t nf = loop_offsets.empty() ? 0 : loop_offsets.size() - 1;
   const std::size_t total = nf ? loop_offsets[nf] : 0;
   if (nf && (loop_offsets[0] != 0 || total != loop_vertices.size()))
     throw TopologyError("fromLoops: offsets do not cover the vertex list");
+  if (!face_order.empty()) {
+    if (face_order.size() != nf)
+      throw TopologyError("fromLoops: the face order lists " + std::to_string(face_order.size()) +
+                          " faces, not " + std::to_string(nf));
+    std::vector<std::uint8_t> listed(nf, 0);
+    for (Index f : face_order) {
+      if (f >= nf || listed[f])
+        throw TopologyError("fromLoops: the face order is not a permutation (face " + std::to_string(f) + ")");
+      listed[f] = 1;
+    }
+  }
+  auto faceAt = [&](std::size_t q) -> std::size_t { return face_order.empty() ? q : face_order[q]; };
   // Check every loop first, so that an error leaves nothing half built.
   std::vector<std::uint32_t> star_size(num_vertices + 1, 0);
   std::vector<Index> last_face(num_vertices, kInvalidIndex);  // a repeat within a loop shows here
-  for (std::size_t f = 0; f < nf; ++f) {
+  for (std::size_t q = 0; q < nf; ++q) {
+    const std::size_t f = faceAt(q);
     const auto loop = loop_vertices.subspan(loop_offsets[f], loop_offsets[f + 1] - loop_offsets[f]);
     const Index fi = static_cast<Index>(f);
     if (loop.size() < 3)
@@ -213,7 +226,8 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
   std::vector<OrientedEdge> face_edges(total);
   std::vector<std::uint32_t> edge_face_count;
   edge_face_count.reserve(total / 2 + 1);
-  for (std::size_t f = 0; f < nf; ++f) {
+  for (std::size_t q = 0; q < nf; ++q) {
+    const std::size_t f = faceAt(q);
     const std::size_t b = loop_offsets[f], m = loop_offsets[f + 1] - b;
     for (std::size_t i = 0; i < m; ++i) {
       const VertexId a(loop_vertices[b + i]), h(loop_vertices[b + (i + 1) % m]);
@@ -268,11 +282,17 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
   for (std::size_t e = 0; e < ne; ++e) ef_start[e + 1] = ef_start[e] + edge_face_count[e];
   std::vector<FaceId> ef(ef_start[ne]);
   std::fill(edge_face_count.begin(), edge_face_count.end(), 0);
-  for (std::size_t f = 0; f < nf; ++f)
+  for (std::size_t q = 0; q < nf; ++q) {
+    const std::size_t f = faceAt(q);
     for (Index k = loop_offsets[f]; k < loop_offsets[f + 1]; ++k) {
       const Index e = face_edges[k].handle().index();
       ef[ef_start[e] + edge_face_count[e]++] = FaceId(static_cast<Index>(f));
     }
+  }
+  if (!face_order.empty())  // filled in visiting order: back to face order
+    for (std::size_t e = 0; e < ne; ++e)
+      std::sort(ef.begin() + static_cast<std::ptrdiff_t>(ef_start[e]),
+                ef.begin() + static_cast<std::ptrdiff_t>(ef_start[e + 1]));
   c.edge_faces_.reserve(ne, ef.size());
   for (std::size_t e = 0; e < ne; ++e)
     c.edge_faces_.pushList(std::span<const FaceId>(ef.data() + ef_start[e], edge_face_count[e]));

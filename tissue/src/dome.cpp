@@ -76,7 +76,8 @@ Tissue domeTissue(std::span<const Vec3> footprint_seeds, const Dome& dome, const
   detail::ClippedCells2 cells =
       detail::clipVoronoi2(seeds, domain, options.duplicate_tolerance, detail::CellOutput::Complex);
   for (Vec3& p : cells.positions) p = dome.lift(p);
-  return buildPolygonTissue(std::move(cells.positions), cells.offsets, cells.loops, Embedding::Surface);
+  return buildPolygonTissue(std::move(cells.positions), cells.offsets, cells.loops, Embedding::Surface,
+                            cells.order);
 }
 
 }  // namespace tessella

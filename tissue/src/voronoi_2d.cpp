@@ -14,6 +14,8 @@
 #include <utility>
 #include <vector>
 
+#include <omp.h>
+
 // CGAL headers trip -Wnull-dereference in GCC 12 optimised builds (in CGAL's
 // own code); silence it for them only.
 #pragma GCC diagnostic push
@@ -179,8 +181,13 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
   const bool complex = output == CellOutput::Complex;
   ClippedCells2 out;
   out.centroids.resize(n);
-  std::vector<std::vector<Index>> keys(complex ? n : 0);  // interior cells: triangle groups
-  std::vector<std::vector<Vec2>> clipped(n);              // boundary cells: clipped polygon
+  // Interior cells' loops of triangle groups go to per-thread flat buffers
+  // (no allocation per cell): cell i is buffer loop_buf[i] from loop_at[i],
+  // loop_len[i] long. Boundary cells keep their clipped polygon.
+  const int nthreads = omp_get_max_threads();
+  std::vector<std::vector<Index>> buffers(complex ? nthreads : 0);
+  std::vector<std::uint32_t> loop_buf(complex ? n : 0), loop_at(complex ? n : 0), loop_len(complex ? n : 0);
+  std::vector<std::vector<Vec2>> clipped(complex ? n : 0);  // boundary cells: clipped polygon
   std::vector<std::uint8_t> vanished(n, 0);
   std::vector<Index> duplicate(n, kInvalidIndex);  // a neighbour closer than duplicate_distance
   const double d2 = std::pow(duplicate_tolerance * domain.scale, 2);
@@ -190,6 +197,8 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
     std::vector<Vec2> poly, scratch;
     std::vector<double> side;
     std::vector<Index> loop;
+    const int me = omp_get_thread_num();
+    if (complex) buffers[me].reserve(7 * n / nthreads + 1024);
 #pragma omp for schedule(dynamic, 1024)
     for (std::int64_t q = 0; q < ns; ++q) {
       const Index i = order[q];
@@ -213,7 +222,13 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
         for (Index g : loop) poly.push_back(cc[g]);
         const Vec2 c = polygonCentroid(poly);
         out.centroids[i] = Vec3(c.x(), c.y(), 0);
-        if (complex) keys[i] = loop;
+        if (complex) {
+          std::vector<Index>& buf = buffers[me];
+          loop_buf[i] = static_cast<std::uint32_t>(me);
+          loop_at[i] = static_cast<std::uint32_t>(buf.size());
+          loop_len[i] = static_cast<std::uint32_t>(loop.size());
+          buf.insert(buf.end(), loop.begin(), loop.end());
+        }
         continue;
       }
       poly = start;
@@ -259,8 +274,10 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
   VertexWelder welder(Vec3(domain.lo.x(), domain.lo.y(), 0), weld, 0);
   std::vector<Index> key_of_weld;
   std::vector<Vec3> extra;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (clipped[i].empty()) continue;
+  std::vector<Index> boundary;  // boundary cells in seed order
+  for (std::size_t i = 0; i < n; ++i)
+    if (!clipped[i].empty()) boundary.push_back(static_cast<Index>(i));
+  for (Index i : boundary) {
     auto fc = dt.incident_faces(handle[i]), done = fc;
     do {
       const Index t = fc->info();
@@ -271,9 +288,11 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
       if (w == key_of_weld.size()) key_of_weld.push_back(group[t]);
     } while (++fc != done);
   }
-  for (std::size_t i = 0; i < n; ++i) {
-    if (clipped[i].empty()) continue;
-    std::vector<Index>& loop = keys[i];
+  std::vector<Index> boundary_keys;  // boundary cell b's loop from boundary_at[b]
+  std::vector<std::uint32_t> boundary_at(boundary.size() + 1, 0);
+  for (std::size_t b = 0; b < boundary.size(); ++b) {
+    const Index i = boundary[b];
+    const std::size_t first = boundary_keys.size();
     for (const Vec2& p : clipped[i]) {
       const Index w = welder.weld(Vec3(p.x(), p.y(), 0));
       if (w == key_of_weld.size()) {
@@ -281,29 +300,47 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
         extra.push_back(Vec3(p.x(), p.y(), 0));
       }
       const Index k = key_of_weld[w];
-      if (loop.empty() || loop.back() != k) loop.push_back(k);
+      if (boundary_keys.size() == first || boundary_keys.back() != k) boundary_keys.push_back(k);
     }
-    while (loop.size() > 1 && loop.back() == loop.front()) loop.pop_back();
-    if (loop.size() < 3)
+    while (boundary_keys.size() > first + 1 && boundary_keys.back() == boundary_keys[first])
+      boundary_keys.pop_back();
+    if (boundary_keys.size() - first < 3)
       throw GeometryError("the Voronoi cell of " + describeSeed(i, seeds[i]) +
                           " collapsed to fewer than 3 vertices when its vertices were welded");
+    boundary_at[b + 1] = static_cast<std::uint32_t>(boundary_keys.size());
+    loop_buf[i] = static_cast<std::uint32_t>(nthreads);  // the boundary buffer
+    loop_at[i] = boundary_at[b];
+    loop_len[i] = boundary_at[b + 1] - boundary_at[b];
   }
-  // Vertices numbered by first use, cell by cell.
+  // Vertices numbered in key order: triangles in CGAL's storage order (along
+  // its spatial sort), then the clipped points. Neighbouring vertices get
+  // nearby numbers whatever the seeds' order, which keeps building the complex
+  // cache-friendly; the numbering does not depend on the thread count.
   std::vector<Index> id(tri.size() + extra.size(), kInvalidIndex);
-  out.offsets.reserve(n + 1);
-  out.offsets.push_back(0);
-  out.loops.reserve(7 * n);
+  for (const auto& buf : buffers)
+    for (Index k : buf) id[k] = 0;
+  for (Index k : boundary_keys) id[k] = 0;
   out.positions.reserve(2 * n + extra.size());
-  for (std::size_t i = 0; i < n; ++i) {
-    for (Index k : keys[i]) {
-      if (id[k] == kInvalidIndex) {
-        id[k] = static_cast<Index>(out.positions.size());
-        out.positions.push_back(k < tri.size() ? Vec3(cc[k].x(), cc[k].y(), 0) : extra[k - tri.size()]);
-      }
-      out.loops.push_back(id[k]);
+  for (std::size_t k = 0; k < id.size(); ++k)
+    if (id[k] == 0) {
+      id[k] = static_cast<Index>(out.positions.size());
+      out.positions.push_back(k < tri.size() ? Vec3(cc[k].x(), cc[k].y(), 0) : extra[k - tri.size()]);
     }
-    out.offsets.push_back(static_cast<Index>(out.loops.size()));
+  for (auto& buf : buffers)
+    for (Index& k : buf) k = id[k];
+  for (Index& k : boundary_keys) k = id[k];
+  buffers.push_back(std::move(boundary_keys));
+  // Cell k = seed k.
+  out.offsets.resize(n + 1);
+  out.offsets[0] = 0;
+  for (std::size_t i = 0; i < n; ++i) out.offsets[i + 1] = out.offsets[i] + loop_len[i];
+  out.loops.resize(out.offsets[n]);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t i = 0; i < ns; ++i) {
+    const Index* src = buffers[loop_buf[i]].data() + loop_at[i];
+    std::copy(src, src + loop_len[i], out.loops.begin() + out.offsets[i]);
   }
+  out.order = std::move(order);
   return out;
 }
 
@@ -323,7 +360,8 @@ Tissue planarVoronoi(std::span<const Vec3> seeds, const Domain& d, const Voronoi
   }
   detail::ClippedCells2 cells =
       detail::clipVoronoi2(seeds, domain, options.duplicate_tolerance, detail::CellOutput::Complex);
-  return buildPolygonTissue(std::move(cells.positions), cells.offsets, cells.loops, Embedding::Planar);
+  return buildPolygonTissue(std::move(cells.positions), cells.offsets, cells.loops, Embedding::Planar,
+                            cells.order);
 }
 
 }  // namespace

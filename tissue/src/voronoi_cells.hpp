@@ -12,10 +12,11 @@
 namespace tessella::detail {
 
 struct ClippedCells2 {
-  std::vector<Vec3> positions;  // vertices (z = 0), numbered by first use
+  std::vector<Vec3> positions;  // vertices (z = 0), numbered along a spatial sort
   std::vector<Index> offsets;   // cell k = seed k: loops[offsets[k] .. offsets[k+1]),
   std::vector<Index> loops;     //   counter-clockwise
   std::vector<Vec3> centroids;  // of each clipped cell
+  std::vector<Index> order;     // the cells along a spatial sort (to build the complex in)
 };
 
 struct ClippedCells3 {
