@@ -133,15 +133,15 @@ void copyFirstComponent(vtkDataArray* array, Out* out) {
 }
 
 template <typename T>
-void addScalarColumn(PropertyStore& store, const std::string& name, vtkDataArray* array) {
-  auto& column = store.add<T>(name, T{}, DivisionPolicy::Copy);
+void addScalarColumn(PropertyStore& store, const std::string& name, vtkDataArray* array, DivisionPolicy policy) {
+  auto& column = store.add<T>(name, T{}, policy);
   column.values().resize(static_cast<std::size_t>(array->GetNumberOfTuples()));
   copyFirstComponent(array, column.values().data());
 }
 
 template <typename T>
-void addTupleColumn(PropertyStore& store, const std::string& name, vtkDataArray* array) {
-  auto& column = store.add<T>(name, Tuple<T>::zero(), DivisionPolicy::Copy);
+void addTupleColumn(PropertyStore& store, const std::string& name, vtkDataArray* array, DivisionPolicy policy) {
+  auto& column = store.add<T>(name, Tuple<T>::zero(), policy);
   const vtkIdType n = array->GetNumberOfTuples();
   column.values().resize(static_cast<std::size_t>(n), Tuple<T>::zero());
   double tuple[9];
@@ -171,33 +171,33 @@ vtkSmartPointer<vtkDataArray> columnToArray(const PropertyColumnBase& column, co
 }
 
 void addColumnFromArray(PropertyStore& store, const std::string& name, vtkDataArray* array,
-                        const std::string& where) {
+                        const std::string& where, DivisionPolicy policy) {
   const int components = array->GetNumberOfComponents();
   const int type = array->GetDataType();
   if (components == 1) {
     switch (type) {
-      case VTK_DOUBLE: return addScalarColumn<double>(store, name, array);
-      case VTK_FLOAT: return addScalarColumn<float>(store, name, array);
+      case VTK_DOUBLE: return addScalarColumn<double>(store, name, array, policy);
+      case VTK_FLOAT: return addScalarColumn<float>(store, name, array, policy);
       case VTK_CHAR:
-      case VTK_SIGNED_CHAR: return addScalarColumn<std::int8_t>(store, name, array);
-      case VTK_UNSIGNED_CHAR: return addScalarColumn<std::uint8_t>(store, name, array);
-      case VTK_SHORT: return addScalarColumn<std::int16_t>(store, name, array);
-      case VTK_UNSIGNED_SHORT: return addScalarColumn<std::uint16_t>(store, name, array);
-      case VTK_INT: return addScalarColumn<std::int32_t>(store, name, array);
-      case VTK_UNSIGNED_INT: return addScalarColumn<std::uint32_t>(store, name, array);
+      case VTK_SIGNED_CHAR: return addScalarColumn<std::int8_t>(store, name, array, policy);
+      case VTK_UNSIGNED_CHAR: return addScalarColumn<std::uint8_t>(store, name, array, policy);
+      case VTK_SHORT: return addScalarColumn<std::int16_t>(store, name, array, policy);
+      case VTK_UNSIGNED_SHORT: return addScalarColumn<std::uint16_t>(store, name, array, policy);
+      case VTK_INT: return addScalarColumn<std::int32_t>(store, name, array, policy);
+      case VTK_UNSIGNED_INT: return addScalarColumn<std::uint32_t>(store, name, array, policy);
       case VTK_LONG:
       case VTK_LONG_LONG:
-      case VTK_ID_TYPE: return addScalarColumn<std::int64_t>(store, name, array);
+      case VTK_ID_TYPE: return addScalarColumn<std::int64_t>(store, name, array, policy);
       case VTK_UNSIGNED_LONG:
-      case VTK_UNSIGNED_LONG_LONG: return addScalarColumn<std::uint64_t>(store, name, array);
+      case VTK_UNSIGNED_LONG_LONG: return addScalarColumn<std::uint64_t>(store, name, array, policy);
       default: break;
     }
   } else if (type == VTK_DOUBLE || type == VTK_FLOAT) {
     switch (components) {
-      case 2: return addTupleColumn<Eigen::Vector2d>(store, name, array);
-      case 3: return addTupleColumn<Vec3>(store, name, array);
-      case 6: return addTupleColumn<Sym3>(store, name, array);
-      case 9: return addTupleColumn<Mat3>(store, name, array);
+      case 2: return addTupleColumn<Eigen::Vector2d>(store, name, array, policy);
+      case 3: return addTupleColumn<Vec3>(store, name, array, policy);
+      case 6: return addTupleColumn<Sym3>(store, name, array, policy);
+      case 9: return addTupleColumn<Mat3>(store, name, array, policy);
       default: break;
     }
   }

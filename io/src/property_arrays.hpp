@@ -39,11 +39,12 @@ RowSelection liveRows(const std::vector<std::uint8_t>& alive_flags, std::size_t 
 /// point straight into the column (zero copy): the column must outlive them.
 vtkSmartPointer<vtkDataArray> columnToArray(const PropertyColumnBase& column, const RowSelection& rows);
 
-/// Registers a Copy-policy column `name` in `store` with the type the array
-/// stands for and its values (row i -> slot i). Throws InputError starting
-/// with `where` when the array's type or component count has no column type.
+/// Registers a column `name` with division policy `policy` in `store`, with
+/// the type the array stands for and its values (row i -> slot i). Throws
+/// InputError starting with `where` when the array's type or component count
+/// has no column type.
 void addColumnFromArray(PropertyStore& store, const std::string& name, vtkDataArray* array,
-                        const std::string& where);
+                        const std::string& where, DivisionPolicy policy);
 
 /// Exact copies of an integer or floating array's first component.
 std::vector<std::int64_t> integerValues(vtkDataArray* array);

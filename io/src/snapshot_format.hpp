@@ -24,6 +24,10 @@ inline constexpr const char* kNextLineageArray = "tessella_next_lineage_id";
 /// Which cell-data / point-data arrays are properties (the rest are derived).
 inline constexpr const char* kCellPropertiesArray = "tessella_cell_properties";
 inline constexpr const char* kVertexPropertiesArray = "tessella_vertex_properties";
+/// Division policy of each listed property, in the same order ("copy",
+/// "split_by_measure", "reset", "custom"); absent in files before it existed.
+inline constexpr const char* kCellPoliciesArray = "tessella_cell_property_policies";
+inline constexpr const char* kVertexPoliciesArray = "tessella_vertex_property_policies";
 
 /// Derived cell measures, written for ParaView and never read back.
 inline constexpr const char* kAreaArray = "area";

@@ -172,9 +172,34 @@ void polyhedraOf(vtkUnstructuredGrid* grid, const Source& src, std::vector<std::
 }
 
 // Every array listed as a property of the store, restored (Copy policy).
-void restoreProperties(PropertyStore& store, vtkDataSetAttributes* data, const std::vector<std::string>& names,
-                       vtkIdType expected, const char* kind, const Source& src) {
-  for (const std::string& name : names) {
+/// The division policy recorded for each listed property; Copy for files
+/// written before policies were recorded. A custom policy's function cannot
+/// be saved, so such a column divides by copying after a restart.
+std::vector<DivisionPolicy> policiesOf(vtkFieldData* field, const char* list_name, std::size_t count,
+                                       const char* kind, const Source& src) {
+  std::vector<DivisionPolicy> policies(count, DivisionPolicy::Copy);
+  if (!field->GetAbstractArray(list_name)) return policies;
+  const std::vector<std::string> tags = stringList(field, list_name, src);
+  if (tags.size() != count)
+    src.fail(std::string(list_name) + " lists " + std::to_string(tags.size()) + " policies for " +
+             std::to_string(count) + " " + kind + " properties");
+  for (std::size_t i = 0; i < count; ++i) {
+    if (tags[i] == "copy" || tags[i] == "custom") policies[i] = DivisionPolicy::Copy;
+    else if (tags[i] == "split_by_measure") policies[i] = DivisionPolicy::SplitByMeasure;
+    else if (tags[i] == "reset") policies[i] = DivisionPolicy::Reset;
+    else
+      src.fail(std::string(list_name) + "[" + std::to_string(i) + "] = '" + tags[i] +
+               "' is not a division policy (copy, split_by_measure, reset, custom)");
+  }
+  return policies;
+}
+
+void restoreProperties(PropertyStore& store, vtkDataSetAttributes* data, vtkFieldData* field, const char* list_name,
+                       const char* policies_name, vtkIdType expected, const char* kind, const Source& src) {
+  const std::vector<std::string> names = stringList(field, list_name, src);
+  const std::vector<DivisionPolicy> policies = policiesOf(field, policies_name, names.size(), kind, src);
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    const std::string& name = names[i];
     if (name == Tissue::kLineageName || name == Tissue::kParentName || name == Tissue::kBirthTimeName) continue;
     vtkDataArray* array = data->GetArray(name.c_str());
     if (!array) src.fail(std::string(kind) + " property '" + name + "' is listed but its array is missing");
@@ -182,7 +207,7 @@ void restoreProperties(PropertyStore& store, vtkDataSetAttributes* data, const s
       src.fail(std::string(kind) + " array '" + name + "' has " + std::to_string(array->GetNumberOfTuples()) +
                " values for " + std::to_string(expected) + " " + kind + "s");
     if (store.has(name)) src.fail(std::string(kind) + " property '" + name + "' is listed twice");
-    detail::addColumnFromArray(store, name, array, "'" + src.path + "'");
+    detail::addColumnFromArray(store, name, array, "'" + src.path + "'", policies[i]);
   }
 }
 
@@ -263,10 +288,10 @@ Tissue readTissueVtu(const std::string& path) {
     src.fail("the cells do not form a valid tissue: " + report.message);
   tissue.setTime(time);
 
-  restoreProperties(tissue.cellProperties(), grid->GetCellData(), stringList(field, detail::kCellPropertiesArray, src),
-                    grid->GetNumberOfCells(), "cell", src);
-  restoreProperties(tissue.properties(0), grid->GetPointData(), stringList(field, detail::kVertexPropertiesArray, src),
-                    grid->GetNumberOfPoints(), "vertex", src);
+  restoreProperties(tissue.cellProperties(), grid->GetCellData(), field, detail::kCellPropertiesArray,
+                    detail::kCellPoliciesArray, grid->GetNumberOfCells(), "cell", src);
+  restoreProperties(tissue.properties(0), grid->GetPointData(), field, detail::kVertexPropertiesArray,
+                    detail::kVertexPoliciesArray, grid->GetNumberOfPoints(), "vertex", src);
   restoreLineage(tissue, grid->GetCellData(), grid->GetNumberOfCells(), src);
   // Ids of cells that were removed before the save stay used: a restart must
   // not hand them out again. Optional, files of other writers may lack it.

@@ -166,18 +166,24 @@ vtkSmartPointer<vtkDoubleArray> cellMeasures(const Tissue& t, const RowSelection
 }
 
 // Every writable column as an array; returns the names written.
-vtkSmartPointer<vtkStringArray> addProperties(vtkDataSetAttributes* data, const PropertyStore& store,
-                                              const RowSelection& rows, const char* list_name) {
+/// Adds the writable columns as arrays; lists their names and policies in
+/// the field data, so that a restart divides them as the run did.
+void addProperties(vtkDataSetAttributes* data, vtkFieldData* field, const PropertyStore& store,
+                   const RowSelection& rows, const char* list_name, const char* policies_name) {
   auto names = vtkSmartPointer<vtkStringArray>::New();
   names->SetName(list_name);
+  auto policies = vtkSmartPointer<vtkStringArray>::New();
+  policies->SetName(policies_name);
   for (std::size_t i = 0; i < store.numColumns(); ++i) {
     const PropertyColumnBase& column = store.column(i);
     if (auto array = detail::columnToArray(column, rows)) {
       data->AddArray(array);
       names->InsertNextValue(column.name());
+      policies->InsertNextValue(divisionPolicyName(column.policy()));
     }
   }
-  return names;
+  field->AddArray(names);
+  field->AddArray(policies);
 }
 
 template <typename ArrayT, typename T>
@@ -204,10 +210,10 @@ void writeTissueVtu(const Tissue& tissue, const std::string& path, const VtuOpti
     setPolyhedronCells(grid, tissue, cell_rows, PointIdMap{point_ids});
 
   vtkFieldData* field = grid->GetFieldData();
-  field->AddArray(addProperties(grid->GetCellData(), tissue.cellProperties(), cell_rows,
-                                detail::kCellPropertiesArray));
-  field->AddArray(addProperties(grid->GetPointData(), tissue.properties(0), vertex_rows,
-                                detail::kVertexPropertiesArray));
+  addProperties(grid->GetCellData(), field, tissue.cellProperties(), cell_rows, detail::kCellPropertiesArray,
+                detail::kCellPoliciesArray);
+  addProperties(grid->GetPointData(), field, tissue.properties(0), vertex_rows, detail::kVertexPropertiesArray,
+                detail::kVertexPoliciesArray);
   // The derived measure, unless a property already uses its name (the
   // property list in the field data tells readers which is which).
   const char* measure_name = tissue.dim() == 2 ? detail::kAreaArray : detail::kVolumeArray;

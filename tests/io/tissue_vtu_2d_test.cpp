@@ -187,6 +187,43 @@ TEST_CASE("the ids of removed cells are not handed out again after reading back"
   CHECK(new_cells == 2);
 }
 
+TEST_CASE("division policies are saved, so a restored tissue divides its properties as before", "[io][vtu]") {
+  TempDir dir;
+  Tissue t = rectangularGrid(2, 2);
+  auto& amount = t.cellProperties().add<double>("amount", 0.0, DivisionPolicy::SplitByMeasure);
+  auto& marker = t.cellProperties().add<std::int32_t>("marker", 0, DivisionPolicy::Reset);
+  auto& type = t.cellProperties().add<std::int32_t>("type", 0, DivisionPolicy::Copy);
+  for (CellId c : t.cells()) {
+    amount[c] = 8.0;
+    marker[c] = 5;
+    type[c] = 3;
+  }
+  const std::string path = dir.file("policies.vtu");
+  writeTissueVtu(t, path);
+  Tissue r = readTissueVtu(path);
+  CHECK(r.cellProperties().get<double>("amount").policy() == DivisionPolicy::SplitByMeasure);
+  CHECK(r.cellProperties().get<std::int32_t>("marker").policy() == DivisionPolicy::Reset);
+  CHECK(r.cellProperties().get<std::int32_t>("type").policy() == DivisionPolicy::Copy);
+
+  // A quarter/three-quarter cut: the amount splits by area, the marker resets.
+  const CellId c = *r.cells().begin();
+  const Vec3 centroid = cellCentroid(r, c);
+  r.splitCell(c, Plane{centroid + Vec3(0.25, 0, 0), Vec3(1, 0, 0)});
+  double total = 0;
+  int fresh = 0;
+  for (CellId d : r.cells()) {
+    const double a = r.cellProperties().get<double>("amount")[d];
+    total += a;
+    if (r.parentId(d) < 0) continue;
+    ++fresh;
+    CHECK(a == Approx(8.0 * cellMeasure(r, d)).epsilon(1e-12));
+    CHECK(r.cellProperties().get<std::int32_t>("marker")[d] == 0);
+    CHECK(r.cellProperties().get<std::int32_t>("type")[d] == 3);
+  }
+  CHECK(fresh == 2);
+  CHECK(total == Approx(32.0).epsilon(1e-12));
+}
+
 TEST_CASE("surface tissue keeps its 3D points, embedding and fan areas", "[io][vtu]") {
   TempDir dir;
   // A sheet folded along y = 1: a flat unit square and a square tilted 45 degrees.
