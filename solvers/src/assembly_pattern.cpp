@@ -79,21 +79,28 @@ AssemblyPattern::AssemblyPattern(const FeMesh& mesh) : dim_(mesh.dim), num_eleme
       for (int a = 0; a < nn; ++a) node_elems[static_cast<std::size_t>(fill[static_cast<std::size_t>(mesh.elements(e, a))]++)] = e;
   }
 
-  // Column j holds the nodes sharing an element with j (sorted): count, then fill.
-  auto neighbours = [&](int j, std::vector<int>& buf) {
+  // Column j holds the nodes sharing an element with j (sorted): count, then
+  // fill. A per-thread marker (last column that saw node i) drops duplicates
+  // before the sort.
+  auto neighbours = [&](int j, std::vector<int>& buf, std::vector<int>& seen) {
     buf.clear();
     for (int p = node_ptr[static_cast<std::size_t>(j)]; p < node_ptr[static_cast<std::size_t>(j) + 1]; ++p)
-      for (int a = 0; a < nn; ++a) buf.push_back(mesh.elements(node_elems[static_cast<std::size_t>(p)], a));
+      for (int a = 0; a < nn; ++a) {
+        const int i = mesh.elements(node_elems[static_cast<std::size_t>(p)], a);
+        if (seen[static_cast<std::size_t>(i)] != j) {
+          seen[static_cast<std::size_t>(i)] = j;
+          buf.push_back(i);
+        }
+      }
     std::sort(buf.begin(), buf.end());
-    buf.erase(std::unique(buf.begin(), buf.end()), buf.end());
   };
   std::vector<int> outer(static_cast<std::size_t>(n) + 1, 0);
 #pragma omp parallel
   {
-    std::vector<int> buf;
+    std::vector<int> buf, seen(static_cast<std::size_t>(n), -1);
 #pragma omp for schedule(static)
     for (int j = 0; j < n; ++j) {
-      neighbours(j, buf);
+      neighbours(j, buf, seen);
       outer[static_cast<std::size_t>(j) + 1] = static_cast<int>(buf.size());
     }
   }
@@ -110,10 +117,10 @@ AssemblyPattern::AssemblyPattern(const FeMesh& mesh) : dim_(mesh.dim), num_eleme
   int* inner = structure_.innerIndexPtr();
 #pragma omp parallel
   {
-    std::vector<int> buf;
+    std::vector<int> buf, seen(static_cast<std::size_t>(n), -1);
 #pragma omp for schedule(static)
     for (int j = 0; j < n; ++j) {
-      neighbours(j, buf);
+      neighbours(j, buf, seen);
       std::copy(buf.begin(), buf.end(), inner + outer[static_cast<std::size_t>(j)]);
     }
   }
