@@ -1,7 +1,10 @@
 #pragma once
 // P1 finite-element assembly on an FeMesh (triangles in R^3 or tetrahedra).
 // All routines are OpenMP-parallel and deterministic: the result is
-// bit-identical for any number of threads (see src/assemble_detail.hpp).
+// bit-identical for any number of threads (mass and stiffness: see
+// assembly_pattern.hpp; facet matrices: src/assemble_detail.hpp). Mass and
+// stiffness build a sparsity pattern per call: to assemble repeatedly on one
+// mesh, keep an AssemblyPattern.
 // Coefficients are per element; use cellToElement() to map per-cell data.
 
 #include "tessella/mesh/fe_mesh.hpp"
