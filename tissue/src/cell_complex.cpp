@@ -226,6 +226,10 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
   std::vector<OrientedEdge> face_edges(total);
   std::vector<std::uint32_t> edge_face_count;
   edge_face_count.reserve(total / 2 + 1);
+  // (edge, face) of every loop position in visiting order: read back
+  // sequentially to fill edge -> faces without revisiting the loops.
+  std::vector<std::pair<Index, Index>> uses;
+  uses.reserve(total);
   for (std::size_t q = 0; q < nf; ++q) {
     const std::size_t f = faceAt(q);
     const std::size_t b = loop_offsets[f], m = loop_offsets[f + 1] - b;
@@ -254,6 +258,7 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
                                 ") already bounds two faces",
                             {2, static_cast<Index>(f)});
       ++edge_face_count[e.index()];
+      uses.emplace_back(e.index(), static_cast<Index>(f));
       face_edges[b + i] = OrientedEdge(e, c.edge_vertices_[e.index()][0] != a);
     }
   }
@@ -282,13 +287,7 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
   for (std::size_t e = 0; e < ne; ++e) ef_start[e + 1] = ef_start[e] + edge_face_count[e];
   std::vector<FaceId> ef(ef_start[ne]);
   std::fill(edge_face_count.begin(), edge_face_count.end(), 0);
-  for (std::size_t q = 0; q < nf; ++q) {
-    const std::size_t f = faceAt(q);
-    for (Index k = loop_offsets[f]; k < loop_offsets[f + 1]; ++k) {
-      const Index e = face_edges[k].handle().index();
-      ef[ef_start[e] + edge_face_count[e]++] = FaceId(static_cast<Index>(f));
-    }
-  }
+  for (const auto& [e, f] : uses) ef[ef_start[e] + edge_face_count[e]++] = FaceId(f);
   if (!face_order.empty())  // filled in visiting order: back to face order
     for (std::size_t e = 0; e < ne; ++e)
       std::sort(ef.begin() + static_cast<std::ptrdiff_t>(ef_start[e]),
