@@ -97,6 +97,17 @@ bool forOverlappingPairs(const std::vector<std::array<Vec3, 2>>& boxes, const Te
 K::Point_2 p2(const Vec3& p) { return {p.x(), p.y()}; }
 K::Point_3 p3(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
 
+double loopPerimeter(const std::vector<Vec3>& loop) {
+  double perimeter = 0.0;
+  for (std::size_t i = 0; i < loop.size(); ++i) perimeter += (loop[(i + 1) % loop.size()] - loop[i]).norm();
+  return perimeter;
+}
+
+/// A polygon is degenerate when it is thinner than the length tolerance:
+/// its mean width 2 * area / perimeter (the width of a sliver) is compared,
+/// not its area, so small but well-shaped walls of a large tissue pass.
+bool tooThin(double area, double perimeter, double tol) { return !(2.0 * area > tol * perimeter); }
+
 MeshabilityReport checkEdges(const Tissue& t, double tol) {
   const auto& topo = t.topology();
   for (EdgeId e : t.edges()) {
@@ -113,7 +124,7 @@ MeshabilityReport checkEdges(const Tissue& t, double tol) {
 }
 
 /// 2D planar tissues: z = 0, counter-clockwise cells, no crossing walls.
-MeshabilityReport checkPlanar(const Tissue& t, double tol, double scale) {
+MeshabilityReport checkPlanar(const Tissue& t, double tol) {
   for (VertexId v : t.vertices())
     if (std::abs(t.position(v).z()) > tol)
       return defect("vertex " + std::to_string(v.index()) + " of a planar tissue is off the z = 0 plane: " +
@@ -126,8 +137,9 @@ MeshabilityReport checkPlanar(const Tissue& t, double tol, double scale) {
       return defect("cell " + std::to_string(c.index()) + " is inverted: its loop runs clockwise (signed area " +
                         num(signed_area) + ")",
                     ElementId{2, c.index()});
-    if (!(signed_area > tol * scale))
-      return defect("cell " + std::to_string(c.index()) + " has zero area (" + num(signed_area) + ")",
+    if (tooThin(signed_area, loopPerimeter(loop), tol))
+      return defect("cell " + std::to_string(c.index()) + " has zero area (" + num(signed_area) +
+                        "; thinner than the tolerance " + num(tol) + ")",
                     ElementId{2, c.index()});
   }
   // Wall edges may meet only at shared vertices.
@@ -169,12 +181,13 @@ MeshabilityReport checkPlanar(const Tissue& t, double tol, double scale) {
 }
 
 /// Curved sheets: each cell's fan surface (which the mesh reproduces) must not fold.
-MeshabilityReport checkSurface(const Tissue& t, double tol, double scale) {
+MeshabilityReport checkSurface(const Tissue& t, double tol) {
   for (CellId c : t.cells()) {
     const auto loop = loopPositions(t, t.cellFace(c));
     const FanSurface fan = fanSurface(loop);
-    if (!(fan.area > tol * scale))
-      return defect("cell " + std::to_string(c.index()) + " has zero area (" + num(fan.area) + ")",
+    if (tooThin(fan.area, loopPerimeter(loop), tol))
+      return defect("cell " + std::to_string(c.index()) + " has zero area (" + num(fan.area) +
+                        "; thinner than the tolerance " + num(tol) + ")",
                     ElementId{2, c.index()});
     if (!(fan.min_triangle_area > 1e-12 * fan.area)) {
       const auto verts = t.topology().faceVertices(t.cellFace(c));
@@ -229,9 +242,9 @@ MeshabilityReport triangulateWalls(const Tissue& t, double tolerance, WallTriang
     const auto verts = t.topology().faceVertices(f);
     const auto loop = loopPositions(t, f);
     const FanSurface fan = fanSurface(loop);
-    if (!(fan.area > tol * scale))
+    if (tooThin(fan.area, loopPerimeter(loop), tol))
       return defect("wall " + std::to_string(w.index()) + " " + wallCellsText(t, w) + " has zero area (" +
-                        num(fan.area) + ")",
+                        num(fan.area) + "; thinner than the tolerance " + num(tol) + ")",
                     ElementId{2, w.index()});
     out.wall_normal[w.index()] = fan.normal;
     out.points[out.centerPoint(w)] = fan.center;
@@ -273,18 +286,21 @@ MeshabilityReport checkVolumeGeometry(const Tissue& t, const MeshOptions& option
   const auto& topo = t.topology();
   for (CellId c : t.cells()) {
     const VolumeId vol = handle_cast<VolumeId>(c);
-    double volume = 0.0;
+    double volume = 0.0, surface = 0.0;
     for (OrientedFace of : topo.volumeFaces(vol))
       for (const auto& tri : walls.wall_triangles[of.handle().index()]) {
-        const double v6 = walls.points[tri[0]].dot(walls.points[tri[1]].cross(walls.points[tri[2]]));
-        volume += of.sign() * v6 / 6.0;
+        const Vec3 &a = walls.points[tri[0]], &b = walls.points[tri[1]], &d = walls.points[tri[2]];
+        volume += of.sign() * a.dot(b.cross(d)) / 6.0;
+        surface += 0.5 * (b - a).cross(d - a).norm();
       }
     if (volume < 0.0)
       return defect("cell " + std::to_string(c.index()) + " is inverted: its volume is negative (" +
                         num(volume) + ")",
                     ElementId{3, c.index()});
-    if (!(volume > tol * scale * scale))
-      return defect("cell " + std::to_string(c.index()) + " has zero volume (" + num(volume) + ")",
+    // Mean thickness 2 * volume / surface, as for polygons: a flat cell fails, a small one passes.
+    if (!(2.0 * volume > tol * surface))
+      return defect("cell " + std::to_string(c.index()) + " has zero volume (" + num(volume) +
+                        "; thinner than the tolerance " + num(tol) + ")",
                     ElementId{3, c.index()});
   }
   // Wall triangles may meet only at shared vertices and edges.
@@ -359,8 +375,8 @@ MeshabilityReport findGeometryDefects(const Tissue& tissue, const MeshOptions& o
     return checkVolumeGeometry(tissue, options, walls);
   }
   if (auto r = checkEdges(tissue, tol); !r) return r;
-  return tissue.embedding() == Embedding::Planar ? checkPlanar(tissue, tol, scale)
-                                                  : checkSurface(tissue, tol, scale);
+  return tissue.embedding() == Embedding::Planar ? checkPlanar(tissue, tol)
+                                                  : checkSurface(tissue, tol);
 }
 
 void checkMeshable(const Tissue& tissue, const MeshOptions& options) {

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include "mesh_test_support.hpp"
+#include "tessella/mesh/geometry_check.hpp"
 #include "tessella/mesh/mesh_tissue.hpp"
 #include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/errors.hpp"
@@ -158,4 +159,28 @@ TEST_CASE("mesh options are validated", "[mesh][errors]") {
   CHECK_THROWS_AS(meshTissue(boxGrid(1, 1, 1), o), InputError);
   CHECK_THROWS_AS(meshVolumeTissue(t), InputError);
   CHECK_THROWS_AS(meshPlanarTissue(boxGrid(1, 1, 1)), InputError);
+}
+
+TEST_CASE("the zero-size check refuses slivers, not small well-shaped cells", "[mesh][planar][errors]") {
+  // A 1e-5 square in the corner of a 100 x 100 tissue: its area (1e-10) is
+  // far below tolerance x diagonal^2 (2e-6), but it is a fine square.
+  const double s = 1e-5;
+  const std::vector<Vec3> p = {{0, 0, 0}, {s, 0, 0}, {s, s, 0}, {0, s, 0}, {100, 0, 0}, {100, 100, 0}, {0, 100, 0}};
+  const Tissue small = buildPolygonTissue(p, {{0, 1, 2, 3}, {1, 4, 5, 6, 3, 2}});
+  const MeshabilityReport fine = findGeometryDefects(small);
+  INFO(fine.message);
+  REQUIRE(fine.ok);
+  const FeMesh mesh = meshTissue(small);
+  const auto areas = cellMeasuresOfMesh(mesh, small.cellSlots());
+  CHECK(areas[0] == Approx(s * s).epsilon(1e-9));
+  CHECK(areas[1] == Approx(1e4 - s * s).epsilon(1e-9));
+
+  // A needle 100 long and 1e-9 high (no short edge) is thinner than the
+  // length tolerance (1.4e-8): refused.
+  const double h = 1e-9;
+  const std::vector<Vec3> q = {{0, 0, 0}, {100, 0, 0}, {50, h, 0}, {100, 100, 0}, {0, 100, 0}};
+  const Tissue sliver = buildPolygonTissue(q, {{0, 1, 2}, {0, 2, 1, 3, 4}});
+  const MeshabilityReport report = findGeometryDefects(sliver);
+  REQUIRE_FALSE(report.ok);
+  CHECK_THAT(report.message, Catch::Contains("cell 0") && Catch::Contains("zero area"));
 }

@@ -24,9 +24,11 @@ struct MeshOptions {
   /// 3D tissues: TetGen's lower bound on dihedral angles (degrees) used
   /// together with the radius-edge ratio (the second number of -q). 0 = off.
   double min_dihedral_degrees = 0.0;
-  /// Relative tolerance (times the tissue's bounding-box diagonal) below
-  /// which a wall counts as planar (meshed as one polygon in 3D) and a
-  /// length/area as zero in the geometry check.
+  /// Relative tolerance; times the tissue's bounding-box diagonal it is a
+  /// length tol: a wall within tol of its plane counts as planar (meshed as
+  /// one polygon in 3D), and the geometry check refuses an edge shorter than
+  /// tol and a polygon or cell thinner than tol (mean width 2 area/perimeter,
+  /// 2 volume/surface), so small but well-shaped cells of large tissues pass.
   double tolerance = 1e-10;
 };
 
