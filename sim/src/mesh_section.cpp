@@ -36,8 +36,8 @@ void declareMeshSection(Schema& s) {
       .atMost(70)
       .max_exclusive = true;
   s.key("mesh.tolerance", ValueType::Float,
-        "Relative to the tissue's bounding-box diagonal: below it a wall counts as planar and a "
-        "length, area or volume as zero in the geometry check.")
+        "Relative to the tissue's bounding-box diagonal: below it a wall counts as planar, and the "
+        "geometry check refuses shorter edges and thinner walls or cells (mean width).")
       .byDefault(1e-10)
       .above(0)
       .atMost(1e-3)
