@@ -27,6 +27,12 @@ void bindGrowth(py::module_& m);
 void bindDivision(py::module_& m);
 void bindIo(py::module_& m);
 void bindSim(py::module_& m);
+void bindMesh(py::module_& m);
+void bindFieldTransfer(py::module_& m);
+void bindLinearSolver(py::module_& m);
+void bindDiffusion(py::module_& m);
+void bindCompartments(py::module_& m);
+void bindElasticity(py::module_& m);
 
 /// Python code names cells by their slot index; a dead or out-of-range one
 /// is bad input (ValueError), never undefined behaviour.

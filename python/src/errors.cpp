@@ -5,9 +5,12 @@
 //   tessella.TopologyError    (Error)  an edit that would break the complex
 //   tessella.SimulationError  (Error)  a stage failed; names stage, step and time
 // InputError derives from ValueError so that `except ValueError` works as
-// Python code expects for bad arguments.
+// Python code expects for bad arguments. The solvers' errors (a separate
+// std::runtime_error family) map onto these: InvalidProblemError (a badly
+// posed problem) -> InputError; FactorizationError, ConvergenceError -> Error.
 #include "bindings.hpp"
 #include "tessella/sim/simulation.hpp"
+#include "tessella/solvers/errors.hpp"
 
 namespace tessella::python {
 
@@ -51,6 +54,10 @@ void bindErrors(py::module_& m) {
     } catch (const TopologyError& e) {
       PyErr_SetString(topology.ptr(), e.what());
     } catch (const Error& e) {
+      PyErr_SetString(error.ptr(), e.what());
+    } catch (const InvalidProblemError& e) {
+      PyErr_SetString(input.ptr(), e.what());
+    } catch (const SolverError& e) {
       PyErr_SetString(error.ptr(), e.what());
     }
   });

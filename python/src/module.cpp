@@ -4,7 +4,7 @@
 
 PYBIND11_MODULE(tessella, m) {
   using namespace tessella::python;
-  m.doc() = "Tessella: plant cell-tissue growth (tissues, growth fields, division, simulations, ParaView output).";
+  m.doc() = "Tessella: plant cell-tissue growth (tissues, growth fields, division, simulations, meshing and FE solvers, ParaView output).";
 #ifdef TESSELLA_VERSION
   m.attr("__version__") = TESSELLA_VERSION;
 #endif
@@ -16,4 +16,10 @@ PYBIND11_MODULE(tessella, m) {
   bindDivision(m);
   bindIo(m);
   bindSim(m);
+  bindMesh(m);
+  bindFieldTransfer(m);
+  bindLinearSolver(m);  // before the solvers: their options default to LinearSolverOptions()
+  bindDiffusion(m);     // before compartments and elasticity, which use TimeScheme
+  bindCompartments(m);
+  bindElasticity(m);
 }
