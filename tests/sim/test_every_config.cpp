@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -32,14 +31,9 @@ TEST_CASE("every example config runs to its end with a valid tissue at every ste
     REQUIRE(validate(sim.tissue()).ok);
     REQUIRE(sim.tissue().numCells() > 0);
     std::size_t steps = 0;
+    tessella::sim::test::validateEveryStep(sim);
     sim.onStep([&](const Simulation& s) {
       ++steps;
-      const ValidationReport v = validate(s.tissue());
-      INFO("t = " << s.time() << ": " << v.message);
-      REQUIRE(v.ok);
-      std::set<std::int64_t> ids;
-      for (CellId c : s.tissue().cells()) ids.insert(s.tissue().lineageId(c));
-      REQUIRE(ids.size() == s.tissue().numCells());
       REQUIRE(std::isfinite(totalMeasure(s.tissue())));
     });
     sim.run();

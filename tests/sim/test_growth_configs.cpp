@@ -3,7 +3,6 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
-#include <set>
 #include <string>
 
 #include "tessella/growth/bump_field.hpp"
@@ -24,14 +23,7 @@ namespace {
 // Runs a simulation, validating the tissue and the uniqueness of lineage ids
 // after every step; returns the number of divisions.
 std::size_t runValidated(Simulation& sim) {
-  sim.onStep([](const Simulation& s) {
-    const ValidationReport v = validate(s.tissue());
-    INFO("t = " << s.time() << ": " << v.message);
-    REQUIRE(v.ok);
-    std::set<std::int64_t> ids;
-    for (CellId c : s.tissue().cells()) ids.insert(s.tissue().lineageId(c));
-    REQUIRE(ids.size() == s.tissue().numCells());
-  });
+  tessella::sim::test::validateEveryStep(sim);
   sim.run();
   for (std::size_t i = 0; i < sim.numStages(); ++i)
     if (const auto* d = dynamic_cast<const DivisionStage*>(&sim.stage(i))) return d->divisions();

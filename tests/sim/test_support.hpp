@@ -8,11 +8,27 @@
 #include <fstream>
 #include <functional>
 #include <random>
+#include <set>
 #include <string>
 
 #include "tessella/sim/config_error.hpp"
+#include "tessella/sim/simulation.hpp"
+#include "tessella/tissue/validate.hpp"
 
 namespace tessella::sim::test {
+
+/// After every step of `sim`: the tissue validates and no two cells share a
+/// lineage id.
+inline void validateEveryStep(Simulation& sim) {
+  sim.onStep([](const Simulation& s) {
+    const ValidationReport v = validate(s.tissue());
+    INFO("t = " << s.time() << ": " << v.message);
+    REQUIRE(v.ok);
+    std::set<std::int64_t> ids;
+    for (CellId c : s.tissue().cells()) ids.insert(s.tissue().lineageId(c));
+    REQUIRE(ids.size() == s.tissue().numCells());
+  });
+}
 
 /// A fresh directory under the system temp dir, removed at scope exit.
 class ScratchDir {

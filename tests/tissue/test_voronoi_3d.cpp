@@ -171,23 +171,7 @@ TEST_CASE("3D Voronoi tissue in a ball fills its icosahedron", "[voronoi][vorono
   CHECK(totalMeasure(fine) > 0.95 * sphere);
 }
 
-TEST_CASE("cospherical seeds of a regular grid give cubic cells", "[voronoi][voronoi3d]") {
-  const int n = 3;
-  std::vector<Vec3> seeds;
-  for (int k = 0; k < n; ++k)
-    for (int j = 0; j < n; ++j)
-      for (int i = 0; i < n; ++i) seeds.emplace_back((i + 0.5) / n, (j + 0.5) / n, (k + 0.5) / n);
-  const Tissue t = voronoiTissue(seeds, Box{});
-  const auto report = validate(t);
-  INFO(report.message);
-  REQUIRE(report.ok);
-  CHECK(t.numVertices() == static_cast<std::size_t>((n + 1) * (n + 1) * (n + 1)));
-  CHECK(t.numWalls() == static_cast<std::size_t>(3 * n * n * (n + 1)));
-  for (CellId c : t.cells()) {
-    CHECK(t.cellWalls(c).size() == 6);
-    CHECK(cellMeasure(t, c) == Approx(1.0 / (n * n * n)).epsilon(1e-12));
-  }
-}
+// Cospherical seeds (cubic lattices): test_voronoi_bulk.cpp.
 
 TEST_CASE("3D Voronoi tissues are reproducible from the rng seed", "[voronoi][voronoi3d]") {
   const Box box;
