@@ -65,20 +65,13 @@ void declareCompartmentSection(Schema& s) {
       .byDefault(1.0)
       .atLeast(0)
       .activeWhen(on.key, on.values);
-  s.key("compartments.permeability_by", ValueType::String,
-        "Permeability per cell type; a wall takes the smaller value of its two cells.")
-      .whenAbsent("uniform")
-      .activeWhen(on.key, on.values);
+  detail::declarePerTypeKey(s, "compartments.permeability_by", "Permeability per cell type; a wall takes the smaller value of its two cells.", on);
   s.key("compartments.decay", ValueType::Float, "Decay rate k.").byDefault(0.0).atLeast(0).activeWhen(on.key, on.values);
-  s.key("compartments.decay_by", ValueType::String, "Decay per cell type.")
-      .whenAbsent("uniform")
-      .activeWhen(on.key, on.values);
+  detail::declarePerTypeKey(s, "compartments.decay_by", "Decay per cell type.", on);
   s.key("compartments.production", ValueType::Float, "Production p (concentration per unit time).")
       .byDefault(0.0)
       .activeWhen(on.key, on.values);
-  s.key("compartments.production_by", ValueType::String, "Production per cell type.")
-      .whenAbsent("uniform")
-      .activeWhen(on.key, on.values);
+  detail::declarePerTypeKey(s, "compartments.production_by", "Production per cell type.", on);
   detail::declareSourceKeys(s, "compartments", on);
   s.section("compartments.polar",
             "Polar transport: a pumping cell moves rate * wall area * its concentration per unit time "

@@ -124,6 +124,10 @@ void declareEveryAndStep(Schema& s, const std::string& p, const Condition& when)
       .activeWhen(when.key, when.values);
 }
 
+void declarePerTypeKey(Schema& s, const std::string& path, const std::string& doc, const Condition& when) {
+  s.key(path, ValueType::String, doc).whenAbsent("uniform").activeWhen(when.key, when.values);
+}
+
 void declareSourceKeys(Schema& s, const std::string& p, const Condition& when) {
   s.section(p + ".source",
             "Source cells, chosen at the first solve: cells whose centroid lies within `radius` of "

@@ -28,6 +28,9 @@ std::vector<std::int64_t> parseIdList(const Config& c, const std::string& key, c
 /// The shared keys of a solver section at `prefix`, active when `when` holds.
 void declareEveryAndStep(Schema& s, const std::string& prefix, const Condition& when);
 void declareSourceKeys(Schema& s, const std::string& prefix, const Condition& when);
+/// Declares `path` (e.g. "diffusion.decay_by"): the per-cell-type values of
+/// a coefficient, a string "type=value, ...", uniform when absent.
+void declarePerTypeKey(Schema& s, const std::string& path, const std::string& doc, const Condition& when);
 SourceSpec readSource(const Config& c, const std::string& prefix);
 /// Reads `<prefix>.<name>` (uniform) and `<prefix>.<name>_by` (per type,
 /// checked against the uniform key's range).

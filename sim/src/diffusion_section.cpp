@@ -47,17 +47,13 @@ void declareDiffusionSection(Schema& s) {
       .byDefault(0.0)
       .activeWhen("diffusion.mode", {"transient"});
   s.key("diffusion.diffusivity", ValueType::Float, "Diffusivity D.").byDefault(1.0).atLeast(0).activeWhen(on.key, on.values);
-  s.key("diffusion.diffusivity_by", ValueType::String, "Diffusivity per cell type, e.g. \"0=1, 1=0.1\".")
-      .whenAbsent("uniform")
-      .activeWhen(on.key, on.values);
+  detail::declarePerTypeKey(s, "diffusion.diffusivity_by", "Diffusivity per cell type, e.g. \"0=1, 1=0.1\".", on);
   s.key("diffusion.decay", ValueType::Float, "Linear decay rate k.").byDefault(0.0).atLeast(0).activeWhen(on.key, on.values);
-  s.key("diffusion.decay_by", ValueType::String, "Decay per cell type.").whenAbsent("uniform").activeWhen(on.key, on.values);
+  detail::declarePerTypeKey(s, "diffusion.decay_by", "Decay per cell type.", on);
   s.key("diffusion.production", ValueType::Float, "Production p (per unit time) in every cell.")
       .byDefault(0.0)
       .activeWhen(on.key, on.values);
-  s.key("diffusion.production_by", ValueType::String, "Production per cell type.")
-      .whenAbsent("uniform")
-      .activeWhen(on.key, on.values);
+  detail::declarePerTypeKey(s, "diffusion.production_by", "Production per cell type.", on);
   detail::declareSourceKeys(s, "diffusion", on);
   s.key("diffusion.dirichlet", ValueType::String,
         "Fixed values on boundary regions, e.g. \"x_min=1, x_max=0\". Regions: all, x_min, x_max, "

@@ -27,16 +27,12 @@ void declareElasticitySection(Schema& s) {
   const Condition on{"elasticity.model", kModels};
   detail::declareEveryAndStep(s, "elasticity", on);
   s.key("elasticity.young", ValueType::Float, "Young's modulus E.").byDefault(1.0).above(0).activeWhen(on.key, on.values);
-  s.key("elasticity.young_by", ValueType::String, "Young's modulus per cell type, e.g. \"0=1, 1=10\".")
-      .whenAbsent("uniform")
-      .activeWhen(on.key, on.values);
+  detail::declarePerTypeKey(s, "elasticity.young_by", "Young's modulus per cell type, e.g. \"0=1, 1=10\".", on);
   s.key("elasticity.poisson", ValueType::Float, "Poisson's ratio nu.")
       .byDefault(0.3)
       .above(-1)
       .activeWhen(on.key, on.values);
-  s.key("elasticity.poisson_by", ValueType::String, "Poisson's ratio per cell type.")
-      .whenAbsent("uniform")
-      .activeWhen(on.key, on.values);
+  detail::declarePerTypeKey(s, "elasticity.poisson_by", "Poisson's ratio per cell type.", on);
   s.key("elasticity.thickness", ValueType::Float, "Thickness of a 2D tissue (scales stiffness and loads).")
       .byDefault(1.0)
       .above(0)
