@@ -54,14 +54,31 @@ bool Config::isActive(const std::string& path) const {
   if (path.empty()) return true;
   if (!isActive(parentPath(path))) return false;
   if (const SectionSpec* s = schema_->findSection(path))
-    return !s->active_when || conditionHolds(*s->active_when);
+    return (!s->active_when || conditionHolds(*s->active_when)) && (s->unless_set.empty() || !isSet(s->unless_set));
   if (const KeySpec* k = schema_->findKey(path))
-    return (!k->active_when || conditionHolds(*k->active_when)) && (k->unless_set.empty() || !has(k->unless_set));
+    return (!k->active_when || conditionHolds(*k->active_when)) && (k->unless_set.empty() || !isSet(k->unless_set));
   return false;
 }
 
 void Config::set(const std::string& path, ConfigValue value, SourceLocation where, ValueOrigin origin) {
   entries_[path] = Entry{std::move(value), std::move(where), origin};
+}
+
+std::vector<std::string> Config::entryNames(const std::string& map_path) const {
+  auto it = entry_names_.find(map_path);
+  return it == entry_names_.end() ? std::vector<std::string>{} : it->second;
+}
+
+void Config::addEntry(const std::string& map_path, const std::string& name, SourceLocation where) {
+  auto& names = entry_names_[map_path];
+  if (std::find(names.begin(), names.end(), name) != names.end()) return;
+  names.push_back(name);
+  entry_where_[joinPath(map_path, name)] = std::move(where);
+}
+
+SourceLocation Config::entryLocation(const std::string& entry_path) const {
+  auto it = entry_where_.find(entry_path);
+  return it == entry_where_.end() ? SourceLocation{source_, 0, 0} : it->second;
 }
 
 ConfigError Config::errorAt(const std::string& path, const std::string& problem) const {

@@ -67,7 +67,7 @@ class Loader {
     if (!root.IsMap())
       throw ConfigError(at(root.Mark()), "",
                         "the top level must be a mapping of sections and keys, got " + describe(root));
-    walkSection(root, "");
+    walkSection(root, "", at(root.Mark()));
   }
 
   void loadOverride(const std::string& argument) {
@@ -86,28 +86,34 @@ class Loader {
     } catch (const YAML::Exception& e) {
       throw ConfigError(where, path, "the value is not valid YAML: " + e.msg);
     }
-    if (schema_.isSection(path)) return walkSection(value, path);
-    if (const KeySpec* spec = schema_.findKey(path)) return setValue(*spec, value, where);
+    if (schema_.isSection(path)) return walkSection(value, path, where);
+    if (const KeySpec* spec = schema_.findKey(path)) {
+      noteEntries(path, where);
+      return setValue(path, *spec, value, where);
+    }
     unknownPath(path, where);
   }
 
   /// Defaults, required keys and notes, once every source is in.
   void finish() {
+    // Keys declared inside entry maps exist once per entry given.
     for (const KeySpec& spec : schema_.keys())
-      if (!config_.has(spec.path) && spec.default_value)
-        config_.set(spec.path, *spec.default_value, {}, ValueOrigin::Default);
-    for (const KeySpec& spec : schema_.keys()) {
-      if (!spec.required || config_.has(spec.path) || !config_.isActive(spec.path)) continue;
-      SourceLocation where{config_.source(), 0, 0};
-      for (std::string s = parentPath(spec.path);; s = parentPath(s)) {
-        if (auto it = section_marks_.find(s); it != section_marks_.end()) {
-          where = it->second;
-          break;
+      for (const std::string& path : concretePaths(spec.path))
+        if (!config_.has(path) && spec.default_value)
+          config_.set(path, *spec.default_value, {}, ValueOrigin::Default);
+    for (const KeySpec& spec : schema_.keys())
+      for (const std::string& path : concretePaths(spec.path)) {
+        if (!spec.required || config_.has(path) || !config_.isActive(path)) continue;
+        SourceLocation where{config_.source(), 0, 0};
+        for (std::string s = parentPath(path);; s = parentPath(s)) {
+          if (auto it = section_marks_.find(s); it != section_marks_.end()) {
+            where = it->second;
+            break;
+          }
+          if (s.empty()) break;
         }
-        if (s.empty()) break;
+        throw ConfigError(where, path, "missing required key; expected " + spec.expectation());
       }
-      throw ConfigError(where, spec.path, "missing required key; expected " + spec.expectation());
-    }
     std::set<std::string> noted;
     for (const auto& [path, entry] : config_.entries()) {
       if (entry.origin == ValueOrigin::Default || config_.isActive(path)) continue;
@@ -124,18 +130,60 @@ class Loader {
     return {source_, mark.line + 1, mark.column + 1};
   }
 
+  /// The concrete paths of a declared one: itself, or one per entry given
+  /// for each entry-map level it passes through.
+  std::vector<std::string> concretePaths(const std::string& declared) const {
+    const std::string marker = std::string(".") + kEntryPlaceholder;
+    const auto at = declared.find(marker);
+    if (at == std::string::npos) return {declared};
+    const std::string map = declared.substr(0, at), rest = declared.substr(at + marker.size());
+    std::vector<std::string> out;
+    for (const std::string& name : config_.entryNames(map))
+      for (std::string p : concretePaths(joinPath(map, name) + rest)) out.push_back(std::move(p));
+    return out;
+  }
+
+  /// Records the entry names along `path` (an entry map's children), checking
+  /// each: it names outputs and expression variables, so letters, digits and
+  /// '_', not starting with a digit.
+  void noteEntries(const std::string& path, const SourceLocation& where) {
+    std::string prefix;
+    std::size_t start = 0;
+    while (start < path.size()) {
+      const auto dot = path.find('.', start);
+      const std::string part = path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+      if (schema_.isEntryMap(prefix)) {
+        const std::string kind = schema_.findSection(prefix)->entry_kind;
+        bool ok = !part.empty() && !std::isdigit(static_cast<unsigned char>(part[0]));
+        for (unsigned char ch : part) ok = ok && (std::isalnum(ch) || ch == '_');
+        if (!ok)
+          throw ConfigError(where, joinPath(prefix, part),
+                            "bad " + kind + " name " + quoted(part) +
+                                "; a name is letters, digits and '_', not starting with a digit");
+        config_.addEntry(prefix, part, where);
+      }
+      prefix = joinPath(prefix, part);
+      if (dot == std::string::npos) break;
+      start = dot + 1;
+    }
+  }
+
   std::string inactiveReason(const std::string& path) const {
     std::optional<Condition> c;
-    if (const SectionSpec* s = schema_.findSection(path)) c = s->active_when;
+    if (const SectionSpec* s = schema_.findSection(path)) {
+      if (!s->unless_set.empty() && config_.isSet(s->unless_set)) return s->unless_set + " is given";
+      c = s->active_when;
+    }
     if (const KeySpec* k = schema_.findKey(path)) {
-      if (!k->unless_set.empty() && config_.has(k->unless_set)) return k->unless_set + " is given";
+      if (!k->unless_set.empty() && config_.isSet(k->unless_set)) return k->unless_set + " is given";
       c = k->active_when;
     }
     if (!c || !config_.has(c->key)) return "it does not apply";
     return c->key + " is " + formatValue(config_.entry(c->key).value);
   }
 
-  void walkSection(const YAML::Node& node, const std::string& section) {
+  void walkSection(const YAML::Node& node, const std::string& section, const SourceLocation& where) {
+    noteEntries(section, where);  // before the empty check: "A:" alone is an entry with defaults
     if (!node || node.IsNull()) return;  // "tissue:" alone is an empty section
     if (!node.IsMap())
       throw ConfigError(at(node.Mark()), section,
@@ -152,11 +200,13 @@ class Loader {
       if (auto [first, inserted] = seen.emplace(name, key.Mark()); !inserted)
         throw ConfigError(at(key.Mark()), path,
                           "duplicate key (first given at " + at(first->second).str() + ")");
-      if (schema_.isSection(path)) {
-        walkSection(value, path);
+      if (schema_.isEntryMap(section)) {
+        walkSection(value, path, at(key.Mark()));
+      } else if (schema_.isSection(path)) {
+        walkSection(value, path, at(key.Mark()));
       } else if (const KeySpec* spec = schema_.findKey(path)) {
         const bool has_mark = value && !value.IsNull() && !value.Mark().is_null();
-        setValue(*spec, value, at(has_mark ? value.Mark() : key.Mark()));
+        setValue(path, *spec, value, at(has_mark ? value.Mark() : key.Mark()));
       } else {
         throw ConfigError(at(key.Mark()), path, unknownProblem(name, section));
       }
@@ -205,13 +255,15 @@ class Loader {
     }
   }
 
-  void setValue(const KeySpec& spec, const YAML::Node& node, const SourceLocation& where) {
-    config_.set(spec.path, convert(spec, node, where), where, origin_);
+  // `path` is the concrete path of `spec` (they differ inside entry maps).
+  void setValue(const std::string& path, const KeySpec& spec, const YAML::Node& node, const SourceLocation& where) {
+    config_.set(path, convert(path, spec, node, where), where, origin_);
   }
 
-  ConfigValue convert(const KeySpec& spec, const YAML::Node& node, const SourceLocation& where) const {
+  ConfigValue convert(const std::string& path, const KeySpec& spec, const YAML::Node& node,
+                      const SourceLocation& where) const {
     auto fail = [&](const std::string& problem) -> ConfigError {
-      return ConfigError(where, spec.path, problem);
+      return ConfigError(where, path, problem);
     };
     auto expected = [&](const YAML::Node& n) {
       return fail("expected " + spec.expectation() + ", got " + describe(n));
@@ -229,14 +281,14 @@ class Loader {
         if (!node.IsScalar()) throw expected(node);
         auto v = parseInt(node.Scalar());
         if (!v) throw expected(node);
-        checkRange(spec, static_cast<double>(*v), node, where);
+        checkRange(path, spec, static_cast<double>(*v), node, where);
         return *v;
       }
       case ValueType::Float: {
         if (!node.IsScalar()) throw expected(node);
         auto v = parseDouble(node.Scalar());
         if (!v || !std::isfinite(*v)) throw expected(node);
-        checkRange(spec, *v, node, where);
+        checkRange(path, spec, *v, node, where);
         return *v;
       }
       case ValueType::String:
@@ -266,7 +318,7 @@ class Loader {
           if (!x || !std::isfinite(*x)) {
             const bool has_mark = origin_ == ValueOrigin::File && !item.Mark().is_null();
             throw ConfigError(has_mark ? at(item.Mark()) : where,
-                              spec.path + "[" + std::to_string(i) + "]",
+                              path + "[" + std::to_string(i) + "]",
                               "expected a finite number, got " + describe(item));
           }
           v.push_back(*x);
@@ -289,11 +341,12 @@ class Loader {
     throw fail("unsupported value type");
   }
 
-  static void checkRange(const KeySpec& spec, double v, const YAML::Node& node, const SourceLocation& where) {
+  static void checkRange(const std::string& path, const KeySpec& spec, double v, const YAML::Node& node,
+                         const SourceLocation& where) {
     const bool low = spec.min && (spec.min_exclusive ? v <= *spec.min : v < *spec.min);
     const bool high = spec.max && (spec.max_exclusive ? v >= *spec.max : v > *spec.max);
     if (low || high)
-      throw ConfigError(where, spec.path,
+      throw ConfigError(where, path,
                         "value " + node.Scalar() + " is out of range; expected " + spec.expectation());
   }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "coupling_cells.hpp"
+#include "reaction_terms.hpp"
 #include "tessella/solvers/compartment_transport.hpp"
 #include "tessella/solvers/elasticity.hpp"
 #include "tessella/tissue/errors.hpp"
@@ -28,75 +29,98 @@ double stepLength(const std::optional<double>& dt, double elapsed) {
 // --- diffusion ---------------------------------------------------------------
 
 DiffusionStage::DiffusionStage(DiffusionSpec spec, std::shared_ptr<FieldMesh> mesh)
-    : MeshFieldStage(std::move(mesh)), spec_(std::move(spec)), schedule_(spec_.every) {}
+    : MeshFieldStage(std::move(mesh)), spec_(std::move(spec)), schedule_(spec_.every), total_(spec_.species.size(), 0.0) {
+  if (spec_.hasReaction()) {
+    std::vector<std::string> names, expressions;
+    for (const SpeciesSpec& sp : spec_.species) {
+      names.push_back(sp.name);
+      expressions.push_back(sp.reaction);
+    }
+    reaction_ = std::make_shared<detail::ReactionTerms>(names, expressions);  // compiled once per stage
+  }
+}
 
 void DiffusionStage::prepare(Tissue& tissue, double /*time*/) {
-  const std::string& sp = spec_.species;
   // Source cells are chosen once, on the initial tissue.
-  detail::markCells(tissue, sp + "_source", spec_.source.lineage_ids, spec_.source.center, spec_.source.radius,
-                    "diffusion.source.cells");
-  if (spec_.steady) return;  // the first solve gives the field
+  for (const SpeciesSpec& sp : spec_.species)
+    detail::markCells(tissue, sp.name + "_source", sp.source.lineage_ids, sp.source.center, sp.source.radius,
+                      sp.key_prefix + ".source.cells");
+  if (spec_.steady) return;  // the first solve gives the fields
   mesh_->update(tissue);
-  mesh_->setField(sp, Eigen::VectorXd::Constant(mesh_->mesh().numNodes(), spec_.initial), true);
+  for (const SpeciesSpec& sp : spec_.species)
+    mesh_->setField(sp.name, Eigen::VectorXd::Constant(mesh_->mesh().numNodes(), sp.initial), true);
   storeCellValues(tissue);
 }
 
 void DiffusionStage::storeCellValues(Tissue& tissue) {
   // Cell averages (copied to daughters until the next solve) and amounts
   // (split by measure) as cell properties, for the tissue series and gates.
-  const std::string& sp = spec_.species;
-  const std::vector<double> amount = mesh_->cellIntegrals(mesh_->field(sp));
   const std::vector<double>& measure = mesh_->cellMeasures();
-  auto& average = detail::doubleColumn(tissue, sp, DivisionPolicy::Copy);
-  auto& amounts = detail::doubleColumn(tissue, sp + "_amount", DivisionPolicy::SplitByMeasure);
-  for (CellId c : tissue.cells()) {
-    const std::size_t i = c.index();
-    amounts[c] = i < amount.size() ? amount[i] : 0.0;
-    average[c] = i < measure.size() && measure[i] > 0 ? amount[i] / measure[i] : 0.0;
+  for (const SpeciesSpec& sp : spec_.species) {
+    const std::vector<double> amount = mesh_->cellIntegrals(mesh_->field(sp.name));
+    auto& average = detail::doubleColumn(tissue, sp.name, DivisionPolicy::Copy);
+    auto& amounts = detail::doubleColumn(tissue, sp.name + "_amount", DivisionPolicy::SplitByMeasure);
+    for (CellId c : tissue.cells()) {
+      const std::size_t i = c.index();
+      amounts[c] = i < amount.size() ? amount[i] : 0.0;
+      average[c] = i < measure.size() && measure[i] > 0 ? amount[i] / measure[i] : 0.0;
+    }
   }
 }
 
 void DiffusionStage::apply(Tissue& tissue, const StepContext& context) {
-  const std::string& sp = spec_.species;
   if (!schedule_.due(context)) return;
   const double elapsed = schedule_.elapsed(context);
   mesh_->update(tissue);
   const FeMesh& mesh = mesh_->mesh();
-  if (!mesh_->hasField(sp))
-    mesh_->setField(sp, Eigen::VectorXd::Constant(mesh.numNodes(), spec_.initial), true);
+  for (const SpeciesSpec& sp : spec_.species)
+    if (!mesh_->hasField(sp.name))
+      mesh_->setField(sp.name, Eigen::VectorXd::Constant(mesh.numNodes(), sp.initial), true);
 
   if (!solver_ || solver_mesh_version_ != mesh_->version()) {
-    Species s;
-    s.name = sp;
-    s.diffusivity = detail::perCell(tissue, spec_.diffusivity, spec_.type_property, "diffusion");
-    s.decay = detail::perCell(tissue, spec_.decay, spec_.type_property, "diffusion");
-    s.production = detail::perCell(tissue, spec_.production, spec_.type_property, "diffusion");
-    const std::vector<bool> source = detail::marked(tissue, sp + "_source");
-    for (std::size_t c = 0; c < source.size(); ++c)
-      if (source[c]) s.production[static_cast<Eigen::Index>(c)] += spec_.source.rate;
-    for (const RegionValue& r : spec_.dirichlet)
-      s.dirichlet.push_back({detail::regionFacets(mesh, r.region, "diffusion.dirichlet"), r.value, {}});
-    for (const RegionValue& r : spec_.flux)
-      s.flux.push_back({detail::regionFacets(mesh, r.region, "diffusion.flux"), r.value, {}});
-    for (const RegionValue& r : spec_.robin)
-      s.robin.push_back({detail::regionFacets(mesh, r.region, "diffusion.robin"), r.value, spec_.robin_exterior});
+    std::vector<Species> all;
+    for (const SpeciesSpec& sp : spec_.species) {
+      const std::string& p = sp.key_prefix;
+      Species s;
+      s.name = sp.name;
+      s.diffusivity = detail::perCell(tissue, sp.diffusivity, spec_.type_property, "diffusion");
+      s.decay = detail::perCell(tissue, sp.decay, spec_.type_property, "diffusion");
+      s.production = detail::perCell(tissue, sp.production, spec_.type_property, "diffusion");
+      const std::vector<bool> source = detail::marked(tissue, sp.name + "_source");
+      for (std::size_t c = 0; c < source.size(); ++c)
+        if (source[c]) s.production[static_cast<Eigen::Index>(c)] += sp.source.rate;
+      for (const RegionValue& r : sp.dirichlet)
+        s.dirichlet.push_back({detail::regionFacets(mesh, r.region, p + ".dirichlet"), r.value, {}});
+      for (const RegionValue& r : sp.flux)
+        s.flux.push_back({detail::regionFacets(mesh, r.region, p + ".flux"), r.value, {}});
+      for (const RegionValue& r : sp.robin)
+        s.robin.push_back({detail::regionFacets(mesh, r.region, p + ".robin"), r.value, sp.robin_exterior});
+      all.push_back(std::move(s));
+    }
     DiffusionOptions options;
     options.scheme = spec_.scheme;
     options.mass = spec_.mass;
-    solver_.emplace(mesh, std::vector<Species>{std::move(s)}, options);
+    solver_.emplace(mesh, std::move(all), options);
+    if (reaction_)
+      solver_->setReaction([terms = reaction_](std::span<const double> u, std::span<double> rate) {
+        terms->evaluate(u, rate);
+      });
     solver_mesh_version_ = mesh_->version();
   }
   solver_->setTime(context.time + context.dt - elapsed);
-  solver_->setState(0, mesh_->field(sp));
+  for (std::size_t k = 0; k < spec_.species.size(); ++k)
+    solver_->setState(static_cast<int>(k), mesh_->field(spec_.species[k].name));
   if (spec_.steady) {
     solver_->setTime(context.time + context.dt);
     solver_->solveSteady();
   } else if (elapsed > 0) {
     solver_->advance(elapsed, stepLength(spec_.dt, elapsed));
   }
-  const Eigen::VectorXd u = solver_->state().col(0);
-  mesh_->setField(sp, u, true);
-  total_ = solver_->totalAmount(0);
+  for (std::size_t k = 0; k < spec_.species.size(); ++k) {
+    const auto col = static_cast<Eigen::Index>(k);
+    mesh_->setField(spec_.species[k].name, solver_->state().col(col), true);
+    total_[k] = solver_->totalAmount(static_cast<int>(k));
+  }
   storeCellValues(tissue);
   schedule_.solved(context);
 }

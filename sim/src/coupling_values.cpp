@@ -124,12 +124,12 @@ void declareEveryAndStep(Schema& s, const std::string& p, const Condition& when)
       .activeWhen(when.key, when.values);
 }
 
-void declarePerTypeKey(Schema& s, const std::string& path, const std::string& doc, const Condition& when) {
-  s.key(path, ValueType::String, doc).whenAbsent("uniform").activeWhen(when.key, when.values);
+KeySpec& declarePerTypeKey(Schema& s, const std::string& path, const std::string& doc, const Condition& when) {
+  return s.key(path, ValueType::String, doc).whenAbsent("uniform").activeWhen(when.key, when.values);
 }
 
-void declareSourceKeys(Schema& s, const std::string& p, const Condition& when) {
-  s.section(p + ".source",
+SectionSpec& declareSourceKeys(Schema& s, const std::string& p, const Condition& when) {
+  SectionSpec& section = s.section(p + ".source",
             "Source cells, chosen at the first solve: cells whose centroid lies within `radius` of "
             "`center`, and cells whose lineage id is listed. They are marked with the cell property "
             "<name>_source (daughters inherit it) and get the extra production `rate`.")
@@ -139,6 +139,7 @@ void declareSourceKeys(Schema& s, const std::string& p, const Condition& when) {
   s.key(p + ".source.radius", ValueType::Float, "Radius of the source ball (0: no ball).").byDefault(0.0).atLeast(0);
   s.key(p + ".source.cells", ValueType::String, "Lineage ids of source cells, e.g. \"0, 12\".")
       .whenAbsent("no listed cells");
+  return section;
 }
 
 SourceSpec readSource(const Config& c, const std::string& p) {
@@ -152,7 +153,9 @@ SourceSpec readSource(const Config& c, const std::string& p) {
   return s;
 }
 
-CellCoefficient readCoefficient(const Config& c, const std::string& p, const std::string& name) {
+CellCoefficient readCoefficient(const Config& c, const std::string& p, const std::string& name,
+                                const std::string& by_property) {
+  const std::string type_key = by_property.empty() ? p + ".by_property" : by_property;
   CellCoefficient k;
   k.uniform = c.getFloat(p + "." + name);
   const std::string by = p + "." + name + "_by";
@@ -166,8 +169,8 @@ CellCoefficient readCoefficient(const Config& c, const std::string& p, const std
         throw c.errorAt(by, "value " + formatValue(v) + " for type " + std::to_string(type) +
                                 " is out of range; expected " + spec->expectation());
     }
-  if (!k.by_type.empty() && !c.has(p + ".by_property"))
-    throw c.errorAt(by, "per-type values need " + p + ".by_property (the cell property holding the type)");
+  if (!k.by_type.empty() && !c.has(type_key))
+    throw c.errorAt(by, "per-type values need " + type_key + " (the cell property holding the type)");
   return k;
 }
 

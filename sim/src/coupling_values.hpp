@@ -27,13 +27,16 @@ std::vector<std::int64_t> parseIdList(const Config& c, const std::string& key, c
 
 /// The shared keys of a solver section at `prefix`, active when `when` holds.
 void declareEveryAndStep(Schema& s, const std::string& prefix, const Condition& when);
-void declareSourceKeys(Schema& s, const std::string& prefix, const Condition& when);
+/// Declares the section `<prefix>.source` and its keys; returns the section.
+SectionSpec& declareSourceKeys(Schema& s, const std::string& prefix, const Condition& when);
 /// Declares `path` (e.g. "diffusion.decay_by"): the per-cell-type values of
 /// a coefficient, a string "type=value, ...", uniform when absent.
-void declarePerTypeKey(Schema& s, const std::string& path, const std::string& doc, const Condition& when);
+KeySpec& declarePerTypeKey(Schema& s, const std::string& path, const std::string& doc, const Condition& when);
 SourceSpec readSource(const Config& c, const std::string& prefix);
 /// Reads `<prefix>.<name>` (uniform) and `<prefix>.<name>_by` (per type,
-/// checked against the uniform key's range).
-CellCoefficient readCoefficient(const Config& c, const std::string& prefix, const std::string& name);
+/// checked against the uniform key's range, and needing the key
+/// `by_property`, by default `<prefix>.by_property`).
+CellCoefficient readCoefficient(const Config& c, const std::string& prefix, const std::string& name,
+                                const std::string& by_property = "");
 
 }  // namespace tessella::sim::detail

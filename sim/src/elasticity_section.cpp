@@ -103,7 +103,7 @@ ElasticitySpec readElasticitySection(const Config& c) {
 std::vector<std::string> coupledCellProperties(const DiffusionSpec& d, const CompartmentSpec& k,
                                                const ElasticitySpec& e) {
   std::vector<std::string> names;
-  if (!d.species.empty()) names.insert(names.end(), {d.species, d.species + "_amount"});
+  for (const SpeciesSpec& sp : d.species) names.insert(names.end(), {sp.name, sp.name + "_amount"});
   if (!k.field.empty()) names.insert(names.end(), {k.field, k.field + "_amount"});
   if (e.enabled)
     names.insert(names.end(), {"stress_xx", "stress_yy", "stress_zz", "stress_yz", "stress_xz", "stress_xy",

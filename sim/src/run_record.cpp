@@ -36,11 +36,13 @@ void emitValue(YAML::Emitter& out, const KeySpec& spec, const ConfigValue& value
 
 void emitSection(YAML::Emitter& out, const Config& c, const std::string& section) {
   out << YAML::BeginMap;
-  for (const std::string& name : c.schema().childNames(section)) {
+  // An entry map's children are the entries given, not its declared template.
+  const bool entries = c.schema().isEntryMap(section);
+  for (const std::string& name : entries ? c.entryNames(section) : c.schema().childNames(section)) {
     const std::string path = joinPath(section, name);
     if (!c.isActive(path)) continue;
     if (c.schema().isSection(path)) {
-      if (!hasActiveValue(c, path)) continue;
+      if (!hasActiveValue(c, path) && !entries) continue;  // an entry with no keys is still an entry
       out << YAML::Key << name << YAML::Value;
       emitSection(out, c, path);
     } else if (c.has(path)) {

@@ -16,10 +16,14 @@ std::string parentPath(const std::string& path) {
   return dot == std::string::npos ? std::string() : path.substr(0, dot);
 }
 
-std::string KeySpec::name() const {
+std::string leafName(const std::string& path) {
   const auto dot = path.rfind('.');
   return dot == std::string::npos ? path : path.substr(dot + 1);
 }
+
+bool isTemplatePath(const std::string& path) { return path.find(kEntryPlaceholder) != std::string::npos; }
+
+std::string KeySpec::name() const { return leafName(path); }
 
 namespace {
 std::string number(double v) {
@@ -59,14 +63,20 @@ std::string KeySpec::expectation() const {
 SectionSpec& Schema::section(std::string path, std::string doc) {
   if (isSection(path) || findKey(path)) throw std::logic_error("schema: duplicate path " + path);
   if (!isSection(parentPath(path))) throw std::logic_error("schema: undeclared parent of " + path);
+  if (isEntryMap(parentPath(path)) != (leafName(path) == kEntryPlaceholder))
+    throw std::logic_error("schema: an entry map holds exactly its entry section <name>: " + path);
   order_.push_back(path);
-  sections_.push_back(SectionSpec{std::move(path), std::move(doc), std::nullopt});
+  SectionSpec spec;
+  spec.path = std::move(path);
+  spec.doc = std::move(doc);
+  sections_.push_back(std::move(spec));
   return sections_.back();
 }
 
 KeySpec& Schema::key(std::string path, ValueType type, std::string doc) {
   if (isSection(path) || findKey(path)) throw std::logic_error("schema: duplicate path " + path);
   if (!isSection(parentPath(path))) throw std::logic_error("schema: undeclared section of " + path);
+  if (isEntryMap(parentPath(path))) throw std::logic_error("schema: keys of an entry map go in its entries: " + path);
   order_.push_back(path);
   KeySpec spec;
   spec.path = std::move(path);
@@ -76,23 +86,52 @@ KeySpec& Schema::key(std::string path, ValueType type, std::string doc) {
   return keys_.back();
 }
 
+std::string Schema::templatePath(const std::string& path) const {
+  bool any_map = false;
+  for (const SectionSpec& s : sections_) any_map = any_map || s.entry_map;
+  if (!any_map) return path;  // the common case: nothing to replace
+  std::string out;
+  std::size_t start = 0;
+  bool after_map = false;
+  while (start <= path.size()) {
+    const auto dot = path.find('.', start);
+    const std::string part = path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
+    out = joinPath(out, after_map ? std::string(kEntryPlaceholder) : part);
+    const SectionSpec* s = nullptr;
+    for (const SectionSpec& candidate : sections_)
+      if (candidate.path == out) s = &candidate;
+    after_map = s && s->entry_map;
+    if (dot == std::string::npos) break;
+    start = dot + 1;
+  }
+  return out;
+}
+
 const KeySpec* Schema::findKey(const std::string& path) const {
+  const std::string declared = templatePath(path);
   for (const KeySpec& k : keys_)
-    if (k.path == path) return &k;
+    if (k.path == declared) return &k;
   return nullptr;
 }
 
 const SectionSpec* Schema::findSection(const std::string& path) const {
+  const std::string declared = templatePath(path);
   for (const SectionSpec& s : sections_)
-    if (s.path == path) return &s;
+    if (s.path == declared) return &s;
   return nullptr;
 }
 
+bool Schema::isEntryMap(const std::string& path) const {
+  const SectionSpec* s = path.empty() ? nullptr : findSection(path);
+  return s && s->entry_map;
+}
+
 std::vector<std::string> Schema::childNames(const std::string& section_path) const {
+  const std::string declared = templatePath(section_path);
   std::vector<std::string> names;
   for (const std::string& p : order_)
-    if (parentPath(p) == section_path && !p.empty())
-      names.push_back(section_path.empty() ? p : p.substr(section_path.size() + 1));
+    if (parentPath(p) == declared && !p.empty())
+      names.push_back(declared.empty() ? p : p.substr(declared.size() + 1));
   return names;
 }
 

@@ -54,7 +54,8 @@ std::string schemaReferenceMarkdown(const Schema& schema) {
   out += "### Top level\n\n";
   table(out, schema, "");
   for (const SectionSpec& s : schema.sections()) {
-    out += "### `" + s.path + "`\n\n" + conditionText(s.active_when) + s.doc + "\n\n";
+    const std::string unless = s.unless_set.empty() ? "" : "Not used when `" + s.unless_set + "` is given. ";
+    out += "### `" + s.path + "`\n\n" + conditionText(s.active_when) + unless + s.doc + "\n\n";
     table(out, schema, s.path);
   }
   return out;

@@ -42,6 +42,8 @@ class Config {
   bool has(const std::string& path) const { return entries_.count(path) > 0; }
   /// Was given explicitly, in the file or by an override.
   bool isGiven(const std::string& path) const;
+  /// A key with a value, or an entry map with entries.
+  bool isSet(const std::string& path) const { return has(path) || entry_names_.count(path) > 0; }
   /// The entry of a key that has a value; std::logic_error otherwise (a
   /// programming error: the schema guarantees values of active keys).
   const Entry& entry(const std::string& path) const;
@@ -57,6 +59,14 @@ class Config {
   /// Whether a key or section matters under the current values (all the
   /// conditions along its path hold).
   bool isActive(const std::string& path) const;
+
+  /// The entry names given in an entry map section (schema.hpp), in the order
+  /// they were first given.
+  std::vector<std::string> entryNames(const std::string& map_path) const;
+  /// Records an entry of an entry map (loaders); a known name is kept once.
+  void addEntry(const std::string& map_path, const std::string& name, SourceLocation where);
+  /// Where an entry was first given (empty if unknown).
+  SourceLocation entryLocation(const std::string& entry_path) const;
 
   /// Sets a value (loaders, and derived values such as the RNG seed used).
   void set(const std::string& path, ConfigValue value, SourceLocation where, ValueOrigin origin);
@@ -79,6 +89,8 @@ class Config {
   std::string source_;
   std::string base_directory_;
   std::map<std::string, Entry> entries_;
+  std::map<std::string, std::vector<std::string>> entry_names_;  // map path -> names in order
+  std::map<std::string, SourceLocation> entry_where_;              // entry path -> where given
   std::vector<std::string> notes_;
 };
 

@@ -1,6 +1,6 @@
 #pragma once
-// The solver sections: `diffusion:` (a diffusing species on the tissue's
-// finite-element mesh), `compartments:` (one well-mixed concentration per
+// The solver sections: `diffusion:` (one or several diffusing species on the
+// tissue's finite-element mesh, with reaction terms), `compartments:` (one well-mixed concentration per
 // cell, exchanged across walls, with polar transport) and `elasticity:`
 // (linear elasticity of the tissue with boundary conditions on its faces).
 // Each is off by default and read into a plain spec; the stages that solve
@@ -60,22 +60,41 @@ struct SourceSpec {
   std::vector<std::int64_t> lineage_ids;
 };
 
+/// One diffusing species: its name (the name of its outputs and of its
+/// variable in reaction expressions), coefficients and boundary conditions.
+struct SpeciesSpec {
+  std::string name;
+  /// Where its keys are in the config: "diffusion" (single-species form) or
+  /// "diffusion.species_map.<name>"; error messages name keys under it.
+  std::string key_prefix = "diffusion";
+  double initial = 0.0;
+  CellCoefficient diffusivity{1.0, {}}, decay{0.0, {}}, production{0.0, {}};
+  SourceSpec source;
+  std::vector<RegionValue> dirichlet, flux, robin;
+  double robin_exterior = 0.0;
+  /// Reaction rate r(species...) added to du/dt, a muparser expression in
+  /// the species names; empty: none. Checked when the config is read.
+  std::string reaction;
+};
+
 struct DiffusionSpec {
-  /// Empty: no diffusion stage.
-  std::string species;
+  /// Empty: no diffusion stage. Several species share the mesh, the solver
+  /// (one DiffusionReaction) and the keys below.
+  std::vector<SpeciesSpec> species;
   bool steady = false;
   TimeScheme scheme = TimeScheme::ImplicitEuler;
   MassType mass = MassType::Consistent;
   std::size_t every = 1;
   /// Solver step; unset: one step over the whole time since the last solve.
   std::optional<double> dt;
-  double initial = 0.0;
   /// Integer cell property selecting per-type coefficients; empty: uniform.
   std::string type_property;
-  CellCoefficient diffusivity{1.0, {}}, decay{0.0, {}}, production{0.0, {}};
-  SourceSpec source;
-  std::vector<RegionValue> dirichlet, flux, robin;
-  double robin_exterior = 0.0;
+
+  bool hasReaction() const {
+    for (const SpeciesSpec& s : species)
+      if (!s.reaction.empty()) return true;
+    return false;
+  }
 };
 
 struct CompartmentSpec {

@@ -3,9 +3,11 @@
 // Each solves every `every` steps, after growth and division, over the time
 // since its previous solve:
 //   DiffusionStage    remeshes the tissue if it changed (FieldMesh, shared),
-//                     carries the species over, solves (transient or steady)
-//                     and stores the nodal field on the FieldMesh and the
-//                     cell averages / amounts as cell properties;
+//                     carries the species over, solves all of them with one
+//                     DiffusionReaction (transient or steady; reactions from
+//                     the config's expressions) and stores the nodal fields
+//                     on the FieldMesh and the cell averages / amounts as
+//                     cell properties;
 //   CompartmentStage  one concentration per cell, the amounts kept as a cell
 //                     property split by measure at division (no mesh);
 //   ElasticityStage   remeshes if needed and solves the current shape;
@@ -14,6 +16,8 @@
 #include <cstddef>
 #include <memory>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "tessella/sim/coupling_section.hpp"
 #include "tessella/sim/field_mesh.hpp"
@@ -21,6 +25,10 @@
 #include "tessella/solvers/diffusion_reaction.hpp"
 
 namespace tessella::sim {
+
+namespace detail {
+class ReactionTerms;
+}
 
 /// Solves every `every` steps over the time since the last solve.
 class SolveSchedule {
@@ -59,8 +67,8 @@ class DiffusionStage final : public MeshFieldStage {
   void prepare(Tissue& tissue, double time) override;
   void apply(Tissue& tissue, const StepContext& context) override;
   std::size_t solves() const { return schedule_.solves(); }
-  /// Total amount (integral) of the species after the last solve.
-  double totalAmount() const { return total_; }
+  /// Total amount (integral) of species `k` (in the order of the spec) after the last solve.
+  double totalAmount(std::size_t k = 0) const { return total_.at(k); }
 
  private:
   DiffusionSpec spec_;
@@ -68,8 +76,9 @@ class DiffusionStage final : public MeshFieldStage {
 
   SolveSchedule schedule_;
   std::optional<DiffusionReaction> solver_;
+  std::shared_ptr<detail::ReactionTerms> reaction_;  // the compiled reaction expressions, if any
   std::uint64_t solver_mesh_version_ = 0;
-  double total_ = 0.0;
+  std::vector<double> total_;
 };
 
 class CompartmentStage final : public Stage {
