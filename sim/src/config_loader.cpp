@@ -200,9 +200,7 @@ class Loader {
       if (auto [first, inserted] = seen.emplace(name, key.Mark()); !inserted)
         throw ConfigError(at(key.Mark()), path,
                           "duplicate key (first given at " + at(first->second).str() + ")");
-      if (schema_.isEntryMap(section)) {
-        walkSection(value, path, at(key.Mark()));
-      } else if (schema_.isSection(path)) {
+      if (schema_.isSection(path)) {  // in an entry map, every name is an entry (checked by noteEntries)
         walkSection(value, path, at(key.Mark()));
       } else if (const KeySpec* spec = schema_.findKey(path)) {
         const bool has_mark = value && !value.IsNull() && !value.Mark().is_null();

@@ -31,12 +31,13 @@ double stepLength(const std::optional<double>& dt, double elapsed) {
 DiffusionStage::DiffusionStage(DiffusionSpec spec, std::shared_ptr<FieldMesh> mesh)
     : MeshFieldStage(std::move(mesh)), spec_(std::move(spec)), schedule_(spec_.every), total_(spec_.species.size(), 0.0) {
   if (spec_.hasReaction()) {
-    std::vector<std::string> names, expressions;
+    std::vector<std::string> names, expressions, keys;
     for (const SpeciesSpec& sp : spec_.species) {
       names.push_back(sp.name);
       expressions.push_back(sp.reaction);
+      keys.push_back(sp.key_prefix + ".reaction");
     }
-    reaction_ = std::make_shared<detail::ReactionTerms>(names, expressions);  // compiled once per stage
+    reaction_ = std::make_shared<detail::ReactionTerms>(names, expressions, keys);  // compiled once per stage
   }
 }
 

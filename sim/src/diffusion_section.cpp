@@ -174,14 +174,15 @@ DiffusionSpec readDiffusionSection(const Config& c) {
                               "', which another species writes; choose another name");
 
   // Reaction expressions compile now, so a bad one is an error at its key.
-  std::vector<std::string> all, expressions;
+  std::vector<std::string> all, expressions, keys;
   for (const SpeciesSpec& sp : d.species) {
     all.push_back(sp.name);
     expressions.push_back(sp.reaction);
+    keys.push_back(sp.key_prefix + ".reaction");
   }
   if (d.hasReaction()) {
     try {
-      detail::ReactionTerms check(all, expressions);
+      detail::ReactionTerms check(all, expressions, keys);
     } catch (const detail::ReactionExpressionError& e) {
       throw c.errorAt(d.species[e.species()].key_prefix + ".reaction", e.what());
     }

@@ -34,19 +34,23 @@ class ReactionExpressionError : public InputError {
 class ReactionTerms {
  public:
   /// `names` are the species in solver order, `expressions` their rates
-  /// (same size; "" for a species without a reaction). Every expression is
-  /// parsed here: a syntax error or a name that is not a species is a
+  /// (same size; "" for a species without a reaction), `keys` the config
+  /// keys they came from (named when a rate is not finite). Every expression
+  /// is parsed here: a syntax error or a name that is not a species is a
   /// ReactionExpressionError.
-  ReactionTerms(const std::vector<std::string>& names, const std::vector<std::string>& expressions);
+  ReactionTerms(const std::vector<std::string>& names, const std::vector<std::string>& expressions,
+                const std::vector<std::string>& keys);
   ~ReactionTerms();
   ReactionTerms(const ReactionTerms&) = delete;
   ReactionTerms& operator=(const ReactionTerms&) = delete;
 
   /// The rates at one node from the values of all species there (the
-  /// signature of tessella::ReactionFunction).
+  /// signature of tessella::ReactionFunction). A rate that is not finite
+  /// (1/h at h = 0) is an InputError naming the key and the values.
   void evaluate(std::span<const double> u, std::span<double> rate);
 
  private:
+  std::vector<std::string> names_, expressions_, keys_;
   std::vector<double> values_;  // the variables the parsers read (fixed addresses)
   std::vector<std::unique_ptr<mu::Parser>> parsers_;
   std::vector<std::size_t> target_;  // species each parser gives the rate of

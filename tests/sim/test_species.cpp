@@ -296,3 +296,18 @@ TEST_CASE("activator_inhibitor_2d.yaml: peaks form only when the inhibitor diffu
   CHECK(stable < 0.25 * turing);
   CHECK(cells > 40);              // cells in the peaks divided
 }
+
+TEST_CASE("a reaction rate that is not finite stops the run naming the key and the values",
+          "[sim][species][errors]") {
+  Simulation sim = Simulation::fromYaml(
+      "tissue: {generator: rectangular_grid, rectangular_grid: {nx: 2, ny: 1}}\n"
+      "time: {end: 1, dt: 0.5}\n"
+      "diffusion: {mode: transient, species_map: {a: {initial: 1, reaction: \"a^2 / h\"}, h: {initial: 0}}}\n");
+  try {
+    sim.run();
+    FAIL("expected an error");
+  } catch (const SimulationError& e) {
+    CHECK_THAT(e.what(), Catch::Contains("stage 'diffusion'"));
+    CHECK_THAT(e.what(), Catch::Contains("diffusion.species_map.a.reaction: \"a^2 / h\" gave inf at a = 1, h = 0"));
+  }
+}
