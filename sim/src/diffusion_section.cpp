@@ -87,8 +87,11 @@ SpeciesSpec readSpecies(const Config& c, const std::string& p, std::string name,
   return sp;
 }
 
+// The single form's rule, as before several species: letters, digits, '_'
+// (a leading digit is then refused by muparser if the name is used in a
+// reaction; species_map entries are checked by the loader, no leading digit).
 bool validName(const std::string& n) {
-  if (n.empty() || std::isdigit(static_cast<unsigned char>(n[0]))) return false;
+  if (n.empty()) return false;
   for (unsigned char ch : n)
     if (!(std::isalnum(ch) || ch == '_')) return false;
   return true;
@@ -153,8 +156,7 @@ DiffusionSpec readDiffusionSection(const Config& c) {
   if (names.empty()) {
     const std::string name = c.getString("diffusion.species");
     if (!validName(name))
-      throw c.errorAt("diffusion.species",
-                      "must be a name of letters, digits and '_', not starting with a digit, got '" + name + "'");
+      throw c.errorAt("diffusion.species", "must be a name of letters, digits and '_', got '" + name + "'");
     d.species.push_back(readSpecies(c, "diffusion", name, d.steady));
   } else {
     for (const std::string& key : kPerSpecies)

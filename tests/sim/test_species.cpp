@@ -311,3 +311,13 @@ TEST_CASE("a reaction rate that is not finite stops the run naming the key and t
     CHECK_THAT(e.what(), Catch::Contains("diffusion.species_map.a.reaction: \"a^2 / h\" gave inf at a = 1, h = 0"));
   }
 }
+
+TEST_CASE("the single-species name keeps its rule; a reaction needs a name muparser accepts", "[sim][species][errors]") {
+  const std::string base = "tissue: {generator: rectangular_grid}\n";
+  CHECK_NOTHROW(Simulation::fromYaml(base + "diffusion: {mode: transient, species: 2u}\n"));
+  ConfigError e = configErrorOf([&] { Simulation::fromYaml(base + "diffusion: {mode: transient, species: u-v}\n"); });
+  CHECK(e.keyPath() == "diffusion.species");
+  CHECK_THAT(e.what(), Catch::Contains("letters, digits and '_', got 'u-v'"));
+  e = configErrorOf([&] { Simulation::fromYaml(base + "diffusion: {mode: transient, species: 2u, reaction: \"-2u\"}\n"); });
+  CHECK(e.keyPath() == "diffusion.reaction");
+}
