@@ -316,3 +316,65 @@ TEST_CASE("nearly cocircular seeds (a jittered grid) still give a valid tiling",
     }
   }
 }
+
+namespace {
+
+// Every vertex of every cell is at least as close to the cell's seed as to
+// any other seed (searched in a grid of buckets). With the areas adding up to
+// the domain's, this makes each cell exactly its seed's Voronoi cell: a
+// polygon whose vertices all lie in the (convex) Voronoi cell lies inside it.
+std::size_t verticesCloserToAnotherSeed(const Tissue& t, const std::vector<Vec3>& seeds, const Rectangle& r) {
+  const int m = static_cast<int>(std::sqrt(static_cast<double>(seeds.size())));
+  const double wx = (r.max.x() - r.min.x()) / m, wy = (r.max.y() - r.min.y()) / m;
+  std::vector<std::vector<std::size_t>> bucket(static_cast<std::size_t>(m) * m);
+  auto cellOf = [&](double v, double lo, double w) { return std::clamp(static_cast<int>((v - lo) / w), 0, m - 1); };
+  for (std::size_t k = 0; k < seeds.size(); ++k)
+    bucket[cellOf(seeds[k].y(), r.min.y(), wy) * m + cellOf(seeds[k].x(), r.min.x(), wx)].push_back(k);
+  std::size_t bad = 0;
+  for (CellId c : t.cells())
+    for (VertexId v : t.cellVertices(c)) {
+      const Vec3& p = t.position(v);
+      const double own = (p - seeds[c.index()]).norm();
+      const int x0 = cellOf(p.x() - own, r.min.x(), wx), x1 = cellOf(p.x() + own, r.min.x(), wx);
+      const int y0 = cellOf(p.y() - own, r.min.y(), wy), y1 = cellOf(p.y() + own, r.min.y(), wy);
+      bool closer = false;
+      for (int y = y0; y <= y1 && !closer; ++y)
+        for (int x = x0; x <= x1 && !closer; ++x)
+          for (std::size_t k : bucket[y * m + x]) closer |= (p - seeds[k]).norm() < own - 1e-9;
+      bad += closer;
+    }
+  return bad;
+}
+
+}  // namespace
+
+TEST_CASE("large 2D Voronoi tissues (two half triangulations) are exact Voronoi tilings",
+          "[voronoi][voronoi2d][split]") {
+  // 10^5 seeds and more are triangulated as two halves side by side; cells
+  // that cannot be certified from their half send the job to one
+  // triangulation. Both must give the exact tiling.
+  const Rectangle rect{Vec3(0, 0, 0), Vec3(2, 1, 0)};
+  std::vector<Vec3> seeds = randomSeeds(rect, 120000, 77);
+  SECTION("uniform seeds") {}
+  SECTION("a big cell on the split line (not certifiable from a half)") {
+    // Empty a disk around the domain's centre, where the median x falls, and
+    // put one seed in its middle: its cell reaches far past the halves' margin.
+    std::erase_if(seeds, [](const Vec3& s) { return (s - Vec3(1, 0.5, 0)).norm() < 0.08; });
+    seeds.emplace_back(1.0, 0.5, 0);
+  }
+  SECTION("a lattice (cocircular seeds everywhere, also on the split line)") {
+    seeds.clear();
+    for (int j = 0; j < 250; ++j)
+      for (int i = 0; i < 500; ++i) seeds.emplace_back((i + 0.5) / 250, (j + 0.5) / 250, 0);
+  }
+  const Tissue t = voronoiTissue(seeds, rect);
+  const auto report = validate(t);
+  INFO(report.message);
+  REQUIRE(report.ok);
+  REQUIRE(t.numCells() == seeds.size());
+  CHECK(totalMeasure(t) == Approx(2.0).epsilon(1e-11));
+  CHECK(verticesCloserToAnotherSeed(t, seeds, rect) == 0);
+  std::size_t outside = 0;
+  for (CellId c : t.cells()) outside += !cellContains(t, c, seeds[c.index()], 1e-12);
+  CHECK(outside == 0);
+}

@@ -117,8 +117,8 @@ Tissue withThreads(int threads, const std::vector<Vec3>& seeds, const Domain& do
 
 TEST_CASE("bulk-built tissues equal the ones built polygon by polygon", "[voronoi][builders]") {
   SECTION("2D") {
-    // The 2D generator creates edges visiting cells along CGAL's spatial
-    // sort, so only edge ids may differ from the polygon-by-polygon build.
+    // The 2D generator creates edges visiting cells along a Hilbert curve,
+    // so only edge ids may differ from the polygon-by-polygon build.
     const Tissue t = voronoiTissue(randomSeeds(Rectangle{}, 500, 3), Rectangle{});
     REQUIRE(validate(t).ok);
     const Tissue r = rebuiltOneByOne(t);
@@ -133,15 +133,29 @@ TEST_CASE("bulk-built tissues equal the ones built polygon by polygon", "[vorono
     for (VertexId v : t.vertices()) positions.push_back(t.position(v));
     const Tissue plain = buildPolygonTissue(positions, offsets, loops);
     CHECK(identical(plain, r));
-    // A face order renumbers edges only; a bad one is refused.
-    std::vector<Index> reversed;
-    for (Index f = static_cast<Index>(t.numCells()); f-- > 0;) reversed.push_back(f);
-    const Tissue by_order = buildPolygonTissue(positions, offsets, loops, Embedding::Planar, reversed);
+    // Loops listed in another order with their face ids: the same faces,
+    // edges numbered by first use in list order; a bad id list is refused.
+    std::vector<Index> reversed, listed_offsets{0}, listed_loops;
+    for (Index f = static_cast<Index>(t.numCells()); f-- > 0;) {
+      reversed.push_back(f);
+      listed_loops.insert(listed_loops.end(), loops.begin() + offsets[f], loops.begin() + offsets[f + 1]);
+      listed_offsets.push_back(static_cast<Index>(listed_loops.size()));
+    }
+    const Tissue by_order =
+        buildPolygonTissue(positions, listed_offsets, listed_loops, Embedding::Planar, reversed);
     CHECK(validate(by_order).ok);
     CHECK(sameUpToEdgeIds(by_order, r));
     CHECK_FALSE(identical(by_order, r));
+    Index next_new_edge = 0;
+    bool numbered_by_first_use = true;
+    for (Index f : reversed)
+      for (OrientedEdge e : by_order.topology().faceEdges(FaceId(f)))
+        if (e.handle().index() == next_new_edge) ++next_new_edge;
+        else numbered_by_first_use &= e.handle().index() < next_new_edge;
+    CHECK(numbered_by_first_use);
+    CHECK(next_new_edge == by_order.numEdges());
     reversed[0] = reversed[1];
-    CHECK_THROWS_WITH(buildPolygonTissue(positions, offsets, loops, Embedding::Planar, reversed),
+    CHECK_THROWS_WITH(buildPolygonTissue(positions, listed_offsets, listed_loops, Embedding::Planar, reversed),
                       Catch::Contains("not a permutation"));
   }
   SECTION("3D") {
@@ -223,6 +237,10 @@ TEST_CASE("Voronoi tissues do not depend on the thread count", "[voronoi][thread
   SECTION("2D rectangle") {
     const auto seeds = randomSeeds(Rectangle{}, 20000, 11);
     CHECK(identical(withThreads(1, seeds, Rectangle{}), withThreads(3, seeds, Rectangle{})));
+  }
+  SECTION("2D rectangle, enough seeds for two half triangulations") {
+    const auto seeds = randomSeeds(Rectangle{}, 110000, 14);
+    CHECK(identical(withThreads(1, seeds, Rectangle{}), withThreads(2, seeds, Rectangle{})));
   }
   SECTION("2D disk") {
     const auto seeds = randomSeeds(Disk{}, 5000, 12);

@@ -25,9 +25,9 @@ void flatten(const std::vector<std::vector<T>>& lists, std::vector<Index>& offse
 // Loops as a complex; a bad loop becomes an InputError naming it as `what`.
 CellComplex loopsComplex(int dim, std::size_t num_vertices, std::span<const Index> offsets,
                          std::span<const Index> loop_vertices, const char* what,
-                         std::span<const Index> face_order = {}) {
+                         std::span<const Index> face_ids = {}) {
   try {
-    return CellComplex::fromLoops(dim, num_vertices, offsets, loop_vertices, face_order);
+    return CellComplex::fromLoops(dim, num_vertices, offsets, loop_vertices, face_ids);
   } catch (const TopologyError& e) {
     throw InputError(std::string(what) + " " + std::to_string(e.element().index) + ": " + e.what());
   }
@@ -44,8 +44,8 @@ Tissue buildPolygonTissue(std::span<const Vec3> positions, const std::vector<std
 
 Tissue buildPolygonTissue(std::vector<Vec3> positions, std::span<const Index> offsets,
                           std::span<const Index> loop_vertices, Embedding embedding,
-                          std::span<const Index> face_order) {
-  CellComplex c = loopsComplex(2, positions.size(), offsets, loop_vertices, "polygon", face_order);
+                          std::span<const Index> face_ids) {
+  CellComplex c = loopsComplex(2, positions.size(), offsets, loop_vertices, "polygon", face_ids);
   return Tissue(std::move(c), std::move(positions), embedding);
 }
 

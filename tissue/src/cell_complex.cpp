@@ -1,6 +1,7 @@
 #include "tessella/tissue/cell_complex.hpp"
 
 #include <algorithm>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -179,31 +180,33 @@ VolumeId CellComplex::addVolume(std::span<const OrientedFace> faces) {
 }
 
 CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<const Index> loop_offsets,
-                                   std::span<const Index> loop_vertices, std::span<const Index> face_order) {
+                                   std::span<const Index> loop_vertices, std::span<const Index> face_ids) {
   CellComplex c(dim);
   const std::size_t nf = loop_offsets.empty() ? 0 : loop_offsets.size() - 1;
   const std::size_t total = nf ? loop_offsets[nf] : 0;
   if (nf && (loop_offsets[0] != 0 || total != loop_vertices.size()))
     throw TopologyError("fromLoops: offsets do not cover the vertex list");
-  if (!face_order.empty()) {
-    if (face_order.size() != nf)
-      throw TopologyError("fromLoops: the face order lists " + std::to_string(face_order.size()) +
-                          " faces, not " + std::to_string(nf));
+  if (total > std::numeric_limits<std::uint32_t>::max() / 2)
+    throw TopologyError("fromLoops: " + std::to_string(total) + " loop vertices are more than one complex holds");
+  if (!face_ids.empty()) {
+    if (face_ids.size() != nf)
+      throw TopologyError("fromLoops: the face ids list " + std::to_string(face_ids.size()) + " faces, not " +
+                          std::to_string(nf));
     std::vector<std::uint8_t> listed(nf, 0);
-    for (Index f : face_order) {
+    for (Index f : face_ids) {
       if (f >= nf || listed[f])
-        throw TopologyError("fromLoops: the face order is not a permutation (face " + std::to_string(f) + ")");
+        throw TopologyError("fromLoops: the face ids are not a permutation (face " + std::to_string(f) + ")");
       listed[f] = 1;
     }
   }
-  auto faceAt = [&](std::size_t q) -> std::size_t { return face_order.empty() ? q : face_order[q]; };
+  // Loop q is face faceOf(q); every pass below reads the loops in list order.
+  auto faceOf = [&](std::size_t q) -> Index { return face_ids.empty() ? static_cast<Index>(q) : face_ids[q]; };
   // Check every loop first, so that an error leaves nothing half built.
   std::vector<std::uint32_t> star_size(num_vertices + 1, 0);
-  std::vector<Index> last_face(num_vertices, kInvalidIndex);  // a repeat within a loop shows here
+  std::vector<Index> last_loop(num_vertices, kInvalidIndex);  // a repeat within a loop shows here
   for (std::size_t q = 0; q < nf; ++q) {
-    const std::size_t f = faceAt(q);
-    const auto loop = loop_vertices.subspan(loop_offsets[f], loop_offsets[f + 1] - loop_offsets[f]);
-    const Index fi = static_cast<Index>(f);
+    const auto loop = loop_vertices.subspan(loop_offsets[q], loop_offsets[q + 1] - loop_offsets[q]);
+    const Index fi = faceOf(q);
     if (loop.size() < 3)
       throw TopologyError(id("face", fi) + " has " + std::to_string(loop.size()) + " vertices (at least 3 needed)",
                           {2, fi});
@@ -212,29 +215,36 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
         throw TopologyError(id("face", fi) + " uses vertex " + std::to_string(v) + " but there are only " +
                                 std::to_string(num_vertices) + " vertices",
                             {2, fi});
-      if (last_face[v] == fi) throw TopologyError(id("face", fi) + " passes twice through " + id("vertex", v), {2, fi});
-      last_face[v] = fi;
+      if (last_loop[v] == q) throw TopologyError(id("face", fi) + " passes twice through " + id("vertex", v), {2, fi});
+      last_loop[v] = static_cast<Index>(q);
       star_size[v] += 2;  // each loop edge at v: an upper bound on v's edges
     }
   }
-  // Vertex stars in a flat scratch array: star of v at star_start[v], star_count[v] used.
-  std::vector<std::size_t> star_start(num_vertices + 1, 0);
+  // Vertex stars in one pool (room for star_size[v] at star_start[v]); it
+  // becomes vertex_edges_ as it is, the unused room left as capacity.
+  std::vector<std::uint32_t> star_start(num_vertices + 1, 0);
   for (std::size_t v = 0; v < num_vertices; ++v) star_start[v + 1] = star_start[v] + star_size[v];
   std::vector<EdgeId> star(star_start[num_vertices]);
   std::vector<Index> star_other(star.size());  // the edge's other end: no lookup in edge_vertices_
   std::vector<std::uint32_t> star_count(num_vertices, 0);
-  std::vector<OrientedEdge> face_edges(total);
+  std::vector<OrientedEdge> face_edges(total);  // in list order, like loop_vertices
   std::vector<std::uint32_t> edge_face_count;
   edge_face_count.reserve(total / 2 + 1);
-  // (edge, face) of every loop position in visiting order: read back
-  // sequentially to fill edge -> faces without revisiting the loops.
+  // Edge -> faces. 2D: at most two faces per edge, kept in a pair of slots
+  // per edge (the second use of an edge comes soon after its first when
+  // nearby faces are listed together). 3D: (edge, face) of every loop
+  // position in list order, read back sequentially afterwards.
+  std::vector<FaceId> edge_face_slots;
   std::vector<std::pair<Index, Index>> uses;
-  uses.reserve(total);
+  if (dim == 2)
+    edge_face_slots.reserve(total + 2);
+  else
+    uses.reserve(total);
   for (std::size_t q = 0; q < nf; ++q) {
-    const std::size_t f = faceAt(q);
-    const std::size_t b = loop_offsets[f], m = loop_offsets[f + 1] - b;
+    const std::size_t b = loop_offsets[q], m = loop_offsets[q + 1] - b;
+    const Index f = faceOf(q);
     for (std::size_t i = 0; i < m; ++i) {
-      const VertexId a(loop_vertices[b + i]), h(loop_vertices[b + (i + 1) % m]);
+      const VertexId a(loop_vertices[b + i]), h(loop_vertices[i + 1 < m ? b + i + 1 : b]);
       EdgeId e;
       const std::size_t sa = star_start[a.index()];
       for (std::uint32_t k = 0; k < star_count[a.index()]; ++k)
@@ -246,6 +256,7 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
         e = EdgeId(static_cast<Index>(c.edge_vertices_.size()));
         c.edge_vertices_.push_back({a, h});
         edge_face_count.push_back(0);
+        if (dim == 2) edge_face_slots.insert(edge_face_slots.end(), 2, FaceId());
         const std::size_t ka = sa + star_count[a.index()]++;
         const std::size_t kh = star_start[h.index()] + star_count[h.index()]++;
         star[ka] = star[kh] = e;
@@ -253,48 +264,62 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
         star_other[kh] = a.index();
       }
       if (dim == 2 && edge_face_count[e.index()] == 2)
-        throw TopologyError(id("face", static_cast<Index>(f)) + ": " + id("edge", e.index()) +
-                                " (vertices " + std::to_string(a.index()) + ", " + std::to_string(h.index()) +
+        throw TopologyError(id("face", f) + ": " + id("edge", e.index()) + " (vertices " +
+                                std::to_string(a.index()) + ", " + std::to_string(h.index()) +
                                 ") already bounds two faces",
-                            {2, static_cast<Index>(f)});
+                            {2, f});
+      if (dim == 2)
+        edge_face_slots[2 * e.index() + edge_face_count[e.index()]] = FaceId(f);
+      else
+        uses.emplace_back(e.index(), f);
       ++edge_face_count[e.index()];
-      uses.emplace_back(e.index(), static_cast<Index>(f));
       face_edges[b + i] = OrientedEdge(e, c.edge_vertices_[e.index()][0] != a);
     }
   }
+  star_other = {};
   const std::size_t ne = c.edge_vertices_.size();
   c.alive_[0].assign(num_vertices, 1);
   c.alive_[1].assign(ne, 1);
   c.alive_[2].assign(nf, 1);
   c.live_count_ = {num_vertices, ne, nf, 0};
-  c.vertex_edges_.reserve(num_vertices, 2 * ne);
-  for (std::size_t v = 0; v < num_vertices; ++v)
-    c.vertex_edges_.pushList(std::span<const EdgeId>(star.data() + star_start[v], star_count[v]));
-  c.face_edges_.reserve(nf, total);
-  c.face_vertices_.reserve(nf, total);
-  c.face_volumes_.reserve(nf, 0);
-  std::vector<VertexId> verts;
-  for (std::size_t f = 0; f < nf; ++f) {
-    const std::size_t b = loop_offsets[f], m = loop_offsets[f + 1] - b;
-    c.face_edges_.pushList(std::span<const OrientedEdge>(face_edges.data() + b, m));
-    verts.assign(m, VertexId());
-    for (std::size_t i = 0; i < m; ++i) verts[i] = VertexId(loop_vertices[b + i]);
-    c.face_vertices_.pushList(std::span<const VertexId>(verts));
-    c.face_volumes_.pushList({});
+  c.vertex_edges_ = RaggedArray<EdgeId>::fromPool(std::move(star), std::span(star_start).first(num_vertices),
+                                                  star_count, std::span(star_size).first(num_vertices));
+  // Face lists stay where the loops are (list order); face f's slot points there.
+  std::vector<std::uint32_t> at(nf), size(nf);
+  for (std::size_t q = 0; q < nf; ++q) {
+    const Index f = faceOf(q);
+    at[f] = loop_offsets[q];
+    size[f] = loop_offsets[q + 1] - loop_offsets[q];
   }
-  // Edge -> faces, each list in face order (as addFace would append them).
-  std::vector<std::size_t> ef_start(ne + 1, 0);
-  for (std::size_t e = 0; e < ne; ++e) ef_start[e + 1] = ef_start[e] + edge_face_count[e];
-  std::vector<FaceId> ef(ef_start[ne]);
-  std::fill(edge_face_count.begin(), edge_face_count.end(), 0);
-  for (const auto& [e, f] : uses) ef[ef_start[e] + edge_face_count[e]++] = FaceId(f);
-  if (!face_order.empty())  // filled in visiting order: back to face order
-    for (std::size_t e = 0; e < ne; ++e)
-      std::sort(ef.begin() + static_cast<std::ptrdiff_t>(ef_start[e]),
-                ef.begin() + static_cast<std::ptrdiff_t>(ef_start[e + 1]));
-  c.edge_faces_.reserve(ne, ef.size());
-  for (std::size_t e = 0; e < ne; ++e)
-    c.edge_faces_.pushList(std::span<const FaceId>(ef.data() + ef_start[e], edge_face_count[e]));
+  std::vector<VertexId> face_vertices(total);
+  for (std::size_t k = 0; k < total; ++k) face_vertices[k] = VertexId(loop_vertices[k]);
+  c.face_edges_ = RaggedArray<OrientedEdge>::fromPool(std::move(face_edges), at, size);
+  c.face_vertices_ = RaggedArray<VertexId>::fromPool(std::move(face_vertices), at, size);
+  std::fill(at.begin(), at.end(), 0);
+  std::fill(size.begin(), size.end(), 0);
+  c.face_volumes_ = RaggedArray<VolumeId>::fromPool({}, at, size);
+  // Edge -> faces, each list in face id order (as addFace would append them).
+  if (dim == 2) {
+    std::vector<std::uint32_t> ef_at(ne);
+    for (std::size_t e = 0; e < ne; ++e) {
+      ef_at[e] = static_cast<std::uint32_t>(2 * e);
+      if (edge_face_count[e] == 2 && edge_face_slots[2 * e + 1] < edge_face_slots[2 * e])
+        std::swap(edge_face_slots[2 * e], edge_face_slots[2 * e + 1]);
+    }
+    const std::vector<std::uint32_t> two(ne, 2);
+    c.edge_faces_ = RaggedArray<FaceId>::fromPool(std::move(edge_face_slots), ef_at, edge_face_count, two);
+  } else {
+    std::vector<std::uint32_t> ef_start(ne + 1, 0);
+    for (std::size_t e = 0; e < ne; ++e) ef_start[e + 1] = ef_start[e] + edge_face_count[e];
+    std::vector<FaceId> ef(ef_start[ne]);
+    std::fill(edge_face_count.begin(), edge_face_count.end(), 0);
+    for (const auto& [e, f] : uses) ef[ef_start[e] + edge_face_count[e]++] = FaceId(f);
+    if (!face_ids.empty())  // filled in list order: back to face id order
+      for (std::size_t e = 0; e < ne; ++e)
+        std::sort(ef.begin() + static_cast<std::ptrdiff_t>(ef_start[e]),
+                  ef.begin() + static_cast<std::ptrdiff_t>(ef_start[e + 1]));
+    c.edge_faces_ = RaggedArray<FaceId>::fromPool(std::move(ef), std::span(ef_start).first(ne), edge_face_count);
+  }
   c.version_ = num_vertices + ne + nf;
   return c;
 }

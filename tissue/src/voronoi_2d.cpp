@@ -7,9 +7,22 @@
 // welded onto those circumcentres, so walls are exactly the dual of Delaunay
 // edges. Per-cell work runs in parallel; numbering is sequential, so the
 // result does not depend on the thread count.
+//
+// With many seeds the triangulation, the one serial step left, is split: the
+// left and right halves (at the median x) are triangulated side by side, each
+// with the other's seeds within a margin, and every cell is read from its own
+// half. A cell is kept only if it is certainly exact (no vertex of it closer
+// to a seed its half left out than to its own seed); otherwise the whole job
+// falls back to one triangulation, so the split changes speed, never the
+// result's correctness.
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
+#include <optional>
+#include <memory>
+#include <exception>
+#include <array>
 #include <string>
 #include <utility>
 #include <vector>
@@ -31,6 +44,7 @@
 #include "tessella/tissue/voronoi.hpp"
 #include "voronoi_cells.hpp"
 #include "voronoi_domain.hpp"
+#include "spatial_order.hpp"
 #include "voronoi_seed_checks.hpp"
 #include "voronoi_weld.hpp"
 
@@ -81,60 +95,186 @@ Vec2 polygonCentroid(const std::vector<Vec2>& poly) {
   return poly[0] + c / twice_area;
 }
 
-Delaunay triangulate(std::span<const Vec3> seeds) {
-  std::vector<std::pair<Point, Index>> points;
-  points.reserve(seeds.size());
-  for (std::size_t i = 0; i < seeds.size(); ++i)
-    points.emplace_back(Point(seeds[i].x(), seeds[i].y()), static_cast<Index>(i));
-  Delaunay dt;
-  dt.insert(points.begin(), points.end());  // spatially sorted insertion
+// Inserts the seeds in `insertion` order (see spatialOrder2), each from the
+// face of the seed inserted before: the walk to its place stays short.
+void insertSeeds(Delaunay& dt, std::span<const Vec3> seeds, std::span<const Index> insertion) {
+  Delaunay::Face_handle hint;
+  for (Index i : insertion) {
+    const std::size_t before = dt.number_of_vertices();
+    const Delaunay::Vertex_handle v = dt.insert(Point(seeds[i].x(), seeds[i].y()), hint);
+    if (dt.number_of_vertices() == before) throwDuplicate(seeds, i, v->info());  // an exact duplicate
+    v->info() = i;
+    hint = v->face();
+  }
+}
 
-  if (dt.number_of_vertices() < seeds.size()) {  // exact duplicates were merged
-    std::vector<std::uint8_t> kept(seeds.size(), 0);
-    for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) kept[v->info()] = 1;
-    for (std::size_t i = 0; i < seeds.size(); ++i)
-      if (!kept[i]) throwDuplicate(seeds, i, dt.nearest_vertex(points[i].first)->info());
+[[noreturn]] void throwCollinear(std::span<const Vec3> seeds) {
+  // Name the two extreme seeds of the line they are all on.
+  std::size_t a = 0, b = 0;
+  for (std::size_t i = 0; i < seeds.size(); ++i) {
+    if (std::tie(seeds[i].x(), seeds[i].y()) < std::tie(seeds[a].x(), seeds[a].y())) a = i;
+    if (std::tie(seeds[i].x(), seeds[i].y()) > std::tie(seeds[b].x(), seeds[b].y())) b = i;
   }
-  if (dt.dimension() < 2) {
-    // Name the two extreme seeds of the line they are all on.
-    std::size_t a = 0, b = 0;
-    for (std::size_t i = 0; i < seeds.size(); ++i) {
-      if (std::tie(seeds[i].x(), seeds[i].y()) < std::tie(seeds[a].x(), seeds[a].y())) a = i;
-      if (std::tie(seeds[i].x(), seeds[i].y()) > std::tie(seeds[b].x(), seeds[b].y())) b = i;
+  throw InputError("all " + std::to_string(seeds.size()) + " seeds are collinear, from " +
+                   describeSeed(a, seeds[a]) + " to " + describeSeed(b, seeds[b]) +
+                   ": their Voronoi cells are strips, not a tissue");
+}
+
+// The Delaunay triangulation(s) the cells are read from: one of all seeds,
+// or (split) one per half of the domain, built in parallel, each seed's cell
+// read from its owner's. Triangles have global ids (face->info(); a triangle
+// two halves share has one id); seeds closer than duplicate_distance are found
+// among Delaunay neighbours (the nearest neighbour of every seed is one) when
+// the cells are read.
+struct Triangulation2 {
+  std::vector<std::unique_ptr<Delaunay>> dts;
+  std::vector<std::uint8_t> owner;              // per seed: its triangulation
+  std::vector<Delaunay::Vertex_handle> handle;  // per seed, in its owner
+  std::vector<Delaunay::Face_handle> tri;       // by global id
+  // Split: each half left out the seeds beyond split + margin (left half) or
+  // below split - margin (right half). A cell read from a half is exact when
+  // each of its vertices is closer to its seed than to any left-out seed.
+  double split = 0, margin = 0;
+
+  bool exact(std::uint8_t side, const Vec2& seed, const Vec2& p) const {
+    if (dts.size() == 1) return true;
+    const double r = (p - seed).norm();
+    return side == 0 ? p.x() + r < split + margin : p.x() - r > split - margin;
+  }
+};
+
+Triangulation2 triangulateWhole(std::span<const Vec3> seeds, std::span<const Index> insertion) {
+  Triangulation2 tr;
+  tr.dts.push_back(std::make_unique<Delaunay>());
+  Delaunay& dt = *tr.dts[0];
+  insertSeeds(dt, seeds, insertion);
+  if (dt.dimension() < 2) throwCollinear(seeds);
+  tr.owner.assign(seeds.size(), 0);
+  tr.handle.resize(seeds.size());
+  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) tr.handle[v->info()] = v;
+  // Finite triangles numbered in CGAL's (deterministic) storage order.
+  tr.tri.reserve(2 * seeds.size());
+  for (auto f = dt.all_faces_begin(); f != dt.all_faces_end(); ++f) {
+    if (dt.is_infinite(f)) {
+      f->info() = kInvalidIndex;
+      continue;
     }
-    throw InputError("all " + std::to_string(seeds.size()) + " seeds are collinear, from " +
-                     describeSeed(a, seeds[a]) + " to " + describeSeed(b, seeds[b]) +
-                     ": their Voronoi cells are strips, not a tissue");
+    f->info() = static_cast<Index>(tr.tri.size());
+    tr.tri.push_back(f);
   }
-  // Seeds closer than duplicate_distance are found among Delaunay neighbours
-  // (the nearest neighbour of every seed is one) by clipVoronoi2.
-  return dt;
+  return tr;
+}
+
+// Seeds per mean spacing of margin each half keeps beyond the split line:
+// a cell of uniformly spread seeds is wider than this with negligible
+// probability; a wider one sends the whole job to triangulateWhole.
+constexpr double kSplitMargin = 8.0;
+// Below this many seeds one triangulation is fast enough.
+constexpr std::size_t kSplitMinSeeds = 100000;
+
+// The split triangulation, or nothing when the seeds do not lend themselves
+// to it (a half degenerate, a shared triangle triangulated differently by the
+// two halves, e.g. cocircular seeds on the split line).
+std::optional<Triangulation2> triangulateSplit(std::span<const Vec3> seeds, std::span<const Index> insertion,
+                                               const ConvexDomain2& domain) {
+  const std::size_t n = seeds.size();
+  Triangulation2 tr;
+  std::vector<double> xs(n);
+  double lo_x = seeds[0].x(), hi_x = lo_x, lo_y = seeds[0].y(), hi_y = lo_y;
+  for (std::size_t i = 0; i < n; ++i) {
+    xs[i] = seeds[i].x();
+    lo_x = std::min(lo_x, seeds[i].x());
+    hi_x = std::max(hi_x, seeds[i].x());
+    lo_y = std::min(lo_y, seeds[i].y());
+    hi_y = std::max(hi_y, seeds[i].y());
+  }
+  std::nth_element(xs.begin(), xs.begin() + static_cast<std::ptrdiff_t>(n / 2), xs.end());
+  tr.split = xs[n / 2];
+  tr.margin = kSplitMargin * std::sqrt((hi_x - lo_x) * (hi_y - lo_y) / static_cast<double>(n));
+  if (!(tr.margin > 0) || tr.split - tr.margin <= lo_x || tr.split + tr.margin >= hi_x) return std::nullopt;
+  std::array<std::vector<Index>, 2> side_insertion;
+  tr.owner.resize(n);
+  for (Index i : insertion) {
+    const double x = seeds[i].x();
+    if (x <= tr.split + tr.margin) side_insertion[0].push_back(i);
+    if (x >= tr.split - tr.margin) side_insertion[1].push_back(i);
+    tr.owner[i] = x <= tr.split ? 0 : 1;
+  }
+  tr.dts.push_back(std::make_unique<Delaunay>());
+  tr.dts.push_back(std::make_unique<Delaunay>());
+  std::array<std::exception_ptr, 2> failed;
+#pragma omp parallel for num_threads(2) schedule(static, 1)
+  for (int s = 0; s < 2; ++s) {
+    try {
+      insertSeeds(*tr.dts[s], seeds, side_insertion[s]);
+    } catch (...) {
+      failed[s] = std::current_exception();
+    }
+  }
+  for (const auto& e : failed)  // a duplicate is an error whichever half found it
+    if (e) std::rethrow_exception(e);
+  for (const auto& dt : tr.dts)
+    if (dt->dimension() < 2) return std::nullopt;
+  tr.handle.resize(n);
+  for (std::uint8_t s = 0; s < 2; ++s)
+    for (auto v = tr.dts[s]->finite_vertices_begin(); v != tr.dts[s]->finite_vertices_end(); ++v)
+      if (tr.owner[v->info()] == s) tr.handle[v->info()] = v;
+  // Triangles with a corner owned by a half get ids from that half; the ones
+  // with corners owned by both are numbered by the left half and looked up
+  // (by their corners) by the right one.
+  using Corners = std::array<Index, 3>;
+  struct CornersHash {
+    std::size_t operator()(const Corners& c) const {
+      return std::hash<std::uint64_t>()((std::uint64_t(c[0]) << 32) ^ (std::uint64_t(c[1]) << 16) ^ c[2]);
+    }
+  };
+  std::unordered_map<Corners, Index, CornersHash> shared;
+  tr.tri.reserve(2 * n + 2 * n / 100);
+  for (std::uint8_t s = 0; s < 2; ++s) {
+    Delaunay& dt = *tr.dts[s];
+    for (auto f = dt.all_faces_begin(); f != dt.all_faces_end(); ++f) {
+      f->info() = kInvalidIndex;
+      if (dt.is_infinite(f)) continue;
+      Corners c = {f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
+      int mine = 0;
+      for (Index i : c) mine += tr.owner[i] == s;
+      if (mine == 0) continue;  // only a neighbour's triangle: never read from here
+      std::sort(c.begin(), c.end());
+      if (mine < 3 && s == 1) {
+        const auto it = shared.find(c);
+        if (it != shared.end()) {
+          f->info() = it->second;
+          continue;
+        }
+        // Not in the left half: harmless for a triangle whose circumcentre is
+        // outside the domain (e.g. a sliver along the hull of the right
+        // half's seeds), whose cells are clipped by their neighbours'
+        // bisectors and certified from the clipped polygon; otherwise, e.g.
+        // cocircular seeds triangulated two ways, the split is given up.
+        const Point cc = CGAL::circumcenter(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+        if (domain.excess(Vec2(cc.x(), cc.y())) <= -2 * kWeldTolerance * domain.scale) return std::nullopt;
+        continue;
+      }
+      f->info() = static_cast<Index>(tr.tri.size());
+      tr.tri.push_back(f);
+      if (mine < 3) shared.emplace(c, f->info());
+    }
+  }
+  return tr;
 }
 
 }  // namespace
 
-ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& domain,
-                           double duplicate_tolerance, CellOutput output) {
-  Delaunay dt = triangulate(seeds);
-  const std::size_t n = seeds.size();
-  std::vector<Delaunay::Vertex_handle> handle(n);
-  // Seeds in CGAL's storage order (along its Hilbert sort): cells visited in
-  // this order touch nearby memory one after the other.
-  std::vector<Index> order;
-  order.reserve(n);
-  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
-    handle[v->info()] = v;
-    order.push_back(v->info());
-  }
+namespace {
 
-  // Finite triangles numbered in CGAL's (deterministic) order, with their circumcentres.
-  std::vector<Delaunay::Face_handle> tri;
-  tri.reserve(2 * n);
-  for (auto f = dt.all_faces_begin(); f != dt.all_faces_end(); ++f) f->info() = kInvalidIndex;
-  for (auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f) {
-    f->info() = static_cast<Index>(tri.size());
-    tri.push_back(f);
-  }
+// The cells of `tr`'s seeds clipped to the domain, or nothing when a cell
+// read from a half of a split triangulation is not certainly exact.
+std::optional<ClippedCells2> clipCells(std::span<const Vec3> seeds, const ConvexDomain2& domain,
+                                       double duplicate_tolerance, CellOutput output, const Triangulation2& tr,
+                                       std::span<const Index> order) {
+  const std::size_t n = seeds.size();
+  const auto& handle = tr.handle;
+  const auto& tri = tr.tri;
   // A cell is interior when all its triangles are finite and their circumcentres
   // lie inside the domain by a margin far above the clipping tolerances.
   const double margin = kInteriorMargin * domain.scale;
@@ -164,14 +304,26 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
     while (group[t] != t) t = group[t] = group[group[t]];
     return t;
   };
-  for (std::size_t t = 0; t < tri.size(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const Index u = tri[t]->neighbor(k)->info();
-      if (u == kInvalidIndex || u < t || (cc[t] - cc[u]).squaredNorm() > weld * weld) continue;
-      const Index a = root(static_cast<Index>(t)), b = root(u);
+  // Such neighbours are rare (cocircular seeds): find them in parallel, join serially.
+  std::vector<std::vector<std::pair<Index, Index>>> close(omp_get_max_threads());
+#pragma omp parallel
+  {
+    auto& mine = close[omp_get_thread_num()];
+#pragma omp for schedule(static)
+    for (std::int64_t t = 0; t < nt; ++t)
+      for (int k = 0; k < 3; ++k) {
+        const Index u = tri[t]->neighbor(k)->info();
+        if (u != kInvalidIndex && u > t && (cc[t] - cc[u]).squaredNorm() <= weld * weld)
+          mine.emplace_back(static_cast<Index>(t), u);
+      }
+  }
+  for (const auto& pairs : close)  // in any order: the groups and their lowest ids are the same
+    for (const auto& [t, u] : pairs) {
+      const Index a = root(t), b = root(u);
       group[std::max(a, b)] = std::min(a, b);
     }
-  for (std::size_t t = 0; t < tri.size(); ++t) group[t] = root(static_cast<Index>(t));
+  for (const auto& pairs : close)
+    for (const auto& [t, u] : pairs) group[t] = root(t), group[u] = root(u);
 
   const double on = kOnTolerance * domain.scale;
   const std::vector<Vec2> start =
@@ -180,7 +332,7 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
                                               {domain.lo.x(), domain.hi.y()}};
   const bool complex = output == CellOutput::Complex;
   ClippedCells2 out;
-  out.centroids.resize(n);
+  if (!complex) out.centroids.resize(n);
   // Interior cells' loops of triangle groups go to per-thread flat buffers
   // (no allocation per cell): cell i is buffer loop_buf[i] from loop_at[i],
   // loop_len[i] long. Boundary cells keep their clipped polygon.
@@ -188,7 +340,7 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
   std::vector<std::vector<Index>> buffers(complex ? nthreads : 0);
   std::vector<std::uint32_t> loop_buf(complex ? n : 0), loop_at(complex ? n : 0), loop_len(complex ? n : 0);
   std::vector<std::vector<Vec2>> clipped(complex ? n : 0);  // boundary cells: clipped polygon
-  std::vector<std::uint8_t> vanished(n, 0);
+  std::vector<std::uint8_t> vanished(n, 0), inexact(n, 0);
   std::vector<Index> duplicate(n, kInvalidIndex);  // a neighbour closer than duplicate_distance
   const double d2 = std::pow(duplicate_tolerance * domain.scale, 2);
   const std::int64_t ns = static_cast<std::int64_t>(n);
@@ -202,8 +354,13 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
 #pragma omp for schedule(dynamic, 1024)
     for (std::int64_t q = 0; q < ns; ++q) {
       const Index i = order[q];
-      const Vec2 s(seeds[i].x(), seeds[i].y());
-      bool interior = true;
+      const std::uint8_t half = tr.owner[i];
+      const Delaunay& dt = *tr.dts[half];
+      // Seed positions come from the triangulation's vertices (already in
+      // cache), not from `seeds`, whose order is the user's.
+      const Point& pi = handle[i]->point();
+      const Vec2 s(pi.x(), pi.y());
+      bool interior = true, exact_loop = true;
       loop.clear();
       auto fc = dt.incident_faces(handle[i]), done = fc;
       do {
@@ -213,21 +370,24 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
           break;
         }
         const auto nb = fc->vertex(Delaunay::ccw(fc->index(handle[i])));
-        if ((seeds[nb->info()] - seeds[i]).squaredNorm() < d2) duplicate[i] = nb->info();
+        if (CGAL::squared_distance(nb->point(), pi) < d2) duplicate[i] = nb->info();
+        exact_loop &= tr.exact(half, s, cc[t]);
         if (loop.empty() || loop.back() != group[t]) loop.push_back(group[t]);
       } while (++fc != done);
       while (interior && loop.size() > 1 && loop.back() == loop.front()) loop.pop_back();
       if (interior && loop.size() >= 3) {
-        poly.clear();
-        for (Index g : loop) poly.push_back(cc[g]);
-        const Vec2 c = polygonCentroid(poly);
-        out.centroids[i] = Vec3(c.x(), c.y(), 0);
+        inexact[i] = !exact_loop;
         if (complex) {
           std::vector<Index>& buf = buffers[me];
           loop_buf[i] = static_cast<std::uint32_t>(me);
           loop_at[i] = static_cast<std::uint32_t>(buf.size());
           loop_len[i] = static_cast<std::uint32_t>(loop.size());
           buf.insert(buf.end(), loop.begin(), loop.end());
+        } else {
+          poly.clear();
+          for (Index g : loop) poly.push_back(cc[g]);
+          const Vec2 c = polygonCentroid(poly);
+          out.centroids[i] = Vec3(c.x(), c.y(), 0);
         }
         continue;
       }
@@ -235,7 +395,7 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
       auto circ = dt.incident_vertices(handle[i]), vdone = circ;
       do {
         if (dt.is_infinite(circ)) continue;
-        if ((seeds[circ->info()] - seeds[i]).squaredNorm() < d2) duplicate[i] = circ->info();
+        if (CGAL::squared_distance(circ->point(), pi) < d2) duplicate[i] = circ->info();
         const Vec2 t(circ->point().x(), circ->point().y());
         const Vec2 d = t - s;
         const Vec2 normal = d / d.norm();
@@ -255,13 +415,25 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
         vanished[i] = 1;
         continue;
       }
-      const Vec2 c = polygonCentroid(poly);
-      out.centroids[i] = Vec3(c.x(), c.y(), 0);
-      if (complex) clipped[i] = poly;
+      if (tr.dts.size() > 1) {
+        for (const Vec2& p : poly) inexact[i] |= !tr.exact(half, s, p);
+        auto face = dt.incident_faces(handle[i]), first = face;
+        do {  // circumcentres the boundary welding uses (see below)
+          const Index t = face->info();
+          if (t != kInvalidIndex && domain.excess(cc[t]) <= -2 * weld) inexact[i] |= !tr.exact(half, s, cc[t]);
+        } while (++face != first);
+      }
+      if (complex) {
+        clipped[i] = poly;
+      } else {
+        const Vec2 c = polygonCentroid(poly);
+        out.centroids[i] = Vec3(c.x(), c.y(), 0);
+      }
     }
   }
   for (std::size_t i = 0; i < n; ++i)
     if (duplicate[i] != kInvalidIndex) throwDuplicate(seeds, i, duplicate[i]);
+  if (std::find(inexact.begin(), inexact.end(), 1) != inexact.end()) return std::nullopt;
   for (std::size_t i = 0; i < n; ++i)
     if (vanished[i])
       throw GeometryError("the Voronoi cell of " + describeSeed(i, seeds[i]) +
@@ -278,7 +450,7 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
   for (std::size_t i = 0; i < n; ++i)
     if (!clipped[i].empty()) boundary.push_back(static_cast<Index>(i));
   for (Index i : boundary) {
-    auto fc = dt.incident_faces(handle[i]), done = fc;
+    auto fc = tr.dts[tr.owner[i]]->incident_faces(handle[i]), done = fc;
     do {
       const Index t = fc->info();
       // A circumcentre on the boundary (to the weld tolerance) is left to the
@@ -312,36 +484,52 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
     loop_at[i] = boundary_at[b];
     loop_len[i] = boundary_at[b + 1] - boundary_at[b];
   }
-  // Vertices numbered in key order: triangles in CGAL's storage order (along
-  // its spatial sort), then the clipped points. Neighbouring vertices get
-  // nearby numbers whatever the seeds' order, which keeps building the complex
-  // cache-friendly; the numbering does not depend on the thread count.
+  buffers.push_back(std::move(boundary_keys));
+  // Loops listed in visiting order: loop q is cell order[q].
+  out.offsets.resize(n + 1);
+  out.offsets[0] = 0;
+  for (std::size_t q = 0; q < n; ++q) out.offsets[q + 1] = out.offsets[q] + loop_len[order[q]];
+  out.loops.resize(out.offsets[n]);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t q = 0; q < ns; ++q) {
+    const Index i = order[q];
+    const Index* src = buffers[loop_buf[i]].data() + loop_at[i];
+    std::copy(src, src + loop_len[i], out.loops.begin() + out.offsets[q]);
+  }
+  // Vertices numbered by first use along the listed loops: neighbouring
+  // vertices get nearby numbers whatever the seeds' order, which keeps
+  // building the complex cache-friendly; the numbering does not depend on
+  // the thread count.
   std::vector<Index> id(tri.size() + extra.size(), kInvalidIndex);
-  for (const auto& buf : buffers)
-    for (Index k : buf) id[k] = 0;
-  for (Index k : boundary_keys) id[k] = 0;
   out.positions.reserve(2 * n + extra.size());
-  for (std::size_t k = 0; k < id.size(); ++k)
-    if (id[k] == 0) {
+  for (Index& k : out.loops) {
+    if (id[k] == kInvalidIndex) {
       id[k] = static_cast<Index>(out.positions.size());
       out.positions.push_back(k < tri.size() ? Vec3(cc[k].x(), cc[k].y(), 0) : extra[k - tri.size()]);
     }
-  for (auto& buf : buffers)
-    for (Index& k : buf) k = id[k];
-  for (Index& k : boundary_keys) k = id[k];
-  buffers.push_back(std::move(boundary_keys));
-  // Cell k = seed k.
-  out.offsets.resize(n + 1);
-  out.offsets[0] = 0;
-  for (std::size_t i = 0; i < n; ++i) out.offsets[i + 1] = out.offsets[i] + loop_len[i];
-  out.loops.resize(out.offsets[n]);
-#pragma omp parallel for schedule(static)
-  for (std::int64_t i = 0; i < ns; ++i) {
-    const Index* src = buffers[loop_buf[i]].data() + loop_at[i];
-    std::copy(src, src + loop_len[i], out.loops.begin() + out.offsets[i]);
+    k = id[k];
   }
-  out.order = std::move(order);
+  out.order.assign(order.begin(), order.end());
   return out;
+}
+
+}  // namespace
+
+ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& domain,
+                           double duplicate_tolerance, CellOutput output) {
+  SpatialOrder2 orders = spatialOrder2(seeds);
+  // Cells are visited, and their loops listed, along a Hilbert curve: nearby
+  // cells one after the other touch nearby memory.
+  // Many seeds: two halves triangulated side by side (whatever the thread
+  // count, so the result does not depend on it), one triangulation if the
+  // halves' cells cannot all be certified exact.
+  if (seeds.size() >= kSplitMinSeeds) {
+    if (std::optional<Triangulation2> tr = triangulateSplit(seeds, orders.insertion, domain))
+      if (std::optional<ClippedCells2> cells = clipCells(seeds, domain, duplicate_tolerance, output, *tr, orders.hilbert))
+        return std::move(*cells);
+  }
+  const Triangulation2 tr = triangulateWhole(seeds, orders.insertion);
+  return *clipCells(seeds, domain, duplicate_tolerance, output, tr, orders.hilbert);
 }
 
 }  // namespace detail

@@ -12,11 +12,11 @@
 namespace tessella::detail {
 
 struct ClippedCells2 {
-  std::vector<Vec3> positions;  // vertices (z = 0), numbered along a spatial sort
-  std::vector<Index> offsets;   // cell k = seed k: loops[offsets[k] .. offsets[k+1]),
-  std::vector<Index> loops;     //   counter-clockwise
-  std::vector<Vec3> centroids;  // of each clipped cell
-  std::vector<Index> order;     // the cells along a spatial sort (to build the complex in)
+  std::vector<Vec3> positions;  // vertices (z = 0), numbered by first use in `loops`
+  std::vector<Index> offsets;   // loop q is loops[offsets[q] .. offsets[q+1]),
+  std::vector<Index> loops;     //   counter-clockwise, the loop of cell order[q]
+  std::vector<Index> order;     //   (cell k = seed k; cells listed along a Hilbert curve)
+  std::vector<Vec3> centroids;  // of each clipped cell, by cell (CentroidsOnly)
 };
 
 struct ClippedCells3 {

@@ -19,12 +19,12 @@ Tissue buildPolygonTissue(std::span<const Vec3> positions,
 
 /// The same from flat (CSR) arrays: polygon k is
 /// loop_vertices[offsets[k] .. offsets[k+1]). Built in bulk (no search per
-/// edge); the result is identical to the nested-vector form. `face_order`
-/// (optional) is the order polygons are visited in to number the edges, see
-/// CellComplex::fromLoops.
+/// edge); the result is identical to the nested-vector form. With `face_ids`
+/// (optional), the loops are listed in build order instead: loop q is
+/// polygon face_ids[q], see CellComplex::fromLoops.
 Tissue buildPolygonTissue(std::vector<Vec3> positions, std::span<const Index> offsets,
                           std::span<const Index> loop_vertices, Embedding embedding = Embedding::Planar,
-                          std::span<const Index> face_order = {});
+                          std::span<const Index> face_ids = {});
 
 /// One face of a polyhedral cell as used by buildPolyhedralTissue: an index
 /// into the face list and whether its loop normal points into the cell.

@@ -98,14 +98,15 @@ class CellComplex {
   /// TopologyError naming face k for a loop of fewer than 3 vertices, a vertex
   /// out of range or repeated in the loop, or (2D) an edge bounding a third face.
   ///
-  /// `face_order`, when given (a permutation of the faces), is the order the
-  /// loops are visited in to create edges: edges are then numbered by first
-  /// use in that order. Visiting nearby faces one after the other (e.g. along
-  /// a spatial sort) keeps the build cache-friendly when face ids are not.
+  /// `face_ids`, when given (a permutation of the faces), says the loops are
+  /// listed in build order: loop q (loop_offsets[q] .. loop_offsets[q+1]) is
+  /// face face_ids[q], and edges are numbered by first use in that order.
+  /// Listing nearby faces one after the other (e.g. along a spatial sort)
+  /// keeps the build streaming through memory when face ids are scattered.
   static CellComplex fromLoops(int dim, std::size_t num_vertices,
                                std::span<const Index> loop_offsets,
                                std::span<const Index> loop_vertices,
-                               std::span<const Index> face_order = {});
+                               std::span<const Index> face_ids = {});
   /// Appends volumes in bulk (3D): volume k is faces[offsets[k] .. offsets[k+1]).
   /// Same checks as addVolume (run in parallel, the first bad volume is
   /// reported); on error nothing is added.

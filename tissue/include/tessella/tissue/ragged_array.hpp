@@ -131,6 +131,28 @@ class RaggedArray {
     garbage_ = 0;
   }
 
+  /// Bulk construction: list i is pool[at[i] .. at[i] + sizes[i]), with room
+  /// to grow in place up to capacities[i] (default: its size). The lists may
+  /// lie in the pool in any order (e.g. the order a builder produced them in),
+  /// so nothing is copied; they must not overlap.
+  static RaggedArray fromPool(std::vector<T> pool, std::span<const std::uint32_t> at,
+                              std::span<const std::uint32_t> sizes,
+                              std::span<const std::uint32_t> capacities = {}) {
+    assert(at.size() == sizes.size() && (capacities.empty() || capacities.size() == sizes.size()));
+    RaggedArray r;
+    r.slots_.resize(at.size());
+    std::size_t reserved = 0;
+    for (std::size_t i = 0; i < at.size(); ++i) {
+      const std::uint32_t capacity = capacities.empty() ? sizes[i] : capacities[i];
+      assert(sizes[i] <= capacity && at[i] + capacity <= pool.size());
+      r.slots_[i] = Slot{at[i], sizes[i], capacity};
+      reserved += capacity;
+    }
+    r.garbage_ = pool.size() - reserved;
+    r.data_ = std::move(pool);
+    return r;
+  }
+
   void reserve(std::size_t lists, std::size_t items) {
     slots_.reserve(lists);
     data_.reserve(items);
