@@ -285,14 +285,19 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
   c.vertex_edges_ = RaggedArray<EdgeId>::fromPool(std::move(star), std::span(star_start).first(num_vertices),
                                                   star_count, std::span(star_size).first(num_vertices));
   // Face lists stay where the loops are (list order); face f's slot points there.
+  // (These passes touch disjoint slots: run in parallel.)
   std::vector<std::uint32_t> at(nf), size(nf);
-  for (std::size_t q = 0; q < nf; ++q) {
-    const Index f = faceOf(q);
+  const std::int64_t nfs = static_cast<std::int64_t>(nf);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t q = 0; q < nfs; ++q) {
+    const Index f = faceOf(static_cast<std::size_t>(q));
     at[f] = loop_offsets[q];
     size[f] = loop_offsets[q + 1] - loop_offsets[q];
   }
   std::vector<VertexId> face_vertices(total);
-  for (std::size_t k = 0; k < total; ++k) face_vertices[k] = VertexId(loop_vertices[k]);
+  const std::int64_t totals = static_cast<std::int64_t>(total);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t k = 0; k < totals; ++k) face_vertices[k] = VertexId(loop_vertices[k]);
   c.face_edges_ = RaggedArray<OrientedEdge>::fromPool(std::move(face_edges), at, size);
   c.face_vertices_ = RaggedArray<VertexId>::fromPool(std::move(face_vertices), at, size);
   std::fill(at.begin(), at.end(), 0);
@@ -301,7 +306,9 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
   // Edge -> faces, each list in face id order (as addFace would append them).
   if (dim == 2) {
     std::vector<std::uint32_t> ef_at(ne);
-    for (std::size_t e = 0; e < ne; ++e) {
+    const std::int64_t nes = static_cast<std::int64_t>(ne);
+#pragma omp parallel for schedule(static)
+    for (std::int64_t e = 0; e < nes; ++e) {
       ef_at[e] = static_cast<std::uint32_t>(2 * e);
       if (edge_face_count[e] == 2 && edge_face_slots[2 * e + 1] < edge_face_slots[2 * e])
         std::swap(edge_face_slots[2 * e], edge_face_slots[2 * e + 1]);

@@ -202,11 +202,32 @@ std::optional<Triangulation2> triangulateSplit(std::span<const Vec3> seeds, std:
   }
   tr.dts.push_back(std::make_unique<Delaunay>());
   tr.dts.push_back(std::make_unique<Delaunay>());
+  tr.handle.resize(n);
+  // Each half, in its own thread, triangulates its seeds, takes the handles
+  // of the seeds it owns and lists the triangles it numbers: those with a
+  // corner it owns, except (right half) those with corners owned by both,
+  // which the left half numbers and the right half looks up by their corners.
+  std::array<std::vector<Delaunay::Face_handle>, 2> numbered, border;
   std::array<std::exception_ptr, 2> failed;
 #pragma omp parallel for num_threads(2) schedule(static, 1)
   for (int s = 0; s < 2; ++s) {
     try {
-      insertSeeds(*tr.dts[s], seeds, side_insertion[s]);
+      Delaunay& dt = *tr.dts[s];
+      insertSeeds(dt, seeds, side_insertion[s]);
+      if (dt.dimension() < 2) continue;
+      for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
+        if (tr.owner[v->info()] == s) tr.handle[v->info()] = v;
+      for (auto f = dt.all_faces_begin(); f != dt.all_faces_end(); ++f) {
+        f->info() = kInvalidIndex;
+        if (dt.is_infinite(f)) continue;
+        int mine = 0;
+        for (int k = 0; k < 3; ++k) mine += tr.owner[f->vertex(k)->info()] == s;
+        if (mine == 0) continue;  // only a neighbour's triangle: never read from here
+        if (mine < 3) border[s].push_back(f);
+        if (mine < 3 && s == 1) continue;
+        f->info() = static_cast<Index>(numbered[s].size());
+        numbered[s].push_back(f);
+      }
     } catch (...) {
       failed[s] = std::current_exception();
     }
@@ -215,50 +236,38 @@ std::optional<Triangulation2> triangulateSplit(std::span<const Vec3> seeds, std:
     if (e) std::rethrow_exception(e);
   for (const auto& dt : tr.dts)
     if (dt->dimension() < 2) return std::nullopt;
-  tr.handle.resize(n);
-  for (std::uint8_t s = 0; s < 2; ++s)
-    for (auto v = tr.dts[s]->finite_vertices_begin(); v != tr.dts[s]->finite_vertices_end(); ++v)
-      if (tr.owner[v->info()] == s) tr.handle[v->info()] = v;
-  // Triangles with a corner owned by a half get ids from that half; the ones
-  // with corners owned by both are numbered by the left half and looked up
-  // (by their corners) by the right one.
+  const Index left = static_cast<Index>(numbered[0].size());
+  const std::int64_t right = static_cast<std::int64_t>(numbered[1].size());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t k = 0; k < right; ++k) numbered[1][k]->info() += left;
+  tr.tri = std::move(numbered[0]);
+  tr.tri.insert(tr.tri.end(), numbered[1].begin(), numbered[1].end());
   using Corners = std::array<Index, 3>;
+  auto corners = [](Delaunay::Face_handle f) {
+    Corners c = {f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
+    std::sort(c.begin(), c.end());
+    return c;
+  };
   struct CornersHash {
     std::size_t operator()(const Corners& c) const {
       return std::hash<std::uint64_t>()((std::uint64_t(c[0]) << 32) ^ (std::uint64_t(c[1]) << 16) ^ c[2]);
     }
   };
   std::unordered_map<Corners, Index, CornersHash> shared;
-  tr.tri.reserve(2 * n + 2 * n / 100);
-  for (std::uint8_t s = 0; s < 2; ++s) {
-    Delaunay& dt = *tr.dts[s];
-    for (auto f = dt.all_faces_begin(); f != dt.all_faces_end(); ++f) {
-      f->info() = kInvalidIndex;
-      if (dt.is_infinite(f)) continue;
-      Corners c = {f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()};
-      int mine = 0;
-      for (Index i : c) mine += tr.owner[i] == s;
-      if (mine == 0) continue;  // only a neighbour's triangle: never read from here
-      std::sort(c.begin(), c.end());
-      if (mine < 3 && s == 1) {
-        const auto it = shared.find(c);
-        if (it != shared.end()) {
-          f->info() = it->second;
-          continue;
-        }
-        // Not in the left half: harmless for a triangle whose circumcentre is
-        // outside the domain (e.g. a sliver along the hull of the right
-        // half's seeds), whose cells are clipped by their neighbours'
-        // bisectors and certified from the clipped polygon; otherwise, e.g.
-        // cocircular seeds triangulated two ways, the split is given up.
-        const Point cc = CGAL::circumcenter(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
-        if (domain.excess(Vec2(cc.x(), cc.y())) <= -2 * kWeldTolerance * domain.scale) return std::nullopt;
-        continue;
-      }
-      f->info() = static_cast<Index>(tr.tri.size());
-      tr.tri.push_back(f);
-      if (mine < 3) shared.emplace(c, f->info());
+  for (Delaunay::Face_handle f : border[0]) shared.emplace(corners(f), f->info());
+  for (Delaunay::Face_handle f : border[1]) {
+    const auto it = shared.find(corners(f));
+    if (it != shared.end()) {
+      f->info() = it->second;
+      continue;
     }
+    // Not in the left half: harmless for a triangle whose circumcentre is
+    // outside the domain (e.g. a sliver along the hull of the right half's
+    // seeds), whose cells are clipped by their neighbours' bisectors and
+    // certified from the clipped polygon; otherwise, e.g. cocircular seeds
+    // triangulated two ways, the split is given up.
+    const Point cc = CGAL::circumcenter(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
+    if (domain.excess(Vec2(cc.x(), cc.y())) <= -2 * kWeldTolerance * domain.scale) return std::nullopt;
   }
   return tr;
 }
