@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <string>
 
+#include "bench_args.hpp"
 #include "tessella/io/vtu.hpp"
 #include "tessella/tissue/grids.hpp"
 
@@ -44,8 +45,10 @@ Timing bestOf(int repeats, F&& f) {
 
 int main(int argc, char** argv) {
   using namespace tessella;
-  const std::size_t n = argc > 1 ? std::stoul(argv[1]) : 1000;
-  const int repeats = argc > 2 ? std::stoi(argv[2]) : 3;
+  const char* usage = "io_bench [N [REPEATS [DIR]]]   (an N x N grid; defaults 1000 3 /tmp)";
+  if (bench::helpRequested(argc, argv, usage)) return 0;
+  const std::size_t n = bench::countArgument(argc, argv, 1, "N", 1000, 1, 20000, usage);
+  const int repeats = static_cast<int>(bench::countArgument(argc, argv, 2, "REPEATS", 3, 1, 1000, usage));
   const std::filesystem::path dir = argc > 3 ? argv[3] : std::filesystem::temp_directory_path();
   try {
     const auto build_start = std::chrono::steady_clock::now();

@@ -23,6 +23,7 @@
 #define TETLIBRARY
 #include <tetgen.h>
 
+#include "bench_args.hpp"
 #include "tessella/mesh/mesh_measures.hpp"
 #include "tessella/mesh/mesh_tissue.hpp"
 #include "tessella/tissue/dome.hpp"
@@ -83,7 +84,9 @@ std::size_t tetgenAlone(const Tissue& t, const MeshOptions& o) {
     fa.polygonlist[0].vertexlist = new int[loop.size()];
     for (std::size_t i = 0; i < loop.size(); ++i) fa.polygonlist[0].vertexlist[i] = id[loop[i].index()];
   }
-  std::string sw = "pzQq" + std::to_string(o.radius_edge_ratio) + (o.max_volume > 0 ? "a" + std::to_string(o.max_volume) : "");
+  std::string sw = "pzQq";
+  sw += std::to_string(o.radius_edge_ratio);
+  if (o.max_volume > 0) sw += "a" + std::to_string(o.max_volume);
   tetrahedralize(sw.data(), &in, &out);
   return static_cast<std::size_t>(out.numberoftetrahedra);
 }
@@ -101,9 +104,11 @@ void row(const char* kind, std::size_t cells, std::size_t elements, double t_tes
 }  // namespace
 
 int main(int argc, char** argv) {
+  const char* usage = "mesh_bench [max_cells_2d [max_cells_3d]] | --quick   (defaults 100000 10000)";
+  if (bench::helpRequested(argc, argv, usage)) return 0;
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
-  const std::size_t max2d = quick ? 1000 : argc > 1 ? std::strtoul(argv[1], nullptr, 10) : 100000;
-  const std::size_t max3d = quick ? 100 : argc > 2 ? std::strtoul(argv[2], nullptr, 10) : 10000;
+  const std::size_t max2d = quick ? 1000 : bench::countArgument(argc, argv, 1, "max_cells_2d", 100000, 0, 10000000, usage);
+  const std::size_t max3d = quick ? 100 : bench::countArgument(argc, argv, 2, "max_cells_3d", 10000, 0, 1000000, usage);
   std::printf("mesh_bench: Voronoi tissues with unit mean cell size; times are wall-clock, single run\n");
 
   for (std::size_t n = 1000; n <= max2d; n *= 10) {
