@@ -86,7 +86,10 @@ std::size_t tetgenAlone(const Tissue& t, const MeshOptions& o) {
   }
   std::string sw = "pzQq";
   sw += std::to_string(o.radius_edge_ratio);
-  if (o.max_volume > 0) sw += "a" + std::to_string(o.max_volume);
+  if (o.max_volume > 0) {
+    sw += 'a';
+    sw += std::to_string(o.max_volume);
+  }
   tetrahedralize(sw.data(), &in, &out);
   return static_cast<std::size_t>(out.numberoftetrahedra);
 }
