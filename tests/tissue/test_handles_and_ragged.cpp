@@ -58,14 +58,14 @@ TEST_CASE("ragged array keeps lists through growth, relocation and compaction", 
 }
 
 TEST_CASE("ragged array built from a pool keeps its lists where they lie", "[tissue][ragged]") {
-  // Lists 0..2 laid out in the pool as 2, 0, 1 with a hole of spare room after list 0.
-  const std::vector<std::uint32_t> at = {3, 7, 0}, sizes = {2, 1, 3}, capacities = {4, 1, 3};
-  RaggedArray<int> r = RaggedArray<int>::fromPool({20, 21, 22, 0, 1, -9, -9, 10}, at, sizes, capacities);
+  // Lists 0..2 laid out in the pool as 2, 0, 1 with a hole (garbage) after list 0.
+  const std::vector<std::uint32_t> at = {3, 7, 0}, sizes = {2, 1, 3};
+  RaggedArray<int> r = RaggedArray<int>::fromPool({20, 21, 22, 0, 1, -9, -9, 10}, at, sizes);
   REQUIRE(r.size() == 3);
   CHECK(std::vector<int>(r[0].begin(), r[0].end()) == std::vector<int>{0, 1});
   CHECK(std::vector<int>(r[1].begin(), r[1].end()) == std::vector<int>{10});
   CHECK(std::vector<int>(r[2].begin(), r[2].end()) == std::vector<int>{20, 21, 22});
-  // List 0 grows into its spare room; list 1 has none and moves; nothing else changes.
+  // Lists 0 and 1 grow past their room and move; nothing else changes.
   r.pushBack(0, 2);
   r.pushBack(0, 3);
   r.pushBack(1, 11);

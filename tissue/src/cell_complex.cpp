@@ -220,8 +220,8 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
       star_size[v] += 2;  // each loop edge at v: an upper bound on v's edges
     }
   }
-  // Vertex stars in one pool (room for star_size[v] at star_start[v]); it
-  // becomes vertex_edges_ as it is, the unused room left as capacity.
+  // Vertex stars in one scratch pool (room for star_size[v] at
+  // star_start[v]); packed, it becomes vertex_edges_.
   std::vector<std::uint32_t> star_start(num_vertices + 1, 0);
   for (std::size_t v = 0; v < num_vertices; ++v) star_start[v + 1] = star_start[v] + star_size[v];
   std::vector<EdgeId> star(star_start[num_vertices]);
@@ -277,13 +277,22 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
     }
   }
   star_other = {};
+  // Close the gaps the upper bounds left between stars (moving left, in place).
+  std::uint32_t packed = 0;
+  for (std::size_t v = 0; v < num_vertices; ++v) {
+    if (packed != star_start[v]) std::copy_n(star.begin() + star_start[v], star_count[v], star.begin() + packed);
+    star_start[v] = packed;
+    packed += star_count[v];
+  }
+  star.resize(packed);
+  star.shrink_to_fit();
   const std::size_t ne = c.edge_vertices_.size();
   c.alive_[0].assign(num_vertices, 1);
   c.alive_[1].assign(ne, 1);
   c.alive_[2].assign(nf, 1);
   c.live_count_ = {num_vertices, ne, nf, 0};
   c.vertex_edges_ = RaggedArray<EdgeId>::fromPool(std::move(star), std::span(star_start).first(num_vertices),
-                                                  star_count, std::span(star_size).first(num_vertices));
+                                                  star_count);
   // Face lists stay where the loops are (list order); face f's slot points there.
   // (These passes touch disjoint slots: run in parallel.)
   std::vector<std::uint32_t> at(nf), size(nf);
@@ -313,8 +322,7 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
       if (edge_face_count[e] == 2 && edge_face_slots[2 * e + 1] < edge_face_slots[2 * e])
         std::swap(edge_face_slots[2 * e], edge_face_slots[2 * e + 1]);
     }
-    const std::vector<std::uint32_t> two(ne, 2);
-    c.edge_faces_ = RaggedArray<FaceId>::fromPool(std::move(edge_face_slots), ef_at, edge_face_count, two);
+    c.edge_faces_ = RaggedArray<FaceId>::fromPool(std::move(edge_face_slots), ef_at, edge_face_count);
   } else {
     std::vector<std::uint32_t> ef_start(ne + 1, 0);
     for (std::size_t e = 0; e < ne; ++e) ef_start[e + 1] = ef_start[e] + edge_face_count[e];

@@ -17,13 +17,13 @@
 // result's correctness.
 
 #include <algorithm>
-#include <cmath>
-#include <unordered_map>
-#include <optional>
-#include <memory>
-#include <exception>
 #include <array>
+#include <cmath>
+#include <exception>
+#include <memory>
+#include <optional>
 #include <string>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -43,8 +43,8 @@
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/voronoi.hpp"
 #include "voronoi_cells.hpp"
-#include "voronoi_domain.hpp"
 #include "spatial_order.hpp"
+#include "voronoi_domain.hpp"
 #include "voronoi_seed_checks.hpp"
 #include "voronoi_weld.hpp"
 
@@ -93,6 +93,13 @@ Vec2 polygonCentroid(const std::vector<Vec2>& poly) {
     c += w * (a + b) / 3;
   }
   return poly[0] + c / twice_area;
+}
+
+// Whether the boundary welding takes a circumcentre as a vertex: clearly
+// inside the domain (one within 2x the weld tolerance of the boundary is left
+// to the clipped points, which lie exactly on it).
+bool weldedAsCircumcentre(const ConvexDomain2& domain, const Vec2& p) {
+  return domain.excess(p) <= -2 * kWeldTolerance * domain.scale;
 }
 
 // Inserts the seeds in `insertion` order (see spatialOrder2), each from the
@@ -267,14 +274,10 @@ std::optional<Triangulation2> triangulateSplit(std::span<const Vec3> seeds, std:
     // certified from the clipped polygon; otherwise, e.g. cocircular seeds
     // triangulated two ways, the split is given up.
     const Point cc = CGAL::circumcenter(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point());
-    if (domain.excess(Vec2(cc.x(), cc.y())) <= -2 * kWeldTolerance * domain.scale) return std::nullopt;
+    if (weldedAsCircumcentre(domain, Vec2(cc.x(), cc.y()))) return std::nullopt;
   }
   return tr;
 }
-
-}  // namespace
-
-namespace {
 
 // The cells of `tr`'s seeds clipped to the domain, or nothing when a cell
 // read from a half of a split triangulation is not certainly exact.
@@ -429,7 +432,7 @@ std::optional<ClippedCells2> clipCells(std::span<const Vec3> seeds, const Convex
         auto face = dt.incident_faces(handle[i]), first = face;
         do {  // circumcentres the boundary welding uses (see below)
           const Index t = face->info();
-          if (t != kInvalidIndex && domain.excess(cc[t]) <= -2 * weld) inexact[i] |= !tr.exact(half, s, cc[t]);
+          if (t != kInvalidIndex && weldedAsCircumcentre(domain, cc[t])) inexact[i] |= !tr.exact(half, s, cc[t]);
         } while (++face != first);
       }
       if (complex) {
@@ -462,9 +465,7 @@ std::optional<ClippedCells2> clipCells(std::span<const Vec3> seeds, const Convex
     auto fc = tr.dts[tr.owner[i]]->incident_faces(handle[i]), done = fc;
     do {
       const Index t = fc->info();
-      // A circumcentre on the boundary (to the weld tolerance) is left to the
-      // clipped points, which lie exactly on it.
-      if (t == kInvalidIndex || domain.excess(cc[t]) > -2 * weld) continue;
+      if (t == kInvalidIndex || !weldedAsCircumcentre(domain, cc[t])) continue;
       const Index w = welder.weld(Vec3(cc[t].x(), cc[t].y(), 0));
       if (w == key_of_weld.size()) key_of_weld.push_back(group[t]);
     } while (++fc != done);
@@ -526,9 +527,10 @@ std::optional<ClippedCells2> clipCells(std::span<const Vec3> seeds, const Convex
 
 ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& domain,
                            double duplicate_tolerance, CellOutput output) {
+  // Seeds are inserted in BRIO order; cells are visited, and their loops
+  // listed, along a Hilbert curve: nearby cells one after the other touch
+  // nearby memory.
   SpatialOrder2 orders = spatialOrder2(seeds);
-  // Cells are visited, and their loops listed, along a Hilbert curve: nearby
-  // cells one after the other touch nearby memory.
   // Many seeds: two halves triangulated side by side (whatever the thread
   // count, so the result does not depend on it), one triangulation if the
   // halves' cells cannot all be certified exact.

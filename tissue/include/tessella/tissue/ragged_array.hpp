@@ -131,24 +131,22 @@ class RaggedArray {
     garbage_ = 0;
   }
 
-  /// Bulk construction: list i is pool[at[i] .. at[i] + sizes[i]), with room
-  /// to grow in place up to capacities[i] (default: its size). The lists may
-  /// lie in the pool in any order (e.g. the order a builder produced them in),
-  /// so nothing is copied; they must not overlap.
+  /// Bulk construction: list i is pool[at[i] .. at[i] + sizes[i]). The lists
+  /// may lie in the pool in any order (e.g. the order a builder produced
+  /// them in), so nothing is copied; they must not overlap, and pool items
+  /// in no list count as garbage (reclaimed by the next repack).
   static RaggedArray fromPool(std::vector<T> pool, std::span<const std::uint32_t> at,
-                              std::span<const std::uint32_t> sizes,
-                              std::span<const std::uint32_t> capacities = {}) {
-    assert(at.size() == sizes.size() && (capacities.empty() || capacities.size() == sizes.size()));
+                              std::span<const std::uint32_t> sizes) {
+    assert(at.size() == sizes.size());
     RaggedArray r;
     r.slots_.resize(at.size());
-    std::size_t reserved = 0;
+    std::size_t used = 0;
     for (std::size_t i = 0; i < at.size(); ++i) {
-      const std::uint32_t capacity = capacities.empty() ? sizes[i] : capacities[i];
-      assert(sizes[i] <= capacity && at[i] + capacity <= pool.size());
-      r.slots_[i] = Slot{at[i], sizes[i], capacity};
-      reserved += capacity;
+      assert(at[i] + sizes[i] <= pool.size());
+      r.slots_[i] = Slot{at[i], sizes[i], sizes[i]};
+      used += sizes[i];
     }
-    r.garbage_ = pool.size() - reserved;
+    r.garbage_ = pool.size() - used;
     r.data_ = std::move(pool);
     return r;
   }
