@@ -3,7 +3,8 @@
 //
 //   tessella run CONFIG.yaml [--out DIR] [--set key.path=value ...] [--overwrite] [--quiet]
 //   tessella info FILE.vtu
-//   tessella mesh SNAPSHOT.vtu --out MESH.vtu [--size H] [--min-angle A] [--max-volume V] [--config CFG.yaml]
+//   tessella mesh SNAPSHOT.vtu --out MESH.vtu [--size H] [--min-angle A] [--max-volume V]
+//                 [--volume-method cell_by_cell|whole_tissue] [--config CFG.yaml]
 //   tessella schema          (the config key reference, as in docs/config.md)
 //
 // Exit codes: 0 success, 1 an error Tessella reports (bad config or file, a
@@ -101,6 +102,7 @@ int infoCommand(const std::string& path) {
 struct MeshArgs {
   std::string snapshot, out, walls_out, config;
   std::optional<double> size, min_angle, max_volume;
+  std::optional<std::string> volume_method;
 };
 
 int meshCommand(const MeshArgs& a) {
@@ -113,6 +115,8 @@ int meshCommand(const MeshArgs& a) {
   if (a.size) options.max_edge_length = *a.size;
   if (a.min_angle) options.min_angle_degrees = *a.min_angle;
   if (a.max_volume) options.max_volume = *a.max_volume;
+  if (a.volume_method)
+    options.volume_method = *a.volume_method == "whole_tissue" ? VolumeMethod::WholeTissue : VolumeMethod::CellByCell;
   validateMeshOptions(options);  // before reading: a bad flag fails fast
 
   const Tissue tissue = io::readTissueVtu(a.snapshot);
@@ -139,8 +143,11 @@ int meshCommand(const MeshArgs& a) {
   const char* elements = mesh.dim == 2 ? "triangles" : "tetrahedra";
   fmt::print("tissue       {} cells ({}D, {}) from {} (read in {:.3f} s)\n", tissue.numCells(), tissue.dim(),
              embeddingName(tissue.embedding()), a.snapshot, t_read);
-  fmt::print("options      min_angle {} deg, max_edge_length {}, max_volume {}, radius_edge_ratio {}\n",
-             options.min_angle_degrees, options.max_edge_length, options.max_volume, options.radius_edge_ratio);
+  fmt::print("options      min_angle {} deg, max_edge_length {}, max_volume {}, radius_edge_ratio {}{}\n",
+             options.min_angle_degrees, options.max_edge_length, options.max_volume, options.radius_edge_ratio,
+             tissue.dim() != 3                                       ? ""
+             : options.volume_method == VolumeMethod::WholeTissue ? ", whole_tissue"
+                                                                  : ", cell_by_cell");
   fmt::print("mesh         {} nodes, {} {}, {} wall facets\n", mesh.numNodes(), mesh.numElements(), elements,
              mesh.numWallFacets());
   fmt::print("time         {:.3f} s ({:.0f} elements/s)\n", t_mesh, mesh.numElements() / std::max(t_mesh, 1e-9));
@@ -184,6 +191,8 @@ int main(int argc, char** argv) {
   mesh->add_option("--size", mesh_args.size, "Longest triangle edge (mesh.max_edge_length; 0 = none)");
   mesh->add_option("--min-angle", mesh_args.min_angle, "Smallest triangle angle in degrees (mesh.min_angle)");
   mesh->add_option("--max-volume", mesh_args.max_volume, "Largest tetrahedron volume (mesh.max_volume; 0 = none)");
+  mesh->add_option("--volume-method", mesh_args.volume_method, "3D: cell_by_cell or whole_tissue (mesh.volume_method)")
+      ->check(CLI::IsMember({"cell_by_cell", "whole_tissue"}));
 
   app.add_subcommand("schema", "Print the configuration key reference (Markdown, as in docs/config.md)");
 

@@ -1,11 +1,22 @@
 // mesh_bench: meshing time and elements per second for Voronoi tissues,
 // 2D (10^3 .. 10^5 cells), curved domes and 3D (10^2 .. 10^4 cells), against
-// CGAL / TetGen meshing the same walls alone (no checks, no cell tagging, no
+// CGAL / TetGen meshing the same input alone (no checks, no cell tagging, no
 // assembly) in the same run. The overhead ratio is tessella / mesher alone.
+//
+// 3D rows, one per volume method:
+//   cell_by_cell   "alone" is TetGen run on each cell's closed surface of wall
+//                  triangles (taken from the mesh), one cell after another,
+//                  with the same switches: the TetGen share of the method.
+//   whole_tissue   "alone" is TetGen on all walls as polygons, as before;
+//                  only up to 1000 cells (it grows quadratically, see
+//                  docs/meshing.md).
+// Quality columns: the share of tetrahedra above the radius-edge bound and
+// below a 10 degree dihedral angle, and the smallest dihedral angle.
 //
 //   mesh_bench [max_cells_2d [max_cells_3d]]     defaults: 100000 10000
 //   mesh_bench --quick                           the smallest sizes only (1000 2D, 100 3D)
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -94,6 +105,83 @@ std::size_t tetgenAlone(const Tissue& t, const MeshOptions& o) {
   return static_cast<std::size_t>(out.numberoftetrahedra);
 }
 
+/// TetGen alone on each cell's wall triangles as the cell-by-cell mesher
+/// hands them over (-Y keeps them), cells one after another.
+std::size_t tetgenPerCellAlone(const Tissue& t, const FeMesh& mesh, const MeshOptions& o) {
+  std::vector<std::vector<int>> cell_facets(t.cellSlots());
+  for (int f = 0; f < mesh.numWallFacets(); ++f)
+    for (CellId c : t.wallCells(WallId(static_cast<Index>(mesh.facet_wall(f))))) cell_facets[c.index()].push_back(f);
+  std::string sw = "pYzQq" + std::to_string(o.radius_edge_ratio);
+  if (o.max_volume > 0) {
+    sw += 'a';
+    sw += std::to_string(o.max_volume);
+  }
+  std::size_t tets = 0;
+  std::vector<int> local(static_cast<std::size_t>(mesh.numNodes()), -1);
+  for (CellId c : t.cells()) {
+    std::vector<int> nodes;
+    for (int f : cell_facets[c.index()])
+      for (int k = 0; k < 3; ++k) {
+        int& l = local[static_cast<std::size_t>(mesh.wall_facets(f, k))];
+        if (l < 0) {
+          l = static_cast<int>(nodes.size());
+          nodes.push_back(mesh.wall_facets(f, k));
+        }
+      }
+    tetgenio in, out;
+    in.numberofpoints = static_cast<int>(nodes.size());
+    in.pointlist = new REAL[3 * nodes.size()];
+    for (std::size_t i = 0; i < nodes.size(); ++i)
+      for (int k = 0; k < 3; ++k) in.pointlist[3 * i + static_cast<std::size_t>(k)] = mesh.nodes(nodes[i], k);
+    in.numberoffacets = static_cast<int>(cell_facets[c.index()].size());
+    in.facetlist = new tetgenio::facet[cell_facets[c.index()].size()];
+    for (std::size_t i = 0; i < cell_facets[c.index()].size(); ++i) {
+      tetgenio::facet& fa = in.facetlist[i];
+      fa.numberofpolygons = 1;
+      fa.polygonlist = new tetgenio::polygon[1];
+      fa.numberofholes = 0;
+      fa.holelist = nullptr;
+      fa.polygonlist[0].numberofvertices = 3;
+      fa.polygonlist[0].vertexlist = new int[3];
+      for (int k = 0; k < 3; ++k) fa.polygonlist[0].vertexlist[k] = local[static_cast<std::size_t>(mesh.wall_facets(cell_facets[c.index()][i], k))];
+    }
+    for (int n : nodes) local[static_cast<std::size_t>(n)] = -1;
+    tetrahedralize(sw.data(), &in, &out);
+    tets += static_cast<std::size_t>(out.numberoftetrahedra);
+  }
+  return tets;
+}
+
+/// "bad %  sliver %  min dihedral" of a tetrahedral mesh.
+std::string tetQuality(const FeMesh& mesh, double ratio_bound) {
+  std::size_t bad = 0, slivers = 0;
+  double smallest = 180;
+  for (int e = 0; e < mesh.numElements(); ++e) {
+    if (tetRadiusEdgeRatio(mesh, e) > ratio_bound * (1 + 1e-6)) ++bad;
+    Vec3 p[4];
+    for (int k = 0; k < 4; ++k) p[k] = mesh.nodes.row(mesh.elements(e, k)).transpose();
+    double d = 180;
+    for (int i = 0; i < 4; ++i)
+      for (int j = i + 1; j < 4; ++j) {
+        int o[2], n = 0;
+        for (int k = 0; k < 4; ++k)
+          if (k != i && k != j) o[n++] = k;
+        const Vec3 axis = (p[j] - p[i]).normalized();
+        Vec3 a = p[o[0]] - p[i], b = p[o[1]] - p[i];
+        a -= a.dot(axis) * axis;
+        b -= b.dot(axis) * axis;
+        d = std::min(d, std::acos(std::clamp(a.normalized().dot(b.normalized()), -1.0, 1.0)) * 180.0 / M_PI);
+      }
+    smallest = std::min(smallest, d);
+    if (d < 10.0) ++slivers;
+  }
+  const double n = static_cast<double>(std::max<int>(1, mesh.numElements()));
+  char text[128];
+  std::snprintf(text, sizeof text, "  ratio>%.2g %.1f%%  dihedral<10 %.2f%%  min dihedral %.2f", ratio_bound,
+                100.0 * static_cast<double>(bad) / n, 100.0 * static_cast<double>(slivers) / n, smallest);
+  return text;
+}
+
 void row(const char* kind, std::size_t cells, std::size_t elements, double t_tessella, double t_alone,
          std::size_t alone_elements) {
   std::printf("%-8s %8zu cells %10zu elements  tessella %8.3f s (%9.0f el/s)", kind, cells, elements, t_tessella,
@@ -147,22 +235,32 @@ int main(int argc, char** argv) {
     const double side = std::cbrt(static_cast<double>(n));
     const Box box{Vec3::Zero(), Vec3::Constant(side)};
     const Tissue t = voronoiTissue(randomSeeds(box, n, 3), box);
-    MeshOptions o;
-    o.radius_edge_ratio = 1.5;
-    o.max_volume = 0.02;  // about 50+ tetrahedra per cell
-    auto a = Clock::now();
-    FeMesh mesh;
-    try {
-      mesh = meshTissue(t, o);
-    } catch (const GeometryError& e) {
-      // Reported, not fatal: the rest of the table still means something.
-      std::printf("3D       %8zu cells  not meshed: %s\n", t.numCells(), e.what());
-      continue;
+    for (const VolumeMethod method : {VolumeMethod::CellByCell, VolumeMethod::WholeTissue}) {
+      const bool by_cell = method == VolumeMethod::CellByCell;
+      if (!by_cell && n > 1000) {
+        std::printf("3D whole %8zu cells  skipped: TetGen 1.5 on all walls grows quadratically (docs/meshing.md)\n", n);
+        continue;
+      }
+      MeshOptions o;
+      o.radius_edge_ratio = 1.5;
+      o.max_volume = 0.02;  // at least 50 tetrahedra per cell
+      o.volume_method = method;
+      auto a = Clock::now();
+      FeMesh mesh;
+      try {
+        mesh = meshTissue(t, o);
+      } catch (const GeometryError& e) {
+        // Reported, not fatal: the rest of the table still means something.
+        std::printf("3D       %8zu cells  not meshed: %s\n", t.numCells(), e.what());
+        continue;
+      }
+      auto b = Clock::now();
+      const std::size_t alone = by_cell ? tetgenPerCellAlone(t, mesh, o) : tetgenAlone(t, o);
+      auto c = Clock::now();
+      row(by_cell ? "3D cells" : "3D whole", t.numCells(), static_cast<std::size_t>(mesh.numElements()), seconds(a, b),
+          seconds(b, c), alone);
+      std::printf("         %s\n", tetQuality(mesh, o.radius_edge_ratio).c_str());
     }
-    auto b = Clock::now();
-    const std::size_t alone = tetgenAlone(t, o);
-    auto c = Clock::now();
-    row("3D", t.numCells(), static_cast<std::size_t>(mesh.numElements()), seconds(a, b), seconds(b, c), alone);
   }
   return 0;
 }

@@ -2,6 +2,9 @@
 // non-planar walls, non-convex cells, bad geometry.
 
 #include <catch2/catch.hpp>
+#include <omp.h>
+
+#include <cmath>
 
 #include "mesh_test_support.hpp"
 #include "tessella/mesh/geometry_check.hpp"
@@ -9,6 +12,7 @@
 #include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/grids.hpp"
+#include "tessella/tissue/voronoi.hpp"
 
 using namespace tessella;
 using namespace tessella::test;
@@ -41,11 +45,29 @@ void requireRadiusEdge(const FeMesh& mesh, double bound) {
   CHECK(worst <= bound * (1 + 1e-6));
 }
 
+const char* methodName(VolumeMethod m) { return m == VolumeMethod::CellByCell ? "cell_by_cell" : "whole_tissue"; }
+
+/// Smallest angle (degrees) of wall facet f and its longest edge.
+std::pair<double, double> facetShape(const FeMesh& mesh, int f) {
+  double smallest = 180, longest = 0;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 a = mesh.nodes.row(mesh.wall_facets(f, k)).transpose();
+    const Vec3 b = mesh.nodes.row(mesh.wall_facets(f, (k + 1) % 3)).transpose();
+    const Vec3 c = mesh.nodes.row(mesh.wall_facets(f, (k + 2) % 3)).transpose();
+    smallest = std::min(smallest, std::atan2((b - a).cross(c - a).norm(), (b - a).dot(c - a)) * 180.0 / M_PI);
+    longest = std::max(longest, (b - a).norm());
+  }
+  return {smallest, longest};
+}
+
 }  // namespace
 
 TEST_CASE("box grid: every tetrahedron in its cell, exact volumes, quality", "[mesh][volume]") {
+  const VolumeMethod method = GENERATE(VolumeMethod::CellByCell, VolumeMethod::WholeTissue);
+  INFO(methodName(method));
   const Tissue t = boxGrid(3, 2, 2, 1.0, 1.5, 0.8);
   MeshOptions o;
+  o.volume_method = method;
   o.max_volume = 0.02;
   o.radius_edge_ratio = 1.5;
   const FeMesh mesh = meshTissue(t, o);
@@ -71,7 +93,9 @@ TEST_CASE("non-planar walls are meshed as their fan surfaces", "[mesh][volume]")
       {{0, false}, {1, false}, {3, false}, {4, false}, {5, false}, {6, false}},
       {{1, true}, {2, false}, {7, false}, {8, false}, {9, false}, {10, false}}};
   const Tissue t = buildPolyhedralTissue(p, faces, cells);
-  const FeMesh mesh = meshTissue(t, MeshOptions{.max_volume = 0.01});
+  const VolumeMethod method = GENERATE(VolumeMethod::CellByCell, VolumeMethod::WholeTissue);
+  INFO(methodName(method));
+  const FeMesh mesh = meshTissue(t, MeshOptions{.max_volume = 0.01, .volume_method = method});
   requireMeasuresMatch(t, mesh);
   requireConforming(mesh);
   requireWallsMatch(t, mesh);
@@ -93,11 +117,73 @@ TEST_CASE("a non-convex cell whose centroid lies outside it", "[mesh][volume]") 
   for (Index f = 0; f < 10; ++f) cell.push_back({f, false});
   const Tissue t = buildPolyhedralTissue(p, faces, {cell});
   REQUIRE(relativelyClose(cellMeasure(t, CellId(0)), 6.5));
-  const FeMesh mesh = meshTissue(t, MeshOptions{.max_volume = 0.05});
+  const VolumeMethod method = GENERATE(VolumeMethod::CellByCell, VolumeMethod::WholeTissue);
+  INFO(methodName(method));
+  const FeMesh mesh = meshTissue(t, MeshOptions{.max_volume = 0.05, .volume_method = method});
   requireMeasuresMatch(t, mesh);
   CHECK(relativelyClose(totalMeasureOfMesh(mesh), 6.5));
   requireConforming(mesh);
   requireWallsMatch(t, mesh);
+}
+
+TEST_CASE("a cell enclosing another: the inner cell is a cavity of the outer one", "[mesh][volume]") {
+  std::vector<Vec3> p;
+  std::vector<std::vector<Index>> faces;
+  std::vector<std::vector<CellFace>> cells;
+  addBox(p, faces, cells, Vec3(0, 0, 0), Vec3(3, 3, 3));
+  addBox(p, faces, cells, Vec3(1, 1.2, 0.9), Vec3(2, 2, 2));
+  for (Index f = 6; f < 12; ++f) cells[0].push_back({f, true});  // the inner box's walls, seen from outside
+  const Tissue t = buildPolyhedralTissue(p, faces, cells);
+  REQUIRE(relativelyClose(cellMeasure(t, CellId(0)), 27.0 - 0.88));
+  const VolumeMethod method = GENERATE(VolumeMethod::CellByCell, VolumeMethod::WholeTissue);
+  INFO(methodName(method));
+  const FeMesh mesh = meshTissue(t, MeshOptions{.max_volume = 0.1, .volume_method = method});
+  requireMeasuresMatch(t, mesh);
+  CHECK(relativelyClose(totalMeasureOfMesh(mesh), 27.0));
+  requireConforming(mesh);
+  requireWallsMatch(t, mesh);
+}
+
+TEST_CASE("cell by cell: wall triangles honour the size and angle bounds, the walls conform", "[mesh][volume]") {
+  const Tissue t = boxGrid(2, 2, 1, 1.0, 0.7, 1.3);
+  MeshOptions o;
+  o.max_edge_length = 0.25;
+  o.min_angle_degrees = 28;
+  o.max_volume = 0.01;
+  const FeMesh mesh = meshTissue(t, o);
+  requireMeasuresMatch(t, mesh);
+  requireConforming(mesh);
+  requireWallsMatch(t, mesh);
+  double smallest = 180, longest = 0;
+  for (int f = 0; f < mesh.numWallFacets(); ++f) {
+    const auto [angle, edge] = facetShape(mesh, f);
+    smallest = std::min(smallest, angle);
+    longest = std::max(longest, edge);
+  }
+  CHECK(smallest >= 28.0 - 1e-9);  // a box has no input angle below 90 degrees
+  CHECK(longest <= 0.25 * (1 + 1e-9));
+  for (int e = 0; e < mesh.numElements(); ++e) CHECK(elementMeasure(mesh, e) <= o.max_volume * (1 + 1e-9));
+}
+
+TEST_CASE("cell by cell: the mesh does not depend on the thread count", "[mesh][volume][voronoi]") {
+  const Box box{Vec3(0, 0, 0), Vec3(2, 2, 1)};
+  const Tissue t = voronoiTissue(randomSeeds(box, 30, 5), box);
+  REQUIRE(findGeometryDefects(t).ok);
+  const MeshOptions o{.max_volume = 0.01};
+  const int threads = omp_get_max_threads();
+  omp_set_num_threads(1);
+  const FeMesh one = meshTissue(t, o);
+  omp_set_num_threads(2);
+  const FeMesh two = meshTissue(t, o);
+  omp_set_num_threads(threads);
+  requireMeasuresMatch(t, two);
+  requireConforming(two);
+  requireWallsMatch(t, two);
+  CHECK(one.nodes == two.nodes);
+  CHECK(one.elements == two.elements);
+  CHECK(one.element_cell == two.element_cell);
+  CHECK(one.wall_facets == two.wall_facets);
+  CHECK(one.facet_wall == two.facet_wall);
 }
 
 TEST_CASE("bad 3D geometry is reported before TetGen runs", "[mesh][volume][errors]") {

@@ -52,9 +52,12 @@ def test_mesh_arrays_and_cell_measures_match_the_tissue():
         assert lengths[mesh.facet_wall == w].sum() == pytest.approx(t.wall_measure(w), rel=1e-9)
 
 
-def test_mesh_of_a_box_tissue_has_tetrahedra_filling_each_cell():
+@pytest.mark.parametrize("method", [tessella.VolumeMethod.CELL_BY_CELL, tessella.VolumeMethod.WHOLE_TISSUE])
+def test_mesh_of_a_box_tissue_has_tetrahedra_filling_each_cell(method):
     t = tessella.box_grid(2, 2, 1, 1.0, 1.0, 1.5)
-    mesh = tessella.mesh_tissue(t, tessella.MeshOptions(max_volume=0.05))
+    options = tessella.MeshOptions(max_volume=0.05, volume_method=method)
+    assert options.volume_method == method
+    mesh = tessella.mesh_tissue(t, options)
     assert mesh.dim == 3 and mesh.elements.shape[1] == 4
     np.testing.assert_allclose(mesh.cell_measures(t.cell_slots), t.cell_measures(), rtol=1e-9)
     assert mesh.radius_edge_ratios().max() <= 1.5 * (1 + 1e-6)

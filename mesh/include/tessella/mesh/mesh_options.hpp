@@ -4,6 +4,18 @@
 
 namespace tessella {
 
+/// How a 3D tissue is filled with tetrahedra (docs/meshing.md).
+enum class VolumeMethod {
+  /// Walls meshed first, once, to the size and angle bounds; then one TetGen
+  /// run per cell that keeps those wall triangles, cells in parallel. Time
+  /// grows linearly with the number of cells.
+  CellByCell,
+  /// One TetGen run on all walls, which TetGen refines itself. TetGen 1.5's
+  /// facet repair makes this grow quadratically with the number of walls:
+  /// for small tissues only.
+  WholeTissue,
+};
+
 struct MeshOptions {
   /// 2D and surface tissues: lower bound on every triangle angle, in degrees
   /// (CGAL Delaunay refinement). Termination is proven up to 20.7 degrees;
@@ -30,6 +42,10 @@ struct MeshOptions {
   /// tol and a polygon or cell thinner than tol (mean width 2 area/perimeter,
   /// 2 volume/surface), so small but well-shaped cells of large tissues pass.
   double tolerance = 1e-10;
+  /// 3D tissues: how the tetrahedra are made. CellByCell bounds the wall
+  /// triangles by max_edge_length if set, else by the edge of the regular
+  /// tetrahedron of volume max_volume, and by min_angle_degrees.
+  VolumeMethod volume_method = VolumeMethod::CellByCell;
 };
 
 /// Throws InputError naming the field and value when an option is out of range.

@@ -1,0 +1,60 @@
+#pragma once
+// Internal: what the two TetGen-based volume meshers share — the switch
+// string, TetGen's integer exit codes in words, and filling a facet.
+
+#include <algorithm>
+#include <mutex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <tetgen.h>
+
+#include "tessella/mesh/mesh_options.hpp"
+
+namespace tessella::mesh_detail {
+
+/// TetGen 1.5 is not reentrant: every run re-initialises its predicates'
+/// globals (machine epsilon, splitter, filter bounds) step by step, so a run
+/// in another thread meanwhile computes with half-set values (seen: failed
+/// assertions in boundary recovery). Every call of tetrahedralize holds this.
+inline std::mutex& tetgenMutex() {
+  static std::mutex m;
+  return m;
+}
+
+/// What TetGen's integer exit codes mean (tetgen.h, terminatetetgen()).
+inline std::string tetgenErrorMeaning(int code) {
+  switch (code) {
+    case 1: return "out of memory";
+    case 2: return "internal error in TetGen";
+    case 3: return "input facets intersect each other (self-intersecting walls)";
+    case 4: return "an input feature is too small for TetGen's tolerance (near-degenerate wall or edge)";
+    case 5: return "two input facets are too close to each other (nearly overlapping walls)";
+    case 10: return "TetGen rejected the input complex";
+    default: return "unknown TetGen error";
+  }
+}
+
+/// `base` followed by the quality and volume bounds: q<ratio>[/<dihedral>][a<volume>].
+inline std::string tetgenSwitches(const std::string& base, const MeshOptions& o) {
+  std::ostringstream s;
+  s.precision(17);
+  s << base << "q" << o.radius_edge_ratio;
+  if (o.min_dihedral_degrees > 0.0) s << "/" << o.min_dihedral_degrees;
+  if (o.max_volume > 0.0) s << "a" << o.max_volume;
+  return s.str();
+}
+
+/// Makes `f` one polygon through `corners` (indices into the point list).
+inline void setPolygon(tetgenio::facet& f, const std::vector<int>& corners) {
+  f.numberofpolygons = 1;
+  f.polygonlist = new tetgenio::polygon[1];
+  f.numberofholes = 0;
+  f.holelist = nullptr;
+  f.polygonlist[0].numberofvertices = static_cast<int>(corners.size());
+  f.polygonlist[0].vertexlist = new int[corners.size()];
+  std::copy(corners.begin(), corners.end(), f.polygonlist[0].vertexlist);
+}
+
+}  // namespace tessella::mesh_detail
