@@ -5,8 +5,10 @@
 //
 // 3D rows, one per volume method:
 //   cell_by_cell   "alone" is TetGen run on each cell's closed surface of wall
-//                  triangles (taken from the mesh), one cell after another,
-//                  with the same switches: the TetGen share of the method.
+//                  triangles (taken from the mesh), one cell after another in
+//                  this process, with the switches of the mesher's first try:
+//                  the TetGen share of the method. (The mesher runs the cells
+//                  in worker processes side by side.)
 //   whole_tissue   "alone" is TetGen on all walls as polygons, as before;
 //                  only up to 1000 cells (it grows quadratically, see
 //                  docs/meshing.md).
@@ -111,7 +113,7 @@ std::size_t tetgenPerCellAlone(const Tissue& t, const FeMesh& mesh, const MeshOp
   std::vector<std::vector<int>> cell_facets(t.cellSlots());
   for (int f = 0; f < mesh.numWallFacets(); ++f)
     for (CellId c : t.wallCells(WallId(static_cast<Index>(mesh.facet_wall(f))))) cell_facets[c.index()].push_back(f);
-  std::string sw = "pYzQq" + std::to_string(o.radius_edge_ratio);
+  std::string sw = "pYzQT1e-7q" + std::to_string(o.radius_edge_ratio);  // the mesher's first try
   if (o.max_volume > 0) {
     sw += 'a';
     sw += std::to_string(o.max_volume);

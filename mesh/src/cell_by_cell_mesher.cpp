@@ -11,20 +11,26 @@
 //
 // TetGen switches: p mesh a PLC, Y keep the input wall triangles, z number
 // from 0, A region attributes (the cell's region is 1; 0 is a cavity such as
-// a cell enclosed by this one, dropped), Q quiet, X1 no static predicate
-// filters, then q<ratio>[/<dihedral>][a<volume>]. TetGen's predicates keep
-// their filter bound (computed from each input's bounding box) in globals;
-// without X1, two cells meshed at once would share one cell's bound.
+// a cell enclosed by this one, dropped), Q quiet, T1e-6 coplanarity tolerance
+// (relative), then q<ratio>[/<dihedral>][a<volume>]. The wall points of a
+// planar wall are coplanar only up to rounding, so neighbouring wall
+// triangles meet at folds of ~1e-16; with TetGen's default tolerance (1e-8)
+// recovering such a surface near a short tissue edge sometimes never ended
+// or failed an assertion, with 1e-6 it did not (a 10^4-cell Voronoi tissue).
+// TetGen 1.5 is not reentrant (tetgen_support.hpp), so the TetGen runs take
+// turns while the walls, the region seeds and the bookkeeping run in parallel.
 
 #include <array>
-#include <mutex>
+#include <cstring>
 #include <cmath>
 #include <string>
 #include <vector>
 
+#include <omp.h>
 #include <tetgen.h>
 
 #include "tessella/tissue/errors.hpp"
+#include "isolated_tasks.hpp"
 #include "tetgen_support.hpp"
 #include "volume_methods.hpp"
 #include "wall_surface_mesh.hpp"
@@ -45,6 +51,39 @@ double wallEdgeBound(const MeshOptions& o) {
   if (o.max_edge_length > 0.0) return o.max_edge_length;
   if (o.max_volume > 0.0) return std::cbrt(6.0 * std::sqrt(2.0) * o.max_volume);
   return 0.0;
+}
+
+/// Coplanarity tolerances (TetGen -T) to try, in order, for a cell whose
+/// TetGen run fails: the default (1e-8) failed on some Voronoi cells with
+/// short edges (never-ending flips, failed assertions) where 1e-7 worked,
+/// and 1e-6 merges the ends of edges shorter than 1e-6 x the cell's size.
+constexpr const char* kTolerances[] = {"T1e-7", "", "T1e-9", "T1e-6"};
+/// A cell's TetGen run normally takes milliseconds; one this slow is stuck.
+constexpr double kCellTimeoutSeconds = 60.0;
+
+std::string serialize(const CellMesh& cm) {
+  const std::uint64_t sizes[2] = {cm.added.size(), cm.tets.size()};
+  std::string out(sizeof sizes + cm.added.size() * sizeof(Vec3) + cm.tets.size() * sizeof(std::array<int, 4>), '\0');
+  char* p = out.data();
+  std::memcpy(p, sizes, sizeof sizes);
+  p += sizeof sizes;
+  if (!cm.added.empty()) std::memcpy(p, cm.added.data(), cm.added.size() * sizeof(Vec3));
+  p += cm.added.size() * sizeof(Vec3);
+  if (!cm.tets.empty()) std::memcpy(p, cm.tets.data(), cm.tets.size() * sizeof(std::array<int, 4>));
+  return out;
+}
+
+CellMesh deserialize(const std::string& bytes) {
+  std::uint64_t sizes[2];
+  std::memcpy(sizes, bytes.data(), sizeof sizes);
+  CellMesh cm;
+  cm.added.resize(sizes[0]);
+  cm.tets.resize(sizes[1]);
+  const char* p = bytes.data() + sizeof sizes;
+  if (sizes[0] > 0) std::memcpy(static_cast<void*>(cm.added.data()), p, sizes[0] * sizeof(Vec3));
+  p += sizes[0] * sizeof(Vec3);
+  if (sizes[1] > 0) std::memcpy(cm.tets.data(), p, sizes[1] * sizeof(std::array<int, 4>));
+  return cm;
 }
 
 /// `local_of` is scratch: one -1 per wall-mesh node, left as found.
@@ -86,7 +125,6 @@ CellMesh meshCell(const Tissue& t, const WallSurfaceMesh& wm, CellId c, const Ve
   in.regionlist = new REAL[5]{seed.x(), seed.y(), seed.z(), 1.0, 0.0};
   std::string sw = switches;
   try {
-    const std::lock_guard<std::mutex> lock(tetgenMutex());
     tetrahedralize(sw.data(), &in, &out);
   } catch (int code) {
     throw cellError("TetGen failed with code " + std::to_string(code) + " (" + tetgenErrorMeaning(code) +
@@ -129,26 +167,40 @@ CellMesh meshCell(const Tissue& t, const WallSurfaceMesh& wm, CellId c, const Ve
 FeMesh meshCellByCell(const Tissue& t, const MeshOptions& options, const WallTriangulation& walls) {
   const WallSurfaceMesh wm = meshWallSurfaces(t, walls, wallEdgeBound(options), options.min_angle_degrees);
   const std::vector<CellId> cells(t.cells().begin(), t.cells().end());
-  const std::string switches = tetgenSwitches("pYzAQ", options);
 
+  // Every cell in a worker process (isolated_tasks.hpp): a TetGen run that
+  // aborts or never ends costs that cell's attempt, not the caller. A cell
+  // that fails is tried again with the next coplanarity tolerance.
   std::vector<CellMesh> meshed(cells.size());
-  std::vector<std::string> errors(cells.size());
-  std::vector<ElementId> error_elements(cells.size());
-#pragma omp parallel
-  {
-    std::vector<int> local_of(wm.nodes.size(), -1);
-#pragma omp for schedule(dynamic, 1)
-    for (std::size_t i = 0; i < cells.size(); ++i) {
-      try {
-        meshed[i] = meshCell(t, wm, cells[i], cellSeed(t, walls, cells[i]), switches, local_of);
-      } catch (const GeometryError& e) {
-        errors[i] = e.what();
-        error_elements[i] = e.element();
+  std::vector<std::size_t> todo(cells.size());
+  for (std::size_t i = 0; i < cells.size(); ++i) todo[i] = i;
+  std::vector<std::string> failures(cells.size());
+  std::vector<int> local_of(wm.nodes.size(), -1);  // each worker's own copy
+  for (const char* tolerance : kTolerances) {
+    if (todo.empty()) break;
+    const std::string switches = tetgenSwitches(std::string("pYzAQ") + tolerance, options);
+    const auto results = runIsolated(todo, omp_get_max_threads(), kCellTimeoutSeconds, [&](std::size_t i) {
+      return serialize(meshCell(t, wm, cells[i], cellSeed(t, walls, cells[i]), switches, local_of));
+    });
+    std::vector<std::size_t> failed;
+    for (std::size_t k = 0; k < todo.size(); ++k) {
+      if (results[k].ok) {
+        meshed[todo[k]] = deserialize(results[k].bytes);
+      } else {
+        failures[todo[k]] += std::string(failures[todo[k]].empty() ? "" : "; ") + "switches " + switches + ": " +
+                             results[k].failure;
+        failed.push_back(todo[k]);
       }
     }
+    todo = std::move(failed);
   }
-  for (std::size_t i = 0; i < cells.size(); ++i)
-    if (!errors[i].empty()) throw GeometryError(errors[i], error_elements[i]);
+  if (!todo.empty()) {
+    const CellId c = cells[todo.front()];
+    throw GeometryError("cell-by-cell mesher: TetGen could not mesh cell " + std::to_string(c.index()) + " (" +
+                            std::to_string(todo.size()) + " cells failed) with any tolerance tried: " +
+                            failures[todo.front()],
+                        ElementId{3, c.index()});
+  }
 
   // Nodes: the wall mesh's, then each cell's interior points, cell by cell.
   std::size_t nodes = wm.nodes.size(), elements = 0;

@@ -203,13 +203,13 @@ MeshabilityReport checkSurface(const Tissue& t, double tol) {
   return {};
 }
 
+}  // namespace
+
 std::string wallCellsText(const Tissue& t, WallId w) {
   std::string s;
   for (CellId c : t.wallCells(w)) s += (s.empty() ? "" : ", ") + std::to_string(c.index());
   return "(cells " + s + ")";
 }
-
-}  // namespace
 
 double tissueScale(const Tissue& t) {
   bool any = false;

@@ -8,6 +8,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <span>
 #include <vector>
 
@@ -71,6 +72,16 @@ inline FanSurface fanSurface(std::span<const Vec3> loop) {
     s.planarity_deviation = std::max(s.planarity_deviation, std::abs((loop[i] - s.center).dot(s.normal)));
   }
   return s;
+}
+
+/// Smallest angle of a triangle, in degrees.
+inline double smallestAngleDegrees(const std::array<Vec3, 3>& c) {
+  double smallest = 180.0;
+  for (std::size_t k = 0; k < 3; ++k) {
+    const Vec3 a = c[(k + 1) % 3] - c[k], b = c[(k + 2) % 3] - c[k];
+    smallest = std::min(smallest, std::atan2(a.cross(b).norm(), a.dot(b)) * 180.0 / std::numbers::pi);
+  }
+  return smallest;
 }
 
 /// Triangles (indices into the loop) of a simple planar polygon, by a

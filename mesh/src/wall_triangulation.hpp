@@ -31,6 +31,9 @@ MeshabilityReport triangulateWalls(const Tissue& t, double tolerance, WallTriang
 /// The 3D part of the geometry check; fills `walls` for the volume mesher.
 MeshabilityReport checkVolumeGeometry(const Tissue& t, const MeshOptions& options, WallTriangulation& walls);
 
+/// "(cells 3, 8)": the cells on either side of a wall, for messages.
+std::string wallCellsText(const Tissue& t, WallId w);
+
 /// Bounding-box diagonal of the live vertices (the length scale of tolerances).
 double tissueScale(const Tissue& t);
 

@@ -100,6 +100,17 @@ case "$case_name" in
     grep -Eq '^mesh +[0-9]+ nodes, [0-9]+ tetrahedra' "$tmp/stdout" || fail "no mesh summary"
     grep -Eq '^cell volume +worst relative difference (0|[0-9.]+e-(1[0-9]|09)) ' "$tmp/stdout" \
       || fail "per-cell volumes disagree"
+    grep -q 'cell_by_cell' "$tmp/stdout" || fail "the default volume method is not reported"
+    # The other volume method, by flag; a method that does not exist is refused.
+    "$tessella" mesh "$tmp/box/tissue_000000.vtu" --out "$tmp/m2.vtu" --volume-method whole_tissue \
+      >"$tmp/stdout" 2>"$tmp/stderr" || fail "mesh --volume-method whole_tissue failed: $(cat "$tmp/stderr")"
+    grep -q 'whole_tissue' "$tmp/stdout" || fail "the volume method is not reported: $(cat "$tmp/stdout")"
+    grep -Eq '^cell volume +worst relative difference (0|[0-9.]+e-(1[0-9]|09)) ' "$tmp/stdout" \
+      || fail "per-cell volumes disagree (whole_tissue)"
+    "$tessella" mesh "$tmp/box/tissue_000000.vtu" --out "$tmp/m3.vtu" --volume-method fastest 2>"$tmp/stderr"
+    [ $? -ne 0 ] || fail "--volume-method fastest was accepted"
+    grep -q 'fastest' "$tmp/stderr" || fail "unclear --volume-method error: $(cat "$tmp/stderr")"
+    [ ! -e "$tmp/m3.vtu" ] || fail "an output file was left"
     ;;
   mesh_every_config)
     # Every bundled configuration's initial tissue meshes, with cell measures kept.
