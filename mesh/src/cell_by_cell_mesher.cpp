@@ -11,26 +11,27 @@
 //
 // TetGen switches: p mesh a PLC, Y keep the input wall triangles, z number
 // from 0, A region attributes (the cell's region is 1; 0 is a cavity such as
-// a cell enclosed by this one, dropped), Q quiet, T1e-6 coplanarity tolerance
-// (relative), then q<ratio>[/<dihedral>][a<volume>]. The wall points of a
+// a cell enclosed by this one, dropped), Q quiet, T<tol> coplanarity
+// tolerance, then q<ratio>[/<dihedral>][a<volume>].
+//
+// The runs happen in worker processes (isolated_tasks.hpp): TetGen 1.5 calls
+// abort() on a failed assertion and can flip forever on near-degenerate
+// input, and it is not reentrant (tetgen_support.hpp). The wall points of a
 // planar wall are coplanar only up to rounding, so neighbouring wall
-// triangles meet at folds of ~1e-16; with TetGen's default tolerance (1e-8)
-// recovering such a surface near a short tissue edge sometimes never ended
-// or failed an assertion, with 1e-6 it did not (a 10^4-cell Voronoi tissue).
-// TetGen 1.5 is not reentrant (tetgen_support.hpp), so the TetGen runs take
-// turns while the walls, the region seeds and the bookkeeping run in parallel.
+// triangles meet at folds of ~1e-16 that the coplanarity tolerance decides
+// about: a cell whose run fails is tried again with the next tolerance.
 
 #include <array>
-#include <cstring>
 #include <cmath>
+#include <cstring>
 #include <string>
 #include <vector>
 
 #include <omp.h>
 #include <tetgen.h>
 
-#include "tessella/tissue/errors.hpp"
 #include "isolated_tasks.hpp"
+#include "tessella/tissue/errors.hpp"
 #include "tetgen_support.hpp"
 #include "volume_methods.hpp"
 #include "wall_surface_mesh.hpp"
