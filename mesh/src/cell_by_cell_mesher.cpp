@@ -21,6 +21,7 @@
 // triangles meet at folds of ~1e-16 that the coplanarity tolerance decides
 // about: a cell whose run fails is tried again with the next tolerance.
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -132,13 +133,23 @@ CellMesh meshCell(const Tissue& t, const WallSurfaceMesh& wm, CellId c, const Ve
                     ") with switches \"" + switches + "\"");
   }
 
-  // -Y: the walls must come back as given, every face on them made of input points.
+  // -Y: the walls must come back exactly as given (TetGen may not split or
+  // merge them, or the neighbour's copy of a wall would no longer match).
   const int inputs = in.numberofpoints;
-  if (out.numberofpoints < inputs || out.numberoftrifaces != static_cast<int>(triangles.size()))
+  const auto sorted = [](std::array<int, 3> tri) {
+    std::sort(tri.begin(), tri.end());
+    return tri;
+  };
+  std::vector<std::array<int, 3>> given, returned;
+  for (const auto& tri : triangles) given.push_back(sorted(tri));
+  for (int f = 0; f < out.numberoftrifaces; ++f)
+    returned.push_back(sorted({out.trifacelist[3 * f], out.trifacelist[3 * f + 1], out.trifacelist[3 * f + 2]}));
+  std::sort(given.begin(), given.end());
+  std::sort(returned.begin(), returned.end());
+  if (out.numberofpoints < inputs || given != returned)
     throw cellError("TetGen changed the cell's wall triangles (" + std::to_string(triangles.size()) + " given, " +
-                    std::to_string(out.numberoftrifaces) + " returned)");
-  for (int i = 0; i < 3 * out.numberoftrifaces; ++i)
-    if (out.trifacelist[i] >= inputs) throw cellError("TetGen put a point on one of the cell's walls");
+                    std::to_string(out.numberoftrifaces) + " returned, " +
+                    std::to_string(std::max(0, out.numberofpoints - inputs)) + " points added)");
 
   CellMesh cm;
   std::vector<int> added_of(static_cast<std::size_t>(out.numberofpoints - inputs), -1);
