@@ -17,7 +17,9 @@ namespace tessella::mesh_detail {
 /// TetGen 1.5 is not reentrant: every run re-initialises its predicates'
 /// globals (machine epsilon, splitter, filter bounds) step by step, so a run
 /// in another thread meanwhile computes with half-set values (seen: failed
-/// assertions in boundary recovery). Every call of tetrahedralize holds this.
+/// assertions in boundary recovery). Every run inside the caller's process
+/// holds this lock; the cell-by-cell runs happen in worker processes, which
+/// have globals of their own.
 inline std::mutex& tetgenMutex() {
   static std::mutex m;
   return m;
