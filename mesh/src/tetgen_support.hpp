@@ -3,7 +3,6 @@
 // string, TetGen's integer exit codes in words, and filling a facet.
 
 #include <algorithm>
-#include <mutex>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -13,17 +12,6 @@
 #include "tessella/mesh/mesh_options.hpp"
 
 namespace tessella::mesh_detail {
-
-/// TetGen 1.5 is not reentrant: every run re-initialises its predicates'
-/// globals (machine epsilon, splitter, filter bounds) step by step, so a run
-/// in another thread meanwhile computes with half-set values (seen: failed
-/// assertions in boundary recovery). Every run inside the caller's process
-/// holds this lock; the cell-by-cell runs happen in worker processes, which
-/// have globals of their own.
-inline std::mutex& tetgenMutex() {
-  static std::mutex m;
-  return m;
-}
 
 /// What TetGen's integer exit codes mean (tetgen.h, terminatetetgen()).
 inline std::string tetgenErrorMeaning(int code) {
