@@ -125,13 +125,7 @@ CellMesh meshCell(const Tissue& t, const WallSurfaceMesh& wm, CellId c, const Ve
     setPolygon(in.facetlist[f], {triangles[f][0], triangles[f][1], triangles[f][2]});
   in.numberofregions = 1;
   in.regionlist = new REAL[5]{seed.x(), seed.y(), seed.z(), 1.0, 0.0};
-  std::string sw = switches;
-  try {
-    tetrahedralize(sw.data(), &in, &out);
-  } catch (int code) {
-    throw cellError("TetGen failed with code " + std::to_string(code) + " (" + tetgenErrorMeaning(code) +
-                    ") with switches \"" + switches + "\"");
-  }
+  runTetgen(switches, in, out, "meshing cell " + std::to_string(c.index()));
 
   // -Y: the walls must come back exactly as given (TetGen may not split or
   // merge them, or the neighbour's copy of a wall would no longer match).

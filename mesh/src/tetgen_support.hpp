@@ -1,6 +1,7 @@
 #pragma once
 // Internal: what the two TetGen-based volume meshers share — the switch
-// string, TetGen's integer exit codes in words, and filling a facet.
+// string, running TetGen with its integer exit codes in words, and filling a
+// facet.
 
 #include <algorithm>
 #include <sstream>
@@ -10,6 +11,7 @@
 #include <tetgen.h>
 
 #include "tessella/mesh/mesh_options.hpp"
+#include "tessella/tissue/errors.hpp"
 
 namespace tessella::mesh_detail {
 
@@ -34,6 +36,18 @@ inline std::string tetgenSwitches(const std::string& base, const MeshOptions& o)
   if (o.min_dihedral_degrees > 0.0) s << "/" << o.min_dihedral_degrees;
   if (o.max_volume > 0.0) s << "a" << o.max_volume;
   return s.str();
+}
+
+/// tetrahedralize(), with TetGen's integer throws turned into a GeometryError
+/// that says what `what` was ("meshing cell 12") and which switches ran.
+inline void runTetgen(const std::string& switches, tetgenio& in, tetgenio& out, const std::string& what) {
+  std::string sw = switches;  // TetGen wants a mutable string
+  try {
+    tetrahedralize(sw.data(), &in, &out);
+  } catch (int code) {
+    throw GeometryError("TetGen failed with code " + std::to_string(code) + " (" + tetgenErrorMeaning(code) + ") " +
+                        what + " with switches \"" + switches + "\"");
+  }
 }
 
 /// Makes `f` one polygon through `corners` (indices into the point list).

@@ -202,13 +202,7 @@ FeMesh meshWholeTissue(const Tissue& t, const MeshOptions& options, const WallTr
   const std::string switches = tetgenSwitches("pzAQ", options);
   const auto result = runIsolated({0}, 1, std::numeric_limits<double>::infinity(), [&](std::size_t) {
     tetgenio out;
-    std::string sw = switches;
-    try {
-      tetrahedralize(sw.data(), &in, &out);
-    } catch (int code) {
-      throw GeometryError("TetGen failed with code " + std::to_string(code) + " (" + tetgenErrorMeaning(code) +
-                          ") meshing the walls with switches \"" + switches + "\"");
-    }
+    runTetgen(switches, in, out, "meshing the walls");
     return toBytes(meshFromTetgen(t, out, point_vertex, walls));
   });
   if (!result[0].ok) {

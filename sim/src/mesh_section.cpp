@@ -9,13 +9,14 @@ void declareMeshSection(Schema& s) {
             "cells sharing a wall share its nodes. Used by stages that solve on the tissue and by "
             "mesh.output.");
   s.key("mesh.max_edge_length", ValueType::Float,
-        "2D and curved tissues: longest triangle edge, in the tissue's length unit. 0 = no size bound "
-        "(only the angle bound refines).")
+        "2D and curved tissues: longest triangle edge, in the tissue's length unit; 3D tissues meshed "
+        "cell by cell: longest wall-triangle edge. 0 = no size bound (only the angle bound refines).")
       .byDefault(0.0)
       .atLeast(0);
   s.key("mesh.min_angle", ValueType::Float,
-        "2D and curved tissues: smallest triangle angle, in degrees. Refinement is proven to end up to "
-        "20.7; up to 33 is accepted. Sharper corners between walls stay as they are.")
+        "2D and curved tissues, and the walls of 3D tissues meshed cell by cell: smallest triangle angle, "
+        "in degrees. Refinement is proven to end up to 20.7; up to 33 is accepted. Sharper corners "
+        "between walls stay as they are.")
       .byDefault(20.0)
       .atLeast(0)
       .atMost(33);

@@ -17,13 +17,15 @@ enum class VolumeMethod {
 };
 
 struct MeshOptions {
-  /// 2D and surface tissues: lower bound on every triangle angle, in degrees
+  /// 2D and surface tissues (and the walls of 3D tissues meshed cell by
+  /// cell): lower bound on every triangle angle, in degrees
   /// (CGAL Delaunay refinement). Termination is proven up to 20.7 degrees;
   /// values up to 33 usually work. Angles of the input (two walls meeting at
   /// a sharp corner) cannot be improved, so triangles at such corners may be
   /// sharper.
   double min_angle_degrees = 20.0;
-  /// 2D and surface tissues: upper bound on every triangle edge length.
+  /// 2D and surface tissues: upper bound on every triangle edge length; 3D
+  /// tissues meshed cell by cell: the same bound on the wall triangles.
   /// 0 = no size bound (only the quality bound refines).
   double max_edge_length = 0.0;
   /// 3D tissues: upper bound on every tetrahedron volume (TetGen -a).
