@@ -115,8 +115,7 @@ int meshCommand(const MeshArgs& a) {
   if (a.size) options.max_edge_length = *a.size;
   if (a.min_angle) options.min_angle_degrees = *a.min_angle;
   if (a.max_volume) options.max_volume = *a.max_volume;
-  if (a.volume_method)
-    options.volume_method = *a.volume_method == "whole_tissue" ? VolumeMethod::WholeTissue : VolumeMethod::CellByCell;
+  if (a.volume_method) options.volume_method = sim::volumeMethodNamed(*a.volume_method);
   validateMeshOptions(options);  // before reading: a bad flag fails fast
 
   const Tissue tissue = io::readTissueVtu(a.snapshot);
@@ -145,9 +144,7 @@ int meshCommand(const MeshArgs& a) {
              embeddingName(tissue.embedding()), a.snapshot, t_read);
   fmt::print("options      min_angle {} deg, max_edge_length {}, max_volume {}, radius_edge_ratio {}{}\n",
              options.min_angle_degrees, options.max_edge_length, options.max_volume, options.radius_edge_ratio,
-             tissue.dim() != 3                                       ? ""
-             : options.volume_method == VolumeMethod::WholeTissue ? ", whole_tissue"
-                                                                  : ", cell_by_cell");
+             tissue.dim() != 3 ? "" : ", " + sim::volumeMethodName(options.volume_method));
   fmt::print("mesh         {} nodes, {} {}, {} wall facets\n", mesh.numNodes(), mesh.numElements(), elements,
              mesh.numWallFacets());
   fmt::print("time         {:.3f} s ({:.0f} elements/s)\n", t_mesh, mesh.numElements() / std::max(t_mesh, 1e-9));
@@ -192,7 +189,7 @@ int main(int argc, char** argv) {
   mesh->add_option("--min-angle", mesh_args.min_angle, "Smallest triangle angle in degrees (mesh.min_angle)");
   mesh->add_option("--max-volume", mesh_args.max_volume, "Largest tetrahedron volume (mesh.max_volume; 0 = none)");
   mesh->add_option("--volume-method", mesh_args.volume_method, "3D: cell_by_cell or whole_tissue (mesh.volume_method)")
-      ->check(CLI::IsMember({"cell_by_cell", "whole_tissue"}));
+      ->check(CLI::IsMember(tessella::sim::volumeMethodNames()));
 
   app.add_subcommand("schema", "Print the configuration key reference (Markdown, as in docs/config.md)");
 

@@ -36,6 +36,7 @@
 #define TETLIBRARY
 #include <tetgen.h>
 
+#include "../mesh/src/tetgen_support.hpp"  // the meshers' switch string and facet filling (internal)
 #include "bench_args.hpp"
 #include "tessella/mesh/mesh_measures.hpp"
 #include "tessella/mesh/mesh_tissue.hpp"
@@ -87,22 +88,11 @@ std::size_t tetgenAlone(const Tissue& t, const MeshOptions& o) {
   in.facetlist = new tetgenio::facet[t.numWalls()];
   int f = 0;
   for (WallId w : t.walls()) {
-    const auto loop = t.topology().faceVertices(handle_cast<FaceId>(w));
-    tetgenio::facet& fa = in.facetlist[f++];
-    fa.numberofpolygons = 1;
-    fa.polygonlist = new tetgenio::polygon[1];
-    fa.numberofholes = 0;
-    fa.holelist = nullptr;
-    fa.polygonlist[0].numberofvertices = static_cast<int>(loop.size());
-    fa.polygonlist[0].vertexlist = new int[loop.size()];
-    for (std::size_t i = 0; i < loop.size(); ++i) fa.polygonlist[0].vertexlist[i] = id[loop[i].index()];
+    std::vector<int> corners;
+    for (VertexId v : t.topology().faceVertices(handle_cast<FaceId>(w))) corners.push_back(id[v.index()]);
+    mesh_detail::setPolygon(in.facetlist[f++], corners);
   }
-  std::string sw = "pzQq";
-  sw += std::to_string(o.radius_edge_ratio);
-  if (o.max_volume > 0) {
-    sw += 'a';
-    sw += std::to_string(o.max_volume);
-  }
+  std::string sw = mesh_detail::tetgenSwitches("pzQ", o);
   tetrahedralize(sw.data(), &in, &out);
   return static_cast<std::size_t>(out.numberoftetrahedra);
 }
@@ -113,11 +103,7 @@ std::size_t tetgenPerCellAlone(const Tissue& t, const FeMesh& mesh, const MeshOp
   std::vector<std::vector<int>> cell_facets(t.cellSlots());
   for (int f = 0; f < mesh.numWallFacets(); ++f)
     for (CellId c : t.wallCells(WallId(static_cast<Index>(mesh.facet_wall(f))))) cell_facets[c.index()].push_back(f);
-  std::string sw = "pYzQT1e-7q" + std::to_string(o.radius_edge_ratio);  // the mesher's first try
-  if (o.max_volume > 0) {
-    sw += 'a';
-    sw += std::to_string(o.max_volume);
-  }
+  std::string sw = mesh_detail::tetgenSwitches("pYzQT1e-7", o);  // the mesher's first try
   std::size_t tets = 0;
   std::vector<int> local(static_cast<std::size_t>(mesh.numNodes()), -1);
   for (CellId c : t.cells()) {
@@ -138,14 +124,10 @@ std::size_t tetgenPerCellAlone(const Tissue& t, const FeMesh& mesh, const MeshOp
     in.numberoffacets = static_cast<int>(cell_facets[c.index()].size());
     in.facetlist = new tetgenio::facet[cell_facets[c.index()].size()];
     for (std::size_t i = 0; i < cell_facets[c.index()].size(); ++i) {
-      tetgenio::facet& fa = in.facetlist[i];
-      fa.numberofpolygons = 1;
-      fa.polygonlist = new tetgenio::polygon[1];
-      fa.numberofholes = 0;
-      fa.holelist = nullptr;
-      fa.polygonlist[0].numberofvertices = 3;
-      fa.polygonlist[0].vertexlist = new int[3];
-      for (int k = 0; k < 3; ++k) fa.polygonlist[0].vertexlist[k] = local[static_cast<std::size_t>(mesh.wall_facets(cell_facets[c.index()][i], k))];
+      const int f = cell_facets[c.index()][i];
+      mesh_detail::setPolygon(in.facetlist[i], {local[static_cast<std::size_t>(mesh.wall_facets(f, 0))],
+                                                local[static_cast<std::size_t>(mesh.wall_facets(f, 1))],
+                                                local[static_cast<std::size_t>(mesh.wall_facets(f, 2))]});
     }
     for (int n : nodes) local[static_cast<std::size_t>(n)] = -1;
     tetrahedralize(sw.data(), &in, &out);

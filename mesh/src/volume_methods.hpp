@@ -3,8 +3,6 @@
 // (MeshOptions::volume_method; docs/meshing.md compares them), and what they
 // share. Both receive a tissue that passed checkVolumeGeometry.
 
-#include <optional>
-
 #include "tessella/mesh/fe_mesh.hpp"
 #include "tessella/mesh/mesh_options.hpp"
 #include "tessella/tissue/tissue.hpp"

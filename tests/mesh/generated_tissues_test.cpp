@@ -18,16 +18,6 @@
 using namespace tessella;
 using namespace tessella::test;
 
-namespace {
-
-void requireGoodMesh(const Tissue& t, const FeMesh& mesh) {
-  requireMeasuresMatch(t, mesh);
-  requireConforming(mesh);
-  requireWallsMatch(t, mesh);
-}
-
-}  // namespace
-
 TEST_CASE("2D Voronoi tissues in a rectangle and a disk", "[mesh][planar][voronoi]") {
   const Rectangle rect{Vec3(0, 0, 0), Vec3(2, 1, 0)};
   const Tissue a = voronoiTissue(randomSeeds(rect, 80, 11), rect);

@@ -70,4 +70,11 @@ inline void requireWallsMatch(const Tissue& t, const FeMesh& mesh) {
   for (VertexId v : t.vertices()) CHECK(seen[v.index()] == 1);
 }
 
+/// Measures, conformity and walls: what every mesh of a tissue must satisfy.
+inline void requireGoodMesh(const Tissue& t, const FeMesh& mesh) {
+  requireMeasuresMatch(t, mesh);
+  requireConforming(mesh);
+  requireWallsMatch(t, mesh);
+}
+
 }  // namespace tessella::test

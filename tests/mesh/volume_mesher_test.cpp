@@ -96,9 +96,7 @@ TEST_CASE("non-planar walls are meshed as their fan surfaces", "[mesh][volume]")
   const VolumeMethod method = GENERATE(VolumeMethod::CellByCell, VolumeMethod::WholeTissue);
   INFO(methodName(method));
   const FeMesh mesh = meshTissue(t, MeshOptions{.max_volume = 0.01, .volume_method = method});
-  requireMeasuresMatch(t, mesh);
-  requireConforming(mesh);
-  requireWallsMatch(t, mesh);
+  requireGoodMesh(t, mesh);
   // The fan centres of the non-planar walls are mesher nodes, not tissue vertices.
   CHECK((mesh.node_vertex.array() < 0).count() >= 4);
 }
@@ -120,10 +118,8 @@ TEST_CASE("a non-convex cell whose centroid lies outside it", "[mesh][volume]") 
   const VolumeMethod method = GENERATE(VolumeMethod::CellByCell, VolumeMethod::WholeTissue);
   INFO(methodName(method));
   const FeMesh mesh = meshTissue(t, MeshOptions{.max_volume = 0.05, .volume_method = method});
-  requireMeasuresMatch(t, mesh);
+  requireGoodMesh(t, mesh);
   CHECK(relativelyClose(totalMeasureOfMesh(mesh), 6.5));
-  requireConforming(mesh);
-  requireWallsMatch(t, mesh);
 }
 
 TEST_CASE("a cell enclosing another: the inner cell is a cavity of the outer one", "[mesh][volume]") {
@@ -138,10 +134,8 @@ TEST_CASE("a cell enclosing another: the inner cell is a cavity of the outer one
   const VolumeMethod method = GENERATE(VolumeMethod::CellByCell, VolumeMethod::WholeTissue);
   INFO(methodName(method));
   const FeMesh mesh = meshTissue(t, MeshOptions{.max_volume = 0.1, .volume_method = method});
-  requireMeasuresMatch(t, mesh);
+  requireGoodMesh(t, mesh);
   CHECK(relativelyClose(totalMeasureOfMesh(mesh), 27.0));
-  requireConforming(mesh);
-  requireWallsMatch(t, mesh);
 }
 
 TEST_CASE("cell by cell: wall triangles honour the size and angle bounds, the walls conform", "[mesh][volume]") {
@@ -151,9 +145,7 @@ TEST_CASE("cell by cell: wall triangles honour the size and angle bounds, the wa
   o.min_angle_degrees = 28;
   o.max_volume = 0.01;
   const FeMesh mesh = meshTissue(t, o);
-  requireMeasuresMatch(t, mesh);
-  requireConforming(mesh);
-  requireWallsMatch(t, mesh);
+  requireGoodMesh(t, mesh);
   double smallest = 180, longest = 0;
   for (int f = 0; f < mesh.numWallFacets(); ++f) {
     const auto [angle, edge] = facetShape(mesh, f);
@@ -176,9 +168,7 @@ TEST_CASE("cell by cell: the mesh does not depend on the thread count", "[mesh][
   omp_set_num_threads(2);
   const FeMesh two = meshTissue(t, o);
   omp_set_num_threads(threads);
-  requireMeasuresMatch(t, two);
-  requireConforming(two);
-  requireWallsMatch(t, two);
+  requireGoodMesh(t, two);
   CHECK(one.nodes == two.nodes);
   CHECK(one.elements == two.elements);
   CHECK(one.element_cell == two.element_cell);
