@@ -9,6 +9,19 @@
 
 namespace tessella::growth {
 
+namespace {
+// Which daughter gets the new lineage id must not hang on the sign an
+// eigen-solver happens to give an axis (round-off can flip it, e.g. after a
+// restart): the new cell is always on the side the normal's largest
+// component points to (+x for a vertical wall, +y for a horizontal one).
+Plane withCanonicalSide(Plane plane) {
+  Eigen::Index largest = 0;
+  plane.normal.cwiseAbs().maxCoeff(&largest);
+  if (plane.normal[largest] < 0) plane.normal = -plane.normal;
+  return plane;
+}
+}  // namespace
+
 DivisionScheduler::DivisionScheduler(SizeThreshold trigger, std::shared_ptr<const DivisionRule> rule,
                                      DivisionOptions options)
     : trigger_(std::move(trigger)), rule_(std::move(rule)), options_(options), rng_(options.seed) {
@@ -21,7 +34,7 @@ DivisionScheduler::DivisionScheduler(SizeThreshold trigger, std::shared_ptr<cons
 DivisionRecord DivisionScheduler::divide(Tissue& t, CellId c, Rng& rng) {
   if (options_.tag_walls) divisionWallTags(t);
   const std::int64_t mother = t.lineageId(c);
-  const Plane base = rule_->plane(t, c, rng);
+  const Plane base = withCanonicalSide(rule_->plane(t, c, rng));
   // Perturbations for degenerate cuts: rotate about the cell normal (2D) or
   // an axis perpendicular to the plane normal (3D), and shift along it.
   const Vec3 n0 = base.normal.normalized();

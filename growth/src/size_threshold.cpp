@@ -55,7 +55,9 @@ void SizeThreshold::prepare(Tissue& t, Rng& rng) const {
   std::normal_distribution<double> draw(size_, stddev_);
   for (CellId c : t.cells()) {
     double& v = column[c];
-    if (!std::isnan(v)) continue;
+    // NaN marks "not drawn yet"; a value that is no size (0 from a column
+    // read back without its default, say) is redrawn too, never used.
+    if (v > 0 && std::isfinite(v)) continue;
     do v = draw(rng);
     while (!(v > 0));  // a size threshold must be positive
   }

@@ -32,7 +32,8 @@ class SizeThreshold {
                              std::string property = "division_threshold");
 
   /// Registers the noisy property (if needed) and draws thresholds for the
-  /// cells that have none (NaN). Called by cellsDue().
+  /// cells that have none (NaN, or any value that is not a positive size).
+  /// Called by cellsDue().
   void prepare(Tissue& t, Rng& rng) const;
   /// The threshold of one cell (after prepare()).
   double threshold(const Tissue& t, CellId c) const;
