@@ -92,21 +92,32 @@ vtkSmartPointer<vtkDataArray> tupleArray(const PropertyColumn<T>& column, const 
   return array;
 }
 
-template <typename... Ts>
-vtkSmartPointer<vtkDataArray> tryScalars(TypeList<Ts...>, const PropertyColumnBase& c, const RowSelection& rows) {
-  vtkSmartPointer<vtkDataArray> result;
-  ((c.type() == typeid(Ts) ? (result = scalarArray(static_cast<const PropertyColumn<Ts>&>(c), rows), true)
-                           : false) ||
-   ...);
-  return result;
+// The column's default as a one-tuple array of the same VTK type, so that a
+// restart gives new elements what the run gave them (a Reset column's NaN
+// "not set yet" must not come back as 0).
+template <typename T>
+vtkSmartPointer<vtkDataArray> scalarDefault(const PropertyColumn<T>& column, const std::string& name) {
+  auto array = vtkSmartPointer<vtkAOSDataArrayTemplate<T>>::New();
+  array->SetName(name.c_str());
+  array->InsertNextValue(column.defaultValue());
+  return array;
 }
 
-template <typename... Ts>
-vtkSmartPointer<vtkDataArray> tryTuples(TypeList<Ts...>, const PropertyColumnBase& c, const RowSelection& rows) {
+template <typename T>
+vtkSmartPointer<vtkDataArray> tupleDefault(const PropertyColumn<T>& column, const std::string& name) {
+  auto array = vtkSmartPointer<vtkAOSDataArrayTemplate<double>>::New();
+  array->SetName(name.c_str());
+  array->SetNumberOfComponents(Tuple<T>::n);
+  Tuple<T>::pack(column.defaultValue(), array->WritePointer(0, Tuple<T>::n));
+  return array;
+}
+
+// Calls f with the column downcast to the one type of the list it holds;
+// nullptr when it holds none of them.
+template <typename... Ts, typename F>
+vtkSmartPointer<vtkDataArray> visitColumn(TypeList<Ts...>, const PropertyColumnBase& c, F&& f) {
   vtkSmartPointer<vtkDataArray> result;
-  ((c.type() == typeid(Ts) ? (result = tupleArray(static_cast<const PropertyColumn<Ts>&>(c), rows), true)
-                           : false) ||
-   ...);
+  ((c.type() == typeid(Ts) ? (result = f(static_cast<const PropertyColumn<Ts>&>(c)), true) : false) || ...);
   return result;
 }
 
@@ -133,18 +144,27 @@ void copyFirstComponent(vtkDataArray* array, Out* out) {
 }
 
 template <typename T>
-void addScalarColumn(PropertyStore& store, const std::string& name, vtkDataArray* array, DivisionPolicy policy) {
-  auto& column = store.add<T>(name, T{}, policy);
+void addScalarColumn(PropertyStore& store, const std::string& name, vtkDataArray* array, DivisionPolicy policy,
+                     vtkDataArray* default_value) {
+  T initial{};
+  if (default_value) copyFirstComponent(default_value, &initial);
+  auto& column = store.add<T>(name, initial, policy);
   column.values().resize(static_cast<std::size_t>(array->GetNumberOfTuples()));
   copyFirstComponent(array, column.values().data());
 }
 
 template <typename T>
-void addTupleColumn(PropertyStore& store, const std::string& name, vtkDataArray* array, DivisionPolicy policy) {
-  auto& column = store.add<T>(name, Tuple<T>::zero(), policy);
-  const vtkIdType n = array->GetNumberOfTuples();
-  column.values().resize(static_cast<std::size_t>(n), Tuple<T>::zero());
+void addTupleColumn(PropertyStore& store, const std::string& name, vtkDataArray* array, DivisionPolicy policy,
+                    vtkDataArray* default_value) {
   double tuple[9];
+  T initial = Tuple<T>::zero();
+  if (default_value) {
+    default_value->GetTuple(0, tuple);
+    initial = Tuple<T>::unpack(tuple);
+  }
+  auto& column = store.add<T>(name, initial, policy);
+  const vtkIdType n = array->GetNumberOfTuples();
+  column.values().resize(static_cast<std::size_t>(n), initial);
   for (vtkIdType i = 0; i < n; ++i) {
     array->GetTuple(i, tuple);
     column.values()[static_cast<std::size_t>(i)] = Tuple<T>::unpack(tuple);
@@ -166,38 +186,51 @@ RowSelection liveRows(const std::vector<std::uint8_t>& alive_flags, std::size_t 
 }
 
 vtkSmartPointer<vtkDataArray> columnToArray(const PropertyColumnBase& column, const RowSelection& rows) {
-  if (auto a = tryScalars(ScalarTypes{}, column, rows)) return a;
-  return tryTuples(TupleTypes{}, column, rows);
+  if (auto a = visitColumn(ScalarTypes{}, column, [&](const auto& c) { return scalarArray(c, rows); })) return a;
+  return visitColumn(TupleTypes{}, column, [&](const auto& c) { return tupleArray(c, rows); });
+}
+
+vtkSmartPointer<vtkDataArray> defaultToArray(const PropertyColumnBase& column, const std::string& array_name) {
+  if (auto a = visitColumn(ScalarTypes{}, column, [&](const auto& c) { return scalarDefault(c, array_name); }))
+    return a;
+  return visitColumn(TupleTypes{}, column, [&](const auto& c) { return tupleDefault(c, array_name); });
 }
 
 void addColumnFromArray(PropertyStore& store, const std::string& name, vtkDataArray* array,
-                        const std::string& where, DivisionPolicy policy) {
+                        const std::string& where, DivisionPolicy policy, vtkDataArray* default_value) {
   const int components = array->GetNumberOfComponents();
   const int type = array->GetDataType();
+  if (default_value && (default_value->GetDataType() != type || default_value->GetNumberOfComponents() != components ||
+                        default_value->GetNumberOfTuples() != 1))
+    throw InputError(where + ": the default of property '" + name + "' (" +
+                     std::to_string(default_value->GetNumberOfTuples()) + " x " +
+                     std::to_string(default_value->GetNumberOfComponents()) + " " +
+                     default_value->GetDataTypeAsString() + ") does not match its array (" +
+                     std::to_string(components) + " component(s) of " + array->GetDataTypeAsString() + ")");
   if (components == 1) {
     switch (type) {
-      case VTK_DOUBLE: return addScalarColumn<double>(store, name, array, policy);
-      case VTK_FLOAT: return addScalarColumn<float>(store, name, array, policy);
+      case VTK_DOUBLE: return addScalarColumn<double>(store, name, array, policy, default_value);
+      case VTK_FLOAT: return addScalarColumn<float>(store, name, array, policy, default_value);
       case VTK_CHAR:
-      case VTK_SIGNED_CHAR: return addScalarColumn<std::int8_t>(store, name, array, policy);
-      case VTK_UNSIGNED_CHAR: return addScalarColumn<std::uint8_t>(store, name, array, policy);
-      case VTK_SHORT: return addScalarColumn<std::int16_t>(store, name, array, policy);
-      case VTK_UNSIGNED_SHORT: return addScalarColumn<std::uint16_t>(store, name, array, policy);
-      case VTK_INT: return addScalarColumn<std::int32_t>(store, name, array, policy);
-      case VTK_UNSIGNED_INT: return addScalarColumn<std::uint32_t>(store, name, array, policy);
+      case VTK_SIGNED_CHAR: return addScalarColumn<std::int8_t>(store, name, array, policy, default_value);
+      case VTK_UNSIGNED_CHAR: return addScalarColumn<std::uint8_t>(store, name, array, policy, default_value);
+      case VTK_SHORT: return addScalarColumn<std::int16_t>(store, name, array, policy, default_value);
+      case VTK_UNSIGNED_SHORT: return addScalarColumn<std::uint16_t>(store, name, array, policy, default_value);
+      case VTK_INT: return addScalarColumn<std::int32_t>(store, name, array, policy, default_value);
+      case VTK_UNSIGNED_INT: return addScalarColumn<std::uint32_t>(store, name, array, policy, default_value);
       case VTK_LONG:
       case VTK_LONG_LONG:
-      case VTK_ID_TYPE: return addScalarColumn<std::int64_t>(store, name, array, policy);
+      case VTK_ID_TYPE: return addScalarColumn<std::int64_t>(store, name, array, policy, default_value);
       case VTK_UNSIGNED_LONG:
-      case VTK_UNSIGNED_LONG_LONG: return addScalarColumn<std::uint64_t>(store, name, array, policy);
+      case VTK_UNSIGNED_LONG_LONG: return addScalarColumn<std::uint64_t>(store, name, array, policy, default_value);
       default: break;
     }
   } else if (type == VTK_DOUBLE || type == VTK_FLOAT) {
     switch (components) {
-      case 2: return addTupleColumn<Eigen::Vector2d>(store, name, array, policy);
-      case 3: return addTupleColumn<Vec3>(store, name, array, policy);
-      case 6: return addTupleColumn<Sym3>(store, name, array, policy);
-      case 9: return addTupleColumn<Mat3>(store, name, array, policy);
+      case 2: return addTupleColumn<Eigen::Vector2d>(store, name, array, policy, default_value);
+      case 3: return addTupleColumn<Vec3>(store, name, array, policy, default_value);
+      case 6: return addTupleColumn<Sym3>(store, name, array, policy, default_value);
+      case 9: return addTupleColumn<Mat3>(store, name, array, policy, default_value);
       default: break;
     }
   }

@@ -39,12 +39,18 @@ RowSelection liveRows(const std::vector<std::uint8_t>& alive_flags, std::size_t 
 /// point straight into the column (zero copy): the column must outlive them.
 vtkSmartPointer<vtkDataArray> columnToArray(const PropertyColumnBase& column, const RowSelection& rows);
 
+/// The column's default value as a one-tuple array named `array_name`, of
+/// the type columnToArray gives the column (nullptr when it has none).
+vtkSmartPointer<vtkDataArray> defaultToArray(const PropertyColumnBase& column, const std::string& array_name);
+
 /// Registers a column `name` with division policy `policy` in `store`, with
-/// the type the array stands for and its values (row i -> slot i). Throws
-/// InputError starting with `where` when the array's type or component count
-/// has no column type.
+/// the type the array stands for and its values (row i -> slot i), and the
+/// default held by `default_value` (a one-tuple array of the same type; the
+/// type's zero when null). Throws InputError starting with `where` when the
+/// array's type or component count has no column type or the default does
+/// not match it.
 void addColumnFromArray(PropertyStore& store, const std::string& name, vtkDataArray* array,
-                        const std::string& where, DivisionPolicy policy);
+                        const std::string& where, DivisionPolicy policy, vtkDataArray* default_value = nullptr);
 
 /// Exact copies of an integer or floating array's first component.
 std::vector<std::int64_t> integerValues(vtkDataArray* array);

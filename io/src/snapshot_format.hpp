@@ -29,6 +29,15 @@ inline constexpr const char* kVertexPropertiesArray = "tessella_vertex_propertie
 inline constexpr const char* kCellPoliciesArray = "tessella_cell_property_policies";
 inline constexpr const char* kVertexPoliciesArray = "tessella_vertex_property_policies";
 
+/// Prefixes of the one-tuple field arrays holding each listed property's
+/// default value (what a new element gets; a Reset column's value after a
+/// division), as "<prefix><property name>"; absent in files before they
+/// existed, when the type's zero is the default.
+inline constexpr const char* kCellDefaultPrefix = "tessella_cell_default:";
+inline constexpr const char* kVertexDefaultPrefix = "tessella_vertex_default:";
+/// The run's state beside the tissue (RunState), as "key=value" strings.
+inline constexpr const char* kRunStateArray = "tessella_run_state";
+
 /// Derived cell measures, written for ParaView and never read back.
 inline constexpr const char* kAreaArray = "area";
 inline constexpr const char* kVolumeArray = "volume";

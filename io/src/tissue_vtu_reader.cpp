@@ -195,7 +195,8 @@ std::vector<DivisionPolicy> policiesOf(vtkFieldData* field, const char* list_nam
 }
 
 void restoreProperties(PropertyStore& store, vtkDataSetAttributes* data, vtkFieldData* field, const char* list_name,
-                       const char* policies_name, vtkIdType expected, const char* kind, const Source& src) {
+                       const char* policies_name, const char* default_prefix, vtkIdType expected, const char* kind,
+                       const Source& src) {
   const std::vector<std::string> names = stringList(field, list_name, src);
   const std::vector<DivisionPolicy> policies = policiesOf(field, policies_name, names.size(), kind, src);
   for (std::size_t i = 0; i < names.size(); ++i) {
@@ -207,7 +208,8 @@ void restoreProperties(PropertyStore& store, vtkDataSetAttributes* data, vtkFiel
       src.fail(std::string(kind) + " array '" + name + "' has " + std::to_string(array->GetNumberOfTuples()) +
                " values for " + std::to_string(expected) + " " + kind + "s");
     if (store.has(name)) src.fail(std::string(kind) + " property '" + name + "' is listed twice");
-    detail::addColumnFromArray(store, name, array, "'" + src.path + "'", policies[i]);
+    vtkDataArray* default_value = field->GetArray((default_prefix + name).c_str());
+    detail::addColumnFromArray(store, name, array, "'" + src.path + "'", policies[i], default_value);
   }
 }
 
@@ -234,9 +236,24 @@ void restoreLineage(Tissue& tissue, vtkCellData* data, vtkIdType num_cells, cons
   }
 }
 
+RunState runStateOf(vtkFieldData* field, const Source& src) {
+  RunState state;
+  if (!field->GetAbstractArray(detail::kRunStateArray)) return state;
+  for (const std::string& entry : stringList(field, detail::kRunStateArray, src)) {
+    const std::size_t eq = entry.find('=');
+    if (eq == 0 || eq == std::string::npos)
+      src.fail(std::string(detail::kRunStateArray) + " holds '" + entry.substr(0, 80) + "', not key=value");
+    if (!state.emplace(entry.substr(0, eq), entry.substr(eq + 1)).second)
+      src.fail(std::string(detail::kRunStateArray) + " lists '" + entry.substr(0, eq) + "' twice");
+  }
+  return state;
+}
+
 }  // namespace
 
-Tissue readTissueVtu(const std::string& path) {
+Tissue readTissueVtu(const std::string& path) { return readSnapshot(path).tissue; }
+
+Snapshot readSnapshot(const std::string& path) {
   const Source src{path};
   vtkSmartPointer<vtkUnstructuredGrid> grid = detail::readGridFile(path);
   vtkFieldData* field = grid->GetFieldData();
@@ -289,9 +306,9 @@ Tissue readTissueVtu(const std::string& path) {
   tissue.setTime(time);
 
   restoreProperties(tissue.cellProperties(), grid->GetCellData(), field, detail::kCellPropertiesArray,
-                    detail::kCellPoliciesArray, grid->GetNumberOfCells(), "cell", src);
+                    detail::kCellPoliciesArray, detail::kCellDefaultPrefix, grid->GetNumberOfCells(), "cell", src);
   restoreProperties(tissue.properties(0), grid->GetPointData(), field, detail::kVertexPropertiesArray,
-                    detail::kVertexPoliciesArray, grid->GetNumberOfPoints(), "vertex", src);
+                    detail::kVertexPoliciesArray, detail::kVertexDefaultPrefix, grid->GetNumberOfPoints(), "vertex", src);
   restoreLineage(tissue, grid->GetCellData(), grid->GetNumberOfCells(), src);
   // Ids of cells that were removed before the save stay used: a restart must
   // not hand them out again. Optional, files of other writers may lack it.
@@ -302,7 +319,7 @@ Tissue readTissueVtu(const std::string& path) {
                " is not a non-negative integer");
     tissue.reserveLineageIds(static_cast<std::int64_t>(value));
   }
-  return tissue;
+  return Snapshot{std::move(tissue), runStateOf(field, src)};
 }
 
 }  // namespace tessella::io

@@ -166,10 +166,11 @@ vtkSmartPointer<vtkDoubleArray> cellMeasures(const Tissue& t, const RowSelection
 }
 
 // Every writable column as an array; returns the names written.
-/// Adds the writable columns as arrays; lists their names and policies in
-/// the field data, so that a restart divides them as the run did.
+/// Adds the writable columns as arrays; lists their names, policies and
+/// defaults in the field data, so that a restart divides them as the run did.
 void addProperties(vtkDataSetAttributes* data, vtkFieldData* field, const PropertyStore& store,
-                   const RowSelection& rows, const char* list_name, const char* policies_name) {
+                   const RowSelection& rows, const char* list_name, const char* policies_name,
+                   const char* default_prefix) {
   auto names = vtkSmartPointer<vtkStringArray>::New();
   names->SetName(list_name);
   auto policies = vtkSmartPointer<vtkStringArray>::New();
@@ -180,6 +181,7 @@ void addProperties(vtkDataSetAttributes* data, vtkFieldData* field, const Proper
       data->AddArray(array);
       names->InsertNextValue(column.name());
       policies->InsertNextValue(divisionPolicyName(column.policy()));
+      field->AddArray(detail::defaultToArray(column, default_prefix + column.name()));
     }
   }
   field->AddArray(names);
@@ -194,9 +196,21 @@ vtkSmartPointer<ArrayT> singleValue(const char* name, T value) {
   return array;
 }
 
+vtkSmartPointer<vtkStringArray> runStateArray(const RunState& state, const std::string& path) {
+  auto array = vtkSmartPointer<vtkStringArray>::New();
+  array->SetName(detail::kRunStateArray);
+  for (const auto& [key, value] : state) {
+    if (key.empty() || key.find('=') != std::string::npos)
+      throw InputError("cannot write '" + path + "': run state key '" + key + "' is empty or holds '='");
+    array->InsertNextValue(key + "=" + value);
+  }
+  return array;
+}
+
 }  // namespace
 
-void writeTissueVtu(const Tissue& tissue, const std::string& path, const VtuOptions& options) {
+void writeTissueVtu(const Tissue& tissue, const std::string& path, const VtuOptions& options,
+                    const RunState& state) {
   const CellComplex& topo = tissue.topology();
   const RowSelection vertex_rows = detail::liveRows(topo.aliveFlags(0), tissue.numVertices());
   const RowSelection cell_rows = detail::liveRows(topo.aliveFlags(tissue.dim()), tissue.numCells());
@@ -211,9 +225,9 @@ void writeTissueVtu(const Tissue& tissue, const std::string& path, const VtuOpti
 
   vtkFieldData* field = grid->GetFieldData();
   addProperties(grid->GetCellData(), field, tissue.cellProperties(), cell_rows, detail::kCellPropertiesArray,
-                detail::kCellPoliciesArray);
+                detail::kCellPoliciesArray, detail::kCellDefaultPrefix);
   addProperties(grid->GetPointData(), field, tissue.properties(0), vertex_rows, detail::kVertexPropertiesArray,
-                detail::kVertexPoliciesArray);
+                detail::kVertexPoliciesArray, detail::kVertexDefaultPrefix);
   // The derived measure, unless a property already uses its name (the
   // property list in the field data tells readers which is which).
   const char* measure_name = tissue.dim() == 2 ? detail::kAreaArray : detail::kVolumeArray;
@@ -227,6 +241,7 @@ void writeTissueVtu(const Tissue& tissue, const std::string& path, const VtuOpti
                                               vtkStdString(detail::embeddingTag(tissue.embedding()))));
   field->AddArray(singleValue<vtkTypeInt64Array>(detail::kNextLineageArray,
                                                  static_cast<vtkTypeInt64>(tissue.nextLineageId())));
+  if (!state.empty()) field->AddArray(runStateArray(state, path));
 
   detail::writeGridFile(grid, path, options);
 }

@@ -42,7 +42,7 @@ class SchedulerStage final : public Stage {
   explicit SchedulerStage(std::shared_ptr<growth::DivisionScheduler> s) : s_(std::move(s)) {}
   std::string name() const override { return "division"; }
   void apply(Tissue& t, const StepContext& c) override {
-    t.setTime(c.time + c.dt);
+    t.setTime(c.end_time);
     if (c.rng) s_->step(t, geometry_, *c.rng);
     else s_->step(t, geometry_);
     raiseDeferredError();
@@ -103,7 +103,7 @@ stage, step and time, followed by the cause's message.
              if (!(dt > 0.0)) throw InputError("Simulation: dt must be > 0, got " + std::to_string(dt));
              if (!(end >= start))
                throw InputError("Simulation: end (" + std::to_string(end) + ") must be >= start (" + std::to_string(start) + ")");
-             return Simulation(t, sim::SimulationParameters{.time = {start, end, dt}, .rng_seed = seed});
+             return Simulation(t, sim::SimulationParameters{.time = {start, end, dt}, .rng_seed = seed, .rng_state = {}, .carried = {}});
            }),
            py::arg("tissue"), py::arg("start") = 0.0, py::arg("end") = 10.0, py::arg("dt") = 1.0, py::arg("rng_seed") = 0)
       .def_static("from_file", &Simulation::fromFile, py::arg("path"), py::arg("overrides") = std::vector<std::string>{},

@@ -30,7 +30,11 @@ Eigen::VectorXd perCell(const Tissue& tissue, const CellCoefficient& k, const st
 void markCells(Tissue& tissue, const std::string& name, const std::vector<std::int64_t>& lineage_ids,
                const Vec3& center, double radius, const std::string& what) {
   PropertyStore& store = tissue.cellProperties();
-  if (!store.has(name)) store.add<std::int64_t>(name, 0, DivisionPolicy::Copy);
+  // Chosen once, on the initial tissue: a tissue read back from a snapshot
+  // of the run already carries its marks (a restart must not mark the cells
+  // that have since grown into the region).
+  if (store.has(name)) return;
+  store.add<std::int64_t>(name, 0, DivisionPolicy::Copy);
   auto& mark = store.get<std::int64_t>(name);
   std::unordered_map<std::int64_t, CellId> by_lineage;
   for (CellId c : tissue.cells()) by_lineage.emplace(tissue.lineageId(c), c);

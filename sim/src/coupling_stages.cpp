@@ -137,7 +137,9 @@ void CompartmentStage::prepare(Tissue& tissue, double /*time*/) {
                       "compartments.source.cells");
     if (!spec_.polar_all)
       detail::markCells(tissue, f + "_polar", spec_.polar_cells, Vec3::Zero(), 0.0, "compartments.polar.cells");
-    // The amount is the state: split by measure at division, so divisions conserve it.
+    // The amount is the state: split by measure at division, so divisions
+    // conserve it. A tissue read back from a snapshot of the run has it.
+    if (tissue.cellProperties().has(f + "_amount") && tissue.cellProperties().has(f)) return;
     auto& amount = detail::doubleColumn(tissue, f + "_amount", DivisionPolicy::SplitByMeasure);
     auto& conc = detail::doubleColumn(tissue, f, DivisionPolicy::Copy);
     for (CellId c : tissue.cells()) {

@@ -273,9 +273,11 @@ GrowthSpec readGrowthSection(const Config& c, const TissueSpec& tissue) {
     g.options.projection =
         growth::paraboloidProjection(c.getVec("growth.paraboloid.apex"), c.getFloat("growth.paraboloid.curvature"));
   } else if (surface == "dome") {
-    const auto* dome = std::get_if<DomeSpec>(&tissue);
-    if (!dome) throw c.errorAt("growth.surface", "'dome' needs tissue.generator: dome");
-    g.options.projection = growth::domeProjection(dome->dome);
+    const std::optional<Dome> dome = tissueDome(tissue);
+    if (!dome)
+      throw c.errorAt("growth.surface",
+                      "'dome' needs tissue.generator: dome, or a snapshot of a run on a dome (which records it)");
+    g.options.projection = growth::domeProjection(*dome);
   }
   if (field == "none") return g;
   if (field == "uniform") {

@@ -33,7 +33,7 @@ DivisionStage::DivisionStage(const DivisionSpec& spec)
     : scheduler_(*spec.threshold, spec.rule, withGate(spec)) {}
 
 void DivisionStage::apply(Tissue& tissue, const StepContext& context) {
-  tissue.setTime(context.time + context.dt);  // daughters are born at the end of the step
+  tissue.setTime(context.end_time);  // daughters are born at the end of the step
   const growth::DivisionReport report = context.rng ? scheduler_.step(tissue, geometry_, *context.rng)
                                                     : scheduler_.step(tissue, geometry_);
   divisions_ += report.divided.size();

@@ -12,7 +12,7 @@ void SeriesOutput::writeIfDue(const Simulation& simulation) {
 
 void SeriesOutput::write(const Simulation& simulation) {
   if (simulation.stepsDone() == last_written_step_) return;
-  writer_.write(simulation.tissue(), simulation.time());
+  writer_.write(simulation.tissue(), simulation.time(), simulation.runState());
   last_written_step_ = simulation.stepsDone();
 }
 

@@ -1,8 +1,10 @@
 #include "tessella/sim/simulation.hpp"
 
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
 
+#include "exact_text.hpp"
 #include "tessella/sim/config_error.hpp"
 
 namespace tessella::sim {
@@ -18,6 +20,42 @@ std::mt19937_64 stageStream(std::uint64_t seed) {
 std::string number(double x) { return formatValue(x); }
 }  // namespace
 
+using detail::exactText;
+using detail::parseExact;
+
+io::RunState Simulation::runState() const {
+  std::ostringstream stream;
+  stream << rng_;
+  io::RunState state = parameters_.carried;
+  state["clock.start"] = exactText(parameters_.time.clockOrigin());
+  state["clock.dt"] = exactText(parameters_.time.dt);
+  state["clock.step"] = std::to_string(parameters_.time.origin_steps + step_);
+  state["rng_seed"] = std::to_string(parameters_.rng_seed);
+  state["rng.stream"] = stream.str();
+  return state;
+}
+
+std::string continueRunState(const io::RunState& state, double snapshot_time, std::uint64_t seed, TimeSpan& time) {
+  const auto value = [&](const char* key) -> const std::string* {
+    const auto it = state.find(key);
+    return it == state.end() ? nullptr : &it->second;
+  };
+  double start = 0, dt = 0;
+  std::size_t step = 0;
+  const std::string *s = value("clock.start"), *d = value("clock.dt"), *k = value("clock.step");
+  // The original clock, when it is the one the config runs on and it lands
+  // on the snapshot's time exactly; otherwise the clock starts afresh there.
+  if (time.start == snapshot_time && s && d && k && parseExact(*s, start) && parseExact(*d, dt) &&
+      parseExact(*k, step) && step > 0 && dt == time.dt && start + static_cast<double>(step) * dt == snapshot_time) {
+    time.origin = start;
+    time.origin_steps = step;
+  }
+  std::uint64_t saved_seed = 0;
+  const std::string *saved = value("rng_seed"), *stream = value("rng.stream");
+  if (saved && stream && parseExact(*saved, saved_seed) && saved_seed == seed) return *stream;
+  return {};
+}
+
 Simulation::Simulation(Tissue tissue, SimulationParameters parameters)
     : tissue_(std::move(tissue)), parameters_(parameters), rng_(stageStream(parameters.rng_seed)) {
   const TimeSpan& t = parameters_.time;
@@ -28,12 +66,19 @@ Simulation::Simulation(Tissue tissue, SimulationParameters parameters)
   if ((t.end - t.start) / t.dt > kMaxSteps)
     throw InputError("Simulation: " + number((t.end - t.start) / t.dt) + " steps is more than the limit of " +
                      number(kMaxSteps));
+  if (!parameters_.rng_state.empty()) {
+    std::istringstream saved(parameters_.rng_state);
+    saved >> rng_;
+    if (saved.fail()) throw InputError("Simulation: the saved random stream (rng.stream) is not a valid state");
+  }
   tissue_.setTime(t.start);
 }
 
 Simulation Simulation::fromConfig(const SimulationConfig& config) {
-  Simulation sim(buildTissue(config.tissue, config.rng_seed, config.config),
-                 SimulationParameters{config.time, config.rng_seed});
+  SimulationParameters parameters{config.time, config.rng_seed, {}, {}};
+  if (const auto* snapshot = std::get_if<SnapshotSpec>(&config.tissue)) parameters.rng_state = snapshot->rng_state;
+  if (const std::optional<Dome> dome = tissueDome(config.tissue)) parameters.carried = domeRunState(*dome);
+  Simulation sim(buildTissue(config.tissue, config.rng_seed, config.config), parameters);
   for (auto& stage : makeStages(config)) sim.addStage(std::move(stage));
   return sim;
 }
@@ -66,7 +111,7 @@ void Simulation::step() {
   if (finished()) throw std::logic_error("Simulation::step: the time span is already over");
   const double t0 = time();
   const double t1 = parameters_.time.timeAt(step_ + 1);
-  const StepContext context{step_, t0, t1 - t0, &rng_};
+  const StepContext context{step_, t0, t1 - t0, &rng_, t1};
   for (auto& stage : stages_) {
     try {
       stage->apply(tissue_, context);

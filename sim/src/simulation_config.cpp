@@ -1,9 +1,11 @@
 #include "tessella/sim/simulation_config.hpp"
 
+#include <charconv>
 #include <limits>
 #include <random>
 
 #include "tessella/sim/config_loader.hpp"
+#include "tessella/sim/simulation.hpp"
 #include "tessella/sim/tessella_schema.hpp"
 
 namespace tessella::sim {
@@ -14,6 +16,16 @@ std::uint64_t freshSeed() {
   const std::uint64_t seed = (std::uint64_t{device()} << 32) ^ device();
   return seed & static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max());  // fits rng_seed's int
 }
+
+// The seed a snapshot's run used, if it recorded one that rng_seed can hold.
+bool savedSeed(const io::RunState& state, std::uint64_t& seed) {
+  const auto it = state.find("rng_seed");
+  if (it == state.end()) return false;
+  const std::string& text = it->second;
+  const auto result = std::from_chars(text.data(), text.data() + text.size(), seed);
+  return result.ec == std::errc() && result.ptr == text.data() + text.size() &&
+         seed <= static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max());
+}
 }  // namespace
 
 SimulationConfig readSimulationConfig(Config config) {
@@ -22,16 +34,18 @@ SimulationConfig readSimulationConfig(Config config) {
                    config.getString("tessella_version") + "; this is " + tessellaVersion() +
                    ", so results may differ");
   config.set("tessella_version", std::string(tessellaVersion()), {}, ValueOrigin::Derived);
+  TissueSpec tissue = readTissueSection(config);
+  auto* snap = std::get_if<SnapshotSpec>(&tissue);
   std::uint64_t seed = 0;
   if (config.has("rng_seed")) {
     seed = static_cast<std::uint64_t>(config.getInt("rng_seed"));
   } else {
-    seed = freshSeed();
+    // A restart without a seed of its own continues the snapshot's stream.
+    if (!(snap && savedSeed(snap->state, seed))) seed = freshSeed();
     config.set("rng_seed", static_cast<std::int64_t>(seed), {}, ValueOrigin::Derived);
   }
-  TissueSpec tissue = readTissueSection(config);
   // A restart continues the snapshot's clock unless the file says otherwise.
-  if (const auto* snap = std::get_if<SnapshotSpec>(&tissue)) {
+  if (snap) {
     const double saved = snap->tissue->time();
     if (!config.isGiven("time.start"))
       config.set("time.start", saved, {}, ValueOrigin::Derived);
@@ -41,6 +55,7 @@ SimulationConfig readSimulationConfig(Config config) {
                      formatValue(saved) + " (leave time.start out to continue the snapshot's clock)");
   }
   TimeSpan time = readTimeSection(config);
+  if (snap) snap->rng_state = continueRunState(snap->state, snap->tissue->time(), seed, time);
   OutputSpec output = readOutputSection(config);
   GrowthSpec growth = readGrowthSection(config, tissue);
   DivisionSpec division = readDivisionSection(config);

@@ -1,7 +1,9 @@
 #include "tessella/sim/tissue_section.hpp"
 
+#include <sstream>
 #include <string>
 
+#include "exact_text.hpp"
 #include "tessella/io/vtu.hpp"
 #include "tessella/sim/config_error.hpp"
 #include "tessella/tissue/grids.hpp"
@@ -229,9 +231,11 @@ TissueSpec readTissueSection(const Config& c) {
     return v;
   }
   if (generator == "snapshot") {
-    SnapshotSpec snap{c.getString("tissue.snapshot.file"), nullptr};
+    SnapshotSpec snap{c.getString("tissue.snapshot.file"), nullptr, {}, {}};
     try {
-      snap.tissue = std::make_shared<const Tissue>(io::readTissueVtu(snap.file));
+      io::Snapshot read = io::readSnapshot(snap.file);
+      snap.state = std::move(read.state);
+      snap.tissue = std::make_shared<const Tissue>(std::move(read.tissue));
     } catch (const InputError& e) {
       throw c.errorAt("tissue.snapshot.file", e.what());
     }
@@ -250,6 +254,40 @@ TissueSpec readTissueSection(const Config& c) {
                                        formatValue(d.dome.height) + "; use shape: paraboloid");
   d.seeds = readSeeds(c, p, 2);
   return d;
+}
+
+io::RunState domeRunState(const Dome& dome) {
+  return {{"dome.shape", dome.shape == Dome::Shape::Paraboloid ? "paraboloid" : "spherical_cap"},
+          {"dome.base_radius", detail::exactText(dome.base_radius)},
+          {"dome.height", detail::exactText(dome.height)},
+          {"dome.base_center", detail::exactText(dome.base_center.x()) + " " + detail::exactText(dome.base_center.y()) +
+                                   " " + detail::exactText(dome.base_center.z())}};
+}
+
+namespace {
+std::optional<Dome> domeFromRunState(const io::RunState& state) {
+  const auto shape = state.find("dome.shape"), radius = state.find("dome.base_radius"),
+             height = state.find("dome.height"), center = state.find("dome.base_center");
+  if (shape == state.end() || radius == state.end() || height == state.end() || center == state.end())
+    return std::nullopt;
+  Dome dome;
+  if (shape->second != "paraboloid" && shape->second != "spherical_cap") return std::nullopt;
+  dome.shape = shape->second == "paraboloid" ? Dome::Shape::Paraboloid : Dome::Shape::SphericalCap;
+  std::istringstream words(center->second);
+  std::string x, y, z, extra;
+  words >> x >> y >> z;
+  if (!detail::parseExact(radius->second, dome.base_radius) || !detail::parseExact(height->second, dome.height) ||
+      !detail::parseExact(x, dome.base_center.x()) || !detail::parseExact(y, dome.base_center.y()) ||
+      !detail::parseExact(z, dome.base_center.z()) || (words >> extra))
+    return std::nullopt;
+  return dome;
+}
+}  // namespace
+
+std::optional<Dome> tissueDome(const TissueSpec& spec) {
+  if (const auto* dome = std::get_if<DomeSpec>(&spec)) return dome->dome;
+  if (const auto* snap = std::get_if<SnapshotSpec>(&spec)) return domeFromRunState(snap->state);
+  return std::nullopt;
 }
 
 namespace {

@@ -19,7 +19,8 @@ class SeriesWriter {
 
   /// Writes one snapshot for simulation time `time` and updates the .pvd.
   /// Returns the snapshot's path.
-  std::string write(const Tissue& tissue, double time);
+  /// `state` is stored with it (RunState).
+  std::string write(const Tissue& tissue, double time, const RunState& state = {});
 
   const std::string& pvdPath() const { return pvd_path_; }
   std::size_t steps() const { return entries_.size(); }

@@ -10,6 +10,7 @@
 // embedding and time, so that reading back restores them. docs/output.md
 // lists every array and the types that can be written.
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -39,17 +40,31 @@ struct VtuOptions {
   bool durable = false;
 };
 
+/// What a run keeps beside its tissue so that a restart continues it exactly
+/// (its clock, its random stream): text values by key, written as the field
+/// array `tessella_run_state`. Keys must be non-empty and hold no '='.
+using RunState = std::map<std::string, std::string>;
+
 /// Writes a snapshot atomically (temporary file, then rename): a crash never
 /// leaves a half-written file under `path`. Throws InputError naming the path
 /// when the file cannot be written (missing directory, disk full) and when
 /// options.compression_level is outside 1..9.
-void writeTissueVtu(const Tissue& tissue, const std::string& path, const VtuOptions& options = {});
+void writeTissueVtu(const Tissue& tissue, const std::string& path, const VtuOptions& options = {},
+                    const RunState& state = {});
 
 /// Reads a snapshot written by writeTissueVtu back into a tissue (topology,
-/// positions, time, every cell and vertex property with a Copy policy except
-/// the built-in lineage columns, which are restored as lineage). InputError on
-/// a missing or malformed file, naming the path and what is wrong.
+/// positions, time, every cell and vertex property with its division policy
+/// and default value except the built-in lineage columns, which are restored
+/// as lineage). InputError on a missing or malformed file, naming the path
+/// and what is wrong.
 Tissue readTissueVtu(const std::string& path);
+
+/// A snapshot's tissue and the run state written with it (empty when none was).
+struct Snapshot {
+  Tissue tissue;
+  RunState state;
+};
+Snapshot readSnapshot(const std::string& path);
 
 /// Whether a property column has a type writeTissueVtu can store: arithmetic
 /// types (not bool), Vec3, Eigen::Vector2d, Sym3 and Mat3.

@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "tessella/io/vtu.hpp"
 #include "tessella/sim/simulation_config.hpp"
 #include "tessella/sim/stage.hpp"
 #include "tessella/sim/time_section.hpp"
@@ -39,6 +40,12 @@ class SimulationError : public Error {
 struct SimulationParameters {
   TimeSpan time;
   std::uint64_t rng_seed = 0;
+  /// The stage stream's saved state (runState()["rng.stream"]) to continue
+  /// instead of starting the stream of rng_seed; empty for a fresh run.
+  std::string rng_state;
+  /// Entries every snapshot of the run carries unchanged (the dome a curved
+  /// sheet lives on, so that a restart keeps it on that surface).
+  io::RunState carried;
 };
 
 class Simulation {
@@ -69,6 +76,12 @@ class Simulation {
   std::size_t numSteps() const { return parameters_.time.numSteps(); }
   bool finished() const { return step_ >= numSteps(); }
   std::mt19937_64& rng() { return rng_; }
+  /// What a restart needs besides the tissue to continue this run exactly:
+  /// the clock (clock.start, clock.dt, clock.step) and the random stream
+  /// (rng_seed, rng.stream), with the parameters' carried entries. Written
+  /// into every snapshot by SeriesOutput;
+  /// continueRunState() reads it back.
+  io::RunState runState() const;
 
   // --- composition ------------------------------------------------------------
   void addStage(std::unique_ptr<Stage> stage);
@@ -96,8 +109,15 @@ class Simulation {
   std::vector<StepCallback> callbacks_;
 };
 
-/// The stages a config asks for, in execution order. Empty for now: the
-/// loop only advances time. Extension point for growth/division sections.
+/// For a run restarted from a snapshot written with `state` (Simulation::
+/// runState()): when `time` starts at the snapshot's time with the saved dt,
+/// continues the saved clock (time.origin, time.origin_steps), so every later
+/// step time is the uninterrupted run's, bit for bit; returns the random stream to continue when `seed` is the saved seed
+/// (else ""). Changes nothing and returns "" for a state without these keys.
+std::string continueRunState(const io::RunState& state, double snapshot_time, std::uint64_t seed, TimeSpan& time);
+
+/// The stages a config asks for, in execution order (growth, division, then
+/// the solver sections).
 std::vector<std::unique_ptr<Stage>> makeStages(const SimulationConfig& config);
 
 }  // namespace tessella::sim

@@ -2,9 +2,8 @@
 // Stage: one process a Simulation applies at every step (growth, division,
 // a solve...). Stages run in the order they were added.
 //
-// Extension point: growth/ provides its stages (move vertices by a velocity
-// field, divide cells over a threshold) as Stage subclasses; makeStages()
-// (sim/src/stages_from_config.cpp) turns config sections into stages.
+// The built-in stages (growth_stages.hpp, coupling_stages.hpp) wrap growth/
+// and solvers/; makeStages() turns config sections into them.
 
 #include <cstddef>
 #include <random>
@@ -21,6 +20,9 @@ struct StepContext {
   /// The simulation's random stream: every random draw of a run comes from
   /// it, so a run is reproducible from its RNG seed.
   std::mt19937_64* rng = nullptr;
+  /// Time at the end of the step: exactly the next step's `time` (time + dt
+  /// may differ from it in the last bit), so births and restarts agree.
+  double end_time = 0.0;
 };
 
 class Stage {

@@ -15,9 +15,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <variant>
 
+#include "tessella/io/vtu.hpp"
 #include "tessella/sim/config.hpp"
 #include "tessella/sim/schema.hpp"
 #include "tessella/tissue/dome.hpp"
@@ -68,10 +70,21 @@ struct DomeSpec {
 struct SnapshotSpec {
   std::string file;  ///< absolute path
   std::shared_ptr<const Tissue> tissue;
+  /// The run state saved with the tissue (empty for snapshots without one).
+  io::RunState state;
+  /// The random stream the restarted run continues ("" for a fresh stream),
+  /// decided by readSimulationConfig (continueRunState).
+  std::string rng_state;
 };
 
 using TissueSpec =
     std::variant<RectangularGridSpec, HexagonalGridSpec, BoxGridSpec, VoronoiSpec, DomeSpec, SnapshotSpec>;
+
+/// The dome a tissue spec puts its sheet on: a dome generator's, or the one
+/// saved in a snapshot of a run on a dome (domeRunState); none otherwise.
+std::optional<Dome> tissueDome(const TissueSpec& spec);
+/// A dome as run-state entries (dome.*), exact to the bit.
+io::RunState domeRunState(const Dome& dome);
 
 /// Declares tissue.* in the schema.
 void declareTissueSection(Schema& schema);
