@@ -6,6 +6,7 @@
 
 #include "tessella/sim/field_output.hpp"
 #include "tessella/sim/run_record.hpp"
+#include "tessella/sim/statistics_output.hpp"
 
 namespace fs = std::filesystem;
 
@@ -24,7 +25,7 @@ std::vector<fs::path> previousRunFiles(const fs::path& dir, const std::string& n
   const std::regex fields(std::string(kFieldSeriesName) + R"((_walls)?(\.pvd|_\d+\.vtu))");
   for (const auto& entry : fs::directory_iterator(dir, ec)) {
     const std::string file = entry.path().filename().string();
-    if (file == kRunRecordName || file == name + ".pvd" || std::regex_match(file, snapshot) ||
+    if (file == kRunRecordName || file == kStatisticsName || file == name + ".pvd" || std::regex_match(file, snapshot) ||
         (with_fields && std::regex_match(file, fields)))
       files.push_back(entry.path());
   }
@@ -98,6 +99,7 @@ void PreparedRun::execute() {
   output_ = attachSeriesOutput(simulation_, directory_, config_.output);
   mesh_output_ = attachMeshOutput(simulation_, directory_, readMeshSection(config_.config), config_.output);
   field_output_ = attachFieldOutput(simulation_, directory_, config_.output);
+  statistics_ = attachStatisticsOutput(simulation_, directory_, solverFields(config_), config_.output.every);
   simulation_.run();
 }
 

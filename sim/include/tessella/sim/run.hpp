@@ -4,8 +4,8 @@
 //
 //   prepare()  validates the config, resolves and checks the output
 //              directory, builds the tissue (throws ConfigError; writes nothing)
-//   execute()  creates the directory, writes run.yaml, then the series while
-//              the simulation runs
+//   execute()  creates the directory, writes run.yaml, then the series and
+//              stats.csv (statistics_output.hpp) while the simulation runs
 //
 // The output directory is, in order: RunOptions::output_directory (--out),
 // output.directory, runs/<config name> (relative to the working directory).
@@ -20,6 +20,7 @@
 #include "tessella/sim/series_output.hpp"
 #include "tessella/sim/simulation.hpp"
 #include "tessella/sim/simulation_config.hpp"
+#include "tessella/sim/statistics_output.hpp"
 
 namespace tessella::sim {
 
@@ -58,6 +59,7 @@ class PreparedRun {
   std::shared_ptr<SeriesOutput> output_;
   std::shared_ptr<MeshOutput> mesh_output_;  // null unless mesh.output
   std::shared_ptr<FieldSeriesOutput> field_output_;  // null without solver stages on a mesh
+  std::shared_ptr<StatisticsOutput> statistics_;
 };
 
 /// File name of the run record inside the output directory.
