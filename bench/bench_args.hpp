@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <initializer_list>
 #include <string>
 
 namespace tessella::bench {
@@ -33,6 +34,22 @@ inline bool helpRequested(int argc, char** argv, const char* usage) {
   if (a != "-h" && a != "--help") return false;
   std::printf("usage: %s\n", usage);
   return true;
+}
+
+/// For programs whose only argument is one optional flag: answers --help /
+/// -h with the usage (exit 0) and refuses anything but one of `flags` with
+/// one line (exit 2). Returns the flag given, or "" when there is none.
+inline std::string flagArgument(int argc, char** argv, std::initializer_list<const char*> flags, const char* usage) {
+  if (helpRequested(argc, argv, usage)) std::exit(0);
+  if (argc < 2) return "";
+  const std::string a = argv[1];
+  bool listed = false;
+  for (const char* f : flags) listed = listed || a == f;
+  if (!listed || argc > 2) {
+    std::fprintf(stderr, "%s: unexpected argument '%s'; usage: %s\n", argv[0], listed ? argv[2] : argv[1], usage);
+    std::exit(2);
+  }
+  return a;
 }
 
 }  // namespace tessella::bench

@@ -20,6 +20,7 @@
 #include <omp.h>
 
 #include "tessella/tissue/voronoi.hpp"
+#include "bench_args.hpp"
 
 using namespace tessella;
 
@@ -94,7 +95,9 @@ void run(const char* label, const Domain& domain, std::size_t n, MakePoint make_
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  const bool quick = tessella::bench::flagArgument(argc, argv, {"--quick"},
+                                                   "generation_bench [--quick]   (--quick: up to 10^5 seeds)") ==
+                     "--quick";
   // CGAL's Delaunay runs on one thread; voronoiTissue uses OMP_NUM_THREADS.
   std::printf("Voronoi generation (random seeds, rng_seed 2024; CGAL Delaunay 1 thread, voronoiTissue %d threads)\n",
               omp_get_max_threads());

@@ -27,6 +27,7 @@
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/grids.hpp"
 #include "tessella/tissue/voronoi.hpp"
+#include "bench_args.hpp"
 
 using namespace tessella;
 using namespace tessella::growth;
@@ -144,9 +145,12 @@ void divisionCosts() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
-  const bool divisions_only = argc > 1 && std::strcmp(argv[1], "--divisions") == 0;
-  const bool steps_only = argc > 1 && std::strcmp(argv[1], "--steps") == 0;
+  const std::string flag = tessella::bench::flagArgument(
+      argc, argv, {"--quick", "--divisions", "--steps"},
+      "growth_bench [--quick | --divisions | --steps]   (smaller tissues | division costs only | step rates only)");
+  const bool quick = flag == "--quick";
+  const bool divisions_only = flag == "--divisions";
+  const bool steps_only = flag == "--steps";
   std::printf("growth_bench (OpenMP max threads %d)\n\n", omp_get_max_threads());
   if (divisions_only) {
     divisionCosts();

@@ -50,6 +50,10 @@ int main(int argc, char** argv) {
   const std::size_t n = bench::countArgument(argc, argv, 1, "N", 1000, 1, 20000, usage);
   const int repeats = static_cast<int>(bench::countArgument(argc, argv, 2, "REPEATS", 3, 1, 1000, usage));
   const std::filesystem::path dir = argc > 3 ? argv[3] : std::filesystem::temp_directory_path();
+  if (std::error_code ec; !std::filesystem::is_directory(dir, ec)) {
+    std::fprintf(stderr, "io_bench: '%s' is not a directory\nusage: %s\n", dir.c_str(), usage);
+    return 2;
+  }
   try {
     const auto build_start = std::chrono::steady_clock::now();
     Tissue t = rectangularGrid(n, n);

@@ -35,6 +35,7 @@
 #include <string>
 #include <utility>
 #include <vector>
+#include "bench_args.hpp"
 
 using namespace tessella;
 
@@ -220,6 +221,8 @@ int main(int argc, char** argv) {
   bool quick = false, full = false;
   Config cfg;
   std::string backends = "direct,cholmod,cg,amg";
+  const char* usage = "solvers_bench [--quick] [--full] [--write-meshes DIR] [--backends direct,cholmod,cg,amg]";
+  if (tessella::bench::helpRequested(argc, argv, usage)) return 0;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--quick") {
@@ -231,9 +234,7 @@ int main(int argc, char** argv) {
     } else if (a == "--backends" && i + 1 < argc) {
       backends = argv[++i];
     } else {
-      std::fprintf(stderr, "solvers_bench: unknown argument '%s'\n"
-                   "usage: solvers_bench [--quick] [--full] [--write-meshes DIR] [--backends direct,cholmod,cg,amg]\n",
-                   a.c_str());
+      std::fprintf(stderr, "solvers_bench: unknown argument '%s'\nusage: %s\n", a.c_str(), usage);
       return 2;
     }
   }

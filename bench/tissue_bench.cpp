@@ -16,6 +16,7 @@
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/grids.hpp"
 #include "tessella/tissue/tissue.hpp"
+#include "bench_args.hpp"
 
 using namespace tessella;
 using Clock = std::chrono::steady_clock;
@@ -147,7 +148,9 @@ void divisions(int dim) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+  const bool quick = tessella::bench::flagArgument(argc, argv, {"--quick"},
+                                                   "tissue_bench [--quick]   (--quick: skip the 10^6-cell rows)") ==
+                     "--quick";
   std::printf("tissue_bench (%d OpenMP threads available; best of repeated runs)\n", omp_get_max_threads());
   std::printf("geometry recompute (2D: area, centroid, normal, second moments):\n");
   recompute2D(100, 0, 0);
