@@ -58,9 +58,9 @@ TEST_CASE("a non-finite property value or position is not written", "[io][vtu][e
 
   SECTION("a NaN double cell property") {
     auxin[CellId(4)] = kNaN;
+    const std::string lineage = "(lineage id " + std::to_string(t.lineageId(CellId(4))) + ")";
     REQUIRE_THROWS_WITH(writeTissueVtu(t, path), Contains(path) && Contains("cell property 'auxin' of cell 4") &&
-                                                     Contains("(lineage id " + std::to_string(t.lineageId(CellId(4)))) &&
-                                                     Contains("is nan"));
+                                                     Contains(lineage) && Contains("is nan"));
   }
   SECTION("an infinite component of a vector property") {
     t.cellProperties().get<Vec3>("polarity")[CellId(2)] = Vec3(0, -kInf, 0);
@@ -101,7 +101,8 @@ TEST_CASE("a snapshot with a non-finite value is refused when read", "[io][vtu][
   REQUIRE(readTissueVtu(good).numCells() == 6);
 
   SECTION("a NaN cell property") {
-    writeEdited(good, bad, [](vtkUnstructuredGrid* g) { g->GetCellData()->GetArray("auxin")->SetComponent(3, 0, kNaN); });
+    writeEdited(good, bad,
+                [](vtkUnstructuredGrid* g) { g->GetCellData()->GetArray("auxin")->SetComponent(3, 0, kNaN); });
     REQUIRE_THROWS_WITH(readTissueVtu(bad), Contains(bad) && Contains("cell property 'auxin' of cell 3") &&
                                                 Contains("is nan"));
   }
@@ -112,6 +113,7 @@ TEST_CASE("a snapshot with a non-finite value is refused when read", "[io][vtu][
   }
   SECTION("a NaN coordinate") {
     writeEdited(good, bad, [](vtkUnstructuredGrid* g) { g->GetPoints()->SetPoint(2, kNaN, 0, 0); });
-    REQUIRE_THROWS_WITH(readTissueVtu(bad), Contains(bad) && Contains("vertex 2 has the non-finite position (nan, 0, 0)"));
+    REQUIRE_THROWS_WITH(readTissueVtu(bad),
+                        Contains(bad) && Contains("vertex 2 has the non-finite position (nan, 0, 0)"));
   }
 }

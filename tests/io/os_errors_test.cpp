@@ -62,7 +62,8 @@ std::string errorOf(F f) {
 // What VTK would print about itself: none of it belongs in a message.
 void requireNoVtkDump(const std::string& message) {
   INFO(message);
-  for (const char* part : {"vtkInformation", "Debug: Off", "0x", "\033["}) REQUIRE(message.find(part) == std::string::npos);
+  for (const char* part : {"vtkInformation", "Debug: Off", "0x", "\033["})
+    REQUIRE(message.find(part) == std::string::npos);
 }
 
 }  // namespace
