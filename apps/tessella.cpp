@@ -9,13 +9,18 @@
 //
 // Exit codes: 0 success, 1 an error Tessella reports (bad config or file, a
 // failed step), 2 an unexpected internal error,
-// 3 (info) the tissue was read but fails validate().
+// 3 (info) the tissue was read but fails validate(),
+// 130 / 143 (run) stopped by SIGINT / SIGTERM: the run ends after the step in
+// progress, with every file written so far complete (a second signal ends it
+// at once).
 
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -47,16 +52,58 @@ double secondsSince(Clock::time_point t0) {
 
 const char* measureName(int dim) { return dim == 2 ? "area" : "volume"; }
 
+// SIGINT / SIGTERM during `run`: the handler only records the signal; the
+// simulation checks the flag between steps (Simulation::setStopFlag).
+static_assert(std::atomic<bool>::is_always_lock_free, "the stop flag is set from a signal handler");
+std::atomic<bool> g_stop{false};
+volatile std::sig_atomic_t g_stop_signal = 0;
+
+extern "C" void onStopSignal(int signal) {
+  if (g_stop_signal == 0) g_stop_signal = signal;
+  g_stop.store(true);
+}
+
+void installStopHandlers() {
+  struct sigaction action {};
+  action.sa_handler = onStopSignal;
+  sigemptyset(&action.sa_mask);
+  // SA_RESETHAND: a second signal of the same kind ends the program at once.
+  action.sa_flags = SA_RESTART | SA_RESETHAND;
+  for (const int signal : {SIGINT, SIGTERM}) {
+    struct sigaction previous {};
+    sigaction(signal, nullptr, &previous);
+    if (previous.sa_handler == SIG_IGN) continue;  // e.g. a background job of a script: stays ignored
+    sigaction(signal, &action, nullptr);
+  }
+}
+
+int reportInterrupted(const tessella::sim::PreparedRun& run) {
+  const int signal = g_stop_signal;
+  const char* name = signal == SIGTERM ? "SIGTERM" : "SIGINT";
+  const tessella::sim::Simulation& sim = run.simulation();
+  if (run.seriesPath().empty()) {
+    fmt::print(stderr, "interrupted ({}) before the run started: nothing was written\n", name);
+  } else {
+    fmt::print(stderr, "interrupted ({}) after step {}/{} (t = {}): saved {} complete snapshots, listed in {}",
+               name, sim.stepsDone(), sim.numSteps(), sim.time(), run.snapshots(), run.seriesPath());
+    if (run.meshSnapshots() > 0) fmt::print(stderr, ", and {} mesh snapshots", run.meshSnapshots());
+    fmt::print(stderr, "; run record {}\n", run.runRecordPath());
+  }
+  return 128 + signal;
+}
+
 int runCommand(const std::string& config_path, const std::string& out, const std::vector<std::string>& sets,
                bool overwrite, bool quiet) {
   using namespace tessella::sim;
   const auto t0 = Clock::now();
+  installStopHandlers();
   SimulationConfig config = loadSimulationConfigFile(config_path, sets);
   if (!quiet)
     for (const std::string& note : config.config.notes()) fmt::print(stderr, "note: {}\n", note);
   if (!quiet) fmt::print(stderr, "building the tissue ({})...\n", config.config.getString("tissue.generator"));
   PreparedRun run = PreparedRun::prepare(std::move(config), RunOptions{out, overwrite});
   Simulation& sim = run.simulation();
+  sim.setStopFlag(&g_stop);
   if (!quiet) {
     fmt::print(stderr, "tissue: {} cells ({}D, {}) in {}\n", sim.tissue().numCells(), sim.tissue().dim(),
                tessella::embeddingName(sim.tissue().embedding()),
@@ -68,6 +115,7 @@ int runCommand(const std::string& config_path, const std::string& out, const std
     });
   }
   run.execute();
+  if (run.interrupted()) return reportInterrupted(run);
   if (!quiet)
     fmt::print("wrote {} snapshots ({} steps, t = {} .. {}) to {}\nrun record: {}\n", run.snapshots(),
                sim.stepsDone(), run.config().time.start, sim.time(), run.outputDirectory(),

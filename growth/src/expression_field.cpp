@@ -128,4 +128,10 @@ std::string ExpressionField::describe() const {
   return "expression field (" + spec_.vx + ", " + spec_.vy + ", " + spec_.vz + ")";
 }
 
+std::string ExpressionField::describeComponent(int c) const {
+  if (c < 0 || c > 2) return {};
+  const std::array<const std::string*, 3> exprs = {&spec_.vx, &spec_.vy, &spec_.vz};
+  return std::string(kComponent[c]) + " = \"" + *exprs[c] + "\"";
+}
+
 }  // namespace tessella::growth

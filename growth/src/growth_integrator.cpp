@@ -12,6 +12,37 @@ const char* schemeName(IntegrationScheme s) {
   return s == IntegrationScheme::Euler ? "euler" : "heun";
 }
 
+namespace {
+
+bool finite(const Vec3& v) { return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z()); }
+
+/// The lowest slot i with alive[i] and a non-finite v[i], or v.size() (a
+/// deterministic report for any thread count).
+std::size_t firstNonFinite(std::span<const Vec3> v, const std::vector<std::uint8_t>& alive) {
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(v.size());
+  std::ptrdiff_t bad = n;
+#pragma omp parallel for schedule(static) reduction(min : bad) if(n >= kParallelMinItems)
+  for (std::ptrdiff_t i = 0; i < n; ++i)
+    if (alive[i] && !finite(v[i]) && i < bad) bad = i;
+  return static_cast<std::size_t>(bad);
+}
+
+// "nan" whatever the sign bit says (0/0 is -nan on x86).
+std::string number(double x) {
+  if (std::isnan(x)) return "nan";
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+std::string vec(const Vec3& v) {
+  std::ostringstream s;
+  s << "(" << number(v.x()) << ", " << number(v.y()) << ", " << number(v.z()) << ")";
+  return s.str();
+}
+
+}  // namespace
+
 IntegrationScheme parseScheme(const std::string& name) {
   if (name == "euler") return IntegrationScheme::Euler;
   if (name == "heun" || name == "rk2") return IntegrationScheme::Heun;
@@ -35,9 +66,50 @@ void GrowthIntegrator::velocities(const Tissue& t, std::span<const Vec3> x, doub
   gather_v_.resize(control.size());
   for (std::size_t i = 0; i < control.size(); ++i) gather_x_[i] = x[control[i].index()];
   field_->velocities(gather_x_, time, gather_v_);
+  for (std::size_t i = 0; i < control.size(); ++i)
+    if (!finite(gather_v_[i])) throw nonFiniteVelocity(control[i].index(), gather_x_[i], gather_v_[i], time);
   std::fill(out.begin(), out.end(), Vec3::Zero());
   for (std::size_t i = 0; i < control.size(); ++i) out[control[i].index()] = gather_v_[i];
   interpolator_.interpolate(t, out);
+}
+
+GeometryError GrowthIntegrator::nonFiniteVelocity(std::size_t vertex, const Vec3& x, const Vec3& v,
+                                                  double time) const {
+  std::ostringstream msg;
+  msg << "the velocity field " << field_->describe() << " is not finite at vertex " << vertex << ", position "
+      << vec(x) << ", t = " << time << ": velocity " << vec(v);
+  for (int c = 0; c < 3; ++c) {
+    const std::string component = field_->describeComponent(c);
+    if (!std::isfinite(v[c]) && !component.empty()) msg << "; " << component << " gives " << number(v[c]);
+  }
+  return GeometryError(msg.str(), ElementId{0, static_cast<Index>(vertex)});
+}
+
+void GrowthIntegrator::checkVelocities(const Tissue& t, std::span<const Vec3> x, std::span<const Vec3> v,
+                                       double time) const {
+  const std::size_t bad = firstNonFinite(v, t.topology().aliveFlags(0));
+  if (bad < v.size()) throw nonFiniteVelocity(bad, x[bad], v[bad], time);
+}
+
+void GrowthIntegrator::undo(Tissue& t, double t0) {
+  std::span<Vec3> x = t.mutablePositions();
+  std::copy(x0_.begin(), x0_.end(), x.begin());
+  t.setTime(t0);
+  cache_ = GeometryCache{};
+}
+
+void GrowthIntegrator::checkPositions(Tissue& t, double t0, double t1, std::span<const Vec3> k2) {
+  const std::span<const Vec3> x = t.positions();
+  const std::size_t bad = firstNonFinite(x, t.topology().aliveFlags(0));
+  if (bad == x.size()) return;
+  std::ostringstream msg;
+  msg << "growth step from t = " << t0 << " to t = " << t1 << " (dt = " << (t1 - t0) << ") moved vertex " << bad
+      << " from " << vec(x0_[bad]) << " to the non-finite position " << vec(x[bad]) << " (velocity "
+      << vec(k2.empty() ? k1_[bad] : Vec3(0.5 * (k1_[bad] + k2[bad])))
+      << " of the velocity field " << field_->describe() << ")";
+  undo(t, t0);
+  msg << "; positions restored";
+  throw GeometryError(msg.str(), ElementId{0, static_cast<Index>(bad)});
 }
 
 void GrowthIntegrator::project(const Tissue& t, std::span<Vec3> x) const {
@@ -69,7 +141,10 @@ void GrowthIntegrator::step(Tissue& t, double dt) {
       if (alive[f]) normal_before_[f] = polygonMeasures(t, FaceId(static_cast<Index>(f))).normal;
   }
 
+  // A non-finite velocity or position is an error whatever check_inversion
+  // says: it would poison the tissue (and every snapshot written after).
   velocities(t, t.positions(), t0, k1_);
+  checkVelocities(t, t.positions(), k1_, t0);
   std::span<Vec3> x = t.mutablePositions();  // bumps the geometry counter
   const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(n);
   // One sweep keeps x0 (for Heun and for undoing a refused step) and moves
@@ -82,16 +157,24 @@ void GrowthIntegrator::step(Tissue& t, double dt) {
     if (planar) x[i].z() = 0.0;
   }
   if (!planar) project(t, x);
+  checkPositions(t, t0, t1, {});
   if (options_.scheme == IntegrationScheme::Heun) {
     // Heun: predictor x1 = x0 + dt k1 (above), corrector x0 + dt/2 (k1 + v(x1, t1)).
     k2_.resize(n);
-    velocities(t, x, t1, k2_);
+    try {
+      velocities(t, x, t1, k2_);
+      checkVelocities(t, x, k2_, t1);
+    } catch (...) {
+      undo(t, t0);
+      throw;
+    }
 #pragma omp parallel for schedule(static) if(m >= kParallelMinItems)
     for (std::ptrdiff_t i = 0; i < m; ++i) {
       x[i] = x0_[i] + (0.5 * dt) * (k1_[i] + k2_[i]);
       if (planar) x[i].z() = 0.0;
     }
     if (!planar) project(t, x);
+    checkPositions(t, t0, t1, k2_);
   }
   t.setTime(t1);
   recomputeGeometry(t, cache_, GeometryOptions{.edges = false, .second_moments = false});
@@ -130,11 +213,7 @@ void GrowthIntegrator::checkCells(Tissue& t, double t0, double t1) {
         << ")" << (emb == Embedding::Planar ? " instead of +z" : " turned against its previous normal");
   }
   msg << "; positions restored, try a smaller dt";
-  // Leave the tissue as it was before the step.
-  std::span<Vec3> x = t.mutablePositions();
-  std::copy(x0_.begin(), x0_.end(), x.begin());
-  t.setTime(t0);
-  cache_ = GeometryCache{};
+  undo(t, t0);  // leave the tissue as it was before the step
   throw GeometryError(msg.str(), ElementId{dim, static_cast<Index>(bad)});
 }
 

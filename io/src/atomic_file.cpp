@@ -4,9 +4,11 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <filesystem>
 #include <system_error>
 
+#include "tessella/io/text_file.hpp"
 #include "tessella/tissue/errors.hpp"
 
 namespace tessella::io::detail {
@@ -23,10 +25,11 @@ std::string temporaryPathFor(const std::string& path) {
 
 void syncFile(const std::string& path) {
   const int fd = ::open(path.c_str(), O_RDONLY);
-  if (fd < 0) throw InputError("cannot open '" + path + "' to flush it to disk");
+  if (fd < 0) throw InputError("cannot open '" + path + "' to flush it to disk: " + osReason(errno));
   const int rc = ::fsync(fd);
+  const int error = errno;
   ::close(fd);
-  if (rc != 0) throw InputError("cannot flush '" + path + "' to disk");
+  if (rc != 0) throw InputError("cannot flush '" + path + "' to disk: " + osReason(error));
 }
 
 // Makes the rename itself durable.
@@ -40,6 +43,25 @@ void syncDirectoryOf(const std::string& path) {
 }
 
 }  // namespace
+
+std::string osReason(int error) { return std::error_code(error, std::generic_category()).message(); }
+
+void writeBytes(const std::string& file, std::string_view data, const std::string& target) {
+  const int fd = ::open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  if (fd < 0) throw InputError("cannot write '" + target + "': " + osReason(errno));
+  while (!data.empty()) {
+    const ssize_t n = ::write(fd, data.data(), data.size());
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int error = n < 0 ? errno : EIO;
+      ::close(fd);
+      throw InputError("cannot write '" + target + "': " + osReason(error));
+    }
+    data.remove_prefix(static_cast<std::size_t>(n));
+  }
+  // close() reports delayed write errors on some file systems (NFS, quotas).
+  if (::close(fd) != 0) throw InputError("cannot write '" + target + "': " + osReason(errno));
+}
 
 void replaceAtomically(const std::string& path, const std::function<void(const std::string&)>& write,
                        bool durable) {
@@ -59,3 +81,11 @@ void replaceAtomically(const std::string& path, const std::function<void(const s
 }
 
 }  // namespace tessella::io::detail
+
+namespace tessella::io {
+
+void writeTextFile(const std::string& path, std::string_view text, bool durable) {
+  detail::replaceAtomically(path, [&](const std::string& tmp) { detail::writeBytes(tmp, text, path); }, durable);
+}
+
+}  // namespace tessella::io

@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <string>
+#include <string_view>
 
 namespace tessella::io::detail {
 
@@ -16,5 +17,13 @@ namespace tessella::io::detail {
 /// rename, so a power cut cannot leave an empty file under `path` either.
 void replaceAtomically(const std::string& path, const std::function<void(const std::string&)>& write,
                        bool durable = false);
+
+/// The operating system's words for an errno value ("No space left on device").
+std::string osReason(int error);
+
+/// Writes `data` to `file` (created or truncated) with POSIX calls, so that a
+/// failure is an InputError naming `target` (the file the user asked for) and
+/// the operating system's reason.
+void writeBytes(const std::string& file, std::string_view data, const std::string& target);
 
 }  // namespace tessella::io::detail

@@ -5,14 +5,14 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 
 #include <vtkNew.h>
 #include <vtkXMLDataElement.h>
 #include <vtkXMLDataParser.h>
 
-#include "atomic_file.hpp"
+#include "tessella/io/text_file.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/excerpt.hpp"
 #include "vtk_error_capture.hpp"
 
 namespace tessella::io {
@@ -46,22 +46,15 @@ std::string exactNumber(double x) {
 void writePvdFile(const std::string& path, std::span<const PvdEntry> entries, bool durable) {
   for (const PvdEntry& e : entries)
     if (!std::isfinite(e.time)) throw InputError("'" + path + "': time " + exactNumber(e.time) + " of '" + e.file + "' is not finite");
-  detail::replaceAtomically(
-      path,
-      [&](const std::string& tmp) {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) throw InputError("cannot write '" + path + "': cannot create '" + tmp + "'");
-        out << "<?xml version=\"1.0\"?>\n"
-               "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
-               "  <Collection>\n";
-        for (const PvdEntry& e : entries)
-          out << "    <DataSet timestep=\"" << exactNumber(e.time) << "\" group=\"\" part=\"0\" file=\""
-              << xmlEscaped(e.file) << "\"/>\n";
-        out << "  </Collection>\n</VTKFile>\n";
-        out.close();
-        if (!out) throw InputError("cannot write '" + path + "': writing '" + tmp + "' failed (disk full?)");
-      },
-      durable);
+  std::string text =
+      "<?xml version=\"1.0\"?>\n"
+      "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
+      "  <Collection>\n";
+  for (const PvdEntry& e : entries)
+    text += "    <DataSet timestep=\"" + exactNumber(e.time) + "\" group=\"\" part=\"0\" file=\"" +
+            xmlEscaped(e.file) + "\"/>\n";
+  text += "  </Collection>\n</VTKFile>\n";
+  writeTextFile(path, text, durable);
 }
 
 std::vector<PvdEntry> readPvdFile(const std::string& path) {
@@ -88,12 +81,12 @@ std::vector<PvdEntry> readPvdFile(const std::string& path) {
     const char* file = dataset->GetAttribute("file");
     const std::string which = "DataSet " + std::to_string(entries.size());
     if (!file) throw fail(which + " has no file attribute");
-    if (!timestep) throw fail(which + " ('" + file + "') has no timestep attribute");
+    if (!timestep) throw fail(which + " ('" + excerpt(file) + "') has no timestep attribute");
     char* end = nullptr;
     errno = 0;
     const double time = std::strtod(timestep, &end);
     if (end == timestep || *end != '\0' || errno == ERANGE || !std::isfinite(time))
-      throw fail(which + " ('" + file + "') has timestep '" + timestep + "', not a finite number");
+      throw fail(which + " ('" + excerpt(file) + "') has timestep '" + excerpt(timestep) + "', not a finite number");
     entries.push_back({time, file});  // the parser has already decoded XML entities
   }
   return entries;

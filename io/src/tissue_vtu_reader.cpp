@@ -19,6 +19,7 @@
 #include <vtkStringArray.h>
 #include <vtkUnstructuredGrid.h>
 
+#include "finite_values.hpp"
 #include "property_arrays.hpp"
 #include "snapshot_format.hpp"
 #include "tessella/io/vtu.hpp"
@@ -277,6 +278,7 @@ Snapshot readSnapshot(const std::string& path) {
 
   if (!grid->GetPoints() && grid->GetNumberOfCells() > 0) src.fail("the file has cells but no points");
   const std::vector<Vec3> positions = grid->GetPoints() ? positionsOf(grid) : std::vector<Vec3>{};
+  detail::requireFinitePositions(positions, detail::RowSelection{.count = positions.size()}, path);
   Tissue tissue = [&] {
     try {
       if (dim == 2) return buildPolygonTissue(positions, polygonsOf(grid, src), *embedding);
@@ -310,6 +312,8 @@ Snapshot readSnapshot(const std::string& path) {
   restoreProperties(tissue.properties(0), grid->GetPointData(), field, detail::kVertexPropertiesArray,
                     detail::kVertexPoliciesArray, detail::kVertexDefaultPrefix, grid->GetNumberOfPoints(), "vertex", src);
   restoreLineage(tissue, grid->GetCellData(), grid->GetNumberOfCells(), src);
+  detail::requireFiniteProperties(tissue, detail::RowSelection{.count = tissue.numVertices()},
+                                  detail::RowSelection{.count = tissue.numCells()}, path);
   // Ids of cells that were removed before the save stay used: a restart must
   // not hand them out again. Optional, files of other writers may lack it.
   if (vtkDataArray* next = field->GetArray(detail::kNextLineageArray)) {

@@ -21,6 +21,7 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 
+#include "finite_values.hpp"
 #include "property_arrays.hpp"
 #include "snapshot_format.hpp"
 #include "tessella/io/vtu.hpp"
@@ -214,6 +215,8 @@ void writeTissueVtu(const Tissue& tissue, const std::string& path, const VtuOpti
   const CellComplex& topo = tissue.topology();
   const RowSelection vertex_rows = detail::liveRows(topo.aliveFlags(0), tissue.numVertices());
   const RowSelection cell_rows = detail::liveRows(topo.aliveFlags(tissue.dim()), tissue.numCells());
+  detail::requireFinitePositions(tissue.positions(), vertex_rows, path);  // nothing is written otherwise
+  detail::requireFiniteProperties(tissue, vertex_rows, cell_rows, path);
   const std::vector<vtkIdType> point_ids = pointIdsOf(tissue, vertex_rows);
 
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();

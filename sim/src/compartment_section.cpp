@@ -5,6 +5,7 @@
 
 #include "coupling_values.hpp"
 #include "tessella/sim/coupling_section.hpp"
+#include "tessella/tissue/excerpt.hpp"
 
 namespace tessella::sim {
 
@@ -30,7 +31,7 @@ std::vector<std::int64_t> readCellFile(const Config& c, const std::string& key) 
     }
     if (used != token.size() || v < 0 || (fields >> extra))
       throw c.errorAt(key, path + ":" + std::to_string(number) + ": expected one lineage id (an integer >= 0) per "
-                                  "line, got '" + line + "'");
+                                  "line, got '" + excerpt(line) + "'");
     ids.push_back(v);
   }
   if (ids.empty()) throw c.errorAt(key, "'" + path + "' lists no cells");

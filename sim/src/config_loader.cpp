@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "tessella/sim/suggest.hpp"
+#include "tessella/tissue/excerpt.hpp"
 
 namespace fs = std::filesystem;
 
@@ -21,8 +22,7 @@ namespace tessella::sim {
 namespace {
 
 std::string quoted(const std::string& s) {
-  constexpr std::size_t kMax = 60;  // a pasted blob must not flood the message
-  return "'" + (s.size() > kMax ? s.substr(0, kMax) + "..." : s) + "'";
+  return "'" + excerpt(s, 60) + "'";  // a pasted blob must not flood the message
 }
 
 std::string describe(const YAML::Node& node) {

@@ -120,7 +120,8 @@ void declareGrowthSection(Schema& s) {
       .byDefault(std::string("none"));
   s.key("growth.check_inversion", ValueType::Bool,
         "Stop with an error naming the cell and time when a step inverts or collapses a cell "
-        "(lower dt); off lets inverted cells through.")
+        "(lower dt); off lets inverted cells through. A non-finite velocity or position is an error "
+        "either way.")
       .byDefault(true);
 
   s.section("growth.uniform", "v = rate (x - center).").activeWhen("growth.field", {"uniform"});

@@ -15,17 +15,21 @@ namespace tessella::sim {
 namespace {
 
 /// The files of a previous run of series `name` in `dir` (with_fields: and
-/// of the solver-field series).
+/// of the solver-field series), with the temporaries an interrupted write
+/// left behind (FILE.tmp-PID-N, run.yaml.tmp of older versions).
 std::vector<fs::path> previousRunFiles(const fs::path& dir, const std::string& name, bool with_fields = false) {
   std::vector<fs::path> files;
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) return files;
-  const std::regex snapshot(std::regex_replace(name, std::regex(R"([.^$|()\[\]{}*+?\\-])"), R"(\$&)") +
-                            R"(_\d+\.vtu)");
-  const std::regex fields(std::string(kFieldSeriesName) + R"((_walls)?(\.pvd|_\d+\.vtu))");
+  const std::string tmp = R"((\.tmp-\d+-\d+)?)";
+  const std::regex series(std::regex_replace(name, std::regex(R"([.^$|()\[\]{}*+?\\-])"), R"(\$&)") +
+                          R"((\.pvd|_\d+\.vtu))" + tmp);
+  const std::regex fields(std::string(kFieldSeriesName) + R"((_walls)?(\.pvd|_\d+\.vtu))" + tmp);
+  const std::regex record(std::regex_replace(kRunRecordName, std::regex(R"(\.)"), R"(\.)") +
+                          R"((\.tmp|\.tmp-\d+-\d+)?)");
   for (const auto& entry : fs::directory_iterator(dir, ec)) {
     const std::string file = entry.path().filename().string();
-    if (file == kRunRecordName || file == kStatisticsName || file == name + ".pvd" || std::regex_match(file, snapshot) ||
+    if (std::regex_match(file, record) || file == kStatisticsName || std::regex_match(file, series) ||
         (with_fields && std::regex_match(file, fields)))
       files.push_back(entry.path());
   }
@@ -81,6 +85,7 @@ std::string PreparedRun::runRecordPath() const { return (fs::path(directory_) / 
 
 void PreparedRun::execute() {
   if (output_) throw std::logic_error("PreparedRun::execute: already executed");
+  if (simulation_.stopRequested()) return;  // stopped before anything was written
   std::error_code ec;
   fs::create_directories(directory_, ec);
   if (ec) throw InputError("cannot create the output directory " + directory_ + ": " + ec.message());

@@ -2,9 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
-#include <filesystem>
-#include <fstream>
-
+#include "tessella/io/text_file.hpp"
 #include "tessella/tissue/errors.hpp"
 
 namespace tessella::sim {
@@ -66,15 +64,7 @@ std::string resolvedConfigYaml(const Config& config) {
 }
 
 void writeRunRecord(const Config& config, const std::string& path) {
-  const std::string text = resolvedConfigYaml(config);
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
-    if (!(f << text) || !f.flush()) throw InputError("cannot write the run record " + tmp);
-  }
-  std::error_code ec;
-  std::filesystem::rename(tmp, path, ec);
-  if (ec) throw InputError("cannot write the run record " + path + ": " + ec.message());
+  io::writeTextFile(path, resolvedConfigYaml(config));  // atomic; a failure leaves no temporary
 }
 
 }  // namespace tessella::sim

@@ -127,11 +127,11 @@ void Simulation::step() {
 
 void Simulation::runUntil(double t) {
   const double slack = 1e-6 * parameters_.time.dt;
-  while (!finished() && time() < t - slack) step();
+  while (!finished() && !stopRequested() && time() < t - slack) step();
 }
 
 void Simulation::run() {
-  while (!finished()) step();
+  while (!finished() && !stopRequested()) step();
 }
 
 }  // namespace tessella::sim

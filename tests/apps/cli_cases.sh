@@ -145,6 +145,150 @@ case "$case_name" in
     [ ! -e "$tmp/no_dir" ] || fail "a directory was created"
     [ ! -e "$tmp/m.vtu" ] || fail "an output file was left"
     ;;
+  nonfinite_expression)
+    # A velocity expression that divides by zero at t = 0.5: an error naming the expression, the vertex,
+    # its position and the time, with the inversion check on or off; every snapshot written before reads back.
+    for check in true false; do
+      rm -rf "$tmp/out"
+      "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/out" -q --set time.end=2 --set time.dt=0.25 \
+        --set growth.field=expression --set growth.expression.vx='x / (t - 0.5)' \
+        --set growth.check_inversion=$check >"$tmp/stdout" 2>"$tmp/stderr"
+      rc=$?
+      cat "$tmp/stderr"
+      [ "$rc" -eq 1 ] || fail "check_inversion=$check: exit code $rc, expected 1"
+      grep -q 'vx = "x / (t - 0.5)" gives' "$tmp/stderr" || fail "the expression is not named"
+      grep -Eq 'not finite at vertex [0-9]+, position \(' "$tmp/stderr" || fail "the vertex is not named"
+      grep -q 't = 0.5' "$tmp/stderr" || fail "the time is not named"
+      grep -q 'inverted' "$tmp/stderr" && fail "reported as an inverted cell"
+      for snapshot in "$tmp/out"/tissue_*.vtu; do
+        "$tessella" info "$snapshot" >/dev/null 2>&1 || fail "$snapshot does not read back"
+      done
+    done
+    ;;
+  nonfinite_overflow)
+    # Finite velocities whose positions overflow: refused, the snapshots stay finite.
+    "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/out" -q --set growth.field=expression \
+      --set growth.expression.vx='1e300*x*x' --set growth.check_inversion=false >"$tmp/stdout" 2>"$tmp/stderr"
+    rc=$?
+    cat "$tmp/stderr"
+    [ "$rc" -eq 1 ] || fail "exit code $rc, expected 1"
+    grep -Eq 'vx = "1e300\*x\*x" gives inf|non-finite position' "$tmp/stderr" || fail "no clear error"
+    for snapshot in "$tmp/out"/tissue_*.vtu; do
+      "$tessella" info "$snapshot" >/dev/null 2>&1 || fail "$snapshot does not read back"
+    done
+    ;;
+  interrupt_sigint|interrupt_sigterm)
+    # A run stopped by a signal finishes the file it writes, says what it saved and exits 128 + signal;
+    # the .pvd lists complete snapshots only and no temporary is left. Several trials hit different moments.
+    if [ "$case_name" = interrupt_sigint ]; then sig=INT; code=130; else sig=TERM; code=143; fi
+    set -m  # background jobs of a script ignore SIGINT otherwise
+    for delay in 0.3 0.7 1.1; do
+      out="$tmp/run_$delay"
+      "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$out" -q --set tissue.hexagonal_grid.nx=120 \
+        --set tissue.hexagonal_grid.ny=120 --set time.end=100000 --set output.every=1 \
+        >"$tmp/stdout" 2>"$tmp/stderr" &
+      pid=$!
+      for _ in $(seq 100); do [ -f "$out/tissue.pvd" ] && break; sleep 0.1; done
+      [ -f "$out/tissue.pvd" ] || { kill -9 "$pid"; fail "the run wrote no series"; }
+      sleep "$delay"
+      kill -s "$sig" "$pid"
+      for _ in $(seq 300); do kill -0 "$pid" 2>/dev/null || break; sleep 0.1; done
+      kill -0 "$pid" 2>/dev/null && { kill -9 "$pid"; fail "the run did not stop within 30 s of SIG$sig"; }
+      wait "$pid"
+      rc=$?
+      cat "$tmp/stderr"
+      [ "$rc" -eq "$code" ] || fail "exit code $rc after SIG$sig, expected $code"
+      grep -Eq "^interrupted \(SIG$sig\) after step [0-9]+/100000 .*saved [0-9]+ complete snapshots, listed in .*tissue.pvd" \
+        "$tmp/stderr" || fail "no report of what was saved"
+      left=$(find "$out" -name '*.tmp*')
+      [ -z "$left" ] || fail "temporaries left: $left"
+      listed=$(grep -c '<DataSet' "$out/tissue.pvd")
+      files=$(ls "$out"/tissue_*.vtu | wc -l)
+      saved=$(sed -En 's/.*saved ([0-9]+) complete snapshots.*/\1/p' "$tmp/stderr")
+      [ "$listed" -eq "$files" ] && [ "$listed" -eq "$saved" ] \
+        || fail "the .pvd lists $listed snapshots, the directory holds $files, the report says $saved"
+      for f in $(sed -En 's/.*file="([^"]+)".*/\1/p' "$out/tissue.pvd"); do
+        [ -s "$out/$f" ] || fail "$f, listed in the .pvd, is missing or empty"
+      done
+      "$tessella" info "$out/$f" >/dev/null 2>&1 || fail "$f, the last snapshot listed, does not read back"
+    done
+    ;;
+  overwrite_removes_temporaries)
+    # What an interrupted run of an older version left behind goes with --overwrite.
+    "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/out" -q || fail "first run failed"
+    : >"$tmp/out/tissue_000007.vtu.tmp-123-4"; : >"$tmp/out/tissue.pvd.tmp-123-5"; : >"$tmp/out/run.yaml.tmp"
+    : >"$tmp/out/keep.txt"
+    "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/out" -q --overwrite || fail "--overwrite failed"
+    left=$(find "$tmp/out" -name '*.tmp*')
+    [ -z "$left" ] || fail "temporaries left: $left"
+    [ -f "$tmp/out/keep.txt" ] || fail "a file of the user's was removed"
+    ;;
+  disk_full)
+    # A full disk: the error names the file and says "No space left on device", without VTK's dump,
+    # and no temporary is left. Needs a small tmpfs (root, or a mount namespace).
+    mkdir -p "$tmp/full"
+    if ! mount -t tmpfs -o size=64k tmpfs "$tmp/full" 2>/dev/null; then
+      echo "SKIPPED [$case_name]: cannot mount a small tmpfs here (needs root)"; exit 77
+    fi
+    trap 'umount "$tmp/full"; rm -rf "$tmp"' EXIT
+    # A snapshot larger than the disk.
+    "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/full/a" -q --set tissue.hexagonal_grid.nx=60 \
+      --set tissue.hexagonal_grid.ny=60 --set output.compression=none >"$tmp/stdout" 2>"$tmp/stderr"
+    rc=$?
+    cat "$tmp/stderr"
+    [ "$rc" -eq 1 ] || fail "exit code $rc, expected 1"
+    grep -q "cannot write '$tmp/full/a/tissue_000000.vtu': No space left on device" "$tmp/stderr" \
+      || fail "the error does not give the file and the reason"
+    grep -Eq 'vtkInformation|Debug: Off|0x[0-9a-f]{6}' "$tmp/stderr" && fail "VTK's internal dump is in the message"
+    [ "$(wc -l <"$tmp/stderr")" -eq 1 ] || fail "more than one line printed"
+    left=$(find "$tmp/full" -name '*.tmp*')
+    [ -z "$left" ] || fail "temporaries left: $left"
+    # The disk fills up before run.yaml.
+    rm -rf "$tmp/full/a"
+    mkdir "$tmp/full/b"
+    dd if=/dev/zero of="$tmp/full/filler" bs=1k count=100 2>/dev/null
+    "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/full/b" -q >"$tmp/stdout" 2>"$tmp/stderr"
+    rc=$?
+    cat "$tmp/stderr"
+    [ "$rc" -eq 1 ] || fail "exit code $rc, expected 1"
+    grep -q "cannot write '$tmp/full/b/run.yaml': No space left on device" "$tmp/stderr" \
+      || fail "the run.yaml error does not give the file and the reason"
+    [ -z "$(ls -A "$tmp/full/b")" ] || fail "files left: $(ls -A "$tmp/full/b")"
+    ;;
+  long_csv_line)
+    # A seed file with a 20 MB line of binary bytes: the error quotes a short, escaped excerpt.
+    mkdir -p "$tmp/cfg"
+    { printf 'x,y\n1,2\n3,4,'; head -c 20000000 /dev/zero | tr '\0' '\001'; printf '\n'; } >"$tmp/cfg/seeds.csv"
+    printf 'tissue:\n  generator: voronoi\n  voronoi:\n    seed_file: seeds.csv\n' >"$tmp/cfg/c.yaml"
+    "$tessella" run "$tmp/cfg/c.yaml" --out "$tmp/out" >"$tmp/stdout" 2>"$tmp/stderr"
+    rc=$?
+    [ "$rc" -eq 1 ] || fail "exit code $rc, expected 1"
+    bytes=$(wc -c <"$tmp/stderr")
+    head -c 600 "$tmp/stderr"; echo
+    [ "$bytes" -lt 1000 ] || fail "the error is $bytes bytes long"
+    grep -q 'seeds.csv:3' "$tmp/stderr" || fail "the line is not named"
+    grep -Fq '\x01\x01' "$tmp/stderr" || fail "the bytes are not escaped"
+    grep -Eq '\.\.\. \([0-9]+ more bytes\)' "$tmp/stderr" || fail "the cut is not said"
+    LC_ALL=C grep -q "$(printf '\001')" "$tmp/stderr" && fail "a raw control byte was printed"
+    ;;
+  vtk_messages)
+    # Read errors VTK reports (some through objects Tessella cannot watch) come as one line naming the
+    # file, without VTK's object dumps, addresses or coloured log lines.
+    "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/hex" -q --set time.end=0 || fail "run failed"
+    snapshot="$tmp/hex/tissue_000000.vtu"
+    for edit in 's/byte_order="LittleEndian"/byte_order="Middle"/' 's/header_type="UInt64"/header_type="UInt16"/' \
+                's/NumberOfComponents="3"/NumberOfComponents="x"/'; do
+      LC_ALL=C sed "$edit" "$snapshot" >"$tmp/bad.vtu"
+      "$tessella" info "$tmp/bad.vtu" >"$tmp/stdout" 2>"$tmp/stderr"
+      rc=$?
+      cat "$tmp/stderr"
+      [ "$rc" -eq 1 ] || fail "$edit: exit code $rc, expected 1"
+      [ "$(wc -l <"$tmp/stderr")" -eq 1 ] || fail "$edit: more than one line printed"
+      grep -q "^error: cannot read '$tmp/bad.vtu': " "$tmp/stderr" || fail "$edit: the file is not named"
+      grep -Eq 'vtkInformation|Debug: Off|\(0x[0-9a-f]+\)' "$tmp/stderr" && fail "$edit: VTK's dump is in the message"
+      grep -q "$(printf '\033')" "$tmp/stderr" && fail "$edit: a coloured log line was printed"
+    done
+    ;;
   *) fail "unknown case" ;;
 esac
 echo "ok [$case_name]"

@@ -202,3 +202,77 @@ TEST_CASE("the dome projection fixes the dome's own surface", "[growth][integrat
     }
   }
 }
+
+TEST_CASE("a non-finite velocity is an error naming the field, the expression, the vertex and the time",
+          "[growth][integrator][finite]") {
+  for (const bool check_inversion : {true, false}) {
+    for (const IntegrationScheme scheme : {IntegrationScheme::Euler, IntegrationScheme::Heun}) {
+      INFO("check_inversion " << check_inversion << ", scheme " << schemeName(scheme));
+      Tissue t = rectangularGrid(2, 2);
+      t.setTime(0.5);
+      const std::vector<Vec3> before(t.positions().begin(), t.positions().end());
+      GrowthIntegrator g(std::make_shared<ExpressionField>(ExpressionFieldSpec{.vx = "x / (t - 0.5)", .vy = "y"}),
+                         GrowthOptions{.scheme = scheme, .check_inversion = check_inversion});
+      try {
+        g.step(t, 0.1);
+        FAIL("no error");
+      } catch (const GeometryError& e) {
+        // Vertex 0 sits at x = 0: 0 / 0.
+        CHECK_THAT(e.what(), Contains("expression field") && Contains("vx = \"x / (t - 0.5)\" gives nan") &&
+                                 Contains("vertex 0, position (0, 0, 0), t = 0.5") && !Contains("vy ="));
+        CHECK(e.element().degree == 0);
+        CHECK(e.element().index == 0);
+      }
+      CHECK(t.time() == 0.5);
+      for (VertexId v : t.vertices()) CHECK(t.position(v) == before[v.index()]);
+    }
+  }
+}
+
+TEST_CASE("a velocity that overflows in Heun's second stage is refused and undone", "[growth][integrator][finite]") {
+  for (const bool check_inversion : {true, false}) {
+    Tissue t = rectangularGrid(2, 2);
+    const std::vector<Vec3> before(t.positions().begin(), t.positions().end());
+    // v(1) = 1e300 is finite; at the predictor, x ~ 1e299, v = inf.
+    GrowthIntegrator g(std::make_shared<ExpressionField>(ExpressionFieldSpec{.vx = "1e300*x*x"}),
+                       GrowthOptions{.scheme = IntegrationScheme::Heun, .check_inversion = check_inversion});
+    try {
+      g.step(t, 0.1);
+      FAIL("no error");
+    } catch (const GeometryError& e) {
+      CHECK_THAT(e.what(), Contains("vx = \"1e300*x*x\" gives inf") && Contains("t = 0.1") && Contains("vertex 1,"));
+    }
+    CHECK(t.time() == 0.0);
+    for (VertexId v : t.vertices()) CHECK(t.position(v) == before[v.index()]);
+  }
+}
+
+TEST_CASE("a step that moves a vertex to a non-finite position is refused and undone", "[growth][integrator][finite]") {
+  // A built-in field with finite velocities 1e307 x that overflow x + dt v.
+  Tissue t = rectangularGrid(2, 2);
+  const std::vector<Vec3> before(t.positions().begin(), t.positions().end());
+  GrowthIntegrator g(std::make_shared<LinearField>(uniformExpansion(1e307)),
+                     GrowthOptions{.scheme = IntegrationScheme::Euler, .check_inversion = false});
+  try {
+    g.step(t, 100.0);
+    FAIL("no error");
+  } catch (const GeometryError& e) {
+    CHECK_THAT(e.what(), Contains("linear field") && Contains("moved vertex 1 from (1, 0, 0) to the non-finite") &&
+                             Contains("positions restored"));
+    CHECK(e.element().degree == 0);
+  }
+  CHECK(t.time() == 0.0);
+  for (VertexId v : t.vertices()) CHECK(t.position(v) == before[v.index()]);
+}
+
+TEST_CASE("a non-finite velocity at a control vertex is reported at that vertex", "[growth][integrator][finite]") {
+  Tissue t = rectangularGrid(3, 3);
+  GrowthIntegrator g(std::make_shared<ExpressionField>(ExpressionFieldSpec{.vy = "1/(x-3)"}),
+                     GrowthOptions{.source = VelocitySource::HarmonicFromControl, .check_inversion = false});
+  try {
+    g.step(t, 0.1);
+    FAIL("no error");
+  } catch (const GeometryError& e) {
+    CHECK_THAT(e.what(), Contains("vy = \"1/(x-3)\" gives inf") && Contains("vertex 3, position (3, 0, 0)"));
+  }
+}

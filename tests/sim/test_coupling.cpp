@@ -282,6 +282,19 @@ TEST_CASE("a bad file of polar cells is an error at its line", "[sim][coupling][
   CHECK_THAT(e.what(), Catch::Contains("cells.txt:3"));
 }
 
+TEST_CASE("a huge binary line in the file of polar cells is quoted short and escaped", "[sim][coupling][errors]") {
+  test::ScratchDir dir;
+  dir.write("cells.txt", "3\n" + std::string(1'000'000, '\x02') + "\n");
+  const ConfigError e = configErrorOf([&] {
+    Simulation::fromYaml("tissue: {generator: rectangular_grid}\n"
+                         "compartments: {mode: transient, polar: {rate: 1, cells: cells.txt}}\n", {},
+                         dir.path().string());
+  });
+  const std::string what = e.what();
+  CHECK(what.size() < 500);
+  CHECK_THAT(what, Catch::Contains("cells.txt:2") && Catch::Contains("\\x02\\x02") && Catch::Contains("more bytes)"));
+}
+
 TEST_CASE("runtime problems of the solver stages name the stage and the key", "[sim][coupling][errors]") {
   // A region with no facet: a 2D tissue's mesh is flat, so z_max is every
   // boundary facet; a grid's x_min face exists; a Voronoi disk has no flat face.

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/excerpt.hpp"
 #include "tessella/tissue/voronoi.hpp"
 #include "voronoi_domain.hpp"
 
@@ -139,15 +140,15 @@ std::vector<Vec3> readSeedsCsv(const std::string& path, int dim) {
     }
     if (fields.size() != static_cast<std::size_t>(dim))
       throw InputError(where + ": expected " + std::to_string(dim) + " comma-separated values (" +
-                       columns + "), got " + std::to_string(fields.size()) + ": '" +
-                       std::string(text) + "'");
+                       columns + "), got " + std::to_string(fields.size()) + ": '" + excerpt(text) +
+                       "'");
     Vec3 p = Vec3::Zero();
     for (int c = 0; c < dim; ++c) {
       if (!parseNumber(fields[c], value))
-        throw InputError(where + ", column " + std::to_string(c + 1) + ": '" + std::string(fields[c]) +
+        throw InputError(where + ", column " + std::to_string(c + 1) + ": '" + excerpt(fields[c]) +
                          "' is not a number");
       if (!std::isfinite(value))
-        throw InputError(where + ", column " + std::to_string(c + 1) + ": '" + std::string(fields[c]) +
+        throw InputError(where + ", column " + std::to_string(c + 1) + ": '" + excerpt(fields[c]) +
                          "' is not a finite number");
       p[c] = value;
     }

@@ -34,6 +34,8 @@ class ExpressionField final : public VelocityField {
   Vec3 velocity(const Vec3& x, double t) const override;
   void velocities(std::span<const Vec3> x, double t, std::span<Vec3> out) const override;
   std::string describe() const override;
+  /// `vx = "..."` (c = 0), `vy = "..."`, `vz = "..."`.
+  std::string describeComponent(int c) const override;
   const ExpressionFieldSpec& spec() const { return spec_; }
 
  private:

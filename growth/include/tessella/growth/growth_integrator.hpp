@@ -17,6 +17,7 @@
 #include "tessella/growth/harmonic_interpolation.hpp"
 #include "tessella/growth/surface_projection.hpp"
 #include "tessella/growth/velocity_field.hpp"
+#include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/tissue.hpp"
 
@@ -39,7 +40,8 @@ struct GrowthOptions {
   /// Planar tissues are always kept at z = 0.
   SurfaceProjection projection{};
   /// Check every cell after the step and throw GeometryError (positions
-  /// restored) if one is inverted or collapsed.
+  /// restored) if one is inverted or collapsed. A non-finite velocity or
+  /// position is a GeometryError (positions restored) either way.
   bool check_inversion = true;
   /// A cell whose area (2D) / volume (3D) is at or below this counts as
   /// collapsed. Inversion is detected independently of it: a planar cell
@@ -72,6 +74,12 @@ class GrowthIntegrator {
  private:
   void project(const Tissue& t, std::span<Vec3> x) const;
   void checkCells(Tissue& t, double t0, double t1);
+  // Non-finite velocities (at alive vertices) and positions are errors naming
+  // the field, the vertex, its position and the time.
+  GeometryError nonFiniteVelocity(std::size_t vertex, const Vec3& x, const Vec3& v, double time) const;
+  void checkVelocities(const Tissue& t, std::span<const Vec3> x, std::span<const Vec3> v, double time) const;
+  void checkPositions(Tissue& t, double t0, double t1, std::span<const Vec3> k2);  // k2: Heun's second stage
+  void undo(Tissue& t, double t0);  // positions from x0_, clock t0
 
   std::shared_ptr<const VelocityField> field_;
   GrowthOptions options_;

@@ -24,6 +24,11 @@ class VelocityField {
 
   /// Short description for logs and error messages.
   virtual std::string describe() const = 0;
+
+  /// What computes component c (0, 1, 2 = x, y, z) when the field spells it
+  /// out separately (an expression: `vx = "r*x"`); empty otherwise. Error
+  /// messages about a non-finite component quote it.
+  virtual std::string describeComponent(int /*c*/) const { return {}; }
 };
 
 }  // namespace tessella::growth

@@ -41,7 +41,14 @@ class PreparedRun {
   /// Creates the directory, removes a previous run's files when overwriting,
   /// writes run.yaml and runs to the end, writing the series. Callbacks
   /// registered on simulation() before (e.g. progress) keep running.
+  /// A stop flag set on simulation() (Simulation::setStopFlag) ends the run
+  /// early between two steps, with every file written so far complete; if it
+  /// is set before execute(), nothing is written. interrupted() tells.
   void execute();
+  /// execute() returned before the end of the time span, or wrote nothing (stop flag).
+  bool interrupted() const { return simulation_.stopRequested() && (!output_ || !simulation_.finished()); }
+  /// The series' .pvd (empty before execute()).
+  std::string seriesPath() const { return output_ ? output_->pvdPath() : std::string(); }
   /// Snapshots written by execute().
   std::size_t snapshots() const { return output_ ? output_->snapshots() : 0; }
   /// Mesh snapshots written (mesh.output), and how many times the tissue was meshed for them.

@@ -14,7 +14,8 @@ namespace tessella::sim {
 std::string resolvedConfigYaml(const Config& config);
 
 /// Writes resolvedConfigYaml() to `path` atomically (temporary file, rename).
-/// Throws InputError naming the path if it cannot be written.
+/// Throws InputError naming the path and the operating system's reason if it
+/// cannot be written; no temporary file is left behind.
 void writeRunRecord(const Config& config, const std::string& path);
 
 }  // namespace tessella::sim

@@ -14,6 +14,7 @@
 // (the tissue's time too), then the step callbacks run. The Simulation does
 // not write files; attach a SeriesOutput (series_output.hpp) for that.
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -100,6 +101,15 @@ class Simulation {
   /// Steps to the end of the time span.
   void run();
 
+  // --- stopping early ---------------------------------------------------------
+  /// A flag that stops run() and runUntil() between steps once it is true: the
+  /// step in progress and its callbacks (the output it writes) finish first.
+  /// Another thread or a signal handler may set it (storing to a lock-free
+  /// atomic is async-signal-safe). The flag must outlive the runs; null: none.
+  void setStopFlag(const std::atomic<bool>* flag) { stop_ = flag; }
+  /// The stop flag is set (run() and runUntil() return without finishing).
+  bool stopRequested() const { return stop_ && stop_->load(); }
+
  private:
   Tissue tissue_;
   SimulationParameters parameters_;
@@ -107,6 +117,7 @@ class Simulation {
   std::size_t step_ = 0;
   std::vector<std::unique_ptr<Stage>> stages_;
   std::vector<StepCallback> callbacks_;
+  const std::atomic<bool>* stop_ = nullptr;
 };
 
 /// For a run restarted from a snapshot written with `state` (Simulation::
