@@ -3,8 +3,8 @@
 //
 //   tessella run CONFIG.yaml [--out DIR] [--set key.path=value ...] [--overwrite] [--quiet]
 //   tessella info FILE.vtu
-//   tessella mesh SNAPSHOT.vtu --out MESH.vtu [--size H] [--min-angle A] [--max-volume V]
-//                 [--volume-method cell_by_cell|whole_tissue] [--config CFG.yaml]
+//   tessella mesh SNAPSHOT.vtu --out MESH.vtu [--walls WALLS.vtu] [--size H] [--min-angle A] [--max-volume V]
+//                 [--volume-method cell_by_cell|whole_tissue] [--max-elements N] [--config CFG.yaml]
 //   tessella schema          (the config key reference, as in docs/config.md)
 //
 // Exit codes: 0 success, 1 an error Tessella reports (bad config or file, a
@@ -17,13 +17,18 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <csignal>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <exception>
+#include <filesystem>
 #include <optional>
 #include <string>
 #include <vector>
@@ -92,7 +97,8 @@ int reportInterrupted(const tessella::sim::PreparedRun& run) {
   return 128 + signal;
 }
 
-int runCommand(const std::string& config_path, const std::string& out, const std::vector<std::string>& sets,
+int runCommand(const std::string& config_path, const std::optional<std::string>& out,
+               const std::vector<std::string>& sets,
                bool overwrite, bool quiet) {
   using namespace tessella::sim;
   const auto t0 = Clock::now();
@@ -150,8 +156,26 @@ int infoCommand(const std::string& path) {
 struct MeshArgs {
   std::string snapshot, out, walls_out, config;
   std::optional<double> size, min_angle, max_volume;
+  std::optional<std::size_t> max_elements;
   std::optional<std::string> volume_method;
 };
+
+/// An output file can be written: its directory exists and is writable, and
+/// the path is not a directory. Checked for every output before any work.
+void checkOutputFile(const std::string& path, const std::string& flag) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (path.empty()) throw tessella::InputError(flag + ": the output file name is empty");
+  if (fs::is_directory(path, ec)) throw tessella::InputError(flag + " " + path + ": is a directory");
+  fs::path dir = fs::path(path).parent_path();
+  if (dir.empty()) dir = ".";
+  if (!fs::is_directory(dir, ec))
+    throw tessella::InputError(flag + " " + path + ": the directory " + dir.string() +
+                               (fs::exists(dir, ec) ? " is not a directory" : " does not exist"));
+  if (::access(dir.c_str(), W_OK | X_OK) != 0)
+    throw tessella::InputError(flag + " " + path + ": cannot write into " + dir.string() + ": " +
+                               std::strerror(errno));
+}
 
 int meshCommand(const MeshArgs& a) {
   using namespace tessella;
@@ -164,7 +188,10 @@ int meshCommand(const MeshArgs& a) {
   if (a.min_angle) options.min_angle_degrees = *a.min_angle;
   if (a.max_volume) options.max_volume = *a.max_volume;
   if (a.volume_method) options.volume_method = sim::volumeMethodNamed(*a.volume_method);
+  if (a.max_elements) options.max_elements = *a.max_elements;
   validateMeshOptions(options);  // before reading: a bad flag fails fast
+  checkOutputFile(a.out, "--out");  // every output, before meshing or writing any of them
+  if (!a.walls_out.empty()) checkOutputFile(a.walls_out, "--walls");
 
   const Tissue tissue = io::readTissueVtu(a.snapshot);
   const double t_read = secondsSince(t0);
@@ -212,7 +239,8 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
 
   auto* run = app.add_subcommand("run", "Build the tissue a config describes, simulate, write a ParaView series");
-  std::string config_path, out;
+  std::string config_path;
+  std::optional<std::string> out;  // given but empty (--out '') is refused, not the default
   std::vector<std::string> sets;
   bool quiet = false, overwrite = false;
   run->add_option("config", config_path, "YAML configuration (see docs/config.md)")->required();
@@ -236,6 +264,9 @@ int main(int argc, char** argv) {
   mesh->add_option("--size", mesh_args.size, "Longest triangle edge (mesh.max_edge_length; 0 = none)");
   mesh->add_option("--min-angle", mesh_args.min_angle, "Smallest triangle angle in degrees (mesh.min_angle)");
   mesh->add_option("--max-volume", mesh_args.max_volume, "Largest tetrahedron volume (mesh.max_volume; 0 = none)");
+  mesh->add_option("--max-elements", mesh_args.max_elements,
+                   "Refuse a mesh estimated above this many elements (mesh.max_elements; default " +
+                       std::to_string(tessella::kDefaultMaxElements) + ", 0 = no limit)");
   mesh->add_option("--volume-method", mesh_args.volume_method, "3D: cell_by_cell or whole_tissue (mesh.volume_method)")
       ->check(CLI::IsMember(tessella::sim::volumeMethodNames()));
 

@@ -115,6 +115,7 @@ FeMesh meshPlanarTissue(const Tissue& t, const MeshOptions& options) {
     throw InputError(std::string("meshPlanarTissue needs a planar 2D tissue, got a ") + embeddingName(t.embedding()) +
                      " tissue of dimension " + std::to_string(t.dim()));
   checkMeshable(t, options);
+  checkElementLimit(t, options);
 
   Cdt cdt;
   std::vector<Cdt::Vertex_handle> handle(t.slots(0));

@@ -38,6 +38,7 @@ FeMesh meshSurfaceTissue(const Tissue& t, const MeshOptions& options) {
     throw InputError(std::string("meshSurfaceTissue needs a curved-sheet (surface) 2D tissue, got a ") +
                      embeddingName(t.embedding()) + " tissue of dimension " + std::to_string(t.dim()));
   checkMeshable(t, options);
+  checkElementLimit(t, options);
   const auto& topo = t.topology();
 
   // Points: vertex slots, then one fan centre per cell slot.

@@ -39,6 +39,7 @@ FeMesh meshVolumeTissue(const Tissue& t, const MeshOptions& options) {
   mesh_detail::WallTriangulation walls;
   if (const auto report = mesh_detail::checkVolumeGeometry(t, options, walls); !report)
     throw GeometryError("cannot mesh the tissue: " + report.message, report.element);
+  checkElementLimit(t, options);
   return options.volume_method == VolumeMethod::WholeTissue ? mesh_detail::meshWholeTissue(t, options, walls)
                                                             : mesh_detail::meshCellByCell(t, options, walls);
 }

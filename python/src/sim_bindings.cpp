@@ -181,7 +181,8 @@ stage, step and time, followed by the cause's message.
 
   m.def(
       "run_config",
-      [](const std::string& path, const std::string& out, const std::vector<std::string>& overrides, bool overwrite) {
+      [](const std::string& path, const std::optional<std::string>& out, const std::vector<std::string>& overrides,
+         bool overwrite) {
         sim::PreparedRun run = sim::PreparedRun::prepare(sim::loadSimulationConfigFile(path, overrides),
                                                          sim::RunOptions{.output_directory = out, .overwrite = overwrite});
         run.execute();
@@ -193,9 +194,9 @@ stage, step and time, followed by the cause's message.
         d["cells"] = run.simulation().tissue().numCells();
         return d;
       },
-      py::arg("path"), py::arg("out") = "", py::arg("overrides") = std::vector<std::string>{}, py::arg("overwrite") = false,
+      py::arg("path"), py::arg("out") = py::none(), py::arg("overrides") = std::vector<std::string>{}, py::arg("overwrite") = false,
       "What `tessella run` does: checks the config, writes run.yaml and the series into `out` (or output.directory, or "
-      "runs/<name>). A directory holding a run is refused unless overwrite=True.");
+      "runs/<name>; an empty `out` is refused). A directory holding a run is refused unless overwrite=True.");
 }
 
 }  // namespace tessella::python

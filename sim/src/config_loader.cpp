@@ -11,6 +11,8 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <string_view>
+#include <vector>
 
 #include "tessella/sim/suggest.hpp"
 #include "tessella/tissue/excerpt.hpp"
@@ -356,14 +358,40 @@ class Loader {
   std::map<std::string, SourceLocation> section_marks_;
 };
 
+/// The 1-based line of the `---` that starts the document whose first node is
+/// on 0-based line `content_line` (that line itself when no marker precedes it).
+int documentStartLine(const std::string& text, int content_line) {
+  std::vector<std::string_view> lines;
+  for (std::size_t start = 0; start <= text.size();) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    lines.emplace_back(text.data() + start, end - start);
+    start = end + 1;
+  }
+  for (int i = std::min<int>(content_line, static_cast<int>(lines.size()) - 1); i >= 0; --i) {
+    const std::string_view l = lines[static_cast<std::size_t>(i)];
+    if (l.rfind("---", 0) == 0 && (l.size() == 3 || l[3] == ' ' || l[3] == '\t' || l[3] == '\r')) return i + 1;
+  }
+  return content_line + 1;
+}
+
 YAML::Node parseYaml(const std::string& text, const std::string& source) {
+  std::vector<YAML::Node> documents;
   try {
-    return YAML::Load(text);
+    documents = YAML::LoadAll(text);
   } catch (const YAML::Exception& e) {
     SourceLocation where{source, 0, 0};
     if (!e.mark.is_null()) where = {source, e.mark.line + 1, e.mark.column + 1};
     throw ConfigError(where, "", "malformed YAML: " + e.msg);
   }
+  // A second document (after a `---`) would be ignored: refuse it.
+  if (documents.size() > 1) {
+    const YAML::Mark mark = documents[1].Mark();
+    const int line = documentStartLine(text, mark.is_null() ? 0 : mark.line);
+    throw ConfigError(SourceLocation{source, line, 1}, "",
+                      "a second YAML document starts here; a config is one document, so its keys would be "
+                      "ignored: remove this '---' (and join the keys to the first document) or split the file");
+  }
+  return documents.empty() ? YAML::Node() : documents.front();
 }
 
 Config load(const std::string& text, const std::vector<std::string>& overrides, const Schema& schema,

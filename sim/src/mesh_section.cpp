@@ -55,6 +55,12 @@ void declareMeshSection(Schema& s) {
       .above(0)
       .atMost(1e-3)
       .max_exclusive = true;
+  s.key("mesh.max_elements", ValueType::Int,
+        "Refuse, before meshing, a mesh the size bounds (max_edge_length; max_volume in 3D) would make larger "
+        "than this many elements, estimated from the tissue's total area or volume (a lower bound: "
+        "area / (sqrt(3)/4 max_edge_length^2) triangles, volume / max_volume tetrahedra). 0 = no limit.")
+      .byDefault(static_cast<std::int64_t>(kDefaultMaxElements))
+      .atLeast(0);
   s.key("mesh.output", ValueType::Bool,
         "Write the mesh as a ParaView series DIR/mesh.pvd listing DIR/mesh_000000.vtu, ... beside the "
         "tissue series (cell and wall ids as data). The mesh is rebuilt when the tissue changed.")
@@ -74,6 +80,7 @@ MeshOptions meshOptionsFromConfig(const Config& c) {
   o.min_dihedral_degrees = c.getFloat("mesh.min_dihedral_angle");
   o.tolerance = c.getFloat("mesh.tolerance");
   o.volume_method = volumeMethodNamed(c.getString("mesh.volume_method"));
+  o.max_elements = static_cast<std::size_t>(c.getInt("mesh.max_elements"));
   validateMeshOptions(o);  // the schema's ranges are the same; this keeps them in step
   return o;
 }

@@ -48,8 +48,12 @@ PreparedRun PreparedRun::prepare(SimulationConfig config, const RunOptions& opti
   // Where the directory comes from decides where an error about it points.
   std::string chosen;
   std::function<ConfigError(const std::string&)> error;
-  if (!options.output_directory.empty()) {
-    chosen = options.output_directory;
+  if (options.output_directory) {
+    chosen = *options.output_directory;
+    if (chosen.empty())
+      throw ConfigError(SourceLocation{"--out ''", 0, 0}, "output.directory",
+                        "the output directory is empty; give a directory name (or leave --out out to use "
+                        "output.directory, else runs/<config name>)");
     error = [&](const std::string& p) {
       return ConfigError(SourceLocation{"--out " + chosen, 0, 0}, "output.directory", p);
     };

@@ -5,7 +5,9 @@
 #include <stdexcept>
 
 #include "exact_text.hpp"
+#include "tessella/mesh/mesh_tissue.hpp"
 #include "tessella/sim/config_error.hpp"
+#include "tessella/sim/mesh_section.hpp"
 
 namespace tessella::sim {
 
@@ -74,11 +76,29 @@ Simulation::Simulation(Tissue tissue, SimulationParameters parameters)
   tissue_.setTime(t.start);
 }
 
+namespace {
+// A mesh the size bounds make too large is refused before the stages start,
+// not at the first solve (after output began); named at the size key.
+void checkMeshSize(const SimulationConfig& config, const Tissue& tissue) {
+  const Config& c = config.config;
+  if (config.diffusion.species.empty() && !config.elasticity.enabled && !c.getBool("mesh.output")) return;
+  const MeshOptions o = meshOptionsFromConfig(c);
+  try {
+    checkElementLimit(tissue, o);
+  } catch (const InputError& e) {
+    const bool by_volume = tissue.dim() == 3 && o.max_volume > 0 &&
+                           (o.max_edge_length == 0 || o.volume_method == VolumeMethod::WholeTissue);
+    throw c.errorAt(by_volume ? "mesh.max_volume" : "mesh.max_edge_length", e.what());
+  }
+}
+}  // namespace
+
 Simulation Simulation::fromConfig(const SimulationConfig& config) {
   SimulationParameters parameters{config.time, config.rng_seed, {}, {}};
   if (const auto* snapshot = std::get_if<SnapshotSpec>(&config.tissue)) parameters.rng_state = snapshot->rng_state;
   if (const std::optional<Dome> dome = tissueDome(config.tissue)) parameters.carried = domeRunState(*dome);
   Simulation sim(buildTissue(config.tissue, config.rng_seed, config.config), parameters);
+  checkMeshSize(config, sim.tissue());
   for (auto& stage : makeStages(config)) sim.addStage(std::move(stage));
   return sim;
 }

@@ -7,6 +7,7 @@
 #include "tessella/sim/config_loader.hpp"
 #include "tessella/sim/simulation.hpp"
 #include "tessella/sim/tessella_schema.hpp"
+#include "tissue_shape_checks.hpp"
 
 namespace tessella::sim {
 
@@ -64,11 +65,13 @@ SimulationConfig readSimulationConfig(Config config) {
   ElasticitySpec elasticity = readElasticitySection(config);
   checkDivisionGate(config, division, coupledCellProperties(diffusion, compartments, elasticity));
   // Extension point: read new sections here.
-  return SimulationConfig{std::move(config),      seed,
+  SimulationConfig result{std::move(config),      seed,
                           std::move(tissue),      time,
                           std::move(output),      std::move(growth),
                           std::move(division),    std::move(diffusion),
                           std::move(compartments), std::move(elasticity)};
+  detail::checkTissueShape(result);  // keys that assume a dimension, against the tissue's
+  return result;
 }
 
 SimulationConfig loadSimulationConfigFile(const std::string& path, const std::vector<std::string>& overrides) {

@@ -24,7 +24,8 @@ void declareSeedKeys(Schema& s, const std::string& section, int default_count) {
       .unlessSet(section + ".seed_file");
   s.key(section + ".seed_file", ValueType::Path,
         "CSV file of seed points instead of random ones: one `x,y` (2D) or `x,y,z` (3D) row per "
-        "cell, an optional header row; relative to the config file. Give either this or `count`.")
+        "cell, an optional header row naming every column (a first row mixing names and numbers is an "
+        "error); relative to the config file. Give either this or `count`.")
       .whenAbsent("random seeds (`count`)");
   s.key(section + ".lloyd_iterations", ValueType::Int,
         "Lloyd relaxation steps (each moves every seed to its cell's centroid): 0 keeps the raw "

@@ -67,6 +67,8 @@ case "$case_name" in
     expect_error "$bad/missing_seed_file.yaml" "missing_seed_file.yaml:4:16: tissue.voronoi.seed_file: file not found: 'no_such_seeds.csv'" ;;
   malformed_yaml)
     expect_error "$bad/malformed.yaml" "malformed.yaml:[0-9]+:[0-9]+: malformed YAML" ;;
+  two_documents)
+    expect_error "$bad/two_documents.yaml" "two_documents.yaml:4:1: a second YAML document starts here" ;;
   bad_set)
     expect_error "$src/configs/hex_grid_2d.yaml" "--set tissue.hexagonal_grid.radus=2: tissue.hexagonal_grid.radus: unknown key 'radus'; did you mean 'tissue.hexagonal_grid.radius'\?" \
       --set tissue.hexagonal_grid.radus=2 ;;
@@ -74,6 +76,15 @@ case "$case_name" in
     expect_error "$src/configs/hex_grid_2d.yaml" "--set time.end=soon: time.end: expected a number, got 'soon'" --set time.end=soon ;;
   missing_config)
     expect_error "$tmp/nowhere.yaml" "nowhere.yaml: config file not found" ;;
+  empty_out)
+    # --out '' is refused, not taken for runs/<config name> (run from $tmp: nothing may appear there).
+    (cd "$tmp" && "$tessella" run "$src/configs/hex_grid_2d.yaml" --out '' -q >"$tmp/stdout" 2>"$tmp/stderr")
+    rc=$?
+    cat "$tmp/stderr"
+    [ "$rc" -eq 1 ] || fail "exit code $rc, expected 1"
+    grep -q "output.directory: the output directory is empty" "$tmp/stderr" || fail "unclear error"
+    [ ! -e "$tmp/runs" ] || fail "runs/ was created"
+    ;;
   mesh_snapshot)
     "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/hex" -q --set time.end=0 || fail "run failed"
     "$tessella" mesh "$tmp/hex/tissue_000000.vtu" --out "$tmp/m.vtu" --walls "$tmp/w.vtu" --size 0.4 --min-angle 25 \
@@ -144,6 +155,34 @@ case "$case_name" in
     [ $? -eq 1 ] || fail "writing into a missing directory was not an error"
     [ ! -e "$tmp/no_dir" ] || fail "a directory was created"
     [ ! -e "$tmp/m.vtu" ] || fail "an output file was left"
+    # Every output is checked before meshing: a --walls file into a missing directory writes no main mesh.
+    "$tessella" mesh "$tmp/hex/tissue_000000.vtu" --out "$tmp/m.vtu" --walls "$tmp/no_dir/w.vtu" 2>"$tmp/stderr"
+    [ $? -eq 1 ] || fail "--walls into a missing directory was not an error"
+    grep -q -- "--walls $tmp/no_dir/w.vtu: the directory $tmp/no_dir does not exist" "$tmp/stderr" \
+      || fail "unclear --walls error: $(cat "$tmp/stderr")"
+    [ ! -e "$tmp/m.vtu" ] || fail "the main mesh was written before the walls failed"
+    # A size that asks for billions of triangles is refused at once, naming the estimate, size and limit.
+    start=$(date +%s)
+    "$tessella" mesh "$tmp/hex/tissue_000000.vtu" --out "$tmp/m.vtu" --size 1e-6 2>"$tmp/stderr"
+    [ $? -eq 1 ] || fail "--size 1e-6 was not refused"
+    cat "$tmp/stderr"
+    grep -Eq 'max_edge_length = 1e-06\) ask for at least [0-9.]+e\+1[0-9] triangles.*max_elements = 2e\+07' "$tmp/stderr" \
+      || fail "unclear limit error: $(cat "$tmp/stderr")"
+    [ $(( $(date +%s) - start )) -lt 10 ] || fail "the refusal took too long"
+    [ ! -e "$tmp/m.vtu" ] || fail "an output file was left"
+    # --max-elements sets the limit (0 = none).
+    "$tessella" mesh "$tmp/hex/tissue_000000.vtu" --out "$tmp/m.vtu" --size 0.4 --max-elements 10 2>"$tmp/stderr"
+    [ $? -eq 1 ] && grep -q 'max_elements = 10;' "$tmp/stderr" || fail "--max-elements 10 was not applied"
+    "$tessella" mesh "$tmp/hex/tissue_000000.vtu" --out "$tmp/m.vtu" --size 0.4 --max-elements 0 >/dev/null \
+      || fail "--max-elements 0 refused a mesh"
+    ;;
+  snapshot_dimension)
+    # A 3D snapshot restarted under a 2D config is refused before anything is written.
+    "$tessella" run "$src/configs/voronoi_box_3d.yaml" --out "$tmp/box" -q --set time.end=0 \
+      --set tissue.voronoi.count=20 || fail "run failed"
+    expect_error "$src/configs/voronoi_growth.yaml" \
+      "tissue.snapshot.file: the snapshot holds a 3D tissue, but this config describes a 2D one" \
+      --set tissue.generator=snapshot --set "tissue.snapshot.file=$tmp/box/tissue_000000.vtu"
     ;;
   nonfinite_expression)
     # A velocity expression that divides by zero at t = 0.5: an error naming the expression, the vertex,

@@ -138,6 +138,14 @@ def test_from_file_and_run_config_write_a_series(source_dir, tmp_path):
         tessella.run_config(config, out=str(tmp_path / "fig17"), overrides=["time.end=0.2"])
 
 
+def test_run_config_refuses_an_empty_out(source_dir, tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)  # the default would be runs/figure17 here
+    config = str(source_dir / "configs" / "figure17.yaml")
+    with pytest.raises(tessella.InputError, match=r"output.directory: the output directory is empty"):
+        tessella.run_config(config, out="", overrides=["time.end=0.2"])
+    assert not (tmp_path / "runs").exists()
+
+
 def test_vtu_round_trip(tmp_path):
     t = tessella.hexagonal_grid(3, 2)
     t.add_property("zone", 0, dtype="int32")

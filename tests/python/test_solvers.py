@@ -63,6 +63,18 @@ def test_mesh_of_a_box_tissue_has_tetrahedra_filling_each_cell(method):
     assert mesh.radius_edge_ratios().max() <= 1.5 * (1 + 1e-6)
 
 
+def test_a_mesh_estimated_above_max_elements_is_refused_before_meshing(grid):
+    assert tessella.MeshOptions().max_elements == 20_000_000
+    # Area 8 with edges <= 1e-6: at least 1.8e13 triangles, refused at once.
+    with pytest.raises(tessella.InputError, match=r"max_edge_length = 1e-06.*1\.84752e\+13 triangles.*max_elements = 2e\+07"):
+        tessella.mesh_tissue(grid, tessella.MeshOptions(max_edge_length=1e-6))
+    with pytest.raises(tessella.InputError, match=r"max_elements = 50"):
+        tessella.mesh_tissue(grid, tessella.MeshOptions(max_edge_length=0.3, max_elements=50))
+    options = tessella.MeshOptions(max_edge_length=0.3)
+    options.max_elements = 0  # no limit
+    assert tessella.mesh_tissue(grid, options).num_elements > 50
+
+
 def test_steady_diffusion_between_two_dirichlet_ends_is_linear(grid_mesh):
     mesh = grid_mesh
     left, right = boundary_facets_at(mesh, 0, 0.0), boundary_facets_at(mesh, 0, 4.0)

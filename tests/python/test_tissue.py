@@ -113,6 +113,23 @@ def test_refused_split_leaves_the_tissue_unchanged():
     assert t.validate()[0]
 
 
+@pytest.mark.parametrize(
+    "options, message",
+    [
+        ({"snap_tolerance": -1.0}, r"snap_tolerance = -1 is out of range"),
+        ({"snap_tolerance": float("nan")}, r"snap_tolerance = nan is out of range"),
+        ({"min_fraction": -1.0}, r"min_fraction = -1 is out of range"),
+        ({"min_fraction": 0.7}, r"min_fraction = 0.7 is out of range"),
+    ],
+)
+def test_split_cell_refuses_bad_options(options, message):
+    t = tessella.rectangular_grid(2, 1)
+    before = (t.num_cells, t.positions().tobytes())
+    with pytest.raises(tessella.InputError, match=message):
+        t.split_cell(0, point=[0.5, 0.5, 0.0], normal=[1, 0, 0], **options)
+    assert (t.num_cells, t.positions().tobytes()) == before
+
+
 def test_property_policies_on_division():
     t = tessella.rectangular_grid(1, 1, dx=4.0, dy=1.0)
     t.add_property("auxin", 8.0, policy="split_by_measure")

@@ -163,6 +163,18 @@ TEST_CASE("every kind of bad value is a located ConfigError", "[sim][config]") {
     const ConfigError e = configErrorOf([] { loadDemo("- a\n- b\n"); });
     CHECK_THAT(e.what(), Contains("demo.yaml:1:1") && Contains("top level must be a mapping"));
   }
+  SECTION("a second YAML document is refused at its '---', not ignored") {
+    ConfigError e = configErrorOf([] { loadDemo("shape:\n  name: a\n---\nshape:\n  sides: 5\n"); });
+    CHECK(e.where().line == 3);
+    CHECK_THAT(e.what(), Contains("demo.yaml:3:1") && Contains("a second YAML document"));
+    // Also when the first document has its own marker, the second is empty or starts on the marker line.
+    e = configErrorOf([] { loadDemo("---\nshape: {name: a}\n---\n# nothing\n"); });
+    CHECK(e.where().line == 3);
+    e = configErrorOf([] { loadDemo("shape: {name: a}\n--- {flag: true}\n"); });
+    CHECK(e.where().line == 2);
+    // One document with a leading marker, or closed by '...', is fine.
+    CHECK(loadDemo("---\nshape: {name: a}\n...\n").getString("shape.name") == "a");
+  }
 }
 
 TEST_CASE("bad --set arguments name the argument", "[sim][config]") {

@@ -109,3 +109,38 @@ TEST_CASE("mesh.output writes the mesh series beside the tissue series", "[sim][
     CHECK_FALSE(fs::exists(fs::path(scratch / "none") / "mesh.pvd"));
   }
 }
+
+TEST_CASE("mesh.max_elements: a mesh the sizes make too large is refused before anything is written",
+          "[sim][config][mesh]") {
+  namespace fs = std::filesystem;
+  CHECK(readMeshSection(load("tissue: {generator: hexagonal_grid}\n")).options.max_elements ==
+        tessella::kDefaultMaxElements);
+  CHECK(readMeshSection(load("tissue: {generator: hexagonal_grid}\nmesh: {max_elements: 0}\n")).options.max_elements ==
+        0);
+  tessella::sim::test::ScratchDir scratch;
+  const std::string out = scratch / "out";
+  // A steady diffusion meshes at the first step only: the limit is checked when the run is prepared.
+  const std::string config = scratch.write(
+      "tiny.yaml", "tissue: {generator: rectangular_grid}\n"
+                   "diffusion: {mode: steady, dirichlet: \"x_min=1, x_max=0\"}\n"
+                   "mesh: {max_edge_length: 1.0e-5}\ntime: {end: 1}\n");
+  ConfigError e =
+      configErrorOf([&] { PreparedRun::prepare(loadSimulationConfigFile(config), RunOptions{out, false}); });
+  CHECK(e.keyPath() == "mesh.max_edge_length");
+  CHECK_THAT(e.what(), Contains("tiny.yaml:3:") && Contains("max_edge_length = 1e-05") &&
+                           Contains("triangles on a tissue of total area 100") && Contains("max_elements = 2e+07"));
+  CHECK_FALSE(fs::exists(out));
+  // mesh.output alone meshes too; the limit is the key's.
+  e = configErrorOf([&] {
+    PreparedRun::prepare(
+        loadSimulationConfigString("tissue: {generator: rectangular_grid}\n"
+                                   "mesh: {output: true, max_edge_length: 0.1, max_elements: 1000}\n"),
+        RunOptions{out, false});
+  });
+  CHECK_THAT(e.what(), Contains("max_elements = 1000"));
+  CHECK_FALSE(fs::exists(out));
+  // Raised, the same run goes ahead.
+  PreparedRun::prepare(loadSimulationConfigString("tissue: {generator: rectangular_grid}\n"
+                                                  "mesh: {output: true, max_edge_length: 0.1, max_elements: 0}\n"),
+                       RunOptions{out, false});
+}

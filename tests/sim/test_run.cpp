@@ -201,6 +201,19 @@ TEST_CASE("the default output directory is runs/<config name>", "[sim][run]") {
   CHECK_FALSE(fs::exists(dir));
 }
 
+TEST_CASE("an empty output directory given (--out '') is refused, not taken for the default", "[sim][run]") {
+  ScratchDir scratch;
+  const std::string config = scratch.write("my_tissue.yaml", "tissue: {generator: rectangular_grid}\n");
+  const fs::path cwd = fs::current_path();
+  fs::current_path(scratch.path());
+  const ConfigError e = configErrorOf(
+      [&] { PreparedRun::prepare(loadSimulationConfigFile(config), RunOptions{std::string(), false}); });
+  fs::current_path(cwd);
+  CHECK(e.keyPath() == "output.directory");
+  CHECK_THAT(e.what(), Contains("--out ''") && Contains("empty"));
+  CHECK_FALSE(fs::exists(scratch.path() / "runs"));
+}
+
 TEST_CASE("a run restarted from a snapshot ends where the uninterrupted run ends", "[sim][run][restart]") {
   ScratchDir scratch;
   // figure17 is deterministic (fixed threshold, main-axis division): the

@@ -1,5 +1,9 @@
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <limits>
+#include <string>
+
 #include "fixtures.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
@@ -158,6 +162,29 @@ TEST_CASE("splitCell in 2D: degenerate planes snap or are refused", "[tissue][ed
     CHECK(totalMeasure(t) == Approx(total).epsilon(1e-14));
     requireValid(t);
   }
+}
+
+TEST_CASE("splitCell refuses options out of range, naming the option and value", "[tissue][editing]") {
+  const auto refused = [](SplitOptions options, const std::string& text) {
+    for (Tissue t : {rectangularGrid(2, 1), box(2, 1, 1)}) {
+      const Plane plane{cellCentroid(t, CellId(0)), Vec3(1, 0, 0)};
+      requireRefusedUnchanged(t, [&] { t.splitCell(CellId(0), plane, options); });
+      CHECK_THROWS_AS(t.splitCell(CellId(0), plane, options), InputError);
+      CHECK_THROWS_WITH(t.splitCell(CellId(0), plane, options), Catch::Contains(text));
+    }
+  };
+  refused({.snap_tolerance = -1}, "snap_tolerance = -1 is out of range");
+  refused({.snap_tolerance = std::nan("")}, "snap_tolerance = nan is out of range");
+  refused({.snap_tolerance = 0.5}, "snap_tolerance = 0.5 is out of range");
+  refused({.min_fraction = -1}, "min_fraction = -1 is out of range");
+  refused({.min_fraction = std::numeric_limits<double>::infinity()}, "min_fraction = inf is out of range");
+  refused({.min_fraction = 0.5}, "min_fraction = 0.5 is out of range");
+  // The bounds themselves are fine.
+  Tissue t = rectangularGrid(2, 1);
+  t.splitCell(CellId(0), Plane{Vec3(0.5, 0.5, 0), Vec3(1, 0, 0)}, {.snap_tolerance = 0, .min_fraction = 0});
+  t.splitCell(CellId(1), Plane{Vec3(1.5, 0.5, 0), Vec3(1, 0, 0)},
+              {.snap_tolerance = kMaxSnapTolerance, .min_fraction = 0.4});
+  requireValid(t);
 }
 
 TEST_CASE("splitCell on a curved sheet cuts along the plane's trace", "[tissue][editing]") {

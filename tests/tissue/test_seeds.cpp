@@ -95,3 +95,18 @@ TEST_CASE("readSeedsCsv errors name the file, line and value", "[seeds][csv][err
   CHECK_THROWS_WITH(readSeedsCsv("/nonexistent/seeds.csv", 2), Catch::Contains("/nonexistent/seeds.csv"));
   CHECK_THROWS_AS(readSeedsCsv(bad, 4), InputError);
 }
+
+TEST_CASE("readSeedsCsv never takes a first row of data for a header", "[seeds][csv][errors]") {
+  // A header names every column (letters first); anything else on the first row is data, checked as such.
+  const auto names = writeTemp("names.csv", "# seeds\nx_um, Y\n1,2\n3,4\n");
+  CHECK(readSeedsCsv(names, 2).size() == 2);
+  const auto mixed = writeTemp("mixed.csv", "0.5,y\n1,2\n3,4\n");
+  CHECK_THROWS_WITH(readSeedsCsv(mixed, 2), Catch::Contains(mixed + ":1, column 2: 'y'") &&
+                                                Catch::Contains("header row names every column (x,y)"));
+  const auto typo = writeTemp("typo.csv", "1.5x,2\n3,4\n");
+  CHECK_THROWS_WITH(readSeedsCsv(typo, 2), Catch::Contains(typo + ":1, column 1: '1.5x' is not a number"));
+  const auto nan = writeTemp("nan_first.csv", "nan,1,2\n3,4,5\n");
+  CHECK_THROWS_WITH(readSeedsCsv(nan, 3), Catch::Contains(nan + ":1, column 1") && Catch::Contains("finite"));
+  const auto empty = writeTemp("empty_field.csv", ",1\n3,4\n");
+  CHECK_THROWS_WITH(readSeedsCsv(empty, 2), Catch::Contains(empty + ":1, column 1: '' is not a number"));
+}

@@ -8,6 +8,7 @@
 // bounding box, which needs no trigonometry, so the same rng_seed gives
 // bit-identical seeds on every platform with IEEE doubles.
 
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -84,6 +85,15 @@ bool parseNumber(std::string_view field, double& value) {
   return ec == std::errc() && ptr == end && !field.empty();
 }
 
+/// A column name of a header row: it starts with a letter or '_' and is not a
+/// number (so "nan" and "inf" are numbers, "1x" is a bad number, not a name).
+bool isColumnName(std::string_view field) {
+  double value = 0;
+  if (field.empty() || !(std::isalpha(static_cast<unsigned char>(field.front())) || field.front() == '_'))
+    return false;
+  return !parseNumber(field, value);
+}
+
 }  // namespace
 
 std::vector<Vec3> randomSeeds(const Rectangle& domain, std::size_t count, std::uint64_t rng_seed) {
@@ -136,7 +146,17 @@ std::vector<Vec3> readSeedsCsv(const std::string& path, int dim) {
     double value = 0;
     if (first_row) {
       first_row = false;
-      if (!parseNumber(fields[0], value)) continue;  // a header row of column names
+      // A header names every column; a row mixing names and numbers is neither.
+      std::size_t names = 0;
+      for (const auto field : fields) names += isColumnName(field) ? 1 : 0;
+      if (names == fields.size()) continue;
+      if (names > 0) {
+        std::size_t c = 0;
+        while (!isColumnName(fields[c])) ++c;
+        throw InputError(where + ", column " + std::to_string(c + 1) + ": '" + std::string(fields[c]) +
+                         "' is not a number, but the row also holds numbers; a header row names every column (" +
+                         columns + "), a data row holds numbers only");
+      }
     }
     if (fields.size() != static_cast<std::size_t>(dim))
       throw InputError(where + ": expected " + std::to_string(dim) + " comma-separated values (" +

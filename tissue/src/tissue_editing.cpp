@@ -25,6 +25,23 @@ std::string fmt(const Vec3& p) {
   return s.str();
 }
 
+// SplitOptions out of range would snap whole cells onto the plane or let
+// slivers (or nothing) through: refused before anything changes.
+void checkSplitOptions(const SplitOptions& o) {
+  const auto text = [](double v) {
+    std::ostringstream s;
+    s.precision(12);
+    s << v;
+    return s.str();
+  };
+  if (!(o.snap_tolerance >= 0.0 && o.snap_tolerance <= kMaxSnapTolerance))
+    throw InputError("splitCell: option snap_tolerance = " + text(o.snap_tolerance) + " is out of range; expected [0, " +
+                     text(kMaxSnapTolerance) + "] (a fraction of the cell size)");
+  if (!(o.min_fraction >= 0.0 && o.min_fraction < 0.5))
+    throw InputError("splitCell: option min_fraction = " + text(o.min_fraction) +
+                     " is out of range; expected [0, 0.5) (a fraction of the cell's measure)");
+}
+
 // Area and normal of a loop of points, with the tissue's kernel.
 struct LoopArea {
   double area;
@@ -199,6 +216,7 @@ FaceSplit Tissue::splitFace(FaceId f, EdgeId ea, const Vec3& pa, EdgeId eb, cons
 }
 
 CellSplit Tissue::splitCell(CellId c, const Plane& plane, const SplitOptions& options) {
+  checkSplitOptions(options);
   if (!alive(c)) throw TopologyError("cannot divide dead cell " + std::to_string(c.index()), {dim(), c.index()});
   if (!plane.point.allFinite() || !plane.normal.allFinite() || !(plane.normal.norm() > 0))
     throw GeometryError("division plane of cell " + std::to_string(c.index()) + " is invalid: point " +

@@ -2,7 +2,13 @@
 // MeshOptions: the size and quality targets of a tissue mesh, in the tissue's
 // own length units. See docs/meshing.md for what each bound guarantees.
 
+#include <cstddef>
+
 namespace tessella {
+
+/// Default MeshOptions::max_elements: a mesh of more elements takes minutes
+/// and gigabytes (a typo such as a size of 1e-6 must not exhaust memory).
+inline constexpr std::size_t kDefaultMaxElements = 20'000'000;
 
 /// How a 3D tissue is filled with tetrahedra (docs/meshing.md).
 enum class VolumeMethod {
@@ -48,6 +54,9 @@ struct MeshOptions {
   /// triangles by max_edge_length if set, else by the edge of the regular
   /// tetrahedron of volume max_volume, and by min_angle_degrees.
   VolumeMethod volume_method = VolumeMethod::CellByCell;
+  /// Refuse (InputError) before meshing when the size bounds ask for more
+  /// elements than this (estimatedElementCount, mesh_tissue.hpp). 0 = no limit.
+  std::size_t max_elements = kDefaultMaxElements;
 };
 
 /// Throws InputError naming the field and value when an option is out of range.

@@ -9,10 +9,13 @@
 //
 // The output directory is, in order: RunOptions::output_directory (--out),
 // output.directory, runs/<config name> (relative to the working directory).
+// An output_directory that is given but empty (--out '') is refused, not
+// taken for "not given".
 // A directory that already holds a run (run.yaml or the series' .pvd) is
 // refused unless `overwrite` is set, so a re-run never silently replaces results.
 
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "tessella/sim/field_output.hpp"
@@ -25,7 +28,7 @@
 namespace tessella::sim {
 
 struct RunOptions {
-  std::string output_directory;  ///< overrides output.directory when not empty
+  std::optional<std::string> output_directory;  ///< overrides output.directory when given; must not be empty
   bool overwrite = false;        ///< replace a run already in the directory
 };
 

@@ -80,13 +80,19 @@ struct CellSplit {
   std::vector<VertexId> new_vertices; ///< vertices created on cut edges (shared with neighbours)
 };
 
+/// Largest SplitOptions::snap_tolerance accepted (a tenth of the cell size).
+inline constexpr double kMaxSnapTolerance = 0.1;
+
+/// splitCell() refuses options out of range (negative, NaN, too large) with
+/// an InputError naming the option and its value.
 struct SplitOptions {
   /// Vertices closer to the plane than snap_tolerance * (cell size) are taken
   /// as lying on it, so a plane through a vertex reuses it instead of making
   /// a zero-length edge. Cell size: sqrt(area) in 2D, cbrt(volume) in 3D.
+  /// In [0, kMaxSnapTolerance].
   double snap_tolerance = 1e-9;
   /// A split leaving either part with less than this fraction of the cell's
-  /// measure is refused (GeometryError) instead of making a sliver.
+  /// measure is refused (GeometryError) instead of making a sliver. In [0, 0.5).
   double min_fraction = 1e-6;
 };
 

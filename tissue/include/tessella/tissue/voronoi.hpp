@@ -60,7 +60,9 @@ std::vector<Vec3> randomSeeds(const Ball& domain, std::size_t count, std::uint64
 
 /// Reads seeds from a CSV file of "x,y" (dim 2, z = 0) or "x,y,z" (dim 3)
 /// rows; an optional header row of names, blank lines and '#' comment lines
-/// are skipped. InputError names the file, line, column and value.
+/// are skipped. The first row is a header only when every field is a name
+/// (starts with a letter or '_', not a number); a first row mixing names and
+/// numbers is an error. InputError names the file, line, column and value.
 std::vector<Vec3> readSeedsCsv(const std::string& path, int dim);
 
 /// Voronoi tissues clipped to the domain. Seeds outside the domain (for a
