@@ -22,6 +22,7 @@
 #include <vtkUnstructuredGrid.h>
 
 #include "property_arrays.hpp"
+#include "snapshot_checksum.hpp"
 #include "snapshot_format.hpp"
 #include "tessella/io/vtu.hpp"
 #include "tessella/tissue/geometry.hpp"
@@ -228,6 +229,8 @@ void writeTissueVtu(const Tissue& tissue, const std::string& path, const VtuOpti
   field->AddArray(singleValue<vtkTypeInt64Array>(detail::kNextLineageArray,
                                                  static_cast<vtkTypeInt64>(tissue.nextLineageId())));
 
+  // Last: the checksums cover every array added above.
+  detail::addChecksums(grid);
   detail::writeGridFile(grid, path, options);
 }
 

@@ -48,7 +48,10 @@ void writeTissueVtu(const Tissue& tissue, const std::string& path, const VtuOpti
 /// Reads a snapshot written by writeTissueVtu back into a tissue (topology,
 /// positions, time, every cell and vertex property with a Copy policy except
 /// the built-in lineage columns, which are restored as lineage). InputError on
-/// a missing or malformed file, naming the path and what is wrong.
+/// a missing or malformed file, naming the path and what is wrong; also when
+/// the file crashes VTK's reader (which parses it in a worker process first)
+/// or an array does not match the checksum written with it (docs/output.md,
+/// "Damaged files").
 Tissue readTissueVtu(const std::string& path);
 
 /// Whether a property column has a type writeTissueVtu can store: arithmetic
