@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libtet1.5-dev
-  libvtk9-dev libyaml-cpp-dev libcli11-dev libfmt-dev libmuparser-dev
+  libvtk9-dev zlib1g-dev libyaml-cpp-dev libcli11-dev libfmt-dev libmuparser-dev
   catch2
   libsuitesparse-dev libhypre-dev
   python3-dev pybind11-dev python3-numpy python3-pytest

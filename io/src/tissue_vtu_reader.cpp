@@ -21,6 +21,7 @@
 
 #include "finite_values.hpp"
 #include "property_arrays.hpp"
+#include "snapshot_checksum.hpp"
 #include "snapshot_format.hpp"
 #include "tessella/io/vtu.hpp"
 #include "tessella/tissue/builders.hpp"
@@ -40,7 +41,7 @@ struct Source {
 
 vtkDataArray* requiredField(vtkFieldData* field, const char* name, const Source& src) {
   vtkDataArray* array = field->GetArray(name);
-  if (!array || array->GetNumberOfTuples() < 1)
+  if (!array || array->GetNumberOfTuples() < 1 || array->GetNumberOfComponents() < 1)
     src.fail(std::string("field data '") + name + "' is missing (not a Tessella snapshot?)");
   return array;
 }
@@ -144,7 +145,7 @@ void polyhedraOf(vtkUnstructuredGrid* grid, const Source& src, std::vector<std::
     for (vtkIdType f = 0; f < num_faces; ++f) {
       const vtkIdType size = at(k++, c);
       if (size < 3) src.fail("face " + std::to_string(f) + " of cell " + std::to_string(c) + " has " + std::to_string(size) + " vertices");
-      at(k + size - 1, c);  // bounds check for the whole loop
+      if (size > stream_size - k) at(stream_size, c);  // the loop runs past the end
       std::vector<Index> loop = pointList(size, stream->GetPointer(k), grid->GetNumberOfPoints(), c, src);
       k += size;
       std::vector<Index> key = loop;
@@ -257,6 +258,8 @@ Tissue readTissueVtu(const std::string& path) { return readSnapshot(path).tissue
 Snapshot readSnapshot(const std::string& path) {
   const Source src{path};
   vtkSmartPointer<vtkUnstructuredGrid> grid = detail::readGridFile(path);
+  detail::verifyChecksums(grid, path);  // first: "the file is corrupted" says most
+  detail::checkCellArrays(grid, path);
   vtkFieldData* field = grid->GetFieldData();
 
   const int version = static_cast<int>(requiredField(field, detail::kFormatVersionArray, src)->GetComponent(0, 0));
@@ -317,7 +320,8 @@ Snapshot readSnapshot(const std::string& path) {
   // Ids of cells that were removed before the save stay used: a restart must
   // not hand them out again. Optional, files of other writers may lack it.
   if (vtkDataArray* next = field->GetArray(detail::kNextLineageArray)) {
-    const double value = next->GetNumberOfTuples() > 0 ? next->GetComponent(0, 0) : -1.0;
+    const double value =
+        next->GetNumberOfTuples() > 0 && next->GetNumberOfComponents() > 0 ? next->GetComponent(0, 0) : -1.0;
     if (!(value >= 0) || value != std::floor(value))
       src.fail(std::string(detail::kNextLineageArray) + " = " + std::to_string(value) +
                " is not a non-negative integer");

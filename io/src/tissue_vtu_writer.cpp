@@ -23,6 +23,7 @@
 
 #include "finite_values.hpp"
 #include "property_arrays.hpp"
+#include "snapshot_checksum.hpp"
 #include "snapshot_format.hpp"
 #include "tessella/io/vtu.hpp"
 #include "tessella/tissue/geometry.hpp"
@@ -246,6 +247,8 @@ void writeTissueVtu(const Tissue& tissue, const std::string& path, const VtuOpti
                                                  static_cast<vtkTypeInt64>(tissue.nextLineageId())));
   if (!state.empty()) field->AddArray(runStateArray(state, path));
 
+  // Last: the checksums cover every array added above.
+  detail::addChecksums(grid);
   detail::writeGridFile(grid, path, options);
 }
 

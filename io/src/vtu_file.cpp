@@ -1,18 +1,28 @@
 #include "vtu_file.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <cstring>
 #include <filesystem>
+#include <new>
+#include <vector>
 
+#include <SMP/Common/vtkSMPToolsAPI.h>  // vtkSMPTools.h itself does not compile as C++20
+#include <vtkCellArray.h>
 #include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include "atomic_file.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "vtk_error_capture.hpp"
+#include "worker_process.hpp"
 
 namespace tessella::io::detail {
 
@@ -74,15 +84,10 @@ void writeGridFile(vtkUnstructuredGrid* grid, const std::string& path, const Vtu
       options.durable);
 }
 
-vtkSmartPointer<vtkUnstructuredGrid> readGridFile(const std::string& path) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw InputError("cannot read '" + path + "': no such file");
-  if (!fs::is_regular_file(path, ec)) throw InputError("cannot read '" + path + "': not a regular file");
+namespace {
 
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) throw InputError("cannot read '" + path + "': " + osReason(errno));  // e.g. Permission denied
-  ::close(fd);
-
+/// VTK's parse of `path`; InputError naming the path on every error VTK reports.
+vtkSmartPointer<vtkUnstructuredGrid> parseGrid(const std::string& path) {
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   vtkNew<VtkErrorCapture> reader_errors;
   vtkNew<VtkErrorCapture> parser_errors;
@@ -101,6 +106,145 @@ vtkSmartPointer<vtkUnstructuredGrid> readGridFile(const std::string& path) {
   vtkSmartPointer<vtkUnstructuredGrid> grid = reader->GetOutput();
   if (!grid) throw InputError("cannot read '" + path + "': the reader produced no grid");
   return grid;
+}
+
+/// The errors VTK printed (through its logger or output window) in `text`,
+/// without decoration, joined by "; "; empty if there are none. VTK objects
+/// the reader creates on its own (decompressors, arrays) report there
+/// instead of to the reader's observers.
+std::string printedVtkErrors(const std::string& text) {
+  std::string plain;  // without terminal colour codes
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == '\x1b' && i + 1 < text.size() && text[i + 1] == '[') {
+      const auto end = text.find('m', i);
+      if (end == std::string::npos) break;
+      i = end;
+    } else {
+      plain += text[i];
+    }
+  }
+  std::vector<std::string> errors;
+  std::size_t start = 0;
+  bool next_is_error = false;
+  while (start < plain.size()) {
+    const auto eol = std::min(plain.find('\n', start), plain.size());
+    std::string line = plain.substr(start, eol - start);
+    start = eol + 1;
+    std::string message;
+    if (const auto tag = line.find("ERR| "); tag != std::string::npos) message = line.substr(tag + 5);
+    else if (next_is_error) message = line;
+    next_is_error = line.rfind("ERROR: In ", 0) == 0;
+    if (message.empty()) continue;
+    // "vtkClass (0x1234): what" -> "what"
+    if (const auto colon = message.find("): "); message.rfind("vtk", 0) == 0 && colon != std::string::npos)
+      message = message.substr(colon + 3);
+    while (!message.empty() && (message.back() == '.' || message.back() == ' ')) message.pop_back();
+    if (!message.empty() && std::find(errors.begin(), errors.end(), message) == errors.end()) errors.push_back(message);
+  }
+  std::string joined;
+  for (std::size_t i = 0; i < errors.size() && i < 3; ++i) joined += (i ? "; " : "") + errors[i];
+  return joined.size() > 400 ? joined.substr(0, 400) + "..." : joined;
+}
+
+template <typename Offset>
+void checkOffsets(const Offset* offsets, vtkIdType count, vtkIdType connectivity_size, const std::string& path) {
+  const auto fail = [&](const std::string& what) { throw InputError("cannot read '" + path + "': " + what); };
+  if (offsets[0] != 0) fail("the cell offsets start at " + std::to_string(offsets[0]) + ", not 0");
+  for (vtkIdType i = 1; i < count; ++i)
+    if (offsets[i] < offsets[i - 1])
+      fail("the cell offsets decrease at cell " + std::to_string(i - 1) + " (" + std::to_string(offsets[i - 1]) +
+           ", then " + std::to_string(offsets[i]) + ")");
+  if (offsets[count - 1] != connectivity_size)
+    fail("the cell offsets end at " + std::to_string(offsets[count - 1]) + " but the connectivity has " +
+         std::to_string(connectivity_size) + " entries");
+}
+
+/// What tells one file from another, or the same file rewritten.
+struct FileIdentity {
+  dev_t device = 0;
+  ino_t inode = 0;
+  off_t size = 0;
+  timespec modified{};
+  bool operator==(const FileIdentity& o) const {
+    return device == o.device && inode == o.inode && size == o.size && modified.tv_sec == o.modified.tv_sec &&
+           modified.tv_nsec == o.modified.tv_nsec;
+  }
+};
+
+FileIdentity identityOf(const std::string& path) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0)
+    throw InputError("cannot read '" + path + "': " + std::strerror(errno));
+  return {st.st_dev, st.st_ino, st.st_size, st.st_mtim};
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkUnstructuredGrid> readGridFile(const std::string& path) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) throw InputError("cannot read '" + path + "': no such file");
+  if (!fs::is_regular_file(path, ec)) throw InputError("cannot read '" + path + "': not a regular file");
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw InputError("cannot read '" + path + "': " + osReason(errno));  // e.g. Permission denied
+  ::close(fd);
+  const FileIdentity before = identityOf(path);
+
+  // VTK 9.1's XML reader believes what the file says: a damaged type name,
+  // header type, size or offset can make it follow a bad pointer, divide by
+  // zero or allocate without bound. So a worker process parses the file
+  // first, with a memory and a time limit; this process parses it only when
+  // the worker could.
+  const std::size_t size = static_cast<std::size_t>(before.size);
+  const std::size_t memory_budget = (std::size_t{2} << 30) + 32 * size;
+  const double timeout_seconds = 60.0 + static_cast<double>(size) / 1e6;
+  const WorkerOutcome outcome = runInWorker(
+      [&] {
+        // A thread pool VTK's SMP tools (TBB) may have started in this
+        // process does not exist in the worker: run sequentially.
+        vtk::detail::smp::vtkSMPToolsAPI::GetInstance().SetBackend("Sequential");
+        try {
+          parseGrid(path);
+        } catch (const std::bad_alloc&) {
+          throw;
+        } catch (const InputError&) {
+          throw;
+        } catch (const std::exception& e) {
+          throw InputError("cannot read '" + path + "': the VTK reader failed on this file (" + e.what() +
+                           "); the file is corrupted");
+        }
+        return std::string();
+      },
+      memory_budget, timeout_seconds);
+  if (outcome.threw) throw InputError(outcome.output);
+  if (!outcome.ok)
+    throw InputError("cannot read '" + path + "': the VTK reader " + outcome.output +
+                     " on this file; the file is corrupted");
+  if (const std::string errors = printedVtkErrors(outcome.printed); !errors.empty())
+    throw InputError("cannot read '" + path + "': " + errors + "; the file is corrupted");
+
+  vtkSmartPointer<vtkUnstructuredGrid> grid = parseGrid(path);
+  if (!(identityOf(path) == before))
+    throw InputError("cannot read '" + path + "': the file changed while it was being read");
+  return grid;
+}
+
+void checkCellArrays(vtkUnstructuredGrid* grid, const std::string& path) {
+  const auto fail = [&](const std::string& what) { throw InputError("cannot read '" + path + "': " + what); };
+  if (vtkPoints* points = grid->GetPoints(); points && points->GetData()->GetNumberOfComponents() != 3)
+    fail("the points have " + std::to_string(points->GetData()->GetNumberOfComponents()) + " components, not 3");
+  vtkCellArray* cells = grid->GetCells();
+  if (!cells) return;
+  const vtkIdType num_offsets = cells->GetNumberOfOffsets();
+  const vtkIdType num_cells = cells->GetNumberOfCells();
+  if (num_offsets == 0) return;
+  vtkUnsignedCharArray* types = grid->GetCellTypesArray();
+  const vtkIdType num_types = types ? types->GetNumberOfValues() : 0;
+  if (num_types != num_cells)
+    fail("the file has " + std::to_string(num_types) + " cell types for " + std::to_string(num_cells) + " cells");
+  if (cells->IsStorage64Bit())
+    checkOffsets(cells->GetOffsetsArray64()->GetPointer(0), num_offsets, cells->GetNumberOfConnectivityIds(), path);
+  else
+    checkOffsets(cells->GetOffsetsArray32()->GetPointer(0), num_offsets, cells->GetNumberOfConnectivityIds(), path);
 }
 
 }  // namespace tessella::io::detail

@@ -16,7 +16,14 @@ namespace tessella::io::detail {
 void writeGridFile(vtkUnstructuredGrid* grid, const std::string& path, const VtuOptions& options);
 
 /// Reads an unstructured grid; InputError naming the path if it is missing,
-/// not a VTK XML UnstructuredGrid file, or unreadable.
+/// not a VTK XML UnstructuredGrid file, or unreadable. VTK parses the file
+/// first in a worker process, so a file that crashes VTK's reader, or makes
+/// it allocate without bound or hang, is an InputError too.
 vtkSmartPointer<vtkUnstructuredGrid> readGridFile(const std::string& path);
+
+/// InputError naming `path` unless what a reader walks without further
+/// checks is consistent: 3D points, a type for every cell, cell offsets that
+/// start at 0, never decrease and end at the connectivity's size.
+void checkCellArrays(vtkUnstructuredGrid* grid, const std::string& path);
 
 }  // namespace tessella::io::detail

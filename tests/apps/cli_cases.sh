@@ -328,6 +328,51 @@ case "$case_name" in
       grep -q "$(printf '\033')" "$tmp/stderr" && fail "$edit: a coloured log line was printed"
     done
     ;;
+  corrupted_snapshot)
+    # A damaged snapshot is one clear error line and exit code 1 for info, mesh
+    # and a restart: a type name VTK's reader crashes on (SIGSEGV), a header
+    # type it crashes on too (SIGSEGV here, SIGFPE in an LZ4 file), a flipped bit
+    # in a coordinate.
+    "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/hex" -q --set time.end=0 \
+      --set output.compression=none || fail "run failed"
+    good="$tmp/hex/tissue_000000.vtu"
+    sed 's/type="String"/type="Xtring"/' "$good" >"$tmp/xtring.vtu"
+    sed 's/header_type="UInt64"/header_type="UInt32"/' "$good" >"$tmp/uint32.vtu"
+    cmp -s "$good" "$tmp/xtring.vtu" && fail "no type=\"String\" to damage"
+    cmp -s "$good" "$tmp/uint32.vtu" && fail "no header_type=\"UInt64\" to damage"
+    # The sign of the first point's x coordinate flips: the file still
+    # decodes and forms a tissue, only the checksum tells.
+    cp "$good" "$tmp/flipped.vtu"
+    start=$(grep -obUa '<AppendedData encoding="raw">' "$good" | cut -d: -f1)
+    offset=$(grep -Eao 'Name="Points" NumberOfComponents="3" format="appended"[^>]*offset="[0-9]+"' "$good" \
+      | sed 's/.*offset="\([0-9]*\)"/\1/')
+    [ -n "$start" ] && [ -n "$offset" ] || fail "cannot locate the points in the snapshot"
+    # Data start after '<AppendedData encoding="raw">', a newline, spaces and '_';
+    # the array starts with an 8-byte size header; the last byte of x is the sign.
+    data=$(( $(grep -obUa '_' "$good" | awk -F: -v s="$start" '$1 > s { print $1; exit }') + 1 ))
+    printf '\x80' | dd of="$tmp/flipped.vtu" bs=1 seek=$(( data + offset + 8 + 7 )) conv=notrunc status=none
+    cmp -s "$good" "$tmp/flipped.vtu" && fail "the flip changed nothing"
+    for damaged in xtring uint32 flipped; do
+      file="$tmp/$damaged.vtu"
+      for command in info mesh run; do
+        case "$command" in
+          info) "$tessella" info "$file" >"$tmp/stdout" 2>"$tmp/stderr" ;;
+          mesh) "$tessella" mesh "$file" --out "$tmp/m.vtu" >"$tmp/stdout" 2>"$tmp/stderr" ;;
+          run) "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/restart" -q \
+                 --set tissue.generator=snapshot --set tissue.snapshot.file="$file" >"$tmp/stdout" 2>"$tmp/stderr" ;;
+        esac
+        rc=$?
+        echo "$damaged/$command: rc $rc: $(cat "$tmp/stderr")"
+        [ "$rc" -eq 1 ] || fail "$damaged/$command: exit code $rc, expected 1"
+        [ "$(wc -l <"$tmp/stderr")" -eq 1 ] || fail "$damaged/$command: not one error line: $(cat "$tmp/stderr")"
+        grep -q "$damaged.vtu" "$tmp/stderr" || fail "$damaged/$command: the error does not name the file"
+        grep -q "corrupted" "$tmp/stderr" || fail "$damaged/$command: the error does not say the file is corrupted"
+        [ ! -e "$tmp/m.vtu" ] && [ ! -e "$tmp/restart" ] || fail "$damaged/$command: output was written"
+      done
+    done
+    grep -q 'crashed (signal' <("$tessella" info "$tmp/xtring.vtu" 2>&1) || fail "the crash is not reported as such"
+    grep -q "does not match its checksum" <("$tessella" info "$tmp/flipped.vtu" 2>&1) || fail "no checksum error"
+    ;;
   *) fail "unknown case" ;;
 esac
 echo "ok [$case_name]"

@@ -8,6 +8,7 @@
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkFieldData.h>
 #include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkUnstructuredGrid.h>
@@ -31,14 +32,17 @@ void writeText(const std::string& path, const std::string& text) {
 }
 
 // Reads a snapshot with VTK, lets `edit` damage it, writes it back with VTK.
+// The checksum list goes too (as an editing program must remove it), so that
+// the reader's own checks are what finds the damage; unless told to keep it.
 template <typename Edit>
-void tamper(const std::string& in, const std::string& out, Edit edit) {
+void tamper(const std::string& in, const std::string& out, Edit edit, bool keep_checksums = false) {
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   reader->SetFileName(in.c_str());
   reader->Update();
   vtkNew<vtkUnstructuredGrid> grid;
   grid->DeepCopy(reader->GetOutput());
   edit(grid.Get());
+  if (!keep_checksums) grid->GetFieldData()->RemoveArray("tessella_checksums");
   vtkNew<vtkXMLUnstructuredGridWriter> writer;
   writer->SetInputData(grid);
   writer->SetFileName(out.c_str());
@@ -126,6 +130,18 @@ TEST_CASE("inconsistent arrays are named in the error", "[io][vtu][errors]") {
       g->ReplaceCell(2, static_cast<int>(ids->GetNumberOfIds()), ids->GetPointer(0));
     });
     REQUIRE_THROWS_WITH(readTissueVtu(bad), Contains(bad) && Contains("cell 2") && Contains("point 999"));
+  }
+  SECTION("an edit that keeps the checksum list is refused, naming the array") {
+    const auto edit = [](vtkUnstructuredGrid* g) {
+      vtkDataArray* auxin_array = g->GetCellData()->GetArray("auxin");
+      auxin_array->SetComponent(4, 0, 2.5);
+    };
+    tamper(good, bad, edit, true);
+    REQUIRE_THROWS_AS(readTissueVtu(bad), InputError);
+    REQUIRE_THROWS_WITH(readTissueVtu(bad), Contains(bad) && Contains("array 'cell_data/auxin' does not match its checksum"));
+    // Without the list, the same file reads, with the edited value.
+    tamper(good, bad, edit);
+    REQUIRE(readTissueVtu(bad).cellProperties().get<double>("auxin")[CellId(4)] == 2.5);
   }
   SECTION("polygons that do not form a tissue") {
     // Reverse one loop: it now runs against its neighbours.

@@ -56,7 +56,9 @@ void writeTissueVtu(const Tissue& tissue, const std::string& path, const VtuOpti
 /// positions, time, every cell and vertex property with its division policy
 /// and default value except the built-in lineage columns, which are restored
 /// as lineage). InputError on a missing or malformed file, naming the path
-/// and what is wrong.
+/// and what is wrong; also when the file crashes VTK's reader (which parses
+/// it in a worker process first) or an array does not match the checksum
+/// written with it (docs/output.md, "Damaged files").
 Tissue readTissueVtu(const std::string& path);
 
 /// A snapshot's tissue and the run state written with it (empty when none was).
