@@ -130,18 +130,25 @@ PlyHeader parseHeader(const std::string& path, std::string_view text) {
       if (h.elements.empty()) throw fail(line_no, "a property before any element");
       PlyElement& e = h.elements.back();
       PlyProperty p;
+      // A name is the rest of the line: MorphoGraphX writes names with spaces
+      // ("/Cell Axis curv10microns").
+      auto restFrom = [&](std::size_t word) {
+        std::string_view rest = line.substr(static_cast<std::size_t>(words[word].data() - line.data()));
+        while (!rest.empty() && isBlank(rest.back())) rest.remove_suffix(1);
+        return std::string(rest);
+      };
       if (words.size() >= 2 && words[1] == "list") {
-        if (words.size() != 5) throw fail(line_no, "a list property is 'property list <count type> <item type> <name>'");
+        if (words.size() < 5) throw fail(line_no, "a list property is 'property list <count type> <item type> <name>'");
         if (!parsePlyType(words[2], p.count_type)) throw fail(line_no, "unknown type " + quotedToken(words[2]));
         if (!info(p.count_type).integer)
           throw fail(line_no, "list length type " + quotedToken(words[2]) + " is not an integer type");
         if (!parsePlyType(words[3], p.type)) throw fail(line_no, "unknown type " + quotedToken(words[3]));
         p.is_list = true;
-        p.name = std::string(words[4]);
+        p.name = restFrom(4);
       } else {
-        if (words.size() != 3) throw fail(line_no, "a property line is 'property <type> <name>'");
+        if (words.size() < 3) throw fail(line_no, "a property line is 'property <type> <name>'");
         if (!parsePlyType(words[1], p.type)) throw fail(line_no, "unknown type " + quotedToken(words[1]));
-        p.name = std::string(words[2]);
+        p.name = restFrom(2);
       }
       if (e.property(p.name))
         throw fail(line_no, "element " + quotedToken(e.name) + " declares property " + quotedToken(p.name) +

@@ -11,6 +11,7 @@
 #include "io_test_support.hpp"
 #include "mgx_fixture.hpp"
 #include "tessella/io/import.hpp"
+#include "tessella/io/ply.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/validate.hpp"
@@ -239,7 +240,7 @@ TEST_CASE("mgx cell graph: labels, areas and neighbour pairs by label", "[io][im
   const std::string path = dir.file("cellGraph.ply");
   const std::string header =
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty int label\nproperty float x\nproperty float y\n"
-      "property float z\nproperty float Geometry/Area\nproperty list uchar float curv\nelement edge 5\n"
+      "property float z\nproperty float Geometry/Area\nproperty list uchar float /Cell Axis curv10microns\nelement edge 5\n"
       "property uint source\nproperty uint target\nend_header\n"
       "5 0 0 0 1.5 2 0.1 0.2\n9 1 0 0 2.5 0\n12 0 1 0 3 1 7\n";
   std::ofstream(path) << header << "5 9\n9 5\n9 12\n12 9\n5 9\n";
@@ -247,6 +248,8 @@ TEST_CASE("mgx cell graph: labels, areas and neighbour pairs by label", "[io][im
   CHECK(g.labels == std::vector<std::int64_t>{5, 9, 12});
   CHECK(g.areas == std::vector<double>{1.5, 2.5, 3});
   CHECK(g.edges.size() == 5);
+  // MorphoGraphX names properties with spaces: the name is the rest of the line.
+  CHECK(PlyFile::read(path).hasProperty("vertex", "/Cell Axis curv10microns"));
   CHECK(g.neighbourPairs() == std::vector<std::pair<std::int64_t, std::int64_t>>{{5, 9}, {9, 12}});
   std::ofstream(path) << header << "5 9\n9 5\n9 12\n12 9\n5 7\n";
   CHECK_THROWS_WITH(readMorphoGraphXCellGraph(path), Contains("edge 4: 7 is not the label of a listed cell"));
