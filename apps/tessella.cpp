@@ -5,11 +5,13 @@
 //   tessella info FILE.vtu
 //   tessella mesh SNAPSHOT.vtu --out MESH.vtu [--walls WALLS.vtu] [--size H] [--min-angle A] [--max-volume V]
 //                 [--volume-method cell_by_cell|whole_tissue] [--max-elements N] [--config CFG.yaml]
+//   tessella import FILE --out TISSUE.vtu [--format F] [--scale S] [--simplify TOL] [--repair]
 //   tessella schema          (the config key reference, as in docs/config.md)
 //
 // Exit codes: 0 success, 1 an error Tessella reports (bad config or file, a
 // failed step), 2 an unexpected internal error,
-// 3 (info) the tissue was read but fails validate(),
+// 3 (info, import) the tissue was read but fails validate() (import then
+// writes nothing),
 // 130 / 143 (run) stopped by SIGINT / SIGTERM: the run ends after the step in
 // progress, with every file written so far complete (a second signal ends it
 // at once).
@@ -33,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "tessella/io/import.hpp"
 #include "tessella/io/mesh_vtu.hpp"
 #include "tessella/io/vtu.hpp"
 #include "tessella/mesh/mesh_measures.hpp"
@@ -133,24 +136,28 @@ int infoCommand(const std::string& path) {
   using namespace tessella::sim;
   const tessella::Tissue tissue = tessella::io::readTissueVtu(path);
   const TissueSummary s = summarizeTissue(tissue);
-  fmt::print("file         {}\n", path);
-  fmt::print("tissue       {}D, {}, time {}\n", s.dim, tessella::embeddingName(s.embedding), tissue.time());
-  fmt::print("elements     {} vertices, {} edges, {} faces", s.counts[0], s.counts[1], s.counts[2]);
-  if (s.dim == 3) fmt::print(", {} volumes", s.counts[3]);
-  fmt::print("\ncells        {}\n", s.cells);
-  fmt::print("total {:<6} {:.6g}\n", measureName(s.dim), s.total_measure);
-  if (s.cell_sizes.count > 0) {
-    const Distribution& d = s.cell_sizes;
-    fmt::print("cell {:<7} min {:.6g}  q1 {:.6g}  median {:.6g}  q3 {:.6g}  max {:.6g}\n", measureName(s.dim),
-               d.min, d.q1, d.median, d.q3, d.max);
-    fmt::print("             mean {:.6g}  CV {:.4f}\n", d.mean, d.cv);
+  fmt::print("file         {}\n{}", path, formatTissueSummary(s, tissue.time()));
+  return s.validation.ok ? 0 : 3;
+}
+
+struct ImportArgs {
+  std::string file, out, format = "auto";
+  double scale = 1.0, simplify = 0.0;
+  bool repair = false;
+};
+
+int importCommand(const ImportArgs& a) {
+  using namespace tessella;
+  const io::ImportResult r = io::importTissue(a.file, io::ImportOptions{a.format, a.scale, a.simplify, a.repair});
+  const sim::TissueSummary s = sim::summarizeTissue(r.tissue);
+  fmt::print("{}", sim::formatImportSummary(r.report, s, r.tissue.time()));
+  if (!s.validation.ok) {
+    fmt::print(stderr, "error: not writing {}: the imported tissue fails validate()\n", a.out);
+    return 3;
   }
-  if (s.validation.ok) {
-    fmt::print("validate     ok\n");
-    return 0;
-  }
-  fmt::print("validate     FAILED: {}\n", s.validation.message);
-  return 3;
+  io::writeTissueVtu(r.tissue, a.out);  // atomic: no partial file on failure
+  fmt::print("wrote        {}\n", a.out);
+  return 0;
 }
 
 struct MeshArgs {
@@ -270,6 +277,18 @@ int main(int argc, char** argv) {
   mesh->add_option("--volume-method", mesh_args.volume_method, "3D: cell_by_cell or whole_tissue (mesh.volume_method)")
       ->check(CLI::IsMember(tessella::sim::volumeMethodNames()));
 
+  auto* import = app.add_subcommand(
+      "import", "Import a segmented tissue (MorphoGraphX PLY, ...), summarise it, write a snapshot (.vtu)");
+  ImportArgs import_args;
+  import->add_option("file", import_args.file, "The file to import (see docs/import.md)")->required();
+  import->add_option("--out,-o", import_args.out, "Snapshot to write (.vtu)")->required();
+  import->add_option("--format,-f", import_args.format, "auto (from the extension and contents) or a format name")
+      ->check(CLI::IsMember(tessella::io::importFormatNames()));
+  import->add_option("--scale", import_args.scale, "Multiply every position by this (unit conversion)");
+  import->add_option("--simplify", import_args.simplify,
+                     "Simplify wall polylines between junctions to this tolerance (0 = keep every vertex)");
+  import->add_flag("--repair", import_args.repair, "Repair harmless defects (a one-triangle sliver), each reported");
+
   app.add_subcommand("schema", "Print the configuration key reference (Markdown, as in docs/config.md)");
 
   CLI11_PARSE(app, argc, argv);
@@ -277,6 +296,7 @@ int main(int argc, char** argv) {
     if (run->parsed()) return runCommand(config_path, out, sets, overwrite, quiet);
     if (info->parsed()) return infoCommand(vtu_path);
     if (mesh->parsed()) return meshCommand(mesh_args);
+    if (import->parsed()) return importCommand(import_args);
     fmt::print("{}", tessella::sim::schemaReferenceMarkdown(tessella::sim::tessellaSchema()));
     return 0;
   } catch (const tessella::Error& e) {  // bad input, or a stage that failed on it

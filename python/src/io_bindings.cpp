@@ -1,5 +1,6 @@
 // Output from Python: single VTK snapshots and ParaView series.
 #include "bindings.hpp"
+#include "tessella/io/import.hpp"
 #include "tessella/io/series.hpp"
 #include "tessella/io/vtu.hpp"
 
@@ -24,6 +25,40 @@ void bindIo(py::module_& m) {
         py::arg("tissue"), py::arg("path"), py::arg("compression") = "lz4", py::arg("compression_level") = 5,
         "One .vtu snapshot with every writable cell and vertex property (written atomically).");
   m.def("read_vtu", &io::readTissueVtu, py::arg("path"), "A tissue back from a snapshot written by write_vtu.");
+
+  m.def("import_tissue_with_report",
+        [](const std::string& path, const std::string& format, double scale, double simplify, bool repair) {
+          io::ImportResult r = io::importTissue(path, io::ImportOptions{format, scale, simplify, repair});
+          py::dict report;
+          report["path"] = r.report.path;
+          report["format"] = r.report.format;
+          report["file_vertices"] = r.report.file_vertices;
+          report["file_faces"] = r.report.file_faces;
+          report["simplified_vertices"] = r.report.simplified_vertices;
+          report["repairs"] = r.report.repairs;
+          report["notes"] = r.report.notes;
+          return py::make_tuple(std::move(r.tissue), report);
+        },
+        py::arg("path"), py::arg("format") = "auto", py::arg("scale") = 1.0, py::arg("simplify") = 0.0,
+        py::arg("repair") = false, R"doc(
+Imports a segmented tissue (docs/import.md) and returns (tissue, report): the
+report is a dict with path, format, file_vertices, file_faces,
+simplified_vertices, repairs (one line per repair) and notes.
+)doc");
+  m.def("import_tissue",
+        [](const std::string& path, const std::string& format, double scale, double simplify, bool repair) {
+          return io::importTissue(path, io::ImportOptions{format, scale, simplify, repair}).tissue;
+        },
+        py::arg("path"), py::arg("format") = "auto", py::arg("scale") = 1.0, py::arg("simplify") = 0.0,
+        py::arg("repair") = false, R"doc(
+Imports a segmented tissue from another tool's file. format: "auto" (from the
+extension and, for .ply, the properties) or one of import_formats(). Cells keep
+their label as the cell property "label" (and "parent" where the file has one).
+scale multiplies positions; simplify (> 0) simplifies wall polylines between
+junctions; repair fixes harmless defects (see import_tissue_with_report).
+Raises InputError naming the file, element and cell label on bad input.
+)doc");
+  m.def("import_formats", &io::importFormatNames, "The names import_tissue accepts as format (auto first).");
 
   py::class_<io::SeriesWriter>(m, "SeriesWriter", R"doc(
 A ParaView time series: DIRECTORY/NAME.pvd listing NAME_000000.vtu, ... with

@@ -87,7 +87,7 @@ void declareTissueSection(Schema& s) {
   s.section("tissue", "The initial tissue. `generator` picks one of the subsections below; only that "
                       "one is read (the others may stay in the file, unused).");
   s.key("tissue.generator", ValueType::Enum, "Which generator builds the initial tissue.")
-      .oneOf({"rectangular_grid", "hexagonal_grid", "box_grid", "voronoi", "dome", "snapshot"})
+      .oneOf({"rectangular_grid", "hexagonal_grid", "box_grid", "voronoi", "dome", "snapshot", "import"})
       .isRequired();
 
   s.section("tissue.rectangular_grid", "`nx` x `ny` rectangular cells: a flat 2D tissue.")
@@ -186,6 +186,32 @@ void declareTissueSection(Schema& s) {
             "one). The clock starts at the snapshot's time unless `time.start` is given.")
       .activeWhen("tissue.generator", {"snapshot"});
   s.key("tissue.snapshot.file", ValueType::Path, "The `.vtu` file, relative to the config file.").isRequired();
+
+  s.section("tissue.import",
+            "A segmented tissue from another tool's file (docs/import.md lists the formats and what is kept): "
+            "each cell keeps its original label as the cell property `label` (and `parent` where the file "
+            "has one). A malformed file stops the run before it starts, with the file, line or element and "
+            "cell label.")
+      .activeWhen("tissue.generator", {"import"});
+  s.key("tissue.import.file", ValueType::Path, "The file to import, relative to the config file.").isRequired();
+  s.key("tissue.import.format", ValueType::Enum,
+        "The file's format; `auto` picks it from the extension (and, for `.ply`, from the properties the "
+        "file declares).")
+      .oneOf(io::importFormatNames())
+      .byDefault(std::string("auto"));
+  s.key("tissue.import.scale", ValueType::Float,
+        "Multiplies every position (a unit conversion); 1 keeps the file's units.")
+      .byDefault(1.0)
+      .above(0);
+  s.key("tissue.import.simplify", ValueType::Float,
+        "Douglas-Peucker tolerance (after `scale`) for the wall polylines between junctions; both sides of a "
+        "wall get the same polyline. 0 keeps every wall vertex.")
+      .byDefault(0.0)
+      .atLeast(0);
+  s.key("tissue.import.repair", ValueType::Bool,
+        "Repair the harmless defects the importer knows (a one-triangle sliver of a cell lying apart from it "
+        "goes to its neighbour) and report each; without it they are errors.")
+      .byDefault(false);
 }
 
 TissueSpec readTissueSection(const Config& c) {
@@ -230,6 +256,12 @@ TissueSpec readTissueSection(const Config& c) {
     }
     v.seeds = readSeeds(c, p, v.dim());
     return v;
+  }
+  if (generator == "import") {
+    const std::string p = "tissue.import";
+    return ImportSpec{c.getString(p + ".file"),
+                      io::ImportOptions{c.getString(p + ".format"), c.getFloat(p + ".scale"),
+                                        c.getFloat(p + ".simplify"), c.getBool(p + ".repair")}};
   }
   if (generator == "snapshot") {
     SnapshotSpec snap{c.getString("tissue.snapshot.file"), nullptr, {}, {}};
@@ -319,6 +351,7 @@ struct TissueBuilder {
                                             : readSeedsCsv(d.seeds.file, 2);
     return domeTissue(seeds, d.dome, d.seeds.options);
   }
+  Tissue operator()(const ImportSpec& s) const { return io::importTissue(s.file, s.options).tissue; }
   Tissue operator()(const SnapshotSpec& s) const {
     if (!s.tissue) return io::readTissueVtu(s.file);
     return *s.tissue;
@@ -343,6 +376,7 @@ Tissue buildTissue(const TissueSpec& spec, std::uint64_t rng_seed, const Config&
     if ((generator == "voronoi" || generator == "dome") &&
         config.has("tissue." + generator + ".seed_file"))
       key = "tissue." + generator + ".seed_file";
+    if (generator == "import") key = "tissue.import.file";
     throw config.errorAt(key, e.what());
   }
 }

@@ -11,6 +11,7 @@
 //   dome              Voronoi cells of a disk lifted onto a dome (curved 2D
 //                     sheet, the L1 layer of a shoot apical meristem)
 //   snapshot          a .vtu written by Tessella: a run restarts from it
+//   import            a segmented tissue from another tool (io::importFormats())
 
 #include <cstddef>
 #include <cstdint>
@@ -19,6 +20,7 @@
 #include <string>
 #include <variant>
 
+#include "tessella/io/import.hpp"
 #include "tessella/io/vtu.hpp"
 #include "tessella/sim/config.hpp"
 #include "tessella/sim/schema.hpp"
@@ -77,8 +79,15 @@ struct SnapshotSpec {
   std::string rng_state;
 };
 
-using TissueSpec =
-    std::variant<RectangularGridSpec, HexagonalGridSpec, BoxGridSpec, VoronoiSpec, DomeSpec, SnapshotSpec>;
+/// A segmented tissue imported from another tool's file (io::importTissue),
+/// read when the tissue is built.
+struct ImportSpec {
+  std::string file;  ///< absolute path
+  io::ImportOptions options;
+};
+
+using TissueSpec = std::variant<RectangularGridSpec, HexagonalGridSpec, BoxGridSpec, VoronoiSpec, DomeSpec,
+                                SnapshotSpec, ImportSpec>;
 
 /// The dome a tissue spec puts its sheet on: a dome generator's, or the one
 /// saved in a snapshot of a run on a dome (domeRunState); none otherwise.

@@ -1,0 +1,64 @@
+// import_bench: the cost of importing a MorphoGraphX-style cell mesh next to
+// the cost of merely parsing the same PLY file (the ratio's target: import
+// within 2x of parsing). The mesh is a synthetic square grid of cells, each a
+// fan of 4k triangles around its centre (tests/io/mgx_fixture.hpp), written
+// as binary little-endian and as ASCII PLY.
+//
+//   import_bench [CELLS] [K]     defaults: 100000 cells, k = 3 (12 triangles per cell)
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "../tests/io/mgx_fixture.hpp"
+#include "bench_args.hpp"
+#include "tessella/io/import.hpp"
+#include "tessella/io/ply.hpp"
+
+using namespace tessella;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+template <typename F>
+double bestOf(int runs, F&& f) {
+  double best = 1e300;
+  for (int i = 0; i < runs; ++i) {
+    const auto t0 = Clock::now();
+    f();
+    best = std::min(best, secondsSince(t0));
+  }
+  return best;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  const char* usage = "import_bench [CELLS (default 100000)] [K wall segments per side (default 3)]";
+  if (bench::helpRequested(argc, argv, usage)) return 0;
+  const std::size_t cells = bench::countArgument(argc, argv, 1, "CELLS", 100000, 1, 10000000, usage);
+  const std::size_t k = bench::countArgument(argc, argv, 2, "K", 3, 1, 100, usage);
+  const int nx = static_cast<int>(std::ceil(std::sqrt(double(cells))));
+  const int ny = static_cast<int>((cells + nx - 1) / nx);
+  const auto m = io::testing::MgxFixture::grid(nx, ny, static_cast<int>(k));
+  const auto dir = std::filesystem::temp_directory_path() / "tessella_import_bench";
+  std::filesystem::create_directories(dir);
+  std::printf("synthetic MorphoGraphX mesh: %d x %d = %d cells, %zu vertices, %zu triangles\n", nx, ny, nx * ny,
+              m.positions.size(), m.faces.size());
+  std::printf("%-22s %10s %10s %10s %8s\n", "file", "MB", "parse s", "import s", "ratio");
+  for (auto format : {io::testing::MgxFixture::Format::BinaryLittleEndian, io::testing::MgxFixture::Format::Ascii}) {
+    const bool binary = format != io::testing::MgxFixture::Format::Ascii;
+    const std::string path = (dir / (binary ? "mesh_binary.ply" : "mesh_ascii.ply")).string();
+    m.write(path, format);
+    const double mb = double(std::filesystem::file_size(path)) / 1e6;
+    const int runs = 3;
+    const double parse = bestOf(runs, [&] { io::PlyFile::read(path); });
+    std::size_t imported = 0;
+    const double import = bestOf(runs, [&] { imported = io::importTissue(path).tissue.numCells(); });
+    std::printf("%-22s %10.1f %10.3f %10.3f %8.2f   (%zu cells)\n", binary ? "binary_little_endian" : "ascii", mb,
+                parse, import, import / parse, imported);
+  }
+  std::filesystem::remove_all(dir);
+  return 0;
+}

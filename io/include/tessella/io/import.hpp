@@ -1,0 +1,106 @@
+#pragma once
+// Importing segmented tissues from other tools' files. One table,
+// importFormats(), lists every format (name, file extensions, reader); the
+// CLI (`tessella import`), the YAML generator (`tissue.generator: import`),
+// the Python module and docs/import.md all use it, so a new format is one row.
+//
+// Every importer is strict: a malformed or inconsistent file is an
+// InputError naming the file, the line or element index and the cell label,
+// and nothing is built. `repair` fixes only the harmless defects a format's
+// importer lists (docs/import.md), each reported in ImportReport::repairs.
+
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "tessella/tissue/tissue.hpp"
+
+namespace tessella::io {
+
+struct ImportOptions {
+  /// A row of importFormats() by name, or "auto": chosen from the file's
+  /// extension and, where several formats share it, from its contents.
+  std::string format = "auto";
+  /// Multiplies every position (the file's units are kept with 1).
+  double scale = 1.0;
+  /// Douglas-Peucker tolerance for wall polylines between junctions, in the
+  /// file's units times `scale`; 0 keeps every wall vertex.
+  double simplify = 0.0;
+  /// Fix the harmless defects the format's importer knows (and report them).
+  bool repair = false;
+};
+
+struct ImportReport {
+  std::string path;
+  std::string format;  ///< the importFormats() row used
+  /// Counts in the file.
+  std::size_t file_vertices = 0, file_faces = 0;
+  /// Vertices removed by `simplify` (0 without).
+  std::size_t simplified_vertices = 0;
+  /// One line per repair made (empty without `repair`).
+  std::vector<std::string> repairs;
+  /// Other facts worth telling (dropped unused vertices, kept properties).
+  std::vector<std::string> notes;
+};
+
+struct ImportResult {
+  Tissue tissue;
+  ImportReport report;
+};
+
+/// One importable format.
+struct ImportFormat {
+  std::string name;                     ///< "morphographx", ...
+  std::vector<std::string> extensions;  ///< lower case, with the dot: ".ply"
+  std::string description;              ///< one line, for help texts and errors
+  ImportResult (*read)(const std::string& path, const ImportOptions& options);
+  /// For "auto" when several formats share an extension: whether the file
+  /// has this format's layout (reads the header only). Null: extension only.
+  bool (*recognises)(const std::string& path);
+};
+
+/// Every importable format.
+const std::vector<ImportFormat>& importFormats();
+/// The names of importFormats() plus "auto".
+std::vector<std::string> importFormatNames();
+/// "name (.ext, ...): description" lines, one per format.
+std::string importFormatList();
+/// The format "auto" picks for `path`; InputError naming the file and listing
+/// the supported formats when none fits.
+const ImportFormat& detectImportFormat(const std::string& path);
+
+/// Imports a tissue in any format of the table. InputError for an unknown
+/// format name, a bad option (scale <= 0, simplify < 0, not finite) or a bad file.
+ImportResult importTissue(const std::string& path, const ImportOptions& options = {});
+
+// --- MorphoGraphX -------------------------------------------------------------
+
+/// A MorphoGraphX PLY cell mesh (2.5D): per vertex x y z and `label` (-1 on
+/// walls), optional `parent`; per face a vertex list (`vertex_index` or
+/// `vertex_indices`) and `label`. Each label's triangles form one cell, whose
+/// outline (the boundary of their union) becomes a polygon of a curved-sheet
+/// tissue (Embedding::Surface); wall vertices stay shared. Cell properties:
+/// `label` (int64) and, when the file has vertex `parent`, `parent` (int64,
+/// the parent of the cell's centre vertex, 0 = unknown).
+ImportResult importMorphoGraphX(const std::string& path, const ImportOptions& options = {});
+/// Whether a PLY file has the MorphoGraphX cell-mesh layout (vertex `label`
+/// and face `label` properties).
+bool isMorphoGraphXMesh(const std::string& path);
+
+/// A MorphoGraphX cell graph (cellGraph_*.ply): one vertex per cell with its
+/// label and `Geometry/Area`, one edge per neighbour pair listing the two
+/// cells' labels (MorphoGraphX 2.0 writes labels, not vertex indices).
+struct MorphoGraphXCellGraph {
+  std::vector<std::int64_t> labels;
+  std::vector<double> areas;  ///< empty when the file has no Geometry/Area
+  /// As listed in the file (MorphoGraphX lists each pair in both directions,
+  /// some twice): see neighbourPairs() for the set.
+  std::vector<std::pair<std::int64_t, std::int64_t>> edges;
+  /// The distinct unordered pairs (smaller label first), sorted.
+  std::vector<std::pair<std::int64_t, std::int64_t>> neighbourPairs() const;
+};
+/// InputError for a duplicated label, an edge naming no listed label, a self loop.
+MorphoGraphXCellGraph readMorphoGraphXCellGraph(const std::string& path);
+
+}  // namespace tessella::io

@@ -1,0 +1,97 @@
+// The table of import formats and the format-independent entry point.
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+
+#include "tessella/io/import.hpp"
+#include "tessella/io/ply.hpp"
+#include "tessella/tissue/errors.hpp"
+
+namespace tessella::io {
+
+const std::vector<ImportFormat>& importFormats() {
+  static const std::vector<ImportFormat> formats = {
+      {"morphographx",
+       {".ply"},
+       "MorphoGraphX PLY cell mesh: triangles with a per-face cell `label` (a curved 2.5D sheet)",
+       &importMorphoGraphX,
+       &isMorphoGraphXMesh},
+  };
+  return formats;
+}
+
+std::vector<std::string> importFormatNames() {
+  std::vector<std::string> names{"auto"};
+  for (const ImportFormat& f : importFormats()) names.push_back(f.name);
+  return names;
+}
+
+std::string importFormatList() {
+  std::string out;
+  for (const ImportFormat& f : importFormats()) {
+    out += "  " + f.name + " (";
+    for (std::size_t i = 0; i < f.extensions.size(); ++i) out += (i ? ", " : "") + f.extensions[i];
+    out += "): " + f.description + "\n";
+  }
+  return out;
+}
+
+namespace {
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+// "vertex(x, y, z, ...) face(...)": what a PLY file holds, for an error message.
+std::string plyLayout(const std::string& path) {
+  const PlyHeader h = readPlyHeader(path);
+  std::string out;
+  for (const PlyElement& e : h.elements) {
+    if (!out.empty()) out += ", ";
+    out += e.name + "(";
+    for (std::size_t i = 0; i < e.properties.size(); ++i) out += (i ? " " : "") + e.properties[i].name;
+    out += ")";
+  }
+  return out.empty() ? "no elements" : out;
+}
+
+}  // namespace
+
+const ImportFormat& detectImportFormat(const std::string& path) {
+  const std::string ext = lowerExtension(path);
+  std::vector<const ImportFormat*> candidates;
+  for (const ImportFormat& f : importFormats())
+    if (std::find(f.extensions.begin(), f.extensions.end(), ext) != f.extensions.end()) candidates.push_back(&f);
+  if (candidates.empty())
+    throw InputError("cannot import '" + path + "': no import format reads " +
+                     (ext.empty() ? std::string("files without an extension") : "'" + ext + "' files") +
+                     "; supported formats:\n" + importFormatList());
+  for (const ImportFormat* f : candidates)
+    if (!f->recognises || f->recognises(path)) return *f;
+  std::string layout;
+  if (ext == ".ply") layout = " (it holds " + plyLayout(path) + ")";
+  throw InputError("cannot import '" + path + "': its layout" + layout +
+                   " is none of the supported formats; supported formats:\n" + importFormatList());
+}
+
+ImportResult importTissue(const std::string& path, const ImportOptions& options) {
+  const ImportFormat* format = nullptr;
+  if (options.format == "auto") {
+    format = &detectImportFormat(path);
+  } else {
+    for (const ImportFormat& f : importFormats())
+      if (f.name == options.format) format = &f;
+    if (!format)
+      throw InputError("unknown import format '" + options.format + "'; choose auto or one of:\n" +
+                       importFormatList());
+  }
+  ImportResult result = format->read(path, options);
+  result.report.format = format->name;
+  return result;
+}
+
+}  // namespace tessella::io

@@ -1,0 +1,60 @@
+# Importing segmented tissues from Python: tessella.import_tissue and
+# import_tissue_with_report (docs/import.md), on the bundled real meristem
+# (tests/data/mgx_meristem_cropped) and on small files written here.
+import pytest
+
+import tessella
+
+
+def mgx_square_pair(path, labels=(3, 8), last_index=None):
+    """Two unit squares side by side, each a fan of 4 triangles around its centre."""
+    walls = [(0, 0), (1, 0), (2, 0), (2, 1), (1, 1), (0, 1)]
+    centres = [(0.5, 0.5), (1.5, 0.5)]
+    vertices = [(x, y, 0.0, -1, 0) for x, y in walls]
+    vertices += [(x, y, 0.0, lab, 100 + lab) for (x, y), lab in zip(centres, labels)]
+    loops = [[0, 1, 4, 5], [1, 2, 3, 4]]
+    faces = []
+    for c, loop in enumerate(loops):
+        for k in range(4):
+            faces.append((6 + c, loop[k], loop[(k + 1) % 4], labels[c]))
+    if last_index is not None:
+        faces[-1] = faces[-1][:2] + (last_index,) + faces[-1][3:]
+    lines = ["ply", "format ascii 1.0", f"element vertex {len(vertices)}", "property float x", "property float y",
+             "property float z", "property int label", "property int parent", f"element face {len(faces)}",
+             "property list uchar int vertex_index", "property int label", "end_header"]
+    lines += [" ".join(str(v) for v in vertex) for vertex in vertices]
+    lines += [f"3 {a} {b} {c} {lab}" for a, b, c, lab in faces]
+    path.write_text("\n".join(lines) + "\n")
+    return str(path)
+
+
+def test_import_keeps_labels_parents_and_scale(tmp_path):
+    path = mgx_square_pair(tmp_path / "pair.ply")
+    t = tessella.import_tissue(path, scale=2.0)
+    assert t.num_cells == 2 and t.dim == 2
+    assert list(t.property("label")) == [3, 8]
+    assert list(t.property("parent")) == [103, 108]
+    assert [t.cell_measure(c) for c in t.cells()] == [pytest.approx(4.0), pytest.approx(4.0)]
+    assert t.validate()[0]
+    t2, report = tessella.import_tissue_with_report(path, simplify=1e-9)
+    assert report["format"] == "morphographx"
+    assert report["file_faces"] == 8 and report["repairs"] == []
+    assert report["simplified_vertices"] == 0  # every wall vertex is a corner here
+    assert "auto" in tessella.import_formats() and "morphographx" in tessella.import_formats()
+
+
+def test_import_errors_name_the_file_face_and_label(tmp_path):
+    path = mgx_square_pair(tmp_path / "bad.ply", last_index=42)
+    with pytest.raises(tessella.InputError, match=r"bad.ply' face 7 \(cell label 8\): vertex index 42 is out of range"):
+        tessella.import_tissue(path)
+    with pytest.raises(ValueError, match=r"unknown import format 'vtk'"):
+        tessella.import_tissue(path, format="vtk")
+
+
+def test_import_real_meristem(source_dir):
+    path = source_dir / "tests/data/mgx_meristem_cropped/mesh_meristem_cropped_T0.ply"
+    t, report = tessella.import_tissue_with_report(str(path))
+    assert t.num_cells == 128
+    assert report["file_vertices"] == 1506 and report["file_faces"] == 2704
+    assert len(set(t.property("label"))) == 128
+    assert t.validate()[0]
