@@ -16,6 +16,7 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include "file_edits.hpp"
 #include "io_test_support.hpp"
 #include "tessella/io/vtu.hpp"
 #include "tessella/tissue/grids.hpp"
@@ -23,28 +24,13 @@
 using namespace tessella;
 using namespace tessella::io;
 using tessella::io::testing::TempDir;
+using tessella::io::testing::tamper;
 using Catch::Contains;
 
 namespace {
 
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 const double kInf = std::numeric_limits<double>::infinity();
-
-// Copies a snapshot with VTK alone, after `edit` changed its grid: a file
-// Tessella's writer would refuse to produce.
-template <typename Edit>
-void writeEdited(const std::string& in, const std::string& out, Edit edit) {
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName(in.c_str());
-  reader->Update();
-  vtkNew<vtkUnstructuredGrid> grid;
-  grid->DeepCopy(reader->GetOutput());
-  edit(grid.Get());
-  vtkNew<vtkXMLUnstructuredGridWriter> writer;
-  writer->SetInputData(grid);
-  writer->SetFileName(out.c_str());
-  REQUIRE(writer->Write() == 1);
-}
 
 }  // namespace
 
@@ -101,18 +87,18 @@ TEST_CASE("a snapshot with a non-finite value is refused when read", "[io][vtu][
   REQUIRE(readTissueVtu(good).numCells() == 6);
 
   SECTION("a NaN cell property") {
-    writeEdited(good, bad,
+    tamper(good, bad,
                 [](vtkUnstructuredGrid* g) { g->GetCellData()->GetArray("auxin")->SetComponent(3, 0, kNaN); });
     REQUIRE_THROWS_WITH(readTissueVtu(bad), Contains(bad) && Contains("cell property 'auxin' of cell 3") &&
                                                 Contains("is nan"));
   }
   SECTION("an infinite vertex property component") {
-    writeEdited(good, bad,
+    tamper(good, bad,
                 [](vtkUnstructuredGrid* g) { g->GetPointData()->GetArray("velocity")->SetComponent(7, 2, kInf); });
     REQUIRE_THROWS_WITH(readTissueVtu(bad), Contains("vertex property 'velocity' of vertex 7 is (0, 0, inf)"));
   }
   SECTION("a NaN coordinate") {
-    writeEdited(good, bad, [](vtkUnstructuredGrid* g) { g->GetPoints()->SetPoint(2, kNaN, 0, 0); });
+    tamper(good, bad, [](vtkUnstructuredGrid* g) { g->GetPoints()->SetPoint(2, kNaN, 0, 0); });
     REQUIRE_THROWS_WITH(readTissueVtu(bad),
                         Contains(bad) && Contains("vertex 2 has the non-finite position (nan, 0, 0)"));
   }

@@ -15,6 +15,7 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include "file_edits.hpp"
 #include "io_test_support.hpp"
 #include "tessella/io/vtu.hpp"
 #include "tessella/tissue/grids.hpp"
@@ -22,18 +23,11 @@
 using namespace tessella;
 using namespace tessella::io;
 using tessella::io::testing::TempDir;
+using tessella::io::testing::readBytes;
+using tessella::io::testing::writeBytes;
 using Catch::Contains;
 
 namespace {
-
-std::string readBytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-void writeBytes(const std::string& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary | std::ios::trunc).write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-}
 
 struct ArrayInFile {
   std::string key;     // as the checksum list names it

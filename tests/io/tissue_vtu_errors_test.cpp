@@ -15,6 +15,7 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include "file_edits.hpp"
 #include "io_test_support.hpp"
 #include "tessella/io/mesh_vtu.hpp"
 #include "tessella/io/vtu.hpp"
@@ -23,30 +24,13 @@
 using namespace tessella;
 using namespace tessella::io;
 using tessella::io::testing::TempDir;
+using tessella::io::testing::tamper;
 using Catch::Contains;
 
 namespace {
 
 void writeText(const std::string& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;
-}
-
-// Reads a snapshot with VTK, lets `edit` damage it, writes it back with VTK.
-// The checksum list goes too (as an editing program must remove it), so that
-// the reader's own checks are what finds the damage; unless told to keep it.
-template <typename Edit>
-void tamper(const std::string& in, const std::string& out, Edit edit, bool keep_checksums = false) {
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
-  reader->SetFileName(in.c_str());
-  reader->Update();
-  vtkNew<vtkUnstructuredGrid> grid;
-  grid->DeepCopy(reader->GetOutput());
-  edit(grid.Get());
-  if (!keep_checksums) grid->GetFieldData()->RemoveArray("tessella_checksums");
-  vtkNew<vtkXMLUnstructuredGridWriter> writer;
-  writer->SetInputData(grid);
-  writer->SetFileName(out.c_str());
-  REQUIRE(writer->Write() == 1);
 }
 
 }  // namespace
