@@ -259,9 +259,16 @@ TissueSpec readTissueSection(const Config& c) {
   }
   if (generator == "import") {
     const std::string p = "tissue.import";
-    return ImportSpec{c.getString(p + ".file"),
-                      io::ImportOptions{c.getString(p + ".format"), c.getFloat(p + ".scale"),
-                                        c.getFloat(p + ".simplify"), c.getBool(p + ".repair")}};
+    ImportSpec spec{c.getString(p + ".file"),
+                    io::ImportOptions{c.getString(p + ".format"), c.getFloat(p + ".scale"),
+                                      c.getFloat(p + ".simplify"), c.getBool(p + ".repair")},
+                    nullptr};
+    try {
+      spec.tissue = std::make_shared<const Tissue>(io::importTissue(spec.file, spec.options).tissue);
+    } catch (const InputError& e) {
+      throw c.errorAt(p + ".file", e.what());
+    }
+    return spec;
   }
   if (generator == "snapshot") {
     SnapshotSpec snap{c.getString("tissue.snapshot.file"), nullptr, {}, {}};
@@ -351,7 +358,10 @@ struct TissueBuilder {
                                             : readSeedsCsv(d.seeds.file, 2);
     return domeTissue(seeds, d.dome, d.seeds.options);
   }
-  Tissue operator()(const ImportSpec& s) const { return io::importTissue(s.file, s.options).tissue; }
+  Tissue operator()(const ImportSpec& s) const {
+    if (!s.tissue) return io::importTissue(s.file, s.options).tissue;
+    return *s.tissue;
+  }
   Tissue operator()(const SnapshotSpec& s) const {
     if (!s.tissue) return io::readTissueVtu(s.file);
     return *s.tissue;

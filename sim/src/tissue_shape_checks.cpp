@@ -38,6 +38,8 @@ TissueShape shapeOf(const Config& c, const TissueSpec& spec) {
     return {v->dim(), v->dim() == 2 ? Embedding::Planar : Embedding::Volume,
             "tissue.voronoi.domain: " + c.getString("tissue.voronoi.domain")};
   if (std::holds_alternative<DomeSpec>(spec)) return {2, Embedding::Surface, generator};
+  if (const auto* import = std::get_if<ImportSpec>(&spec))
+    return {import->tissue->dim(), import->tissue->embedding(), "the import of " + c.getString("tissue.import.file")};
   const auto& snap = std::get<SnapshotSpec>(spec);
   return {snap.tissue->dim(), snap.tissue->embedding(),
           "the snapshot " + c.getString("tissue.snapshot.file")};

@@ -77,7 +77,7 @@ TEST_CASE("a stopped PreparedRun leaves complete snapshots listed in the .pvd", 
   CHECK(run.snapshots() == 5);  // steps 0..4
   CHECK(run.seriesPath() == (fs::path(out) / "tissue.pvd").string());
   CHECK(pvdEntries(run.seriesPath()) == 5);
-  CHECK(entriesOf(out) == std::vector<std::string>{"run.yaml", "tissue.pvd", "tissue_000000.vtu", "tissue_000001.vtu",
+  CHECK(entriesOf(out) == std::vector<std::string>{"run.yaml", "stats.csv", "tissue.pvd", "tissue_000000.vtu", "tissue_000001.vtu",
                                                    "tissue_000002.vtu", "tissue_000003.vtu", "tissue_000004.vtu"});
 }
 
@@ -106,5 +106,5 @@ TEST_CASE("overwriting a run also removes the temporaries an interrupted one lef
   std::ofstream(fs::path(out) / "notes.tmp-1-2");  // not a file of the run: kept
   PreparedRun::prepare(loadSimulationConfigFile(config, {"time.end=1"}), RunOptions{out, true}).execute();
   CHECK(entriesOf(out) ==
-        std::vector<std::string>{"notes.tmp-1-2", "run.yaml", "tissue.pvd", "tissue_000000.vtu", "tissue_000001.vtu"});
+        std::vector<std::string>{"notes.tmp-1-2", "run.yaml", "stats.csv", "tissue.pvd", "tissue_000000.vtu", "tissue_000001.vtu"});
 }

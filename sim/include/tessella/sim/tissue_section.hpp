@@ -84,6 +84,9 @@ struct SnapshotSpec {
 struct ImportSpec {
   std::string file;  ///< absolute path
   io::ImportOptions options;
+  /// Read when the config is read (as a snapshot is), so that a bad file and
+  /// every check against the tissue's dimension come before any output.
+  std::shared_ptr<const Tissue> tissue;
 };
 
 using TissueSpec = std::variant<RectangularGridSpec, HexagonalGridSpec, BoxGridSpec, VoronoiSpec, DomeSpec,
