@@ -113,7 +113,12 @@ bool tooThin(double area, double perimeter, double tol) { return !(2.0 * area > 
 /// pinched cell made CGAL's constrained triangulation fail a precondition).
 MeshabilityReport checkOutline(const Tissue& t, CellId c, const std::vector<Vec3>& loop) {
   const PolygonDefect d = polygonDefect(loop);
-  if (!d || d.kind == PolygonDefect::NoArea) return {};
+  // As validate(): a self-intersecting projection matters only where the
+  // projection measures the cell (planar, or a folded fan).
+  if (!(d.kind == PolygonDefect::Pinched ||
+        (d.kind == PolygonDefect::SelfIntersecting &&
+         (t.embedding() == Embedding::Planar || polygonTriangulation(loop).folded))))
+    return {};
   return defect("cell " + std::to_string(c.index()) + " " +
                     polygonDefectText(d, t.topology().faceVertices(t.cellFace(c)), loop),
                 ElementId{2, c.index()});
@@ -253,7 +258,8 @@ MeshabilityReport triangulateWalls(const Tissue& t, double tolerance, WallTriang
                         num(fan.area) + "; thinner than the tolerance " + num(tol) + ")",
                     ElementId{2, w.index()});
     const PolygonDefect d = polygonDefect(loop);
-    if (d && d.kind != PolygonDefect::NoArea)
+    if (d.kind == PolygonDefect::Pinched ||
+        (d.kind == PolygonDefect::SelfIntersecting && polygonTriangulation(loop).folded))
       return defect("wall " + std::to_string(w.index()) + " " + wallCellsText(t, w) + " " +
                         polygonDefectText(d, verts, loop),
                     ElementId{2, w.index()});

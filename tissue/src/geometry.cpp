@@ -191,8 +191,11 @@ PolygonDefect polygonDefect(std::span<const Vec3> loop) {
              x[1] <= std::max(p[1], r[1]);
     };
     if (d1 * d2 < 0 && d3 * d4 < 0) return true;
-    return (d1 == 0 && on(c, e, a)) || (d2 == 0 && on(c, e, b)) || (d3 == 0 && on(a, b, c)) ||
-           (d4 == 0 && on(a, b, e));
+    // Collinear within rounding: an overlap along the line. A vertex merely
+    // touching another edge within rounding is left to the pinch test.
+    if (d1 == 0 && d2 == 0 && d3 == 0 && d4 == 0)
+      return on(c, e, a) || on(c, e, b) || on(a, b, c) || on(a, b, e);
+    return false;
   };
   for (std::size_t i = 0; i < n; ++i) {
     // An edge folding back along the previous one (a spike of zero width).

@@ -284,8 +284,14 @@ void checkShapes(const Tissue& t) {
     loop.clear();
     for (VertexId v : verts) loop.push_back(t.position(v));
     const PolygonDefect d = polygonDefect(loop);
-    if (d && d.kind != PolygonDefect::NoArea) fail(2, f.index(), polygonDefectText(d, verts, loop));
-    if (t.dim() == 2) normals[f.index()] = polygonTriangulation(loop).normal;
+    const PolygonTriangulation surface = polygonTriangulation(loop);
+    // A non-planar polygon whose fan from the vertex mean does not fold is
+    // measured on that fan, whatever its projection: its outline is checked
+    // in the best-fit plane only where the projection is what measures it.
+    const bool projected = t.embedding() == Embedding::Planar || surface.folded;
+    if (d.kind == PolygonDefect::Pinched || (d.kind == PolygonDefect::SelfIntersecting && projected))
+      fail(2, f.index(), polygonDefectText(d, verts, loop));
+    if (t.dim() == 2) normals[f.index()] = surface.normal;
   }
   if (t.dim() != 2 || t.embedding() != Embedding::Surface) return;
   // A cell folded over onto its neighbour (an inverted cell of a consistently

@@ -20,7 +20,9 @@ struct ValidateOptions {
   bool check_measures = true;
   /// Check that every polygon (2D cell, 3D wall) is a simple closed curve in
   /// its best-fit plane — not pinched (two non-adjacent vertices within 1e-12
-  /// of its size) and not self-intersecting — and that no two neighbouring
+  /// of its size) and not self-intersecting (checked where the projection
+  /// measures it: planar cells, and polygons whose fan from the vertex mean
+  /// folds) — and that no two neighbouring
   /// cells of a curved sheet overlap (normals pointing opposite ways across
   /// their wall: a cell folded over or inverted). Planar inverted cells are
   /// reported by check_measures.
