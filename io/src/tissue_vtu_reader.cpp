@@ -306,6 +306,7 @@ Snapshot readSnapshot(const std::string& path) {
   ValidateOptions checks;
   checks.check_euler = false;
   checks.check_measures = false;
+  checks.check_shapes = false;
   if (const ValidationReport report = validate(tissue, checks); !report)
     src.fail("the cells do not form a valid tissue: " + report.message);
   tissue.setTime(time);

@@ -14,6 +14,7 @@
 
 #include "polygon_fan.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/geometry.hpp"
 #include "wall_triangulation.hpp"
 
 namespace tessella {
@@ -108,6 +109,21 @@ double loopPerimeter(const std::vector<Vec3>& loop) {
 /// not its area, so small but well-shaped walls of a large tissue pass.
 bool tooThin(double area, double perimeter, double tol) { return !(2.0 * area > tol * perimeter); }
 
+/// A cell's outline must be a simple closed curve in its best-fit plane (a
+/// pinched cell made CGAL's constrained triangulation fail a precondition).
+MeshabilityReport checkOutline(const Tissue& t, CellId c, const std::vector<Vec3>& loop) {
+  const PolygonDefect d = polygonDefect(loop);
+  // As validate(): a self-intersecting projection matters only where the
+  // projection measures the cell (planar, or a folded fan).
+  if (!(d.kind == PolygonDefect::Pinched ||
+        (d.kind == PolygonDefect::SelfIntersecting &&
+         (t.embedding() == Embedding::Planar || polygonTriangulation(loop).folded))))
+    return {};
+  return defect("cell " + std::to_string(c.index()) + " " +
+                    polygonDefectText(d, t.topology().faceVertices(t.cellFace(c)), loop),
+                ElementId{2, c.index()});
+}
+
 MeshabilityReport checkEdges(const Tissue& t, double tol) {
   const auto& topo = t.topology();
   for (EdgeId e : t.edges()) {
@@ -141,6 +157,7 @@ MeshabilityReport checkPlanar(const Tissue& t, double tol) {
       return defect("cell " + std::to_string(c.index()) + " has zero area (" + num(signed_area) +
                         "; thinner than the tolerance " + num(tol) + ")",
                     ElementId{2, c.index()});
+    if (auto r = checkOutline(t, c, loop); !r) return r;
   }
   // Wall edges may meet only at shared vertices.
   const auto& topo = t.topology();
@@ -180,25 +197,19 @@ MeshabilityReport checkPlanar(const Tissue& t, double tol) {
   return report;
 }
 
-/// Curved sheets: each cell's fan surface (which the mesh reproduces) must not fold.
+/// Curved sheets: each cell's outline is a simple closed curve in its
+/// best-fit plane, and the surface the tissue measures it on (its fan, or
+/// where that folds the triangulation of its outline) is what the mesh
+/// reproduces.
 MeshabilityReport checkSurface(const Tissue& t, double tol) {
   for (CellId c : t.cells()) {
     const auto loop = loopPositions(t, t.cellFace(c));
-    const FanSurface fan = fanSurface(loop);
-    if (tooThin(fan.area, loopPerimeter(loop), tol))
-      return defect("cell " + std::to_string(c.index()) + " has zero area (" + num(fan.area) +
+    const double area = polygonMeasures(loop).area;
+    if (tooThin(area, loopPerimeter(loop), tol))
+      return defect("cell " + std::to_string(c.index()) + " has zero area (" + num(area) +
                         "; thinner than the tolerance " + num(tol) + ")",
                     ElementId{2, c.index()});
-    if (!(fan.min_triangle_area > 1e-12 * fan.area)) {
-      const auto verts = t.topology().faceVertices(t.cellFace(c));
-      const std::size_t i = static_cast<std::size_t>(fan.min_triangle);
-      return defect("cell " + std::to_string(c.index()) + " folds over: its fan triangle from the vertex mean " +
-                        str(fan.center) + " to vertices " + std::to_string(verts[i].index()) + " and " +
-                        std::to_string(verts[(i + 1) % verts.size()].index()) + " has signed area " +
-                        num(fan.min_triangle_area) +
-                        " (the cell is inverted, self-intersecting or not star-shaped from its vertex mean)",
-                    ElementId{2, c.index()});
-    }
+    if (auto r = checkOutline(t, c, loop); !r) return r;
   }
   return {};
 }
@@ -246,32 +257,28 @@ MeshabilityReport triangulateWalls(const Tissue& t, double tolerance, WallTriang
       return defect("wall " + std::to_string(w.index()) + " " + wallCellsText(t, w) + " has zero area (" +
                         num(fan.area) + "; thinner than the tolerance " + num(tol) + ")",
                     ElementId{2, w.index()});
+    const PolygonDefect d = polygonDefect(loop);
+    if (d.kind == PolygonDefect::Pinched ||
+        (d.kind == PolygonDefect::SelfIntersecting && polygonTriangulation(loop).folded))
+      return defect("wall " + std::to_string(w.index()) + " " + wallCellsText(t, w) + " " +
+                        polygonDefectText(d, verts, loop),
+                    ElementId{2, w.index()});
     out.wall_normal[w.index()] = fan.normal;
-    out.points[out.centerPoint(w)] = fan.center;
-    const bool planar = fan.planarity_deviation <= tol;
-    out.wall_planar[w.index()] = planar;
-    const bool star = fan.min_triangle_area > 1e-12 * fan.area;
+    out.wall_planar[w.index()] = fan.planarity_deviation <= tol;
+    // The surface the tissue measures the wall on: its fan (from the vertex
+    // mean, or where that folds from its kernel's centroid), or the
+    // triangulation of its outline (tissue/geometry.hpp).
+    const PolygonTriangulation surface = polygonTriangulation(loop);
+    out.points[out.centerPoint(w)] = surface.center;
     auto& tris = out.wall_triangles[w.index()];
-    if (star) {
+    if (surface.fan()) {
       for (std::size_t i = 0; i < verts.size(); ++i)
         tris.push_back({out.centerPoint(w), static_cast<int>(verts[i].index()),
                         static_cast<int>(verts[(i + 1) % verts.size()].index())});
-    } else if (planar) {
-      try {
-        for (const auto& tri : triangulatePlanarLoop(loop, fan.normal, "wall", w.index()))
-          tris.push_back({static_cast<int>(verts[tri[0]].index()), static_cast<int>(verts[tri[1]].index()),
-                          static_cast<int>(verts[tri[2]].index())});
-      } catch (const GeometryError& e) {
-        return defect(std::string(e.what()) + " " + wallCellsText(t, w), ElementId{2, w.index()});
-      }
     } else {
-      const std::size_t i = static_cast<std::size_t>(fan.min_triangle);
-      return defect("wall " + std::to_string(w.index()) + " " + wallCellsText(t, w) +
-                        " is non-planar (deviation " + num(fan.planarity_deviation) +
-                        ") and its fan surface folds: the fan triangle to vertices " +
-                        std::to_string(verts[i].index()) + " and " + std::to_string(verts[(i + 1) % verts.size()].index()) +
-                        " has signed area " + num(fan.min_triangle_area),
-                    ElementId{2, w.index()});
+      for (const auto& tri : surface.triangles)
+        tris.push_back({static_cast<int>(verts[tri[0]].index()), static_cast<int>(verts[tri[1]].index()),
+                        static_cast<int>(verts[tri[2]].index())});
     }
   }
   return {};

@@ -1,8 +1,9 @@
 #pragma once
 // Internal: the fan surface of a polygon loop, as tissue/geometry.hpp measures
-// it (triangles from the mean of the loop vertices, signed against the mean
-// normal). The meshers reproduce this surface so that mesh measures equal the
-// tissue's.
+// it where it does not fold (triangles from the mean of the loop vertices,
+// signed against the mean normal; where it folds, the meshers take the
+// triangles of tessella::polygonTriangulation()). The meshers reproduce the
+// measured surface so that mesh measures equal the tissue's.
 
 #include <algorithm>
 #include <array>
@@ -83,11 +84,5 @@ inline double smallestAngleDegrees(const std::array<Vec3, 3>& c) {
   }
   return smallest;
 }
-
-/// Triangles (indices into the loop) of a simple planar polygon, by a
-/// constrained Delaunay triangulation in its plane (planar_triangulation.cpp).
-/// Throws GeometryError naming `what` if the loop is not a simple polygon.
-std::vector<std::array<int, 3>> triangulatePlanarLoop(std::span<const Vec3> loop, const Vec3& normal,
-                                                      const char* what, Index id);
 
 }  // namespace tessella::mesh_detail

@@ -1,9 +1,11 @@
-// Curved-sheet tissues (Embedding::Surface): each cell is meshed on its fan
-// surface — the triangles from the vertex mean to each loop edge that the
-// tissue's geometry measures — so mesh areas equal cell areas exactly, also
-// for non-planar cells.
+// Curved-sheet tissues (Embedding::Surface): each cell is meshed on the
+// surface the tissue's geometry measures (tessella::polygonTriangulation()):
+// the triangles from the vertex mean to each loop edge, or, for a cell whose
+// fan folds over (not star-shaped from its vertex mean), the triangles of its
+// own outline projected onto its best-fit plane and lifted back. So mesh areas
+// equal cell areas exactly, also for non-planar, non-convex cells.
 //
-// Every fan triangle is planar, so the sheet is a surface of planar pieces
+// Every such triangle is planar, so the sheet is a surface of planar pieces
 // glued along shared sides: wall edges (shared by the two cells of the wall)
 // and spokes (centre to vertex, shared by two fan triangles of one cell).
 // planar_pieces_mesher.hpp meshes it conformingly.
@@ -28,6 +30,7 @@
 #include "tessella/mesh/geometry_check.hpp"
 #include "tessella/mesh/mesh_tissue.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/geometry.hpp"
 #include "wall_segments.hpp"
 
 namespace tessella {
@@ -54,24 +57,38 @@ FeMesh meshSurfaceTissue(const Tissue& t, const MeshOptions& options) {
   std::vector<FanTriangle> fans;
   for (CellId c : t.cells()) {
     const auto verts = topo.faceVertices(t.cellFace(c));
+    const auto loop = mesh_detail::loopPositions(t, t.cellFace(c));
     const int centre = static_cast<int>(centres + c.index());
-    points[static_cast<std::size_t>(centre)] = mesh_detail::loopMean(mesh_detail::loopPositions(t, t.cellFace(c)));
-    for (std::size_t i = 0; i < verts.size(); ++i) {
-      const int a = static_cast<int>(verts[i].index()), b = static_cast<int>(verts[(i + 1) % verts.size()].index());
-      const std::array<Vec3, 3> corners{points[static_cast<std::size_t>(centre)], points[static_cast<std::size_t>(a)],
-                                        points[static_cast<std::size_t>(b)]};
+    // The surface the tissue measures the cell on: its fan from the vertex
+    // mean, or where that folds the triangles of its own outline.
+    const PolygonTriangulation surface = polygonTriangulation(loop);
+    points[static_cast<std::size_t>(centre)] = surface.center;
+    std::vector<std::array<int, 3>> triangles;
+    if (surface.fan())
+      for (std::size_t i = 0; i < verts.size(); ++i)
+        triangles.push_back({centre, static_cast<int>(verts[i].index()),
+                             static_cast<int>(verts[(i + 1) % verts.size()].index())});
+    else
+      for (const auto& tri : surface.triangles)
+        triangles.push_back({static_cast<int>(verts[tri[0]].index()), static_cast<int>(verts[tri[1]].index()),
+                             static_cast<int>(verts[tri[2]].index())});
+    for (std::size_t i = 0; i < triangles.size(); ++i) {
+      const auto& tri = triangles[i];
+      const std::array<Vec3, 3> corners{points[static_cast<std::size_t>(tri[0])], points[static_cast<std::size_t>(tri[1])],
+                                        points[static_cast<std::size_t>(tri[2])]};
       const Vec3 normal = (corners[1] - corners[0]).cross(corners[2] - corners[0]).normalized();
       if (!normal.allFinite())
-        throw GeometryError("surface mesher: cell " + std::to_string(c.index()) +
-                                " has a degenerate fan triangle at loop position " + std::to_string(i),
+        throw GeometryError("surface mesher: cell " + std::to_string(c.index()) + " has a degenerate " +
+                                (surface.fan() ? "fan triangle at loop position " : "outline triangle ") +
+                                std::to_string(i),
                             ElementId{2, c.index()});
       const double angle = mesh_detail::smallestAngleDegrees(corners);
-      pieces.push_back({{centre, a, b}, normal, options.min_angle_degrees > 0.0 && angle < options.min_angle_degrees});
+      pieces.push_back({{tri[0], tri[1], tri[2]}, normal, options.min_angle_degrees > 0.0 && angle < options.min_angle_degrees});
       fans.push_back({static_cast<int>(c.index()), static_cast<int>(i), angle});
     }
   }
   const auto owner = [&](std::size_t i) {
-    return "surface mesher: cell " + std::to_string(fans[i].cell) + " (fan triangle " +
+    return "surface mesher: cell " + std::to_string(fans[i].cell) + " (triangle " +
            std::to_string(fans[i].loop_position) + ", smallest angle " + std::to_string(fans[i].min_angle_degrees) +
            " degrees)";
   };

@@ -1,10 +1,11 @@
 #pragma once
 // Internal: every wall of a 3D tissue as triangles over one point list (the
-// tissue's vertex slots, then one fan centre per wall slot). A planar wall is
-// its fan from the vertex mean when that fan is star-shaped, else a
-// constrained Delaunay triangulation of the polygon; a non-planar wall is its
-// fan, the very surface the tissue's geometry integrates over. Triangles run
-// the same way round as the wall loop (normal = the wall's normal).
+// tissue's vertex slots, then one fan centre per wall slot): the surface the
+// tissue's geometry integrates over (tessella::polygonTriangulation()), the
+// fan from the vertex mean where it does not fold, else the triangulation of
+// the wall's outline projected onto its best-fit plane and lifted back, planar
+// or not. Triangles run the same way round as the wall loop (normal = the
+// wall's normal).
 
 #include <array>
 #include <string>
@@ -25,7 +26,7 @@ struct WallTriangulation {
 };
 
 /// Builds the triangulation and reports the first wall defect it meets
-/// (zero area, folded non-planar fan, non-simple polygon).
+/// (zero area, pinched or self-intersecting outline).
 MeshabilityReport triangulateWalls(const Tissue& t, double tolerance, WallTriangulation& out);
 
 /// The 3D part of the geometry check; fills `walls` for the volume mesher.

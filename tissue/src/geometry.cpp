@@ -1,5 +1,10 @@
 #include "tessella/tissue/geometry.hpp"
 
+#include <array>
+#include <sstream>
+#include <string>
+#include <vector>
+
 #include <Eigen/Eigenvalues>
 
 #include "polygon_kernels.hpp"
@@ -11,35 +16,60 @@ namespace {
 
 bool planar(const Tissue& t) { return t.embedding() == Embedding::Planar; }
 
-// Volume integrals of a polyhedron by the divergence theorem over the signed
-// fans of its faces, about a reference point r (the mean of face centres).
-template <typename FaceCenter>
-void polyhedronKernel(const Tissue& t, VolumeId c, FaceCenter faceCenter, bool moments,
-                      double& volume, Vec3& centroid, Mat3* second_moment) {
+// The surface a face is measured on: its vertex mean and, when the fan from
+// that mean folds, the loop's own triangles (polygon_kernels.hpp).
+struct FaceSurface {
+  Vec3 center = Vec3::Zero();              // the fan apex
+  std::vector<std::array<int, 3>> folded;  // empty: the fan from `center`
+};
+
+FaceSurface faceSurface(const Tissue& t, FaceId f) {
+  const auto loop = t.topology().faceVertices(f);
+  detail::FoldedSurface fs =
+      detail::foldedSurface(loop.size(), [&](std::size_t i) -> const Vec3& { return t.position(loop[i]); });
+  return {fs.apex, std::move(fs.triangles)};
+}
+
+// Volume integrals of a polyhedron by the divergence theorem over the
+// surfaces its faces are measured on (signed fans from the face centres, or a
+// folded face's own triangles), about a reference point r (the mean of face
+// centres). surface(i) is the surface of the cell's i-th face.
+template <typename Surface>
+void polyhedronKernel(const Tissue& t, VolumeId c, Surface surface, bool moments, double& volume, Vec3& centroid,
+                      Mat3* second_moment) {
   const CellComplex& k = t.topology();
   const auto faces = k.volumeFaces(c);
   Vec3 r = Vec3::Zero();
-  for (OrientedFace of : faces) r += faceCenter(of.handle());
+  for (std::size_t i = 0; i < faces.size(); ++i) r += surface(i).center;
   r /= static_cast<double>(faces.size());
   double v6 = 0;
   Vec3 first = Vec3::Zero();
   Mat3 second = Mat3::Zero();
-  for (OrientedFace of : faces) {
-    const FaceId f = of.handle();
-    const Vec3 a = faceCenter(f) - r;
-    const auto loop = k.faceVertices(f);
+  const auto add = [&](const Vec3& a, const Vec3& b, const Vec3& d) {
+    const double w = a.dot(b.cross(d));  // 6 x signed tetrahedron volume
+    v6 += w;
+    const Vec3 s = a + b + d;
+    first += w * s;
+    if (moments) second += w * (a * a.transpose() + b * b.transpose() + d * d.transpose() + s * s.transpose());
+  };
+  for (std::size_t fi = 0; fi < faces.size(); ++fi) {
+    const OrientedFace of = faces[fi];
+    const FaceSurface& fs = surface(fi);
+    const auto loop = k.faceVertices(of.handle());
+    if (!fs.folded.empty()) {
+      for (const auto& tri : fs.folded) {
+        const Vec3 a = t.position(loop[tri[0]]) - r;
+        const Vec3 b = t.position(loop[tri[1]]) - r, d = t.position(loop[tri[2]]) - r;
+        of.reversed() ? add(a, d, b) : add(a, b, d);
+      }
+      continue;
+    }
+    const Vec3 a = fs.center - r;
     const std::size_t n = loop.size();
     Vec3 p = t.position(loop[n - 1]) - r;
     for (std::size_t i = 0; i < n; ++i) {
       const Vec3 q = t.position(loop[i]) - r;
-      const Vec3& b = of.reversed() ? q : p;
-      const Vec3& d = of.reversed() ? p : q;
-      const double w = a.dot(b.cross(d));  // 6 x signed tetrahedron volume
-      v6 += w;
-      const Vec3 s = a + b + d;
-      first += w * s;
-      if (moments)
-        second += w * (a * a.transpose() + b * b.transpose() + d * d.transpose() + s * s.transpose());
+      of.reversed() ? add(a, q, p) : add(a, p, q);
       p = q;
     }
   }
@@ -49,11 +79,14 @@ void polyhedronKernel(const Tissue& t, VolumeId c, FaceCenter faceCenter, bool m
   if (moments && second_moment) *second_moment = second / 120.0 - volume * g * g.transpose();
 }
 
-Vec3 vertexMean(const Tissue& t, FaceId f) {
-  const auto loop = t.topology().faceVertices(f);
-  Vec3 c = Vec3::Zero();
-  for (VertexId v : loop) c += t.position(v);
-  return c / static_cast<double>(loop.size());
+/// The per-element form: the surfaces of the cell's faces, computed once.
+void polyhedronKernel(const Tissue& t, VolumeId c, bool moments, double& volume, Vec3& centroid,
+                      Mat3* second_moment) {
+  std::vector<FaceSurface> surfaces;
+  for (OrientedFace of : t.topology().volumeFaces(c)) surfaces.push_back(faceSurface(t, of.handle()));
+  polyhedronKernel(
+      t, c, [&](std::size_t i) -> const FaceSurface& { return surfaces[i]; }, moments, volume, centroid,
+      second_moment);
 }
 
 // Measures of every face into the cache (sized by the caller).
@@ -112,6 +145,98 @@ Vec3 edgeMidpoint(const Tissue& t, EdgeId e) {
   return 0.5 * (t.position(ev[0]) + t.position(ev[1]));
 }
 
+PolygonTriangulation polygonTriangulation(std::span<const Vec3> loop) {
+  if (loop.size() < 3) throw GeometryError("a polygon needs at least 3 points");
+  PolygonTriangulation out;
+  const auto at = [&](std::size_t i) -> const Vec3& { return loop[i]; };
+  for (const Vec3& p : loop) out.center += p;
+  out.center /= static_cast<double>(loop.size());
+  Vec3 vec_area = Vec3::Zero();
+  for (std::size_t i = 0; i < loop.size(); ++i)
+    vec_area += (loop[(i + loop.size() - 1) % loop.size()] - out.center).cross(loop[i] - out.center);
+  if (vec_area.norm() > 0) out.normal = vec_area / vec_area.norm();
+  detail::FoldedSurface fs = detail::foldedSurface(loop.size(), at);
+  out.center = fs.apex;
+  out.folded = fs.folded;
+  out.triangles = std::move(fs.triangles);
+  return out;
+}
+
+PolygonDefect polygonDefect(std::span<const Vec3> loop) {
+  const std::size_t n = loop.size();
+  PolygonDefect d;
+  if (n < 3) return d;
+  Vec3 lo = loop[0], hi = loop[0], mean = Vec3::Zero();
+  for (const Vec3& p : loop) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p), mean += p;
+  mean /= static_cast<double>(n);
+  const double tiny = 1e-12 * (hi - lo).norm();
+  const auto adjacent = [n](std::size_t i, std::size_t j) { return j == i + 1 || (i == 0 && j == n - 1); };
+  for (std::size_t i = 0; i < n; ++i)
+    for (std::size_t j = i + 1; j < n; ++j)
+      if (!adjacent(i, j) && (loop[i] - loop[j]).norm() <= tiny)
+        return {PolygonDefect::Pinched, static_cast<int>(i), static_cast<int>(j)};
+  Vec3 vec_area = Vec3::Zero();
+  for (std::size_t i = 0; i < n; ++i) vec_area += (loop[(i + n - 1) % n] - mean).cross(loop[i] - mean);
+  if (!(vec_area.norm() > 0)) return {PolygonDefect::NoArea, 0, 0};
+  const Vec3 normal = vec_area.normalized();
+  const Vec3 e1 = normal.unitOrthogonal(), e2 = normal.cross(e1);
+  std::vector<std::array<double, 2>> q(n);
+  for (std::size_t i = 0; i < n; ++i) q[i] = {(loop[i] - mean).dot(e1), (loop[i] - mean).dot(e2)};
+  // Closed segments [a, b] and [c, e] meet (orientations within rounding count as collinear).
+  const auto meet = [&](const auto& a, const auto& b, const auto& c, const auto& e) {
+    const int d1 = detail::orient2Sign(c, e, a), d2 = detail::orient2Sign(c, e, b);
+    const int d3 = detail::orient2Sign(a, b, c), d4 = detail::orient2Sign(a, b, e);
+    const auto on = [](const auto& p, const auto& r, const auto& x) {
+      return std::min(p[0], r[0]) <= x[0] && x[0] <= std::max(p[0], r[0]) && std::min(p[1], r[1]) <= x[1] &&
+             x[1] <= std::max(p[1], r[1]);
+    };
+    if (d1 * d2 < 0 && d3 * d4 < 0) return true;
+    // Collinear within rounding: an overlap along the line. A vertex merely
+    // touching another edge within rounding is left to the pinch test.
+    if (d1 == 0 && d2 == 0 && d3 == 0 && d4 == 0)
+      return on(c, e, a) || on(c, e, b) || on(a, b, c) || on(a, b, e);
+    return false;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    // An edge folding back along the previous one (a spike of zero width).
+    const auto &a = q[(i + n - 1) % n], &b = q[i], &c = q[(i + 1) % n];
+    if (detail::orient2Sign(a, b, c) == 0 && (a[0] - b[0]) * (c[0] - b[0]) + (a[1] - b[1]) * (c[1] - b[1]) > 0)
+      return {PolygonDefect::SelfIntersecting, static_cast<int>((i + n - 1) % n), static_cast<int>(i)};
+    for (std::size_t j = i + 2; j < n; ++j) {
+      if (i == 0 && j == n - 1) continue;
+      if (meet(q[i], q[(i + 1) % n], q[j], q[(j + 1) % n]))
+        return {PolygonDefect::SelfIntersecting, static_cast<int>(i), static_cast<int>(j)};
+    }
+  }
+  return d;
+}
+
+std::string polygonDefectText(const PolygonDefect& d, std::span<const VertexId> vertices,
+                              std::span<const Vec3> loop) {
+  const std::size_t n = loop.size();
+  const auto vid = [&](int i) {
+    const auto k = static_cast<std::size_t>(i) % n;
+    return std::to_string(vertices.empty() ? static_cast<Index>(k) : vertices[k].index());
+  };
+  switch (d.kind) {
+    case PolygonDefect::None:
+      return {};
+    case PolygonDefect::Pinched: {
+      std::ostringstream gap;
+      gap.precision(3);
+      gap << (loop[static_cast<std::size_t>(d.first)] - loop[static_cast<std::size_t>(d.second)]).norm();
+      return "is pinched: its non-adjacent vertices " + vid(d.first) + " and " + vid(d.second) + " are " +
+             gap.str() + " apart (at most 1e-12 of the cell's size)";
+    }
+    case PolygonDefect::SelfIntersecting:
+      return "has a self-intersecting outline (in its best-fit plane): its edges " + vid(d.first) + "-" +
+             vid(d.first + 1) + " and " + vid(d.second) + "-" + vid(d.second + 1) + " (vertex ids) cross or touch";
+    case PolygonDefect::NoArea:
+      return "has no vector area (a degenerate outline)";
+  }
+  return {};
+}
+
 PolygonMeasures polygonMeasures(std::span<const Vec3> loop) {
   if (loop.size() < 3) throw GeometryError("a polygon needs at least 3 points");
   PolygonMeasures m;
@@ -132,9 +257,7 @@ PolygonMeasures polygonMeasures(const Tissue& t, FaceId f) {
 
 PolyhedronMeasures polyhedronMeasures(const Tissue& t, VolumeId c) {
   PolyhedronMeasures m;
-  polyhedronKernel(
-      t, c, [&](FaceId f) { return vertexMean(t, f); }, true, m.volume, m.centroid,
-      &m.second_moment);
+  polyhedronKernel(t, c, true, m.volume, m.centroid, &m.second_moment);
   for (OrientedFace of : t.topology().volumeFaces(c)) m.surface_area += polygonMeasures(t, of.handle()).area;
   return m;
 }
@@ -154,8 +277,7 @@ double cellMeasure(const Tissue& t, CellId c) {
   }
   double v = 0;
   Vec3 g;
-  polyhedronKernel(
-      t, VolumeId(c.index()), [&](FaceId f) { return vertexMean(t, f); }, false, v, g, nullptr);
+  polyhedronKernel(t, VolumeId(c.index()), false, v, g, nullptr);
   return v;
 }
 
@@ -209,11 +331,11 @@ void recomputeGeometry(const Tissue& t, GeometryCache& cache, const GeometryOpti
   if (t.dim() == 3) {
     const auto& vol_alive = k.aliveFlags(3);
     const std::int64_t nc = static_cast<std::int64_t>(k.slots(3));
-    // Face vertex means, shared by the two volumes of each face.
-    std::vector<Vec3> centers(nf);
+    // Face surfaces (vertex mean, folded triangles), shared by the two volumes of each face.
+    std::vector<FaceSurface> surfaces(nf);
 #pragma omp parallel for schedule(static)
     for (std::int64_t f = 0; f < nf; ++f)
-      centers[f] = face_alive[f] ? vertexMean(t, FaceId(static_cast<Index>(f))) : Vec3::Zero();
+      if (face_alive[f]) surfaces[f] = faceSurface(t, FaceId(static_cast<Index>(f)));
     cache.volume.resize(nc);
     cache.volume_surface.resize(nc);
     cache.volume_centroid.resize(nc);
@@ -227,9 +349,10 @@ void recomputeGeometry(const Tissue& t, GeometryCache& cache, const GeometryOpti
         continue;
       }
       const VolumeId vc(static_cast<Index>(c));
+      const auto faces_of = k.volumeFaces(vc);
       Mat3 m;
       polyhedronKernel(
-          t, vc, [&](FaceId f) -> const Vec3& { return centers[f.index()]; }, moments,
+          t, vc, [&](std::size_t i) -> const FaceSurface& { return surfaces[faces_of[i].handle().index()]; }, moments,
           cache.volume[c], cache.volume_centroid[c], moments ? &m : nullptr);
       if (moments) cache.volume_second_moment[c] = Sym3::fromMatrix(m);
       double s = 0;

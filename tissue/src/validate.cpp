@@ -4,7 +4,6 @@
 #include <numeric>
 #include <string>
 #include <unordered_map>
-#include <functional>
 #include <unordered_set>
 
 #include "tessella/tissue/errors.hpp"
@@ -147,63 +146,109 @@ void checkOrientation2D(const Tissue& t) {
   }
 }
 
+// Euler characteristic, per piece: cells connected through shared walls
+// (edges in 2D, faces in 3D). Pieces that touch only at a vertex or along an
+// edge are checked apart, each with its own copy of what they share, and so
+// is a piece that touches itself there: a vertex (3D: also an edge) counts
+// once per "umbrella", a set of the piece's cells around it connected through
+// walls containing it. That is the characteristic of the piece with its
+// pinch points pulled apart, which is a disk with b - 1 holes (2D: V-E+F =
+// 2 - b, b boundary loops traced through the umbrellas) or a solid ball (3D:
+// V-E+F-C = 1). For a tissue with no pinch points this is the usual count.
 void checkEuler(const Tissue& t) {
   const CellComplex& k = t.topology();
   const int D = t.dim();
   const Index ncells = static_cast<Index>(t.cellSlots());
-  UnionFind uf(ncells);
+  UnionFind pieces(ncells);
   for (WallId w : t.walls()) {
     const auto cells = t.wallCells(w);
-    for (std::size_t i = 1; i < cells.size(); ++i) uf.unite(cells[0].index(), cells[i].index());
+    for (std::size_t i = 1; i < cells.size(); ++i) pieces.unite(cells[0].index(), cells[i].index());
   }
-  // Count elements per component, each element once, by the component of any cell it touches.
-  std::unordered_map<Index, long> chi;
-  std::vector<Index> vcomp(k.slots(0), kInvalidIndex), ecomp(k.slots(1), kInvalidIndex), fcomp(k.slots(2), kInvalidIndex);
-  for (CellId c : t.cells()) {
-    const Index comp = uf.find(c.index());
-    chi[comp] += (D == 2 ? 1 : -1);
+  // Incidence nodes (cell, vertex) and, in 3D, (cell, edge); united across walls into umbrellas.
+  std::unordered_map<std::uint64_t, Index> node_of;
+  const auto key = [](Index cell, int degree, Index element) {
+    return (static_cast<std::uint64_t>(cell) << 33) | (static_cast<std::uint64_t>(degree) << 32) |
+           static_cast<std::uint64_t>(static_cast<std::uint32_t>(element));
+  };
+  std::vector<Index> node_piece;
+  std::vector<int> node_degree;
+  const auto node = [&](Index cell, int degree, Index element) {
+    auto [it, fresh] = node_of.emplace(key(cell, degree, element), static_cast<Index>(node_piece.size()));
+    if (fresh) {
+      node_piece.push_back(pieces.find(cell));
+      node_degree.push_back(degree);
+    }
+    return it->second;
+  };
+  const auto cellFaces = [&](CellId c) {
     std::vector<FaceId> faces;
     if (D == 2) faces.push_back(FaceId(c.index()));
-    else for (OrientedFace of : k.volumeFaces(VolumeId(c.index()))) faces.push_back(of.handle());
-    for (FaceId f : faces) {
-      if (D == 3 && fcomp[f.index()] == kInvalidIndex) { fcomp[f.index()] = comp; chi[comp] += 1; }
+    else
+      for (OrientedFace of : k.volumeFaces(VolumeId(c.index()))) faces.push_back(of.handle());
+    return faces;
+  };
+  std::unordered_map<Index, long> chi;
+  for (CellId c : t.cells()) {
+    chi[pieces.find(c.index())] += (D == 2 ? 1 : -1);
+    for (FaceId f : cellFaces(c))
       for (OrientedEdge oe : k.faceEdges(f)) {
-        const EdgeId e = oe.handle();
-        if (ecomp[e.index()] == kInvalidIndex) { ecomp[e.index()] = comp; chi[comp] -= 1; }
-        const VertexId v = k.tail(oe);
-        if (vcomp[v.index()] == kInvalidIndex) { vcomp[v.index()] = comp; chi[comp] += 1; }
+        node(c.index(), 0, k.tail(oe).index());
+        if (D == 3) node(c.index(), 1, oe.handle().index());
+      }
+  }
+  UnionFind umbrellas(node_piece.size());
+  for (WallId w : t.walls()) {
+    const auto cells = t.wallCells(w);
+    if (cells.size() < 2) continue;
+    const FaceId f(w.index());
+    for (std::size_t i = 1; i < cells.size(); ++i) {
+      const Index a = cells[0].index(), b = cells[i].index();
+      if (D == 2) {
+        for (VertexId v : k.edgeVertices(EdgeId(w.index()))) umbrellas.unite(node(a, 0, v.index()), node(b, 0, v.index()));
+        continue;
+      }
+      for (OrientedEdge oe : k.faceEdges(f)) {
+        umbrellas.unite(node(a, 0, k.tail(oe).index()), node(b, 0, k.tail(oe).index()));
+        umbrellas.unite(node(a, 1, oe.handle().index()), node(b, 1, oe.handle().index()));
       }
     }
   }
+  // Walls are counted once (each lies in one piece); in 2D the faces are the cells.
+  if (D == 2) {
+    for (EdgeId e : t.edges()) chi[pieces.find(k.edgeFaces(e)[0].index())] -= 1;
+  } else {
+    for (FaceId f : t.faces()) chi[pieces.find(k.faceVolumes(f)[0].index())] += 1;
+  }
+  for (std::size_t n = 0; n < node_piece.size(); ++n)
+    if (umbrellas.find(static_cast<Index>(n)) == static_cast<Index>(n)) chi[node_piece[n]] += node_degree[n] == 0 ? 1 : -1;
   if (D == 3) {
-    for (const auto& [comp, x] : chi)
+    for (const auto& [piece, x] : chi)
       if (x != 1)
-        fail(3, comp, "its connected component has Euler characteristic V-E+F-C = " + std::to_string(x) +
-                          ", expected 1 for a solid ball (a tunnel, cavity or broken incidence?)");
+        fail(3, piece, "its piece (cells connected through walls) has Euler characteristic V-E+F-C = " +
+                           std::to_string(x) + ", expected 1 for a solid ball (a tunnel, cavity or broken incidence?)");
     return;
   }
-  // 2D: genus 0 with b boundary loops -> chi = 2 - b. Boundary loops are the
-  // components of the graph of boundary edges.
-  std::unordered_map<Index, Index> vparent;
-  std::function<Index(Index)> root = [&](Index x) {
-    while (vparent[x] != x) x = vparent[x] = vparent[vparent[x]];
-    return x;
-  };
+  // 2D: boundary loops are the components of the boundary edges joining the umbrellas of their ends.
+  UnionFind loops_uf(node_piece.size());
+  std::vector<std::uint8_t> on_boundary(node_piece.size(), 0);
   for (EdgeId e : t.edges()) {
-    if (k.edgeFaces(e).size() != 1) continue;
+    const auto faces = k.edgeFaces(e);
+    if (faces.size() != 1) continue;
     const auto ev = k.edgeVertices(e);
-    for (VertexId v : ev) vparent.try_emplace(v.index(), v.index());
-    vparent[root(ev[0].index())] = root(ev[1].index());
+    const Index a = umbrellas.find(node(faces[0].index(), 0, ev[0].index()));
+    const Index b = umbrellas.find(node(faces[0].index(), 0, ev[1].index()));
+    on_boundary[a] = on_boundary[b] = 1;
+    loops_uf.unite(a, b);
   }
   std::unordered_map<Index, long> loops;
-  for (auto& [v, p] : vparent)
-    if (root(v) == v) loops[vcomp[v]] += 1;
-  for (const auto& [comp, x] : chi) {
-    const long b = loops.count(comp) ? loops[comp] : 0;
+  for (std::size_t n = 0; n < node_piece.size(); ++n)
+    if (on_boundary[n] && loops_uf.find(static_cast<Index>(n)) == static_cast<Index>(n)) loops[node_piece[n]] += 1;
+  for (const auto& [piece, x] : chi) {
+    const long b = loops.count(piece) ? loops[piece] : 0;
     if (x != 2 - b)
-      fail(2, comp, "its connected component has Euler characteristic V-E+F = " + std::to_string(x) + " with " +
-                        std::to_string(b) + " boundary loop(s); expected " + std::to_string(2 - b) +
-                        " for a genus-0 sheet (a handle or broken incidence?)");
+      fail(2, piece, "its piece (cells connected through walls) has Euler characteristic V-E+F = " +
+                         std::to_string(x) + " with " + std::to_string(b) + " boundary loop(s); expected " +
+                         std::to_string(2 - b) + " for a genus-0 sheet (a handle or broken incidence?)");
   }
 }
 
@@ -228,6 +273,42 @@ void checkMeasures(const Tissue& t) {
     }
 }
 
+/// Every polygon (2D cell, 3D wall) is a simple closed curve in its best-fit
+/// plane; in a curved sheet, no two neighbours fold onto each other.
+void checkShapes(const Tissue& t) {
+  const CellComplex& k = t.topology();
+  std::vector<Vec3> loop;
+  std::vector<Vec3> normals(t.dim() == 2 ? k.slots(2) : 0, Vec3::Zero());
+  for (FaceId f : t.faces()) {
+    const auto verts = k.faceVertices(f);
+    loop.clear();
+    for (VertexId v : verts) loop.push_back(t.position(v));
+    const PolygonDefect d = polygonDefect(loop);
+    const PolygonTriangulation surface = polygonTriangulation(loop);
+    // A non-planar polygon whose fan from the vertex mean does not fold is
+    // measured on that fan, whatever its projection: its outline is checked
+    // in the best-fit plane only where the projection is what measures it.
+    const bool projected = t.embedding() == Embedding::Planar || surface.folded;
+    if (d.kind == PolygonDefect::Pinched || (d.kind == PolygonDefect::SelfIntersecting && projected))
+      fail(2, f.index(), polygonDefectText(d, verts, loop));
+    if (t.dim() == 2) normals[f.index()] = surface.normal;
+  }
+  if (t.dim() != 2 || t.embedding() != Embedding::Surface) return;
+  // A cell folded over onto its neighbour (an inverted cell of a consistently
+  // oriented sheet) turns its normal against the neighbour's.
+  for (EdgeId e : t.edges()) {
+    const auto faces = k.edgeFaces(e);
+    if (faces.size() != 2) continue;
+    if (normals[faces[0].index()].dot(normals[faces[1].index()]) < 0) {
+      const auto ev = k.edgeVertices(e);
+      fail(2, faces[1].index(),
+           "overlaps its neighbour cell " + std::to_string(faces[0].index()) + ": their normals point opposite ways across wall " +
+               std::to_string(e.index()) + " (vertices " + std::to_string(ev[0].index()) + " and " +
+               std::to_string(ev[1].index()) + "); one of them is folded over or inverted");
+    }
+  }
+}
+
 }  // namespace
 
 ValidationReport validate(const Tissue& t, const ValidateOptions& options) {
@@ -236,6 +317,7 @@ ValidationReport validate(const Tissue& t, const ValidateOptions& options) {
     if (t.dim() == 2 && options.check_orientation) checkOrientation2D(t);
     if (options.check_euler) checkEuler(t);
     if (options.check_measures) checkMeasures(t);
+    if (options.check_shapes) checkShapes(t);
   } catch (const Fail& f) {
     return f.report;
   }

@@ -3,15 +3,34 @@
 //
 // Polygons (2D cells, 3D walls) are measured as a fan of triangles from the
 // mean of their loop vertices, each triangle signed against the polygon's
-// mean normal (the normalised vector area). For a planar loop this is exact
-// for any simple polygon, convex or not; for a non-planar loop on a curved
+// mean normal (the normalised vector area), wherever that fan does not fold:
+// every fan triangle's signed area is above 1e-12 of the fan's area (the
+// polygon is star-shaped from its vertex mean). For a planar loop the signed
+// fan is exact for any simple polygon; for a non-planar loop on a curved
 // tissue it is the area of that fan surface, well defined and independent of
-// the loop's starting vertex. Reversing a loop flips the normal only.
-// Polyhedra use the divergence theorem over the same fans with each wall's
-// outward sign, so neighbouring cells share exactly the same wall surface and
-// their volumes add up to the tissue's.
+// the loop's starting vertex.
+//
+// Where the fan folds (a non-convex cell not star-shaped from its vertex
+// mean, common in real tissues), the loop is projected onto the plane through
+// its vertex mean normal to its vector area (its best-fit plane). If the
+// projected polygon is star-shaped from somewhere (its kernel has area), the
+// polygon is measured on the fan from the kernel's centroid, placed in that
+// plane: the same kind of surface as the ordinary fan, only from an apex that
+// sees the whole outline. Otherwise it is measured on a triangulation of its
+// own outline: the projected polygon is triangulated by ear clipping
+// (best-shaped ear first, so the result does not depend on the start vertex
+// or direction) and the triangles are lifted back to the 3D vertex positions.
+// See polygonTriangulation(). Both are exact for a simple planar polygon.
+// Planar 2D tissues keep their shoelace formula, exact for any simple polygon.
+// Reversing a loop flips the normal only.
+//
+// Polyhedra use the divergence theorem over the same surfaces (fans or folded
+// walls' triangles) with each wall's outward sign, so neighbouring cells share
+// exactly the same wall surface and their volumes add up to the tissue's.
 
+#include <array>
 #include <span>
+#include <string>
 #include <vector>
 
 #include "tessella/tissue/tissue.hpp"
@@ -46,6 +65,41 @@ struct PrincipalAxes {
 PrincipalAxes principalAxes(const Mat3& second_moment);
 /// Inertia tensor (unit density) from a second-moment tensor: tr(S) I - S.
 Mat3 inertiaTensor(const Mat3& second_moment);
+
+/// The surface a polygon loop is measured (and meshed) on: the fan from
+/// `center` when `triangles` is empty, else those triangles (loop positions,
+/// counter-clockwise about `normal`, lifted to the loop's points). `center`
+/// is the vertex mean unless the fan from it folds (`folded`); then it is
+/// the centroid of the kernel of the loop's projection (in the plane through
+/// the vertex mean), or, when that kernel is empty, `triangles` is the loop's
+/// ear-clipped triangulation. `normal` is the unit vector-area normal (zero
+/// for a loop without vector area, which is then measured on its fan).
+struct PolygonTriangulation {
+  Vec3 center = Vec3::Zero();
+  Vec3 normal = Vec3::Zero();
+  bool folded = false;
+  std::vector<std::array<int, 3>> triangles;
+  bool fan() const { return triangles.empty(); }
+};
+PolygonTriangulation polygonTriangulation(std::span<const Vec3> loop);
+
+/// What makes a loop other than a simple closed curve in its best-fit plane
+/// (the plane normal to its vector area): two non-adjacent vertices within
+/// 1e-12 of the loop's size (bounding-box diagonal) of each other (pinched),
+/// or two edges that cross or touch, or an edge folding back onto the next
+/// one (self-intersecting). `first`, `second`: loop positions of the two
+/// vertices, or of the first vertices of the two edges.
+struct PolygonDefect {
+  enum Kind { None, Pinched, SelfIntersecting, NoArea };
+  Kind kind = None;
+  int first = -1;
+  int second = -1;
+  explicit operator bool() const { return kind != None; }
+};
+PolygonDefect polygonDefect(std::span<const Vec3> loop);
+/// "pinched: vertices 3 and 7 coincide ..." naming the loop's vertex ids.
+std::string polygonDefectText(const PolygonDefect& d, std::span<const VertexId> vertices,
+                              std::span<const Vec3> loop);
 
 // --- per element, straight from the borders ----------------------------------
 double edgeLength(const Tissue& t, EdgeId e);

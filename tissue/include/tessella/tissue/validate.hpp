@@ -10,12 +10,23 @@
 namespace tessella {
 
 struct ValidateOptions {
-  /// Check the Euler characteristic: per connected component, V-E+F = 2 - b
-  /// in 2D (a sphere with b holes, i.e. genus 0) and V-E+F-C = 1 in 3D (a
-  /// solid ball). Disable for tissues with handles or cavities.
+  /// Check the Euler characteristic: per piece (cells connected through
+  /// walls; pieces touching only at a vertex or along an edge are counted
+  /// apart, each with its own copy of what they share), V-E+F = 2 - b in 2D
+  /// (a sphere with b holes, i.e. genus 0) and V-E+F-C = 1 in 3D (a solid
+  /// ball). Disable for tissues with handles or cavities.
   bool check_euler = true;
   /// Check that every live edge, face and cell has a positive measure.
   bool check_measures = true;
+  /// Check that every polygon (2D cell, 3D wall) is a simple closed curve in
+  /// its best-fit plane — not pinched (two non-adjacent vertices within 1e-12
+  /// of its size) and not self-intersecting (checked where the projection
+  /// measures it: planar cells, and polygons whose fan from the vertex mean
+  /// folds) — and that no two neighbouring
+  /// cells of a curved sheet overlap (normals pointing opposite ways across
+  /// their wall: a cell folded over or inverted). Planar inverted cells are
+  /// reported by check_measures.
+  bool check_shapes = true;
   /// Check that 2D cells sharing an edge traverse it in opposite directions
   /// (a consistently oriented sheet).
   bool check_orientation = true;
