@@ -125,15 +125,8 @@ case "$case_name" in
     ;;
   mesh_every_config)
     # Every bundled configuration's initial tissue meshes, with cell measures kept.
-    # [needs-robust-geometry] Real cells that are not star-shaped from their
-    # vertex mean make the mesher refuse the tissue ("cell 14 folds over") until
-    # the robust geometry of issue 14 part 1 lands; remove the name then.
-    needs_robust_geometry=" real_meristem "
     for config in "$src"/configs/*.yaml; do
       name="$(basename "$config" .yaml)"
-      case "$needs_robust_geometry" in
-        *" $name "*) echo "SKIPPED $name: needs robust geometry (cells not star-shaped from their vertex mean)"; continue ;;
-      esac
       "$tessella" run "$config" --out "$tmp/$name" -q --set time.end=0 2>"$tmp/stderr" \
         || fail "$name: run failed: $(cat "$tmp/stderr")"
       snapshot="$tmp/$name/tissue_000000.vtu"  # no bundled config renames the series

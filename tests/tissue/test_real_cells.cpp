@@ -272,13 +272,15 @@ TEST_CASE("validate reports a pinched cell with its vertices", "[tissue][validat
 }
 
 TEST_CASE("validate reports a self-intersecting outline", "[tissue][validate][real]") {
+  ValidateOptions crossings;
+  crossings.check_self_intersection = true;
   // A bow tie with unequal lobes (positive net area), planar and curved.
   for (Embedding e : {Embedding::Planar, Embedding::Surface}) {
     std::vector<Vec3> p{{0, 0, 0}, {3, 3, 0}, {3, 0, 0}, {0, 1, 0}};
     if (e == Embedding::Surface)
       for (Vec3& v : p) v.z() = 0.05 * v.x() * v.y();
     const Tissue t = singlePolygon(p, e);
-    const ValidationReport r = validate(t);
+    const ValidationReport r = validate(t, crossings);
     INFO(r.message);
     CHECK_FALSE(r.ok);
     CHECK(r.message.find("self-intersecting") != std::string::npos);
@@ -286,7 +288,7 @@ TEST_CASE("validate reports a self-intersecting outline", "[tissue][validate][re
   // A spike: an edge running back along the previous one.
   const Tissue spike = singlePolygon({{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {1, 1, 0}, {1.5, 1.5, 0}, {0, 2, 0}},
                                      Embedding::Surface);
-  CHECK(validate(spike).message.find("self-intersecting") != std::string::npos);
+  CHECK(validate(spike, crossings).message.find("self-intersecting") != std::string::npos);
 }
 
 TEST_CASE("validate reports a curved-sheet cell folded over onto its neighbour", "[tissue][validate][real]") {

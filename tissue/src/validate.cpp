@@ -275,7 +275,7 @@ void checkMeasures(const Tissue& t) {
 
 /// Every polygon (2D cell, 3D wall) is a simple closed curve in its best-fit
 /// plane; in a curved sheet, no two neighbours fold onto each other.
-void checkShapes(const Tissue& t) {
+void checkShapes(const Tissue& t, bool self_intersection) {
   const CellComplex& k = t.topology();
   std::vector<Vec3> loop;
   std::vector<Vec3> normals(t.dim() == 2 ? k.slots(2) : 0, Vec3::Zero());
@@ -289,7 +289,7 @@ void checkShapes(const Tissue& t) {
     // measured on that fan, whatever its projection: its outline is checked
     // in the best-fit plane only where the projection is what measures it.
     const bool projected = t.embedding() == Embedding::Planar || surface.folded;
-    if (d.kind == PolygonDefect::Pinched || (d.kind == PolygonDefect::SelfIntersecting && projected))
+    if (d.kind == PolygonDefect::Pinched || (self_intersection && d.kind == PolygonDefect::SelfIntersecting && projected))
       fail(2, f.index(), polygonDefectText(d, verts, loop));
     if (t.dim() == 2) normals[f.index()] = surface.normal;
   }
@@ -317,7 +317,7 @@ ValidationReport validate(const Tissue& t, const ValidateOptions& options) {
     if (t.dim() == 2 && options.check_orientation) checkOrientation2D(t);
     if (options.check_euler) checkEuler(t);
     if (options.check_measures) checkMeasures(t);
-    if (options.check_shapes) checkShapes(t);
+    if (options.check_shapes) checkShapes(t, options.check_self_intersection);
   } catch (const Fail& f) {
     return f.report;
   }
