@@ -346,25 +346,9 @@ inline void polygonKernel(std::size_t n, At at, bool planar, bool moments, doubl
   }
   const double len = vec_area.norm();
   normal = len > 0 ? Vec3(vec_area / len) : Vec3::Zero();
-  double a = 0, min_ti = std::numeric_limits<double>::infinity();
-  Vec3 first = Vec3::Zero();
-  Mat3 second = Mat3::Zero();
-  p = at(n - 1) - c0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 q = at(i) - c0;
-    const Vec3 t = p.cross(q);
-    const double tn = t.norm();
-    const double ti = 0.5 * (t.dot(normal) < 0 ? -tn : tn);
-    a += ti;
-    min_ti = std::min(min_ti, ti);
-    first += ti * (p + q) / 3.0;
-    if (moments) {
-      const Vec3 s = p + q;
-      second += (ti / 12.0) * (p * p.transpose() + q * q.transpose() + s * s.transpose());
-    }
-    p = q;
-  }
-  if (len > 0 && !(min_ti > kFoldTolerance * a)) {
+  double min_ti = 0;
+  fanKernel(n, at, c0, normal, moments, area, centroid, second_moment, min_ti);
+  if (len > 0 && !(min_ti > kFoldTolerance * area)) {
     // The fan folds over: the fan from the kernel's centroid, or the loop's own triangles (see foldedSurface).
     const FoldedSurface f = foldedSurface(n, at);
     double kmin;
@@ -372,12 +356,7 @@ inline void polygonKernel(std::size_t n, At at, bool planar, bool moments, doubl
       fanKernel(n, at, f.apex, normal, moments, area, centroid, second_moment, kmin);
     else
       trianglesKernel(f.triangles, at, c0, normal, moments, area, centroid, second_moment);
-    return;
   }
-  area = a;
-  const Vec3 g = a != 0 ? Vec3(first / a) : Vec3::Zero();
-  centroid = c0 + g;
-  if (moments && second_moment) *second_moment = second - a * g * g.transpose();
 }
 
 }  // namespace tessella::detail
