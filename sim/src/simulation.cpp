@@ -54,8 +54,14 @@ std::string continueRunState(const io::RunState& state, double snapshot_time, st
   }
   std::uint64_t saved_seed = 0;
   const std::string *saved = value("rng_seed"), *stream = value("rng.stream");
-  if (saved && stream && parseExact(*saved, saved_seed) && saved_seed == seed) return *stream;
-  return {};
+  if (!(saved && stream && parseExact(*saved, saved_seed) && saved_seed == seed)) return {};
+  std::istringstream text(*stream);
+  std::mt19937_64 check;
+  text >> check;
+  if (text.fail())
+    throw InputError("its run state holds rng.stream = '" + stream->substr(0, 40) +
+                     (stream->size() > 40 ? "...'" : "'") + ", which is not a state of the random stream");
+  return *stream;
 }
 
 Simulation::Simulation(Tissue tissue, SimulationParameters parameters)

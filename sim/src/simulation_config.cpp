@@ -56,7 +56,13 @@ SimulationConfig readSimulationConfig(Config config) {
                      formatValue(saved) + " (leave time.start out to continue the snapshot's clock)");
   }
   TimeSpan time = readTimeSection(config);
-  if (snap) snap->rng_state = continueRunState(snap->state, snap->tissue->time(), seed, time);
+  if (snap) {
+    try {
+      snap->rng_state = continueRunState(snap->state, snap->tissue->time(), seed, time);
+    } catch (const InputError& e) {
+      throw config.errorAt("tissue.snapshot.file", e.what());
+    }
+  }
   OutputSpec output = readOutputSection(config);
   GrowthSpec growth = readGrowthSection(config, tissue);
   DivisionSpec division = readDivisionSection(config);

@@ -191,3 +191,23 @@ TEST_CASE("a noisy division threshold survives a restart: daughters born after i
   const auto& thresholds = rest.tissue().cellProperties().get<double>("division_threshold");
   for (CellId c : rest.tissue().cells()) REQUIRE(thresholds[c] > 0);
 }
+
+TEST_CASE("a damaged random stream in a snapshot's run state is a located error", "[sim][restart]") {
+  ScratchDir dir;
+  const std::string config = sourcePath("configs/voronoi_growth.yaml");
+  Simulation first = Simulation::fromFile(config, {"time.end=0.2"});
+  first.run();
+  io::RunState state = first.runState();
+  state["rng.stream"] = "not a state";
+  const std::string snapshot = dir / "bad_state.vtu";
+  io::writeTissueVtu(first.tissue(), snapshot, {}, state);
+  try {
+    Simulation::fromFile(config, {"tissue.generator=snapshot", "tissue.snapshot.file=" + snapshot});
+    FAIL("the damaged stream was accepted");
+  } catch (const ConfigError& e) {
+    const std::string what = e.what();
+    INFO(what);
+    CHECK(what.find("tissue.snapshot.file") != std::string::npos);
+    CHECK(what.find("rng.stream = 'not a state'") != std::string::npos);
+  }
+}
