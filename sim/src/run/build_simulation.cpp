@@ -15,8 +15,10 @@ namespace tessella::sim {
 //   stages.push_back(makeGrowthStage(config.growth));
 std::vector<std::unique_ptr<Stage>> makeStages(const SimulationConfig& config) {
   std::vector<std::unique_ptr<Stage>> stages;
-  if (config.growth.field) stages.push_back(std::make_unique<GrowthStage>(config.growth));
-  if (config.division.rule) stages.push_back(std::make_unique<DivisionStage>(config.division));
+  if (config.growth.field) stages.push_back(std::make_unique<GrowthStage>(config.growth.field, config.growth.options));
+  if (config.division.rule)
+    stages.push_back(std::make_unique<DivisionStage>(config.division.rule, *config.division.threshold,
+                                                     config.division.options, config.division.gate));
   // The solvers run after growth and division, on one shared mesh of the tissue.
   if (!config.diffusion.species.empty() || config.elasticity.enabled) {
     auto mesh = std::make_shared<FieldMesh>(meshOptionsFromConfig(config.config));

@@ -18,6 +18,7 @@
 #include "tessella/sim/config/config.hpp"
 #include "tessella/sim/config/schema.hpp"
 #include "tessella/sim/sections/tissue_section.hpp"
+#include "tessella/sim/stages/growth_stages.hpp"
 
 namespace tessella::sim {
 
@@ -32,11 +33,8 @@ struct DivisionSpec {
   std::shared_ptr<const growth::DivisionRule> rule;
   std::optional<growth::SizeThreshold> threshold;
   growth::DivisionOptions options;
-  /// division.gate: a cell divides only where the double cell property
-  /// `gate_field` (a solver field's cell average) exceeds `gate_above`.
-  /// Empty: no gate.
-  std::string gate_field;
-  double gate_above = 0.0;
+  /// division.gate; none: no gate.
+  std::optional<DivisionGate> gate;
 };
 
 void declareGrowthSection(Schema& schema);
