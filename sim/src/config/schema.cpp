@@ -86,6 +86,19 @@ KeySpec& Schema::key(std::string path, ValueType type, std::string doc) {
   return keys_.back();
 }
 
+KeySpec& Schema::key(const std::string& section, const ParamSpec& param) {
+  KeySpec& k = key(joinPath(section, param.name), param.type, param.doc);
+  k.default_value = param.default_value;
+  k.absent_doc = param.absent_doc;
+  k.min = param.range.min;
+  k.max = param.range.max;
+  k.min_exclusive = param.range.min_exclusive;
+  k.max_exclusive = param.range.max_exclusive;
+  k.choices = param.choices;
+  if (!param.unless_set.empty()) k.unless_set = joinPath(section, param.unless_set);
+  return k;
+}
+
 std::string Schema::templatePath(const std::string& path) const {
   bool any_map = false;
   for (const SectionSpec& s : sections_) any_map = any_map || s.entry_map;

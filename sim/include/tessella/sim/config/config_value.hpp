@@ -7,20 +7,23 @@
 #include <variant>
 #include <vector>
 
+#include "tessella/tissue/parameters.hpp"
+
 namespace tessella::sim {
 
-/// The type a key expects. Vec2/Vec3 are YAML sequences of 2 or 3 numbers;
+/// The type a key expects: the parameter types of the registries
+/// (tessella/tissue/parameters.hpp), so a registry entry's parameters are
+/// config keys as they stand. Vec2/Vec3 are YAML sequences of 2 or 3 numbers;
 /// Enum is a string from a fixed list; Path is a string naming an existing
 /// file, resolved relative to the configuration file that names it.
-enum class ValueType { Bool, Int, Float, String, Enum, Vec2, Vec3, Path };
+using ValueType = ParamType;
+using ConfigValue = ParamValue;
 
-const char* valueTypeName(ValueType type);
-
-using ConfigValue = std::variant<bool, std::int64_t, double, std::string, std::vector<double>>;
+inline const char* valueTypeName(ValueType type) { return paramTypeName(type); }
 
 /// Formats a value the way it is written in YAML (flow style for vectors,
 /// shortest round-trip form for floats), so messages and run.yaml agree.
-std::string formatValue(const ConfigValue& value);
+inline std::string formatValue(const ConfigValue& value) { return formatParamValue(value); }
 
 /// Where a value was written: "file:line:column", or a --set argument.
 struct SourceLocation {

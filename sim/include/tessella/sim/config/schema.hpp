@@ -109,6 +109,10 @@ class Schema {
   /// Declares a key in an already declared section. Throws std::logic_error
   /// on a duplicate path or an undeclared section (a programming error).
   KeySpec& key(std::string path, ValueType type, std::string doc);
+  /// Declares the key `<section>.<param.name>` from a registry entry's
+  /// parameter (tessella/tissue/registry.hpp): type, doc, default, range,
+  /// choices; `unless_set` names a sibling key.
+  KeySpec& key(const std::string& section, const ParamSpec& param);
 
   /// Lookups take concrete paths (entry names in place of the placeholder).
   const KeySpec* findKey(const std::string& path) const;
