@@ -345,6 +345,14 @@ DivisionSpec readDivisionSection(const Config& c) {
   return d;
 }
 
+void addGrowthStage(const GrowthSpec& g, StageList& stages) {
+  if (g.field) stages.add(std::make_unique<GrowthStage>(g.field, g.options));
+}
+
+void addDivisionStage(const DivisionSpec& d, StageList& stages) {
+  if (d.rule) stages.add(std::make_unique<DivisionStage>(d.rule, *d.threshold, d.options, d.gate));
+}
+
 void checkDivisionGate(const Config& c, const DivisionSpec& d, const std::vector<std::string>& fields) {
   if (!d.gate || !d.rule) return;
   if (std::find(fields.begin(), fields.end(), d.gate->field) != fields.end()) return;

@@ -59,8 +59,9 @@ class Simulation {
   Simulation(Tissue tissue, SimulationParameters parameters);
 
   /// From a validated config: builds the tissue its generator describes and
-  /// the stages its sections ask for (makeStages, run/build_simulation.hpp,
-  /// where these three are defined). Throws ConfigError.
+  /// the stages its sections ask for (makeStages). Defined with the config
+  /// (run/build_simulation.cpp): include sections/simulation_config.hpp to
+  /// call fromConfig. Throws ConfigError.
   static Simulation fromConfig(const SimulationConfig& config);
   static Simulation fromFile(const std::string& path, const std::vector<std::string>& overrides = {});
   static Simulation fromYaml(const std::string& yaml, const std::vector<std::string>& overrides = {},
