@@ -4,7 +4,6 @@
 
 #include "bindings.hpp"
 #include "python_field.hpp"
-#include "safe_step.hpp"
 #include "tessella/growth/bump_field.hpp"
 #include "tessella/growth/expression_field.hpp"
 #include "tessella/growth/growth_integrator.hpp"
@@ -148,7 +147,7 @@ harmonic interpolation inside, as in the PlantGL paper).
            }),
            py::arg("field"), py::arg("scheme") = "heun", py::arg("projection") = py::none(),
            py::arg("velocities") = "field", py::arg("check_inversion") = true, py::arg("min_cell_measure") = 0.0)
-      .def("step", &stepRestoringOnError, py::arg("tissue"), py::arg("dt"),
+      .def("step", &growth::GrowthIntegrator::step, py::arg("tissue"), py::arg("dt"),
            "Advances the tissue from tissue.time to tissue.time + dt; on any error positions and clock are restored.")
       .def(
           "velocities",

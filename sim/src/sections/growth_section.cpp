@@ -340,19 +340,25 @@ DivisionSpec readDivisionSection(const Config& c) {
   if (threshold == "noisy")
     d.threshold = growth::SizeThreshold::noisy(c.getFloat("division.mean"), c.getFloat("division.stddev"));
   d.options.max_attempts = static_cast<int>(c.getInt("division.max_attempts"));
-  if (c.has("division.gate.field")) {
-    d.gate_field = c.getString("division.gate.field");
-    d.gate_above = c.getFloat("division.gate.above");
-  }
+  if (c.has("division.gate.field"))
+    d.gate = DivisionGate{.field = c.getString("division.gate.field"), .above = c.getFloat("division.gate.above")};
   return d;
 }
 
+void addGrowthStage(const GrowthSpec& g, StageList& stages) {
+  if (g.field) stages.add(std::make_unique<GrowthStage>(g.field, g.options));
+}
+
+void addDivisionStage(const DivisionSpec& d, StageList& stages) {
+  if (d.rule) stages.add(std::make_unique<DivisionStage>(d.rule, *d.threshold, d.options, d.gate));
+}
+
 void checkDivisionGate(const Config& c, const DivisionSpec& d, const std::vector<std::string>& fields) {
-  if (d.gate_field.empty() || !d.rule) return;
-  if (std::find(fields.begin(), fields.end(), d.gate_field) != fields.end()) return;
+  if (!d.gate || !d.rule) return;
+  if (std::find(fields.begin(), fields.end(), d.gate->field) != fields.end()) return;
   std::string known;
   for (const auto& f : fields) known += (known.empty() ? "" : ", ") + f;
-  throw c.errorAt("division.gate.field", "'" + d.gate_field + "' is not a field of the solver sections" +
+  throw c.errorAt("division.gate.field", "'" + d.gate->field + "' is not a field of the solver sections" +
                                              (known.empty() ? std::string(" (none is on)") : " (known: " + known + ")"));
 }
 

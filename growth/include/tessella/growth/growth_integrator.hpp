@@ -55,8 +55,9 @@ class GrowthIntegrator {
   GrowthIntegrator(std::shared_ptr<const VelocityField> field, GrowthOptions options = {});
 
   /// Advances the tissue from t.time() to t.time() + dt and sets the clock to
-  /// the new time. On a GeometryError the positions and the clock are
-  /// restored. dt must be positive and finite (InputError otherwise).
+  /// the new time. On any error (a GeometryError, or an exception from the
+  /// field or the projection) the positions and the clock are restored.
+  /// dt must be positive and finite (InputError otherwise).
   void step(Tissue& t, double dt);
 
   /// Velocities the integrator uses for the current positions at time `time`
