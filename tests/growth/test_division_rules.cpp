@@ -5,12 +5,12 @@
 
 #include "growth_fixtures.hpp"
 #include "tessella/growth/besson_dumais_rule.hpp"
-#include "tessella/growth/division_rule_factory.hpp"
 #include "tessella/growth/division_walls.hpp"
 #include "tessella/growth/fixed_direction_rule.hpp"
 #include "tessella/growth/main_axis_rule.hpp"
 #include "tessella/growth/perpendicular_wall_rule.hpp"
 #include "tessella/growth/random_direction_rule.hpp"
+#include "tessella/growth/registries.hpp"
 #include "tessella/growth/shortest_wall_rule.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
@@ -41,7 +41,8 @@ TEST_CASE("a 2:1 rectangle divides across its long side", "[growth][rules]") {
   for (const char* name : {"main_axis", "shortest_wall", "besson_dumais"}) {
     INFO(name);
     Tissue t = testing::rectangleCell(2.0, 1.0);
-    auto rule = makeDivisionRule(name, DivisionRuleParams{.beta = 50.0});
+    const ParamValues params = std::string(name) == "besson_dumais" ? ParamValues{{"beta", 50.0}} : ParamValues{};
+    auto rule = makeDivisionRule(name, params);
     const Plane p = rule->plane(t, CellId(0), rng);
     CHECK(alignment(p.normal, Vec3::UnitX()) == Approx(1.0).margin(1e-12));
     CHECK(p.point.isApprox(Vec3(1.0, 0.5, 0.0)));
@@ -215,7 +216,8 @@ TEST_CASE("on a surface every rule's plane contains the cell normal", "[growth][
   Rng rng(9);
   for (const std::string& name : divisionRuleNames()) {
     INFO(name);
-    auto rule = makeDivisionRule(name, DivisionRuleParams{.fixed_normal = Vec3(1, 0.3, 0)});
+    auto rule = makeDivisionRule(
+        name, name == "fixed" ? ParamValues{{"fixed_normal", std::vector<double>{1, 0.3, 0}}} : ParamValues{});
     for (CellId c : cap.cells()) {
       const Vec3 n = polygonMeasures(cap, cap.cellFace(c)).normal;
       const Plane p = rule->plane(cap, c, rng);
@@ -236,3 +238,4 @@ TEST_CASE("on a surface every rule's plane contains the cell normal", "[growth][
 TEST_CASE("unknown rule names are input errors listing the known ones", "[growth][rules]") {
   CHECK_THROWS_WITH(makeDivisionRule("errera"), Contains("'errera'") && Contains("shortest_wall"));
 }
+
