@@ -13,6 +13,7 @@ DivisionRuleEntry perpendicularWallRuleEntry();
 DivisionRuleEntry randomDirectionRuleEntry();
 DivisionRuleEntry fixedDirectionRuleEntry();
 DivisionRuleEntry bessonDumaisRuleEntry();
+DivisionRuleEntry fixedAngleToMainAxisRuleEntry();
 
 const Registry<DivisionRuleFactory>& divisionRules() {
   static const Registry<DivisionRuleFactory> table("division rule", {
@@ -22,6 +23,7 @@ const Registry<DivisionRuleFactory>& divisionRules() {
       randomDirectionRuleEntry(),
       fixedDirectionRuleEntry(),
       bessonDumaisRuleEntry(),
+      fixedAngleToMainAxisRuleEntry(),
   });
   return table;
 }
