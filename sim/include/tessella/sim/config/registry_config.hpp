@@ -98,7 +98,8 @@ auto makeFromConfig(const Config& c, const Registry<Factory>& registry, const st
   }
 }
 
-/// The value `name` of an enum table; ConfigError at `key` for an unknown one.
+/// The value of `table` named by the key `key`; ConfigError at the key for an
+/// unknown name (the schema's choices normally refuse it first).
 template <typename E>
 E parseFromConfig(const Config& c, const EnumTable<E>& table, const std::string& key) {
   try {
