@@ -397,6 +397,26 @@ case "$case_name" in
     awk -v a="$a1" -v b="$a2" 'BEGIN { r = b / (4 * a); exit !(r > 0.98 && r < 1.02) }' \
       || fail "scale 2 did not multiply the area by about 4 ($a1 -> $a2)"
     ;;
+  render_run)
+    "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/hex" -q || fail "run failed"
+    "$tessella" render "$tmp/hex" --property size --size 320x240 --no-movie >"$tmp/stdout" 2>"$tmp/stderr" \
+      || fail "render failed: $(cat "$tmp/stderr")"
+    cat "$tmp/stdout"
+    grep -q "wrote        4 frames to $tmp/hex/frames" "$tmp/stdout" || fail "expected 4 frames in RUN_DIR/frames"
+    for f in "$tmp/hex/frames"/frame_00000[0-3].png; do
+      # A PNG's IHDR holds width and height as big-endian 32-bit integers at bytes 16..23.
+      size=$(od -An -tu1 -j16 -N8 "$f" | awk '{print $3*256+$4 "x" $7*256+$8}')
+      [ "$size" = "320x240" ] || fail "$f is $size, expected 320x240"
+    done
+    "$tessella" render "$tmp/hex/tissue_000000.vtu" --out "$tmp/one" >/dev/null || fail "render of one snapshot failed"
+    [ -f "$tmp/one/frame_000000.png" ] || fail "no frame for a single snapshot"
+    "$tessella" render "$tmp/hex" --property auxin --out "$tmp/bad" 2>"$tmp/stderr"
+    [ $? -eq 1 ] || fail "an unknown property was not refused"
+    grep -q "no cell property 'auxin' (scalar cell properties: size, lineage_id" "$tmp/stderr" || fail "unclear: $(cat "$tmp/stderr")"
+    [ ! -e "$tmp/bad" ] || fail "frames directory created for a refused render"
+    "$tessella" render "$tmp/nothing" 2>"$tmp/stderr"
+    [ $? -eq 1 ] && grep -q "no such file or directory" "$tmp/stderr" || fail "missing source: $(cat "$tmp/stderr")"
+    ;;
   import_errors)
     # A malformed file: exit 1, an error naming the file and line, no output file.
     head -c 60000 "$src/tests/data/mgx_meristem_cropped/mesh_meristem_cropped_T0.ply" >"$tmp/cut.ply"
