@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/registry.hpp"
 
 namespace tessella {
 
@@ -41,17 +42,9 @@ class EnumTable {
 
   const std::string& kind() const { return kind_; }
   const std::vector<EnumEntry<E>>& entries() const { return entries_; }
-  std::vector<std::string> names() const {
-    std::vector<std::string> out;
-    for (const auto& e : entries_) out.push_back(e.name);
-    return out;
-  }
+  std::vector<std::string> names() const { return entryNames(entries_); }
   /// "a, b, c": the names for messages and docs (aliases not included).
-  std::string namesText() const {
-    std::string out;
-    for (const auto& e : entries_) out += (out.empty() ? "" : ", ") + e.name;
-    return out;
-  }
+  std::string namesText() const { return joinNames(names()); }
 
   /// The value named `name` (or an alias); InputError naming the value and
   /// listing the accepted names otherwise.
