@@ -8,6 +8,7 @@
 //   tessella import FILE --out TISSUE.vtu [--format F] [--scale S] [--simplify TOL] [--repair]
 //   tessella render RUN_DIR|SERIES.pvd|SNAPSHOT.vtu [--property NAME] [--out DIR] [--size WxH] [--every N]
 //                   [--view X,Y,Z] [--range LOW,HIGH] [--no-movie]
+//   tessella sweep CONFIG.yaml --vary KEY=V1,V2,... [--vary ...] [--replicates N] [--set ...] --out DIR [--overwrite]
 //   tessella schema          (the config key reference, as in docs/config.md)
 //
 // Exit codes: 0 success, 1 an error Tessella reports (bad config or file, a
@@ -41,6 +42,7 @@
 #include "tessella/io/mesh_vtu.hpp"
 #include "tessella/io/vtu.hpp"
 #include "tessella/render/series_pictures.hpp"
+#include "tessella/sim/run/sweep.hpp"
 #include "tessella/tissue/parameters.hpp"
 #include "tessella/mesh/mesh_measures.hpp"
 #include "tessella/mesh/mesh_tissue.hpp"
@@ -281,6 +283,26 @@ int renderCommand(const RenderArgs& a) {
   return 0;
 }
 
+struct SweepArgs {
+  std::string config, out;
+  std::vector<std::string> vary, sets;
+  int replicates = 1;
+  bool overwrite = false;
+};
+
+int sweepCommand(const SweepArgs& a) {
+  using namespace tessella;
+  std::vector<sim::SweepAxis> axes;
+  for (const auto& v : a.vary) axes.push_back(sim::parseSweepAxis(v));
+  const sim::SweepPlan plan = sim::planSweep(a.config, a.sets, axes, a.replicates);
+  std::error_code ec;
+  const std::string self = std::filesystem::read_symlink("/proc/self/exe", ec).string();
+  sim::writeSweep(plan, a.out, ec ? std::string("tessella") : self, a.overwrite);
+  fmt::print("wrote        {} run configs, design.csv and a Snakefile to {}\n", plan.runs.size(), a.out);
+  fmt::print("run them     cd {} && snakemake -j 2   (results: sweep.csv)\n", a.out);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -350,6 +372,22 @@ int main(int argc, char** argv) {
       ->delimiter(',');
   render->add_flag("--no-movie", render_args.no_movie, "Do not encode movie.mp4 even if ffmpeg is installed");
 
+  auto* sweep = app.add_subcommand(
+      "sweep", "Write a parameter sweep: one config per combination and replicate, and a Snakemake workflow");
+  SweepArgs sweep_args;
+  sweep->add_option("config", sweep_args.config, "YAML configuration the runs start from")->required();
+  sweep->add_option("--vary", sweep_args.vary, "A key and its values: --vary division.size=1.5,2 (repeatable)")
+      ->required()
+      ->take_all()
+      ->allow_extra_args(false);
+  sweep->add_option("--replicates,-r", sweep_args.replicates, "Runs per combination, seeds rng_seed, rng_seed + 1, ...")
+      ->check(CLI::PositiveNumber);
+  sweep->add_option("--set,-s", sweep_args.sets, "Override a key in every run: --set time.end=5")
+      ->take_all()
+      ->allow_extra_args(false);
+  sweep->add_option("--out,-o", sweep_args.out, "Sweep directory to write")->required();
+  sweep->add_flag("--overwrite", sweep_args.overwrite, "Replace a sweep already in the directory");
+
   app.add_subcommand("schema", "Print the configuration key reference (Markdown, as in docs/config.md)");
 
   CLI11_PARSE(app, argc, argv);
@@ -359,6 +397,7 @@ int main(int argc, char** argv) {
     if (mesh->parsed()) return meshCommand(mesh_args);
     if (import->parsed()) return importCommand(import_args);
     if (render->parsed()) return renderCommand(render_args);
+    if (sweep->parsed()) return sweepCommand(sweep_args);
     fmt::print("{}", tessella::sim::schemaReferenceMarkdown(tessella::sim::tessellaSchema()));
     return 0;
   } catch (const tessella::Error& e) {  // bad input, or a stage that failed on it
