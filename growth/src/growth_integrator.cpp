@@ -8,9 +8,28 @@
 
 namespace tessella::growth {
 
-const char* schemeName(IntegrationScheme s) {
-  return s == IntegrationScheme::Euler ? "euler" : "heun";
+const EnumTable<IntegrationScheme>& integrationSchemes() {
+  static const EnumTable<IntegrationScheme> table(
+      "integration scheme",
+      {{"euler", IntegrationScheme::Euler, "Explicit Euler (first order)."},
+       {"heun", IntegrationScheme::Heun, "Heun (second order, two field evaluations per step)."}},
+      {{"rk2", IntegrationScheme::Heun}});
+  return table;
 }
+
+const EnumTable<VelocitySource>& velocitySources() {
+  static const EnumTable<VelocitySource> table(
+      "velocity source",
+      {{"field", VelocitySource::Field, "Every vertex moves with the field."},
+       {"boundary", VelocitySource::HarmonicFromControl,
+        "The field is evaluated on the boundary vertices only and interior velocities are interpolated "
+        "harmonically (uniform-weight graph Laplacian), the paper's second mode."}});
+  return table;
+}
+
+const char* schemeName(IntegrationScheme s) { return integrationSchemes().name(s).c_str(); }
+
+IntegrationScheme parseScheme(const std::string& name) { return integrationSchemes().parse(name); }
 
 namespace {
 
@@ -42,12 +61,6 @@ std::string vec(const Vec3& v) {
 }
 
 }  // namespace
-
-IntegrationScheme parseScheme(const std::string& name) {
-  if (name == "euler") return IntegrationScheme::Euler;
-  if (name == "heun" || name == "rk2") return IntegrationScheme::Heun;
-  throw InputError("unknown integration scheme '" + name + "' (expected euler, heun or rk2)");
-}
 
 GrowthIntegrator::GrowthIntegrator(std::shared_ptr<const VelocityField> field, GrowthOptions options)
     : field_(std::move(field)), options_(std::move(options)) {

@@ -17,6 +17,7 @@
 #include "tessella/growth/harmonic_interpolation.hpp"
 #include "tessella/growth/surface_projection.hpp"
 #include "tessella/growth/velocity_field.hpp"
+#include "tessella/tissue/enum_table.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/tissue.hpp"
@@ -29,8 +30,13 @@ enum class VelocitySource {
   HarmonicFromControl  ///< the field at control vertices, harmonic interpolation elsewhere
 };
 
+/// The names of the schemes: euler, heun (also accepted: rk2).
+const EnumTable<IntegrationScheme>& integrationSchemes();
+/// The names of the velocity sources: field, boundary (HarmonicFromControl).
+const EnumTable<VelocitySource>& velocitySources();
+
 const char* schemeName(IntegrationScheme s);
-/// "euler" / "heun" (also "rk2"); InputError naming the value otherwise.
+/// "euler" / "heun" (also "rk2"); InputError naming the value and the known names otherwise.
 IntegrationScheme parseScheme(const std::string& name);
 
 struct GrowthOptions {
