@@ -202,7 +202,7 @@ int meshCommand(const MeshArgs& a) {
   if (a.size) options.max_edge_length = *a.size;
   if (a.min_angle) options.min_angle_degrees = *a.min_angle;
   if (a.max_volume) options.max_volume = *a.max_volume;
-  if (a.volume_method) options.volume_method = sim::volumeMethodNamed(*a.volume_method);
+  if (a.volume_method) options.volume_method = tessella::volumeMethods().parse(*a.volume_method);
   if (a.max_elements) options.max_elements = *a.max_elements;
   validateMeshOptions(options);  // before reading: a bad flag fails fast
   checkOutputFile(a.out, "--out");  // every output, before meshing or writing any of them
@@ -234,7 +234,7 @@ int meshCommand(const MeshArgs& a) {
              embeddingName(tissue.embedding()), a.snapshot, t_read);
   fmt::print("options      min_angle {} deg, max_edge_length {}, max_volume {}, radius_edge_ratio {}{}\n",
              options.min_angle_degrees, options.max_edge_length, options.max_volume, options.radius_edge_ratio,
-             tissue.dim() != 3 ? "" : ", " + sim::volumeMethodName(options.volume_method));
+             tissue.dim() != 3 ? "" : ", " + tessella::volumeMethods().name(options.volume_method));
   fmt::print("mesh         {} nodes, {} {}, {} wall facets\n", mesh.numNodes(), mesh.numElements(), elements,
              mesh.numWallFacets());
   fmt::print("time         {:.3f} s ({:.0f} elements/s)\n", t_mesh, mesh.numElements() / std::max(t_mesh, 1e-9));
@@ -352,7 +352,7 @@ int main(int argc, char** argv) {
                    "Refuse a mesh estimated above this many elements (mesh.max_elements; default " +
                        std::to_string(tessella::kDefaultMaxElements) + ", 0 = no limit)");
   mesh->add_option("--volume-method", mesh_args.volume_method, "3D: cell_by_cell or whole_tissue (mesh.volume_method)")
-      ->check(CLI::IsMember(tessella::sim::volumeMethodNames()));
+      ->check(CLI::IsMember(tessella::volumeMethods().names()));
 
   auto* import = app.add_subcommand(
       "import", "Import a segmented tissue (MorphoGraphX PLY, ...), summarise it, write a snapshot (.vtu)");

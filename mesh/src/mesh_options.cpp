@@ -14,6 +14,13 @@ void require(bool ok, const char* field, double value, const char* range) {
 
 }  // namespace
 
+const EnumTable<VolumeMethod>& volumeMethods() {
+  static const EnumTable<VolumeMethod> table(
+      "volume method", {{"cell_by_cell", VolumeMethod::CellByCell, "Walls first, then each cell with TetGen."},
+                        {"whole_tissue", VolumeMethod::WholeTissue, "One TetGen run on all walls at once."}});
+  return table;
+}
+
 void validateMeshOptions(const MeshOptions& o) {
   // CGAL's Delaunay refinement provably terminates up to 20.7 degrees and in
   // practice up to about 33; beyond, it can run forever.

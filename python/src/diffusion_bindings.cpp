@@ -27,11 +27,8 @@ Eigen::VectorXd orEmpty(const std::optional<Eigen::VectorXd>& v) { return v.valu
 }  // namespace
 
 void bindDiffusion(py::module_& m) {
-  bindEnum<TimeScheme>(m, "TimeScheme", "Time stepping of the implicit (linear) part.",
-                       {{"implicit_euler", {"ImplicitEuler", TimeScheme::ImplicitEuler}},
-                        {"crank_nicolson", {"CrankNicolson", TimeScheme::CrankNicolson}}});
-  bindEnum<MassType>(m, "MassType", "Consistent (exact) or lumped (row-sum, keeps positivity) mass matrix.",
-                     {{"consistent", {"Consistent", MassType::Consistent}}, {"lumped", {"Lumped", MassType::Lumped}}});
+  bindEnum(m, "TimeScheme", "Time stepping of the implicit (linear) part.", timeSchemes());
+  bindEnum(m, "MassType", "Consistent (exact) or lumped (row-sum, keeps positivity) mass matrix.", massTypes());
 
   py::class_<DirichletCondition>(m, "DirichletCondition", "u = value (or function(x, t)) on the nodes of the facets.")
       .def(py::init([](std::vector<int> facets, double value, OptFunction function) {

@@ -9,11 +9,7 @@
 namespace tessella::python {
 
 void bindElasticity(py::module_& m) {
-  bindEnum<ElasticModel>(m, "ElasticModel", "Kinematics of the elastic problem.",
-                         {{"plane_stress", {"PlaneStress", ElasticModel::PlaneStress}},
-                          {"plane_strain", {"PlaneStrain", ElasticModel::PlaneStrain}},
-                          {"solid", {"Solid", ElasticModel::Solid}},
-                          {"membrane", {"Membrane", ElasticModel::Membrane}}});
+  bindEnum(m, "ElasticModel", "Kinematics of the elastic problem.", elasticModels());
 
   py::class_<DisplacementCondition>(m, "DisplacementCondition",
                                     "Fixes the selected components (fixed = (x, y, z)) to value on facets and nodes.")

@@ -3,19 +3,21 @@
 // options read like the rest of the module (scheme="heun"):
 //   DiffusionOptions(scheme="crank_nicolson") == DiffusionOptions(scheme=TimeScheme.CrankNicolson)
 // An unknown name is an InputError (ValueError) listing the accepted ones.
+#include <cctype>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "bindings.hpp"
+#include "tessella/tissue/enum_table.hpp"
 
 namespace tessella::python {
 
 template <typename E>
 py::enum_<E> bindEnum(py::module_& m, const char* name, const char* doc,
-                      std::vector<std::pair<std::string, std::pair<const char*, E>>> values) {
+                      std::vector<std::pair<std::string, std::pair<std::string, E>>> values) {
   py::enum_<E> e(m, name, doc);
-  for (const auto& [snake, named] : values) e.value(named.first, named.second);
+  for (const auto& [snake, named] : values) e.value(named.first.c_str(), named.second);
   e.def(py::init([name, values](const std::string& s) {
           std::string known;
           for (const auto& [snake, named] : values) {
@@ -27,6 +29,30 @@ py::enum_<E> bindEnum(py::module_& m, const char* name, const char* doc,
         py::arg("name"));
   py::implicitly_convertible<py::str, E>();
   return e;
+}
+
+/// "crank_nicolson" -> "CrankNicolson".
+inline std::string camelCase(const std::string& snake) {
+  std::string out;
+  bool upper = true;
+  for (char ch : snake) {
+    if (ch == '_') {
+      upper = true;
+      continue;
+    }
+    out += upper ? static_cast<char>(std::toupper(static_cast<unsigned char>(ch))) : ch;
+    upper = false;
+  }
+  return out;
+}
+
+/// The values of the enum's table (the module defining the enum names them):
+/// members in CamelCase, the table's names accepted as strings.
+template <typename E>
+py::enum_<E> bindEnum(py::module_& m, const char* name, const char* doc, const EnumTable<E>& table) {
+  std::vector<std::pair<std::string, std::pair<std::string, E>>> values;
+  for (const auto& entry : table.entries()) values.push_back({entry.name, {camelCase(entry.name), entry.value}});
+  return bindEnum(m, name, doc, std::move(values));
 }
 
 }  // namespace tessella::python

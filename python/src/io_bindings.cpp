@@ -22,7 +22,7 @@ void bindIo(py::module_& m) {
         [](const Tissue& t, const std::string& path, const std::string& compression, int level) {
           io::writeTissueVtu(t, path, vtuOptions(compression, level));
         },
-        py::arg("tissue"), py::arg("path"), py::arg("compression") = "lz4", py::arg("compression_level") = 5,
+        py::arg("tissue"), py::arg("path"), py::arg("compression") = std::string(io::compressionName(io::VtuOptions{}.compression)), py::arg("compression_level") = 5,
         "One .vtu snapshot with every writable cell and vertex property (written atomically).");
   m.def("read_vtu", &io::readTissueVtu, py::arg("path"), "A tissue back from a snapshot written by write_vtu.");
 
@@ -68,7 +68,7 @@ interrupted run leaves an openable series.
       .def(py::init([](const std::string& directory, const std::string& name, const std::string& compression, int level) {
              return io::SeriesWriter(directory, name, vtuOptions(compression, level));
            }),
-           py::arg("directory"), py::arg("name") = "tissue", py::arg("compression") = "lz4",
+           py::arg("directory"), py::arg("name") = "tissue", py::arg("compression") = std::string(io::compressionName(io::VtuOptions{}.compression)),
            py::arg("compression_level") = 5)
       .def(
           "write",

@@ -1,7 +1,9 @@
 // Meshing from Python: MeshOptions, mesh_tissue() -> FeMesh (its arrays as
 // NumPy copies), mesh measures and .vtu output of a mesh with nodal,
 // element and facet fields.
+#include <cctype>
 #include <map>
+#include <string>
 
 #include "bindings.hpp"
 #include "tessella/io/mesh_vtu.hpp"
@@ -23,9 +25,13 @@ py::array_t<double> asArray(const std::vector<double>& v) { return py::array_t<d
 }  // namespace
 
 void bindMesh(py::module_& m) {
-  py::enum_<VolumeMethod>(m, "VolumeMethod", "How a 3D tissue is filled with tetrahedra (docs/meshing.md).")
-      .value("CELL_BY_CELL", VolumeMethod::CellByCell)
-      .value("WHOLE_TISSUE", VolumeMethod::WholeTissue);
+  py::enum_<VolumeMethod> volume_method(m, "VolumeMethod",
+                                        "How a 3D tissue is filled with tetrahedra (docs/meshing.md).");
+  for (const auto& e : volumeMethods().entries()) {
+    std::string upper = e.name;  // cell_by_cell -> CELL_BY_CELL
+    for (char& ch : upper) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+    volume_method.value(upper.c_str(), e.value);
+  }
   py::class_<MeshOptions>(m, "MeshOptions", "Size and quality targets of a tissue mesh (docs/meshing.md).")
       .def(py::init([](double min_angle_degrees, double max_edge_length, double max_volume, double radius_edge_ratio,
                        double min_dihedral_degrees, double tolerance, VolumeMethod volume_method,
@@ -134,7 +140,7 @@ FeMesh(nodes, elements, element_cell, ...) builds one from arrays (checked).
         py::arg("mesh"), py::arg("path"), py::arg("point_data") = std::map<std::string, Eigen::VectorXd>{},
         py::arg("element_data") = std::map<std::string, Eigen::VectorXd>{},
         py::arg("facet_data") = std::map<std::string, Eigen::VectorXd>{}, py::arg("walls_path") = py::none(),
-        py::arg("compression") = "lz4", py::arg("compression_level") = 5,
+        py::arg("compression") = std::string(io::compressionName(io::VtuOptions{}.compression)), py::arg("compression_level") = 5,
         "Writes the elements (cell_id, vertex_id and the given fields) as .vtu, and the wall facets to "
         "walls_path when given. Fields are dicts name -> array (one value per node / element / facet).");
 }

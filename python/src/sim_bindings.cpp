@@ -162,7 +162,7 @@ stage, step and time, followed by the cause's message.
              const std::string& compression) {
             return sim::attachSeriesOutput(s, directory, outputSpec(every, name, compression));
           },
-          py::arg("directory"), py::arg("every") = 1, py::arg("name") = "tissue", py::arg("compression") = "lz4",
+          py::arg("directory"), py::arg("every") = 1, py::arg("name") = "tissue", py::arg("compression") = std::string(io::compressionName(io::VtuOptions{}.compression)),
           "Writes the current state now, then every `every` steps and the final state, as a ParaView series.");
 
   m.def(

@@ -10,6 +10,13 @@
 
 namespace tessella {
 
+const EnumTable<MassType>& massTypes() {
+  static const EnumTable<MassType> table(
+      "mass matrix", {{"consistent", MassType::Consistent, "Exact integral of phi_i phi_j."},
+                      {"lumped", MassType::Lumped, "Row-sum diagonal; keeps a positive solution positive."}});
+  return table;
+}
+
 namespace {
 
 void checkCoefficient(const Eigen::VectorXd& c, int expected, const char* what) {

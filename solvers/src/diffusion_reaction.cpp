@@ -12,6 +12,13 @@
 
 namespace tessella {
 
+const EnumTable<TimeScheme>& timeSchemes() {
+  static const EnumTable<TimeScheme> table(
+      "time scheme", {{"implicit_euler", TimeScheme::ImplicitEuler, "Implicit Euler (first order)."},
+                      {"crank_nicolson", TimeScheme::CrankNicolson, "Crank-Nicolson (second order)."}});
+  return table;
+}
+
 // Everything of one species that does not change between time steps, plus the
 // factorised system of the last step length (refactorised when dt changes).
 struct DiffusionReaction::SpeciesData {

@@ -15,6 +15,15 @@
 
 namespace tessella {
 
+const EnumTable<ElasticModel>& elasticModels() {
+  static const EnumTable<ElasticModel> table(
+      "elastic model", {{"plane_stress", ElasticModel::PlaneStress, "Flat 2D tissue, thin in z."},
+                        {"plane_strain", ElasticModel::PlaneStrain, "Flat 2D tissue, long in z."},
+                        {"solid", ElasticModel::Solid, "3D tissue on tetrahedra."},
+                        {"membrane", ElasticModel::Membrane, "Curved sheet: in-plane stress, no bending."}});
+  return table;
+}
+
 namespace {
 
 using Matrix6 = Eigen::Matrix<double, 6, 6>;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "tessella/sim/config/config.hpp"
+#include "tessella/sim/config/registry_config.hpp"
 #include "tessella/sim/config/schema.hpp"
 #include "tessella/sim/sections/coupling_section.hpp"
 

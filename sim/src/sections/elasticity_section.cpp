@@ -4,7 +4,14 @@
 namespace tessella::sim {
 
 namespace {
-const std::vector<std::string> kModels = {"plane_stress", "plane_strain", "solid"};
+// The models of a tissue's own shape: a membrane (a curved sheet without
+// bending stiffness) needs loads the section does not offer.
+std::vector<std::string> tissueModels() {
+  std::vector<std::string> names;
+  for (const auto& e : elasticModels().entries())
+    if (e.value != ElasticModel::Membrane) names.push_back(e.name);
+  return names;
+}
 
 std::string joined(const std::vector<std::string>& names) {
   std::string text;
@@ -28,9 +35,9 @@ void declareElasticitySection(Schema& s) {
                 "). The displacement is not applied to the tissue. Off unless `model` is set. See "
                 "docs/solvers.md.");
   s.key("elasticity.model", ValueType::Enum, "The elastic model.")
-      .oneOf({"none", "plane_stress", "plane_strain", "solid"})
+      .oneOf(withNone(tissueModels()))
       .byDefault(std::string("none"));
-  const Condition on{"elasticity.model", kModels};
+  const Condition on{"elasticity.model", tissueModels()};
   detail::declareEveryAndStep(s, "elasticity", on);
   s.key("elasticity.young", ValueType::Float, "Young's modulus E.").byDefault(1.0).above(0).activeWhen(on.key, on.values);
   detail::declarePerTypeKey(s, "elasticity.young_by", "Young's modulus per cell type, e.g. \"0=1, 1=10\".", on);
@@ -42,7 +49,8 @@ void declareElasticitySection(Schema& s) {
   s.key("elasticity.thickness", ValueType::Float, "Thickness of a 2D tissue (scales stiffness and loads).")
       .byDefault(1.0)
       .above(0)
-      .activeWhen("elasticity.model", {"plane_stress", "plane_strain"});
+      .activeWhen("elasticity.model", {elasticModels().name(ElasticModel::PlaneStress),
+                                       elasticModels().name(ElasticModel::PlaneStrain)});
   s.key("elasticity.fixed", ValueType::String,
         "Displacement components held at zero per boundary region, e.g. \"x_min=x, y_min=y, z_min=z\" "
         "(symmetry planes) or \"x_min=xyz\" (clamped). The body must be held against every rigid motion.")
@@ -70,9 +78,7 @@ ElasticitySpec readElasticitySection(const Config& c) {
   const std::string model = c.getString("elasticity.model");
   if (model == "none") return e;
   e.enabled = true;
-  e.model = model == "plane_stress" ? ElasticModel::PlaneStress
-            : model == "plane_strain" ? ElasticModel::PlaneStrain
-                                      : ElasticModel::Solid;
+  e.model = parseFromConfig(c, elasticModels(), "elasticity.model");
   e.every = static_cast<std::size_t>(c.getInt("elasticity.every"));
   if (c.has("elasticity.by_property")) e.type_property = c.getString("elasticity.by_property");
   e.young = detail::readCoefficient(c, "elasticity", "young");

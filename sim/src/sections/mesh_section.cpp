@@ -2,6 +2,7 @@
 
 #include <utility>
 
+#include "tessella/sim/config/registry_config.hpp"
 #include "tessella/tissue/errors.hpp"
 
 namespace tessella::sim {
@@ -46,7 +47,7 @@ void declareMeshSection(Schema& s) {
         "those wall triangles; time grows linearly with the cell count. `whole_tissue` gives TetGen all "
         "walls at once and lets it refine them, which grades tetrahedra along walls better but grows "
         "quadratically (TetGen 1.5): for tissues of up to a few hundred cells.")
-      .oneOf(volumeMethodNames())
+      .oneOf(volumeMethods().names())
       .byDefault(std::string("cell_by_cell"));
   s.key("mesh.tolerance", ValueType::Float,
         "Relative to the tissue's bounding-box diagonal: below it a wall counts as planar, and the "
@@ -79,38 +80,10 @@ MeshOptions meshOptionsFromConfig(const Config& c) {
   o.radius_edge_ratio = c.getFloat("mesh.radius_edge_ratio");
   o.min_dihedral_degrees = c.getFloat("mesh.min_dihedral_angle");
   o.tolerance = c.getFloat("mesh.tolerance");
-  o.volume_method = volumeMethodNamed(c.getString("mesh.volume_method"));
+  o.volume_method = parseFromConfig(c, volumeMethods(), "mesh.volume_method");
   o.max_elements = static_cast<std::size_t>(c.getInt("mesh.max_elements"));
   validateMeshOptions(o);  // the schema's ranges are the same; this keeps them in step
   return o;
-}
-
-namespace {
-
-const std::pair<VolumeMethod, std::string> kVolumeMethods[] = {{VolumeMethod::CellByCell, "cell_by_cell"},
-                                                                {VolumeMethod::WholeTissue, "whole_tissue"}};
-
-}  // namespace
-
-const std::vector<std::string>& volumeMethodNames() {
-  static const std::vector<std::string> names = [] {
-    std::vector<std::string> n;
-    for (const auto& [method, name] : kVolumeMethods) n.push_back(name);
-    return n;
-  }();
-  return names;
-}
-
-VolumeMethod volumeMethodNamed(const std::string& name) {
-  for (const auto& [method, known] : kVolumeMethods)
-    if (known == name) return method;
-  throw InputError("unknown volume method '" + name + "' (cell_by_cell or whole_tissue)");
-}
-
-const std::string& volumeMethodName(VolumeMethod method) {
-  for (const auto& [known, name] : kVolumeMethods)
-    if (known == method) return name;
-  throw InputError("unknown volume method " + std::to_string(static_cast<int>(method)));
 }
 
 MeshSpec readMeshSection(const Config& c) {

@@ -21,7 +21,7 @@ void declareOutputSection(Schema& s) {
       .atLeast(1);
   s.key("output.compression", ValueType::Enum,
         "Compression of the .vtu data: lz4 is fast, zlib a few percent smaller and much slower to write.")
-      .oneOf({"none", "lz4", "zlib"})
+      .oneOf(io::compressions().names())
       .byDefault(std::string("lz4"));
 }
 

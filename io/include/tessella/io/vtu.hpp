@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "tessella/tissue/enum_table.hpp"
 #include "tessella/tissue/properties.hpp"
 #include "tessella/tissue/tissue.hpp"
 
@@ -21,7 +22,9 @@ namespace tessella::io {
 
 enum class Compression { None, LZ4, ZLib };
 
-/// Parses "none" | "lz4" | "zlib"; InputError naming the value otherwise.
+/// "none", "lz4", "zlib": the names config keys, the CLI and Python use.
+const EnumTable<Compression>& compressions();
+/// A name of compressions(), in any case; InputError naming the value otherwise.
 Compression parseCompression(const std::string& name);
 const char* compressionName(Compression c);
 

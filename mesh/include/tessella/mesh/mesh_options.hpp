@@ -4,6 +4,8 @@
 
 #include <cstddef>
 
+#include "tessella/tissue/enum_table.hpp"
+
 namespace tessella {
 
 /// Default MeshOptions::max_elements: a mesh of more elements takes minutes
@@ -21,6 +23,9 @@ enum class VolumeMethod {
   /// for small tissues only.
   WholeTissue,
 };
+
+/// "cell_by_cell", "whole_tissue": the names config keys, the CLI and Python use.
+const EnumTable<VolumeMethod>& volumeMethods();
 
 struct MeshOptions {
   /// 2D and surface tissues (and the walls of 3D tissues meshed cell by

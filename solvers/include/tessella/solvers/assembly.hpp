@@ -9,6 +9,7 @@
 
 #include "tessella/mesh/fe_mesh.hpp"
 #include "tessella/solvers/linear_solver.hpp"
+#include "tessella/tissue/enum_table.hpp"
 
 #include <Eigen/Core>
 
@@ -20,6 +21,8 @@ enum class MassType {
   Consistent,  ///< exact integral of phi_i phi_j
   Lumped       ///< row-sum diagonal: |e|/(d+1) per node; keeps positivity
 };
+/// "consistent", "lumped".
+const EnumTable<MassType>& massTypes();
 
 /// M_ij = sum_e c_e * int_e phi_i phi_j. Empty coefficient means c = 1.
 SparseMatrix assembleMass(const FeMesh& mesh, MassType type, const Eigen::VectorXd& element_coefficient = {});

@@ -11,6 +11,7 @@
 #include "tessella/mesh/fe_mesh.hpp"
 #include "tessella/solvers/assembly.hpp"
 #include "tessella/solvers/linear_solver.hpp"
+#include "tessella/tissue/enum_table.hpp"
 
 #include <Eigen/Core>
 
@@ -66,6 +67,8 @@ struct Species {
 using ReactionFunction = std::function<void(std::span<const double> u, std::span<double> rate)>;
 
 enum class TimeScheme { ImplicitEuler, CrankNicolson };
+/// "implicit_euler", "crank_nicolson" (also the compartment transport's schemes).
+const EnumTable<TimeScheme>& timeSchemes();
 
 struct DiffusionOptions {
   TimeScheme scheme = TimeScheme::ImplicitEuler;

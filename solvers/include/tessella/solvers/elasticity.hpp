@@ -10,6 +10,7 @@
 
 #include "tessella/mesh/fe_mesh.hpp"
 #include "tessella/solvers/linear_solver.hpp"
+#include "tessella/tissue/enum_table.hpp"
 
 #include <Eigen/Core>
 
@@ -19,6 +20,8 @@
 namespace tessella {
 
 enum class ElasticModel { PlaneStress, PlaneStrain, Solid, Membrane };
+/// "plane_stress", "plane_strain", "solid", "membrane".
+const EnumTable<ElasticModel>& elasticModels();
 
 /// Fixes the selected components of the displacement to `value` on all nodes
 /// of `facets` and on `nodes`.

@@ -32,11 +32,4 @@ MeshSpec readMeshSection(const Config& config);
 /// The MeshOptions part of the section (for stages that mesh the tissue).
 MeshOptions meshOptionsFromConfig(const Config& config);
 
-/// The names of the volume methods in configs and on the command line:
-/// "cell_by_cell", "whole_tissue".
-const std::vector<std::string>& volumeMethodNames();
-/// The method of a name from volumeMethodNames() (InputError otherwise).
-VolumeMethod volumeMethodNamed(const std::string& name);
-const std::string& volumeMethodName(VolumeMethod method);
-
 }  // namespace tessella::sim
