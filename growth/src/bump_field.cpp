@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::growth {
 
@@ -11,9 +12,9 @@ BumpField::BumpField(const BumpFieldParams& params) : p_(params) {
   if (!std::isfinite(p_.a) || !std::isfinite(p_.b) || !std::isfinite(p_.h) || !std::isfinite(p_.x0))
     throw InputError("bump field: parameters a, b, h, x0 must be finite");
   if (p_.h <= 0)
-    throw InputError("bump field: h = " + std::to_string(p_.h) + " must be > 0 (squared bump width)");
+    throw InputError("bump field: h = " + formatNumber(p_.h) + " must be > 0 (squared bump width)");
   if (p_.b < 0)
-    throw InputError("bump field: b = " + std::to_string(p_.b) +
+    throw InputError("bump field: b = " + formatNumber(p_.b) +
                      " must be >= 0 (the bump width h + b t would vanish)");
 }
 

@@ -9,6 +9,7 @@
 
 #include "tessella/growth/parallel_threshold.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::growth {
 
@@ -77,7 +78,7 @@ ExpressionField::ExpressionField(ExpressionFieldSpec spec) : spec_(std::move(spe
       throw InputError("velocity expression parameter '" + name +
                        "' clashes with a variable (x, y, z and t are reserved)");
     if (!std::isfinite(value))
-      throw InputError("velocity expression parameter '" + name + "' = " + std::to_string(value) +
+      throw InputError("velocity expression parameter '" + name + "' = " + formatNumber(value) +
                        " is not finite");
   }
   workspaces_.push_back(makeWorkspace());  // parses, so errors surface at construction

@@ -4,12 +4,13 @@
 #include <string>
 
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::growth {
 
 SurfaceProjection sphereProjection(const Vec3& center, double radius) {
   if (!(radius > 0) || !std::isfinite(radius))
-    throw InputError("sphere projection: radius = " + std::to_string(radius) + " must be > 0");
+    throw InputError("sphere projection: radius = " + formatNumber(radius) + " must be > 0");
   return [center, radius](const Vec3& p) -> Vec3 {
     const Vec3 d = p - center;
     const double n = d.norm();

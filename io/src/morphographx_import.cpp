@@ -17,6 +17,7 @@
 #include "tessella/io/ply.hpp"
 #include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::io {
 
@@ -36,17 +37,14 @@ struct UnionFind {
   void unite(Index a, Index b) { parent[find(a)] = find(b); }
 };
 
-std::string fmtPoint(const Vec3& p) {
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "(%.9g, %.9g, %.9g)", p.x(), p.y(), p.z());
-  return buf;
-}
+// A vertex of the file, nine digits: enough to find it in the file and tell it from its neighbours.
+std::string fmtPoint(const Vec3& p) { return formatPoint(p, 9); }
 
 void checkOptions(const ImportOptions& o) {
   if (!(std::isfinite(o.scale) && o.scale > 0))
-    throw InputError("import scale must be a positive finite number, got " + std::to_string(o.scale));
+    throw InputError("import scale must be a positive finite number, got " + formatNumber(o.scale));
   if (!(std::isfinite(o.simplify) && o.simplify >= 0))
-    throw InputError("import simplify tolerance must be >= 0 (0 = off), got " + std::to_string(o.simplify));
+    throw InputError("import simplify tolerance must be >= 0 (0 = off), got " + formatNumber(o.simplify));
 }
 
 // The file, read into plain arrays.

@@ -13,6 +13,7 @@
 #include "tessella/io/text_file.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/excerpt.hpp"
+#include "tessella/tissue/format.hpp"
 #include "vtk_error_capture.hpp"
 
 namespace tessella::io {
@@ -35,23 +36,18 @@ std::string xmlEscaped(const std::string& s) {
   return out;
 }
 
-std::string exactNumber(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", x);
-  return buffer;
-}
-
 }  // namespace
 
 void writePvdFile(const std::string& path, std::span<const PvdEntry> entries, bool durable) {
   for (const PvdEntry& e : entries)
-    if (!std::isfinite(e.time)) throw InputError("'" + path + "': time " + exactNumber(e.time) + " of '" + e.file + "' is not finite");
+    if (!std::isfinite(e.time))
+      throw InputError("'" + path + "': time " + formatNumber(e.time) + " of '" + e.file + "' is not finite");
   std::string text =
       "<?xml version=\"1.0\"?>\n"
       "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n"
       "  <Collection>\n";
   for (const PvdEntry& e : entries)
-    text += "    <DataSet timestep=\"" + exactNumber(e.time) + "\" group=\"\" part=\"0\" file=\"" +
+    text += "    <DataSet timestep=\"" + formatNumber(e.time) + "\" group=\"\" part=\"0\" file=\"" +
             xmlEscaped(e.file) + "\"/>\n";
   text += "  </Collection>\n</VTKFile>\n";
   writeTextFile(path, text, durable);

@@ -26,6 +26,7 @@
 #include "tessella/io/vtu.hpp"
 #include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 #include "tessella/tissue/validate.hpp"
 #include "vtu_file.hpp"
 
@@ -324,7 +325,7 @@ Snapshot readSnapshot(const std::string& path) {
     const double value =
         next->GetNumberOfTuples() > 0 && next->GetNumberOfComponents() > 0 ? next->GetComponent(0, 0) : -1.0;
     if (!(value >= 0) || value != std::floor(value))
-      src.fail(std::string(detail::kNextLineageArray) + " = " + std::to_string(value) +
+      src.fail(std::string(detail::kNextLineageArray) + " = " + formatNumber(value) +
                " is not a non-negative integer");
     tissue.reserveLineageIds(static_cast<std::int64_t>(value));
   }

@@ -28,6 +28,7 @@
 #include "tessella/mesh/geometry_check.hpp"
 #include "tessella/mesh/mesh_tissue.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "triangle_criteria.hpp"
 #include "wall_segments.hpp"
@@ -150,8 +151,8 @@ FeMesh meshPlanarTissue(const Tissue& t, const MeshOptions& options) {
         [&](std::size_t vertices) {
           throw GeometryError("planar mesher: refinement did not finish within " + std::to_string(vertices) +
                               " vertices (" + std::to_string(t.numVertices()) + " tissue vertices, shortest wall " +
-                              std::to_string(shortest) + ", min_angle_degrees " +
-                              std::to_string(options.min_angle_degrees) + "); lower min_angle_degrees");
+                              formatNumber(shortest, 6) + ", min_angle_degrees " +
+                              formatNumber(options.min_angle_degrees) + "); lower min_angle_degrees");
         },
         true);
     tagCells(cdt, t, constraint);

@@ -30,6 +30,7 @@
 #include "tessella/mesh/geometry_check.hpp"
 #include "tessella/mesh/mesh_tissue.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "wall_segments.hpp"
 
@@ -89,7 +90,7 @@ FeMesh meshSurfaceTissue(const Tissue& t, const MeshOptions& options) {
   }
   const auto owner = [&](std::size_t i) {
     return "surface mesher: cell " + std::to_string(fans[i].cell) + " (triangle " +
-           std::to_string(fans[i].loop_position) + ", smallest angle " + std::to_string(fans[i].min_angle_degrees) +
+           std::to_string(fans[i].loop_position) + ", smallest angle " + formatNumber(fans[i].min_angle_degrees, 6) +
            " degrees)";
   };
   const auto element = [&](std::size_t i) { return ElementId{2, static_cast<Index>(fans[i].cell)}; };

@@ -1,7 +1,8 @@
 #include "tessella/sim/config_value.hpp"
 
-#include <charconv>
 #include <string>
+
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::sim {
 
@@ -23,9 +24,7 @@ namespace {
 // Shortest text that reads back as the same double, so run.yaml reproduces
 // a run bit for bit.
 std::string formatDouble(double x) {
-  char buf[64];
-  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, x);
-  std::string s(buf, end);
+  std::string s = formatNumber(x);
   // Keep floats recognisable as floats ("1.0", not "1").
   if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
   return s;

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
+
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::sim {
 
@@ -25,18 +26,13 @@ bool isTemplatePath(const std::string& path) { return path.find(kEntryPlaceholde
 
 std::string KeySpec::name() const { return leafName(path); }
 
-namespace {
-std::string number(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-}  // namespace
-
 std::string KeySpec::rangeText() const {
+  // Six significant digits, as printf's %g: bounds are round declared numbers, and integer bounds read
+  // "100000" rather than the shorter "1e+05" (docs/config.md is generated from this text).
+  const auto bound = [](double x) { return formatNumber(x, 6); };
   std::string s;
-  if (min) s += (min_exclusive ? "> " : ">= ") + number(*min);
-  if (max) s += (s.empty() ? "" : " and ") + std::string(max_exclusive ? "< " : "<= ") + number(*max);
+  if (min) s += (min_exclusive ? "> " : ">= ") + bound(*min);
+  if (max) s += (s.empty() ? "" : " and ") + std::string(max_exclusive ? "< " : "<= ") + bound(*max);
   return s;
 }
 

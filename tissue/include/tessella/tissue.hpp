@@ -3,6 +3,7 @@
 #include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/cell_complex.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/grids.hpp"
 #include "tessella/tissue/handles.hpp"
