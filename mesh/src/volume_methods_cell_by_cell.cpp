@@ -4,7 +4,7 @@
 // TetGen keeps those triangles as they are. Two cells sharing a wall therefore
 // share every node on it, and the cells can be meshed in parallel.
 //
-// Why not one TetGen run on all walls (whole_tissue_mesher.cpp): TetGen 1.5's
+// Why not one TetGen run on all walls (volume_methods_whole_tissue.cpp): TetGen 1.5's
 // facet repair walks its whole queue of subfaces for every refinement step
 // that encroaches one, which grows quadratically with the number of walls
 // (docs/meshing.md). Per cell, that queue holds one cell's walls.
@@ -21,6 +21,8 @@
 // triangles meet at folds of ~1e-16 that the coplanarity tolerance decides
 // about: a cell whose run fails is tried again with the next tolerance.
 
+#include "volume_methods.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -34,7 +36,6 @@
 #include "isolated_tasks.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tetgen_support.hpp"
-#include "volume_methods.hpp"
 #include "wall_surface_mesh.hpp"
 
 namespace tessella::mesh_detail {

@@ -1,4 +1,4 @@
-#include "property_arrays.hpp"
+#include "vtu_property_arrays.hpp"
 
 #include <type_traits>
 

@@ -15,6 +15,8 @@
 // mesher: a failed assertion in TetGen 1.5 calls abort(), which must not take
 // the caller's process with it.
 
+#include "volume_methods.hpp"
+
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -28,7 +30,6 @@
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tetgen_support.hpp"
-#include "volume_methods.hpp"
 
 namespace tessella::mesh_detail {
 namespace {

@@ -1,7 +1,8 @@
+#include "tessella/io/vtu.hpp"
+
 #include <algorithm>
 #include <cctype>
 
-#include "tessella/io/vtu.hpp"
 #include "tessella/tissue/errors.hpp"
 
 namespace tessella::io {

@@ -9,6 +9,8 @@
 // before refinement (to mark the mesh domain, so holes between cells stay
 // empty) and once after it (refinement replaces faces).
 
+#include "tessella/mesh/mesh_tissue.hpp"
+
 #include <algorithm>
 #include <limits>
 #include <queue>
@@ -26,7 +28,6 @@
 
 #include "bounded_refinement.hpp"
 #include "tessella/mesh/geometry_check.hpp"
-#include "tessella/mesh/mesh_tissue.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"

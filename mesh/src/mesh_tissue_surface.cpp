@@ -21,6 +21,8 @@
 // them), and every refinement runs within a vertex budget
 // (bounded_refinement.hpp) that raises a GeometryError naming the cell.
 
+#include "tessella/mesh/mesh_tissue.hpp"
+
 #include <array>
 #include <string>
 #include <vector>
@@ -28,7 +30,6 @@
 #include "planar_pieces_mesher.hpp"
 #include "polygon_fan.hpp"
 #include "tessella/mesh/geometry_check.hpp"
-#include "tessella/mesh/mesh_tissue.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"

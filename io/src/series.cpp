@@ -1,9 +1,10 @@
+#include "tessella/io/series.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 
 #include "tessella/io/pvd.hpp"
-#include "tessella/io/series.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "series_naming.hpp"
 

@@ -1,7 +1,8 @@
+#include "tessella/io/mesh_vtu.hpp"
+
 #include <filesystem>
 
 #include "series_naming.hpp"
-#include "tessella/io/mesh_vtu.hpp"
 #include "tessella/io/pvd.hpp"
 
 namespace tessella::io {

@@ -1,6 +1,8 @@
 // readTissueVtu: a snapshot back into a Tissue, through the same builders
 // the generators use, so the result is an ordinary, validated tissue.
 
+#include "tessella/io/vtu.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -20,10 +22,9 @@
 #include <vtkUnstructuredGrid.h>
 
 #include "finite_values.hpp"
-#include "property_arrays.hpp"
+#include "vtu_property_arrays.hpp"
 #include "snapshot_checksum.hpp"
 #include "snapshot_format.hpp"
-#include "tessella/io/vtu.hpp"
 #include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"

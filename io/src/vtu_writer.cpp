@@ -1,6 +1,8 @@
 // writeTissueVtu: a tissue as a vtkUnstructuredGrid, built straight into
 // preallocated VTK buffers (no per-item InsertNext), then written by VTK.
 
+#include "tessella/io/vtu.hpp"
+
 #include <algorithm>
 #include <cstring>
 #include <string>
@@ -22,10 +24,9 @@
 #include <vtkUnstructuredGrid.h>
 
 #include "finite_values.hpp"
-#include "property_arrays.hpp"
+#include "vtu_property_arrays.hpp"
 #include "snapshot_checksum.hpp"
 #include "snapshot_format.hpp"
-#include "tessella/io/vtu.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "vtu_file.hpp"
 

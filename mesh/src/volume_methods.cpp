@@ -1,17 +1,16 @@
-// meshVolumeTissue: checks the 3D tissue, then hands it to the volume method
-// the options name (volume_methods.hpp).
+// What the two volume methods share: the seed point of a cell's region.
 
-#include <string>
-
-#include "interior_point.hpp"
-#include "tessella/mesh/mesh_tissue.hpp"
-#include "tessella/tissue/errors.hpp"
-#include "tessella/tissue/geometry.hpp"
 #include "volume_methods.hpp"
 
-namespace tessella {
+#include <cmath>
+#include <string>
+#include <vector>
 
-namespace mesh_detail {
+#include "interior_point.hpp"
+#include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/geometry.hpp"
+
+namespace tessella::mesh_detail {
 
 Vec3 cellSeed(const Tissue& t, const WallTriangulation& walls, CellId c) {
   std::vector<Triangle> outward;
@@ -30,18 +29,4 @@ Vec3 cellSeed(const Tissue& t, const WallTriangulation& walls, CellId c) {
   return *seed;
 }
 
-}  // namespace mesh_detail
-
-FeMesh meshVolumeTissue(const Tissue& t, const MeshOptions& options) {
-  validateMeshOptions(options);
-  if (t.dim() != 3)
-    throw InputError("meshVolumeTissue needs a 3D tissue, got one of dimension " + std::to_string(t.dim()));
-  mesh_detail::WallTriangulation walls;
-  if (const auto report = mesh_detail::checkVolumeGeometry(t, options, walls); !report)
-    throw GeometryError("cannot mesh the tissue: " + report.message, report.element);
-  checkElementLimit(t, options);
-  return options.volume_method == VolumeMethod::WholeTissue ? mesh_detail::meshWholeTissue(t, options, walls)
-                                                            : mesh_detail::meshCellByCell(t, options, walls);
-}
-
-}  // namespace tessella
+}  // namespace tessella::mesh_detail
