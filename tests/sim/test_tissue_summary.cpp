@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "tessella/sim/tissue_summary.hpp"
+#include "tessella/sim/run/tissue_summary.hpp"
 #include "tessella/tissue/grids.hpp"
 
 using namespace tessella;
