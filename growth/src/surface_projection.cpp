@@ -21,7 +21,7 @@ SurfaceProjection sphereProjection(const Vec3& center, double radius) {
 
 SurfaceProjection paraboloidProjection(const Vec3& apex, double curvature) {
   if (!(curvature > 0) || !std::isfinite(curvature))
-    throw InputError("paraboloid projection: curvature = " + std::to_string(curvature) +
+    throw InputError("paraboloid projection: curvature = " + formatNumber(curvature) +
                      " must be > 0");
   return [apex, curvature](const Vec3& p) -> Vec3 {
     // Work in the meridian plane: point (r0, z0) relative to the apex, surface

@@ -4,6 +4,7 @@
 // estimate (squared ratio of the extreme diagonal entries of L).
 #include "external_solver.hpp"
 #include "tessella/solvers/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 #include <limits>
 #include <sstream>
@@ -39,7 +40,7 @@ class CholmodSolver final : public ExternalSolver {
     const double tol = std::max(options_.pivot_tolerance, 64.0 * n * std::numeric_limits<double>::epsilon());
     if (!(rc > tol)) {
       std::ostringstream msg;
-      msg << "LinearSolver (CHOLMOD): matrix is singular (reciprocal condition estimate " << rc << ", n = " << A.rows()
+      msg << "LinearSolver (CHOLMOD): matrix is singular (reciprocal condition estimate " << formatNumber(rc, 6) << ", n = " << A.rows()
           << ")";
       throw FactorizationError(msg.str());
     }
