@@ -6,7 +6,7 @@
 #include "exact_text.hpp"
 #include "tessella/io/vtu.hpp"
 #include "tessella/sim/config_error.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 
 namespace tessella::sim {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "tessella/sim/tissue_summary.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 
 using namespace tessella;
 using namespace tessella::sim;

@@ -24,9 +24,9 @@
 #include "tessella/io/vtu.hpp"
 #include "tessella/sim/config.hpp"
 #include "tessella/sim/schema.hpp"
-#include "tessella/tissue/dome.hpp"
+#include "tessella/generators/dome.hpp"
 #include "tessella/tissue/tissue.hpp"
-#include "tessella/tissue/voronoi.hpp"
+#include "tessella/generators/voronoi.hpp"
 
 namespace tessella::sim {
 
