@@ -2,7 +2,7 @@
 # One module = one directory = one library target `tessella_<name>` with the
 # aliases `tessella::<name>` and `Tessella::<name>` (the latter is the name an
 # installed package exports, so code written against either works unchanged).
-# Sources are every src/*.cpp (so that adding a file needs no CMake edit);
+# Sources are every src/**/*.cpp, subfolders too (so that adding a file needs no CMake edit);
 # headers live in include/tessella/<name>/.
 #
 # With TESSELLA_INSTALL on, the module also installs itself: its library into
@@ -12,7 +12,7 @@ include(GNUInstallDirs)
 
 function(tessella_add_module name)
   cmake_parse_arguments(ARG "" "" "PUBLIC_DEPS;PRIVATE_DEPS" ${ARGN})
-  file(GLOB sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/src/*.cpp)
+  file(GLOB_RECURSE sources CONFIGURE_DEPENDS ${CMAKE_CURRENT_SOURCE_DIR}/src/*.cpp)
   set(target tessella_${name})
   if(sources)
     add_library(${target} STATIC ${sources})

@@ -8,10 +8,10 @@
 #include "safe_step.hpp"
 #include "tessella/growth/division_scheduler.hpp"
 #include "tessella/growth/growth_integrator.hpp"
-#include "tessella/sim/run.hpp"
-#include "tessella/sim/series_output.hpp"
+#include "tessella/sim/run/run.hpp"
+#include "tessella/sim/run/series_output.hpp"
+#include "tessella/sim/sections/simulation_config.hpp"
 #include "tessella/sim/simulation.hpp"
-#include "tessella/sim/simulation_config.hpp"
 
 namespace tessella::python {
 

@@ -12,9 +12,9 @@
 #include <map>
 #include <numeric>
 
-#include "tessella/sim/coupling_stages.hpp"
-#include "tessella/sim/run.hpp"
+#include "tessella/sim/run/run.hpp"
 #include "tessella/sim/simulation.hpp"
+#include "tessella/sim/stages/coupling_stages.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "test_support.hpp"
 

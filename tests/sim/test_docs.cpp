@@ -3,8 +3,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "tessella/sim/schema_docs.hpp"
-#include "tessella/sim/tessella_schema.hpp"
+#include "tessella/sim/config/schema_docs.hpp"
+#include "tessella/sim/sections/tessella_schema.hpp"
 #include "test_support.hpp"
 
 using namespace tessella::sim;

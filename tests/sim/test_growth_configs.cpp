@@ -6,9 +6,9 @@
 #include <string>
 
 #include "tessella/growth/bump_field.hpp"
-#include "tessella/sim/config_error.hpp"
-#include "tessella/sim/growth_stages.hpp"
+#include "tessella/sim/config/config_error.hpp"
 #include "tessella/sim/simulation.hpp"
+#include "tessella/sim/stages/growth_stages.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/validate.hpp"
 #include "test_support.hpp"

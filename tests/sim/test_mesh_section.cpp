@@ -2,11 +2,11 @@
 
 #include <filesystem>
 
-#include "tessella/sim/config_loader.hpp"
-#include "tessella/sim/mesh_section.hpp"
-#include "tessella/sim/run.hpp"
-#include "tessella/sim/simulation_config.hpp"
-#include "tessella/sim/tessella_schema.hpp"
+#include "tessella/sim/config/config_loader.hpp"
+#include "tessella/sim/run/run.hpp"
+#include "tessella/sim/sections/mesh_section.hpp"
+#include "tessella/sim/sections/simulation_config.hpp"
+#include "tessella/sim/sections/tessella_schema.hpp"
 #include "test_support.hpp"
 
 using namespace tessella::sim;

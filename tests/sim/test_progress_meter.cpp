@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 
-#include "tessella/sim/progress_meter.hpp"
+#include "tessella/sim/run/progress_meter.hpp"
 
 using namespace tessella::sim;
 using namespace std::chrono_literals;

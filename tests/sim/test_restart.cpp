@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "tessella/io/vtu.hpp"
-#include "tessella/sim/config_loader.hpp"
+#include "tessella/sim/config/config_loader.hpp"
 #include "tessella/sim/simulation.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "test_support.hpp"

@@ -9,8 +9,8 @@
 #include <sstream>
 
 #include "tessella/io/vtu.hpp"
-#include "tessella/sim/run.hpp"
-#include "tessella/sim/run_record.hpp"
+#include "tessella/sim/run/run.hpp"
+#include "tessella/sim/run/run_record.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/validate.hpp"
 #include "test_support.hpp"

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "tessella/sim/simulation_config.hpp"
-#include "tessella/sim/tessella_schema.hpp"
+#include "tessella/sim/sections/simulation_config.hpp"
+#include "tessella/sim/sections/tessella_schema.hpp"
 #include "test_support.hpp"
 
 using namespace tessella::sim;

@@ -8,11 +8,11 @@
 #include <cmath>
 #include <string>
 
-#include "tessella/sim/config_loader.hpp"
-#include "tessella/sim/coupling_stages.hpp"
-#include "tessella/sim/run_record.hpp"
+#include "tessella/sim/config/config_loader.hpp"
+#include "tessella/sim/run/run_record.hpp"
+#include "tessella/sim/sections/tessella_schema.hpp"
 #include "tessella/sim/simulation.hpp"
-#include "tessella/sim/tessella_schema.hpp"
+#include "tessella/sim/stages/coupling_stages.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "test_support.hpp"
 

@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "tessella/io/vtu.hpp"
-#include "tessella/sim/config_loader.hpp"
-#include "tessella/sim/run.hpp"
+#include "tessella/sim/config/config_loader.hpp"
+#include "tessella/sim/run/run.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "test_support.hpp"
 

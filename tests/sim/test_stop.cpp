@@ -8,7 +8,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "tessella/sim/run.hpp"
+#include "tessella/sim/run/run.hpp"
 #include "tessella/sim/simulation.hpp"
 #include "tessella/generators/grids.hpp"
 #include "test_support.hpp"

@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 
-#include "tessella/sim/suggest.hpp"
+#include "tessella/sim/config/suggest.hpp"
 
 using namespace tessella::sim;
 

@@ -11,7 +11,7 @@
 #include <set>
 #include <string>
 
-#include "tessella/sim/config_error.hpp"
+#include "tessella/sim/config/config_error.hpp"
 #include "tessella/sim/simulation.hpp"
 #include "tessella/tissue/validate.hpp"
 

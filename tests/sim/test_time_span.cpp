@@ -1,6 +1,6 @@
 #include <catch2/catch.hpp>
 
-#include "tessella/sim/time_section.hpp"
+#include "tessella/sim/sections/time_section.hpp"
 
 using tessella::sim::TimeSpan;
 

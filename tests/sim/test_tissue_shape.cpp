@@ -9,7 +9,7 @@
 #include <string>
 
 #include "tessella/io/vtu.hpp"
-#include "tessella/sim/run.hpp"
+#include "tessella/sim/run/run.hpp"
 #include "tessella/sim/simulation.hpp"
 #include "tessella/generators/grids.hpp"
 #include "test_support.hpp"

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
-#include "tessella/sim/tissue_summary.hpp"
 #include "tessella/generators/grids.hpp"
+#include "tessella/sim/run/tissue_summary.hpp"
 
 using namespace tessella;
 using namespace tessella::sim;

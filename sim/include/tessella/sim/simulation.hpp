@@ -24,9 +24,9 @@
 #include <vector>
 
 #include "tessella/io/vtu.hpp"
-#include "tessella/sim/simulation_config.hpp"
-#include "tessella/sim/stage.hpp"
-#include "tessella/sim/time_section.hpp"
+#include "tessella/sim/sections/simulation_config.hpp"
+#include "tessella/sim/sections/time_section.hpp"
+#include "tessella/sim/stages/stage.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/tissue.hpp"
 

@@ -1,0 +1,43 @@
+#pragma once
+// SeriesOutput: writes a Simulation's tissue as a ParaView series
+// (io::SeriesWriter) on a schedule: the initial state, every `every` steps,
+// and the final state, each time exactly once.
+
+#include <cstddef>
+#include <memory>
+#include <string>
+
+#include "tessella/io/series.hpp"
+#include "tessella/sim/sections/output_section.hpp"
+#include "tessella/sim/simulation.hpp"
+
+namespace tessella::sim {
+
+class SeriesOutput {
+ public:
+  /// Creates the directory (through io::SeriesWriter).
+  SeriesOutput(const std::string& directory, const OutputSpec& spec);
+
+  /// Writes the current state if due at the simulation's current step.
+  void writeIfDue(const Simulation& simulation);
+  /// Writes the current state now (once per step: a second call is a no-op).
+  void write(const Simulation& simulation);
+
+  std::size_t snapshots() const { return writer_.steps(); }
+  const std::string& pvdPath() const { return writer_.pvdPath(); }
+
+ private:
+  io::SeriesWriter writer_;
+  std::size_t every_;
+  std::size_t last_written_step_ = static_cast<std::size_t>(-1);
+};
+
+/// Writes the current state now and registers a step callback that keeps the
+/// series up to date. The callback owns the returned output.
+std::shared_ptr<SeriesOutput> attachSeriesOutput(Simulation& simulation, const std::string& directory,
+                                                 const OutputSpec& spec);
+
+/// Number of snapshots a run of `steps` steps writes with output every `every`.
+std::size_t expectedSnapshots(std::size_t steps, std::size_t every);
+
+}  // namespace tessella::sim

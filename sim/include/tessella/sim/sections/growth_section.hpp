@@ -1,0 +1,51 @@
+#pragma once
+// The `growth:` and `division:` sections: the velocity field that moves the
+// vertices every step (and how), and the rule and threshold by which cells
+// divide. Both are off by default (growth.field: none, division.rule: none).
+// Read into ready-to-use growth/ objects, so every error (a bad expression,
+// a dome projection without a dome tissue) is a ConfigError at its key.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tessella/growth/division_rule.hpp"
+#include "tessella/growth/division_scheduler.hpp"
+#include "tessella/growth/growth_integrator.hpp"
+#include "tessella/growth/size_threshold.hpp"
+#include "tessella/growth/velocity_field.hpp"
+#include "tessella/sim/config/config.hpp"
+#include "tessella/sim/config/schema.hpp"
+#include "tessella/sim/sections/tissue_section.hpp"
+
+namespace tessella::sim {
+
+struct GrowthSpec {
+  /// Null when growth.field is none (no growth stage).
+  std::shared_ptr<const growth::VelocityField> field;
+  growth::GrowthOptions options;
+};
+
+struct DivisionSpec {
+  /// Null when division.rule is none (no division stage).
+  std::shared_ptr<const growth::DivisionRule> rule;
+  std::optional<growth::SizeThreshold> threshold;
+  growth::DivisionOptions options;
+  /// division.gate: a cell divides only where the double cell property
+  /// `gate_field` (a solver field's cell average) exceeds `gate_above`.
+  /// Empty: no gate.
+  std::string gate_field;
+  double gate_above = 0.0;
+};
+
+void declareGrowthSection(Schema& schema);
+void declareDivisionSection(Schema& schema);
+/// `tissue` is needed for growth.surface: dome (the dome the tissue was built on).
+GrowthSpec readGrowthSection(const Config& config, const TissueSpec& tissue);
+DivisionSpec readDivisionSection(const Config& config);
+/// division.gate.field must name one of the cell properties the solver
+/// sections write (`fields`); ConfigError at the key otherwise.
+void checkDivisionGate(const Config& config, const DivisionSpec& division, const std::vector<std::string>& fields);
+
+}  // namespace tessella::sim

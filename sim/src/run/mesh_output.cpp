@@ -1,0 +1,39 @@
+#include "tessella/sim/run/mesh_output.hpp"
+
+#include "tessella/mesh/mesh_tissue.hpp"
+
+namespace tessella::sim {
+
+MeshOutput::MeshOutput(const std::string& directory, const MeshSpec& spec, std::size_t every,
+                       const io::VtuOptions& vtu)
+    : writer_(directory, spec.name, vtu), options_(spec.options), every_(every) {}
+
+void MeshOutput::writeIfDue(const Simulation& simulation) {
+  if (simulation.stepsDone() % every_ == 0 || simulation.finished()) write(simulation);
+}
+
+void MeshOutput::write(const Simulation& simulation) {
+  if (simulation.stepsDone() == last_written_step_) return;
+  const Tissue& tissue = simulation.tissue();
+  // Meshing is the expensive part: only when the tissue moved or changed shape.
+  if (!mesh_ || tissue.topologyVersion() != topology_ || tissue.geometryVersion() != geometry_) {
+    mesh_ = meshTissue(tissue, options_);
+    topology_ = tissue.topologyVersion();
+    geometry_ = tissue.geometryVersion();
+    ++meshes_;
+  }
+  writer_.write(*mesh_, simulation.time());
+  last_written_step_ = simulation.stepsDone();
+}
+
+std::shared_ptr<MeshOutput> attachMeshOutput(Simulation& simulation, const std::string& directory,
+                                             const MeshSpec& spec, const OutputSpec& output) {
+  if (!spec.output) return nullptr;
+  auto mesh_output =
+      std::make_shared<MeshOutput>(directory, spec, spec.every > 0 ? spec.every : output.every, output.vtu);
+  mesh_output->write(simulation);
+  simulation.onStep([mesh_output](const Simulation& s) { mesh_output->writeIfDue(s); });
+  return mesh_output;
+}
+
+}  // namespace tessella::sim

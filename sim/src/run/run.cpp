@@ -1,0 +1,115 @@
+#include "tessella/sim/run/run.hpp"
+
+#include <filesystem>
+#include <functional>
+#include <regex>
+
+#include "tessella/sim/run/field_output.hpp"
+#include "tessella/sim/run/run_record.hpp"
+#include "tessella/sim/run/statistics_output.hpp"
+
+namespace fs = std::filesystem;
+
+namespace tessella::sim {
+
+namespace {
+
+/// The files of a previous run of series `name` in `dir` (with_fields: and
+/// of the solver-field series), with the temporaries an interrupted write
+/// left behind (FILE.tmp-PID-N, run.yaml.tmp of older versions).
+std::vector<fs::path> previousRunFiles(const fs::path& dir, const std::string& name, bool with_fields = false) {
+  std::vector<fs::path> files;
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return files;
+  const std::string tmp = R"((\.tmp-\d+-\d+)?)";
+  const std::regex series(std::regex_replace(name, std::regex(R"([.^$|()\[\]{}*+?\\-])"), R"(\$&)") +
+                          R"((\.pvd|_\d+\.vtu))" + tmp);
+  const std::regex fields(std::string(kFieldSeriesName) + R"((_walls)?(\.pvd|_\d+\.vtu))" + tmp);
+  const std::regex record(std::regex_replace(kRunRecordName, std::regex(R"(\.)"), R"(\.)") +
+                          R"((\.tmp|\.tmp-\d+-\d+)?)");
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    const std::string file = entry.path().filename().string();
+    if (std::regex_match(file, record) || file == kStatisticsName || std::regex_match(file, series) ||
+        (with_fields && std::regex_match(file, fields)))
+      files.push_back(entry.path());
+  }
+  return files;
+}
+
+}  // namespace
+
+PreparedRun::PreparedRun(SimulationConfig config, Simulation simulation, std::string directory, bool overwrite)
+    : config_(std::move(config)),
+      simulation_(std::move(simulation)),
+      directory_(std::move(directory)),
+      overwrite_(overwrite) {}
+
+PreparedRun PreparedRun::prepare(SimulationConfig config, const RunOptions& options) {
+  // Where the directory comes from decides where an error about it points.
+  std::string chosen;
+  std::function<ConfigError(const std::string&)> error;
+  if (options.output_directory) {
+    chosen = *options.output_directory;
+    if (chosen.empty())
+      throw ConfigError(SourceLocation{"--out ''", 0, 0}, "output.directory",
+                        "the output directory is empty; give a directory name (or leave --out out to use "
+                        "output.directory, else runs/<config name>)");
+    error = [&](const std::string& p) {
+      return ConfigError(SourceLocation{"--out " + chosen, 0, 0}, "output.directory", p);
+    };
+  } else if (!config.output.directory.empty()) {
+    chosen = config.output.directory;
+    error = [&](const std::string& p) { return config.config.errorAt("output.directory", p); };
+  } else {
+    chosen = (fs::path("runs") / config.config.name()).string();
+    error = [&](const std::string& p) {
+      return ConfigError(SourceLocation{config.config.source(), 0, 0}, "output.directory",
+                         "(default " + chosen + ") " + p);
+    };
+  }
+  const fs::path dir = fs::absolute(chosen).lexically_normal();
+  std::error_code ec;
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw error("'" + dir.string() + "' exists and is not a directory");
+  if (!options.overwrite) {
+    const auto previous = previousRunFiles(dir, config.output.name);
+    if (!previous.empty())
+      throw error("'" + dir.string() + "' already holds a run (" + previous.front().filename().string() +
+                  "); choose another directory or pass --overwrite to replace it");
+  }
+
+  Simulation simulation = Simulation::fromConfig(config);  // the tissue, before anything is written
+  readMeshSection(config.config);  // its errors too (read again by execute())
+  config.output.directory = dir.string();
+  config.config.set("output.directory", dir.string(), {}, ValueOrigin::Derived);
+  return PreparedRun(std::move(config), std::move(simulation), dir.string(), options.overwrite);
+}
+
+std::string PreparedRun::runRecordPath() const { return (fs::path(directory_) / kRunRecordName).string(); }
+
+void PreparedRun::execute() {
+  if (output_) throw std::logic_error("PreparedRun::execute: already executed");
+  if (simulation_.stopRequested()) return;  // stopped before anything was written
+  std::error_code ec;
+  fs::create_directories(directory_, ec);
+  if (ec) throw InputError("cannot create the output directory " + directory_ + ": " + ec.message());
+  if (overwrite_)
+    for (const fs::path& file : previousRunFiles(directory_, config_.output.name, true)) {
+      fs::remove(file, ec);
+      if (ec) throw InputError("cannot remove the previous run's " + file.string() + ": " + ec.message());
+    }
+  if (overwrite_)
+    for (const std::string& series : {MeshSpec{}.name, MeshSpec{}.name + "_walls"})  // a previous mesh.output
+      for (const fs::path& file : previousRunFiles(directory_, series)) {
+        fs::remove(file, ec);
+        if (ec) throw InputError("cannot remove the previous run's " + file.string() + ": " + ec.message());
+      }
+  writeRunRecord(config_.config, runRecordPath());
+  output_ = attachSeriesOutput(simulation_, directory_, config_.output);
+  mesh_output_ = attachMeshOutput(simulation_, directory_, readMeshSection(config_.config), config_.output);
+  field_output_ = attachFieldOutput(simulation_, directory_, config_.output);
+  statistics_ = attachStatisticsOutput(simulation_, directory_, solverFields(config_), config_.output.every);
+  simulation_.run();
+}
+
+}  // namespace tessella::sim

@@ -1,0 +1,32 @@
+#include "tessella/sim/run/series_output.hpp"
+
+namespace tessella::sim {
+
+SeriesOutput::SeriesOutput(const std::string& directory, const OutputSpec& spec)
+    : writer_(directory, spec.name, spec.vtu), every_(spec.every) {}
+
+void SeriesOutput::writeIfDue(const Simulation& simulation) {
+  const std::size_t step = simulation.stepsDone();
+  if (step % every_ == 0 || simulation.finished()) write(simulation);
+}
+
+void SeriesOutput::write(const Simulation& simulation) {
+  if (simulation.stepsDone() == last_written_step_) return;
+  writer_.write(simulation.tissue(), simulation.time(), simulation.runState());
+  last_written_step_ = simulation.stepsDone();
+}
+
+std::shared_ptr<SeriesOutput> attachSeriesOutput(Simulation& simulation, const std::string& directory,
+                                                 const OutputSpec& spec) {
+  auto output = std::make_shared<SeriesOutput>(directory, spec);
+  output->write(simulation);
+  simulation.onStep([output](const Simulation& s) { output->writeIfDue(s); });
+  return output;
+}
+
+std::size_t expectedSnapshots(std::size_t steps, std::size_t every) {
+  // step 0, every multiple of `every` up to steps, and the last step if it is not one.
+  return 1 + steps / every + (steps % every != 0 ? 1 : 0);
+}
+
+}  // namespace tessella::sim

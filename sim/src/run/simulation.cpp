@@ -1,0 +1,163 @@
+#include "tessella/sim/simulation.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include "../config/exact_text.hpp"
+#include "tessella/mesh/mesh_tissue.hpp"
+#include "tessella/sim/config/config_error.hpp"
+#include "tessella/sim/sections/mesh_section.hpp"
+
+namespace tessella::sim {
+
+namespace {
+// The stage stream is derived from the run's seed rather than equal to it,
+// so it does not replay the draws the generator made for seed points.
+std::mt19937_64 stageStream(std::uint64_t seed) {
+  std::seed_seq seq{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32), 0x5eedu};
+  return std::mt19937_64(seq);
+}
+
+std::string number(double x) { return formatValue(x); }
+}  // namespace
+
+using detail::exactText;
+using detail::parseExact;
+
+io::RunState Simulation::runState() const {
+  std::ostringstream stream;
+  stream << rng_;
+  io::RunState state = parameters_.carried;
+  state["clock.start"] = exactText(parameters_.time.clockOrigin());
+  state["clock.dt"] = exactText(parameters_.time.dt);
+  state["clock.step"] = std::to_string(parameters_.time.origin_steps + step_);
+  state["rng_seed"] = std::to_string(parameters_.rng_seed);
+  state["rng.stream"] = stream.str();
+  return state;
+}
+
+std::string continueRunState(const io::RunState& state, double snapshot_time, std::uint64_t seed, TimeSpan& time) {
+  const auto value = [&](const char* key) -> const std::string* {
+    const auto it = state.find(key);
+    return it == state.end() ? nullptr : &it->second;
+  };
+  double start = 0, dt = 0;
+  std::size_t step = 0;
+  const std::string *s = value("clock.start"), *d = value("clock.dt"), *k = value("clock.step");
+  // The original clock, when it is the one the config runs on and it lands
+  // on the snapshot's time exactly; otherwise the clock starts afresh there.
+  if (time.start == snapshot_time && s && d && k && parseExact(*s, start) && parseExact(*d, dt) &&
+      parseExact(*k, step) && step > 0 && dt == time.dt && start + static_cast<double>(step) * dt == snapshot_time) {
+    time.origin = start;
+    time.origin_steps = step;
+  }
+  std::uint64_t saved_seed = 0;
+  const std::string *saved = value("rng_seed"), *stream = value("rng.stream");
+  if (!(saved && stream && parseExact(*saved, saved_seed) && saved_seed == seed)) return {};
+  std::istringstream text(*stream);
+  std::mt19937_64 check;
+  text >> check;
+  if (text.fail())
+    throw InputError("its run state holds rng.stream = '" + stream->substr(0, 40) +
+                     (stream->size() > 40 ? "...'" : "'") + ", which is not a state of the random stream");
+  return *stream;
+}
+
+Simulation::Simulation(Tissue tissue, SimulationParameters parameters)
+    : tissue_(std::move(tissue)), parameters_(parameters), rng_(stageStream(parameters.rng_seed)) {
+  const TimeSpan& t = parameters_.time;
+  if (!std::isfinite(t.start) || !std::isfinite(t.end) || !(t.end >= t.start))
+    throw InputError("Simulation: time span [" + number(t.start) + ", " + number(t.end) +
+                     "] is not a finite interval with end >= start");
+  if (!(t.dt > 0) || !std::isfinite(t.dt)) throw InputError("Simulation: dt must be > 0, got " + number(t.dt));
+  if ((t.end - t.start) / t.dt > kMaxSteps)
+    throw InputError("Simulation: " + number((t.end - t.start) / t.dt) + " steps is more than the limit of " +
+                     number(kMaxSteps));
+  if (!parameters_.rng_state.empty()) {
+    std::istringstream saved(parameters_.rng_state);
+    saved >> rng_;
+    if (saved.fail()) throw InputError("Simulation: the saved random stream (rng.stream) is not a valid state");
+  }
+  tissue_.setTime(t.start);
+}
+
+namespace {
+// A mesh the size bounds make too large is refused before the stages start,
+// not at the first solve (after output began); named at the size key.
+void checkMeshSize(const SimulationConfig& config, const Tissue& tissue) {
+  const Config& c = config.config;
+  if (config.diffusion.species.empty() && !config.elasticity.enabled && !c.getBool("mesh.output")) return;
+  const MeshOptions o = meshOptionsFromConfig(c);
+  try {
+    checkElementLimit(tissue, o);
+  } catch (const InputError& e) {
+    const bool by_volume = tissue.dim() == 3 && o.max_volume > 0 &&
+                           (o.max_edge_length == 0 || o.volume_method == VolumeMethod::WholeTissue);
+    throw c.errorAt(by_volume ? "mesh.max_volume" : "mesh.max_edge_length", e.what());
+  }
+}
+}  // namespace
+
+Simulation Simulation::fromConfig(const SimulationConfig& config) {
+  SimulationParameters parameters{config.time, config.rng_seed, {}, {}};
+  if (const auto* snapshot = std::get_if<SnapshotSpec>(&config.tissue)) parameters.rng_state = snapshot->rng_state;
+  if (const std::optional<Dome> dome = tissueDome(config.tissue)) parameters.carried = domeRunState(*dome);
+  Simulation sim(buildTissue(config.tissue, config.rng_seed, config.config), parameters);
+  checkMeshSize(config, sim.tissue());
+  for (auto& stage : makeStages(config)) sim.addStage(std::move(stage));
+  return sim;
+}
+
+Simulation Simulation::fromFile(const std::string& path, const std::vector<std::string>& overrides) {
+  return fromConfig(loadSimulationConfigFile(path, overrides));
+}
+
+Simulation Simulation::fromYaml(const std::string& yaml, const std::vector<std::string>& overrides,
+                                const std::string& base_directory) {
+  return fromConfig(loadSimulationConfigString(yaml, overrides, base_directory));
+}
+
+void Simulation::addStage(std::unique_ptr<Stage> stage) {
+  if (!stage) throw std::invalid_argument("Simulation::addStage: null stage");
+  try {
+    stage->prepare(tissue_, time());
+  } catch (const std::exception& e) {
+    throw SimulationError("t = " + number(time()) + ", preparing stage '" + stage->name() + "': " + e.what());
+  }
+  stages_.push_back(std::move(stage));
+}
+
+void Simulation::onStep(StepCallback callback) {
+  if (!callback) throw std::invalid_argument("Simulation::onStep: empty callback");
+  callbacks_.push_back(std::move(callback));
+}
+
+void Simulation::step() {
+  if (finished()) throw std::logic_error("Simulation::step: the time span is already over");
+  const double t0 = time();
+  const double t1 = parameters_.time.timeAt(step_ + 1);
+  const StepContext context{step_, t0, t1 - t0, &rng_, t1};
+  for (auto& stage : stages_) {
+    try {
+      stage->apply(tissue_, context);
+    } catch (const std::exception& e) {
+      throw SimulationError("step " + std::to_string(step_ + 1) + " (t = " + number(t0) + "), stage '" +
+                            stage->name() + "': " + e.what());
+    }
+  }
+  ++step_;
+  tissue_.setTime(t1);
+  for (auto& callback : callbacks_) callback(*this);
+}
+
+void Simulation::runUntil(double t) {
+  const double slack = 1e-6 * parameters_.time.dt;
+  while (!finished() && !stopRequested() && time() < t - slack) step();
+}
+
+void Simulation::run() {
+  while (!finished() && !stopRequested()) step();
+}
+
+}  // namespace tessella::sim

@@ -1,0 +1,126 @@
+#include "tessella/sim/sections/mesh_section.hpp"
+
+#include <utility>
+
+#include "tessella/tissue/errors.hpp"
+
+namespace tessella::sim {
+
+void declareMeshSection(Schema& s) {
+  s.section("mesh",
+            "The finite-element mesh of the tissue (docs/meshing.md): triangles for 2D and curved "
+            "tissues (CGAL), tetrahedra for 3D tissues (TetGen). Every element lies in one cell and "
+            "cells sharing a wall share its nodes. Used by stages that solve on the tissue and by "
+            "mesh.output.");
+  s.key("mesh.max_edge_length", ValueType::Float,
+        "2D and curved tissues: longest triangle edge, in the tissue's length unit; 3D tissues meshed "
+        "cell by cell: longest wall-triangle edge. 0 = no size bound (only the angle bound refines).")
+      .byDefault(0.0)
+      .atLeast(0);
+  s.key("mesh.min_angle", ValueType::Float,
+        "2D and curved tissues, and the walls of 3D tissues meshed cell by cell: smallest triangle angle, "
+        "in degrees. Refinement is proven to end up to 20.7; up to 33 is accepted. Sharper corners "
+        "between walls stay as they are.")
+      .byDefault(20.0)
+      .atLeast(0)
+      .atMost(33);
+  s.key("mesh.max_volume", ValueType::Float,
+        "3D tissues: largest tetrahedron volume (TetGen -a). 0 = no volume bound.")
+      .byDefault(0.0)
+      .atLeast(0);
+  s.key("mesh.radius_edge_ratio", ValueType::Float,
+        "3D tissues: bound on circumradius / shortest edge of every tetrahedron (TetGen -q); 2 is "
+        "proven to end, 1.2 - 1.5 is usual.")
+      .byDefault(1.5)
+      .above(1);
+  s.key("mesh.min_dihedral_angle", ValueType::Float,
+        "3D tissues: TetGen's bound on the smallest dihedral angle, in degrees (second number of -q). "
+        "0 = off.")
+      .byDefault(0.0)
+      .atLeast(0)
+      .atMost(70)
+      .max_exclusive = true;
+  s.key("mesh.volume_method", ValueType::Enum,
+        "3D tissues: `cell_by_cell` meshes the walls first (size max_edge_length, else the edge of the "
+        "regular tetrahedron of volume max_volume; angle min_angle), then each cell with TetGen, keeping "
+        "those wall triangles; time grows linearly with the cell count. `whole_tissue` gives TetGen all "
+        "walls at once and lets it refine them, which grades tetrahedra along walls better but grows "
+        "quadratically (TetGen 1.5): for tissues of up to a few hundred cells.")
+      .oneOf(volumeMethodNames())
+      .byDefault(std::string("cell_by_cell"));
+  s.key("mesh.tolerance", ValueType::Float,
+        "Relative to the tissue's bounding-box diagonal: below it a wall counts as planar, and the "
+        "geometry check refuses shorter edges and thinner walls or cells (mean width).")
+      .byDefault(1e-10)
+      .above(0)
+      .atMost(1e-3)
+      .max_exclusive = true;
+  s.key("mesh.max_elements", ValueType::Int,
+        "Refuse, before meshing, a mesh the size bounds (max_edge_length; max_volume in 3D) would make larger "
+        "than this many elements, estimated from the tissue's total area or volume (a lower bound: "
+        "area / (sqrt(3)/4 max_edge_length^2) triangles, volume / max_volume tetrahedra). 0 = no limit.")
+      .byDefault(static_cast<std::int64_t>(kDefaultMaxElements))
+      .atLeast(0);
+  s.key("mesh.output", ValueType::Bool,
+        "Write the mesh as a ParaView series DIR/mesh.pvd listing DIR/mesh_000000.vtu, ... beside the "
+        "tissue series (cell and wall ids as data). The mesh is rebuilt when the tissue changed.")
+      .byDefault(false);
+  s.key("mesh.every", ValueType::Int,
+        "With mesh.output: write a mesh every this many steps (the initial and final states always).")
+      .atLeast(1)
+      .whenAbsent("output.every");
+}
+
+MeshOptions meshOptionsFromConfig(const Config& c) {
+  MeshOptions o;
+  o.max_edge_length = c.getFloat("mesh.max_edge_length");
+  o.min_angle_degrees = c.getFloat("mesh.min_angle");
+  o.max_volume = c.getFloat("mesh.max_volume");
+  o.radius_edge_ratio = c.getFloat("mesh.radius_edge_ratio");
+  o.min_dihedral_degrees = c.getFloat("mesh.min_dihedral_angle");
+  o.tolerance = c.getFloat("mesh.tolerance");
+  o.volume_method = volumeMethodNamed(c.getString("mesh.volume_method"));
+  o.max_elements = static_cast<std::size_t>(c.getInt("mesh.max_elements"));
+  validateMeshOptions(o);  // the schema's ranges are the same; this keeps them in step
+  return o;
+}
+
+namespace {
+
+const std::pair<VolumeMethod, std::string> kVolumeMethods[] = {{VolumeMethod::CellByCell, "cell_by_cell"},
+                                                                {VolumeMethod::WholeTissue, "whole_tissue"}};
+
+}  // namespace
+
+const std::vector<std::string>& volumeMethodNames() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> n;
+    for (const auto& [method, name] : kVolumeMethods) n.push_back(name);
+    return n;
+  }();
+  return names;
+}
+
+VolumeMethod volumeMethodNamed(const std::string& name) {
+  for (const auto& [method, known] : kVolumeMethods)
+    if (known == name) return method;
+  throw InputError("unknown volume method '" + name + "' (cell_by_cell or whole_tissue)");
+}
+
+const std::string& volumeMethodName(VolumeMethod method) {
+  for (const auto& [known, name] : kVolumeMethods)
+    if (known == method) return name;
+  throw InputError("unknown volume method " + std::to_string(static_cast<int>(method)));
+}
+
+MeshSpec readMeshSection(const Config& c) {
+  MeshSpec m;
+  m.options = meshOptionsFromConfig(c);
+  m.output = c.getBool("mesh.output");
+  m.every = c.has("mesh.every") ? static_cast<std::size_t>(c.getInt("mesh.every")) : 0;
+  if (m.output && c.has("output.name") && c.getString("output.name") == m.name)
+    throw c.errorAt("output.name", "'" + m.name + "' is the mesh series' name (mesh.output is on); choose another");
+  return m;
+}
+
+}  // namespace tessella::sim

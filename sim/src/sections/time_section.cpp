@@ -1,0 +1,49 @@
+#include "tessella/sim/sections/time_section.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tessella::sim {
+
+std::size_t TimeSpan::numSteps() const {
+  if (!(end > start)) return 0;
+  if (origin_steps > 0) {
+    // Counted as the uninterrupted run counts them, so both end together.
+    const std::size_t total = TimeSpan{origin, end, dt}.numSteps();
+    return total > origin_steps ? total - origin_steps : 0;
+  }
+  const double ratio = (end - start) / dt;
+  // A span that is a multiple of dt up to rounding gets no sliver step.
+  return static_cast<std::size_t>(std::ceil(ratio - 1e-9 * ratio));
+}
+
+double TimeSpan::timeAt(std::size_t k) const {
+  if (k >= numSteps()) return std::max(start, end);
+  if (origin_steps > 0) return origin + static_cast<double>(origin_steps + k) * dt;
+  return start + static_cast<double>(k) * dt;
+}
+
+void declareTimeSection(Schema& s) {
+  s.section("time", "The simulated time span, in the model's time unit, and the step.");
+  s.key("time.start", ValueType::Float, "Time of the initial tissue.").byDefault(0.0);
+  s.key("time.end", ValueType::Float,
+        "End of the run (>= start). When end - start is not a multiple of dt, the last step is "
+        "shortened to end exactly here.")
+      .byDefault(10.0);
+  s.key("time.dt", ValueType::Float, "Length of one step.").byDefault(1.0).above(0);
+}
+
+TimeSpan readTimeSection(const Config& c) {
+  TimeSpan t{c.getFloat("time.start"), c.getFloat("time.end"), c.getFloat("time.dt")};
+  if (t.end < t.start)
+    throw c.errorAt("time.end", "must be >= time.start (" + formatValue(t.start) + "), got " +
+                                    formatValue(t.end));
+  const double steps = (t.end - t.start) / t.dt;
+  if (!(steps <= kMaxSteps))
+    throw c.errorAt("time.dt", "(time.end - time.start) / time.dt = " + formatValue(steps) +
+                                   " steps is more than the limit of " + formatValue(kMaxSteps) +
+                                   "; got dt = " + formatValue(t.dt));
+  return t;
+}
+
+}  // namespace tessella::sim

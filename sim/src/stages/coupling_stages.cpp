@@ -1,0 +1,260 @@
+#include "tessella/sim/stages/coupling_stages.hpp"
+
+#include <cmath>
+
+#include "../sections/reaction_terms.hpp"
+#include "coupling_cells.hpp"
+#include "tessella/solvers/compartment_transport.hpp"
+#include "tessella/solvers/elasticity.hpp"
+#include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/geometry.hpp"
+
+namespace tessella::sim {
+
+bool SolveSchedule::due(const StepContext& context) {
+  if (!start_) {
+    start_ = context.time;
+    last_ = context.time;
+  }
+  return (context.step + 1) % every_ == 0;
+}
+
+namespace {
+// Solver steps of equal length covering `elapsed` (one when no dt is given).
+double stepLength(const std::optional<double>& dt, double elapsed) {
+  return dt ? std::min(*dt, elapsed) : elapsed;
+}
+}  // namespace
+
+// --- diffusion ---------------------------------------------------------------
+
+DiffusionStage::DiffusionStage(DiffusionSpec spec, std::shared_ptr<FieldMesh> mesh)
+    : MeshFieldStage(std::move(mesh)), spec_(std::move(spec)), schedule_(spec_.every), total_(spec_.species.size(), 0.0) {
+  if (spec_.hasReaction()) {
+    std::vector<std::string> names, expressions, keys;
+    for (const SpeciesSpec& sp : spec_.species) {
+      names.push_back(sp.name);
+      expressions.push_back(sp.reaction);
+      keys.push_back(sp.key_prefix + ".reaction");
+    }
+    reaction_ = std::make_shared<detail::ReactionTerms>(names, expressions, keys);  // compiled once per stage
+  }
+}
+
+void DiffusionStage::prepare(Tissue& tissue, double /*time*/) {
+  // Source cells are chosen once, on the initial tissue.
+  for (const SpeciesSpec& sp : spec_.species)
+    detail::markCells(tissue, sp.name + "_source", sp.source.lineage_ids, sp.source.center, sp.source.radius,
+                      sp.key_prefix + ".source.cells");
+  if (spec_.steady) return;  // the first solve gives the fields
+  mesh_->update(tissue);
+  for (const SpeciesSpec& sp : spec_.species)
+    mesh_->setField(sp.name, Eigen::VectorXd::Constant(mesh_->mesh().numNodes(), sp.initial), true);
+  storeCellValues(tissue);
+}
+
+void DiffusionStage::storeCellValues(Tissue& tissue) {
+  // Cell averages (copied to daughters until the next solve) and amounts
+  // (split by measure) as cell properties, for the tissue series and gates.
+  const std::vector<double>& measure = mesh_->cellMeasures();
+  for (const SpeciesSpec& sp : spec_.species) {
+    const std::vector<double> amount = mesh_->cellIntegrals(mesh_->field(sp.name));
+    auto& average = detail::doubleColumn(tissue, sp.name, DivisionPolicy::Copy);
+    auto& amounts = detail::doubleColumn(tissue, sp.name + "_amount", DivisionPolicy::SplitByMeasure);
+    for (CellId c : tissue.cells()) {
+      const std::size_t i = c.index();
+      amounts[c] = i < amount.size() ? amount[i] : 0.0;
+      average[c] = i < measure.size() && measure[i] > 0 ? amount[i] / measure[i] : 0.0;
+    }
+  }
+}
+
+void DiffusionStage::apply(Tissue& tissue, const StepContext& context) {
+  if (!schedule_.due(context)) return;
+  const double elapsed = schedule_.elapsed(context);
+  mesh_->update(tissue);
+  const FeMesh& mesh = mesh_->mesh();
+  for (const SpeciesSpec& sp : spec_.species)
+    if (!mesh_->hasField(sp.name))
+      mesh_->setField(sp.name, Eigen::VectorXd::Constant(mesh.numNodes(), sp.initial), true);
+
+  if (!solver_ || solver_mesh_version_ != mesh_->version()) {
+    std::vector<Species> all;
+    for (const SpeciesSpec& sp : spec_.species) {
+      const std::string& p = sp.key_prefix;
+      Species s;
+      s.name = sp.name;
+      s.diffusivity = detail::perCell(tissue, sp.diffusivity, spec_.type_property, "diffusion");
+      s.decay = detail::perCell(tissue, sp.decay, spec_.type_property, "diffusion");
+      s.production = detail::perCell(tissue, sp.production, spec_.type_property, "diffusion");
+      const std::vector<bool> source = detail::marked(tissue, sp.name + "_source");
+      for (std::size_t c = 0; c < source.size(); ++c)
+        if (source[c]) s.production[static_cast<Eigen::Index>(c)] += sp.source.rate;
+      for (const RegionValue& r : sp.dirichlet)
+        s.dirichlet.push_back({detail::regionFacets(mesh, r.region, p + ".dirichlet"), r.value, {}});
+      for (const RegionValue& r : sp.flux)
+        s.flux.push_back({detail::regionFacets(mesh, r.region, p + ".flux"), r.value, {}});
+      for (const RegionValue& r : sp.robin)
+        s.robin.push_back({detail::regionFacets(mesh, r.region, p + ".robin"), r.value, sp.robin_exterior});
+      all.push_back(std::move(s));
+    }
+    DiffusionOptions options;
+    options.scheme = spec_.scheme;
+    options.mass = spec_.mass;
+    solver_.emplace(mesh, std::move(all), options);
+    if (reaction_)
+      solver_->setReaction([terms = reaction_](std::span<const double> u, std::span<double> rate) {
+        terms->evaluate(u, rate);
+      });
+    solver_mesh_version_ = mesh_->version();
+  }
+  solver_->setTime(context.time + context.dt - elapsed);
+  for (std::size_t k = 0; k < spec_.species.size(); ++k)
+    solver_->setState(static_cast<int>(k), mesh_->field(spec_.species[k].name));
+  if (spec_.steady) {
+    solver_->setTime(context.time + context.dt);
+    solver_->solveSteady();
+  } else if (elapsed > 0) {
+    solver_->advance(elapsed, stepLength(spec_.dt, elapsed));
+  }
+  for (std::size_t k = 0; k < spec_.species.size(); ++k) {
+    const auto col = static_cast<Eigen::Index>(k);
+    mesh_->setField(spec_.species[k].name, solver_->state().col(col), true);
+    total_[k] = solver_->totalAmount(static_cast<int>(k));
+  }
+  storeCellValues(tissue);
+  schedule_.solved(context);
+}
+
+// --- compartments -------------------------------------------------------------
+
+CompartmentStage::CompartmentStage(CompartmentSpec spec) : spec_(std::move(spec)), schedule_(spec_.every) {}
+
+void CompartmentStage::prepare(Tissue& tissue, double /*time*/) {
+  const std::string& f = spec_.field;
+  {
+    detail::markCells(tissue, f + "_source", spec_.source.lineage_ids, spec_.source.center, spec_.source.radius,
+                      "compartments.source.cells");
+    if (!spec_.polar_all)
+      detail::markCells(tissue, f + "_polar", spec_.polar_cells, Vec3::Zero(), 0.0, "compartments.polar.cells");
+    // The amount is the state: split by measure at division, so divisions
+    // conserve it. A tissue read back from a snapshot of the run has it.
+    if (tissue.cellProperties().has(f + "_amount") && tissue.cellProperties().has(f)) return;
+    auto& amount = detail::doubleColumn(tissue, f + "_amount", DivisionPolicy::SplitByMeasure);
+    auto& conc = detail::doubleColumn(tissue, f, DivisionPolicy::Copy);
+    for (CellId c : tissue.cells()) {
+      amount[c] = spec_.initial * cellMeasure(tissue, c);
+      conc[c] = spec_.initial;
+    }
+  }
+}
+
+void CompartmentStage::apply(Tissue& tissue, const StepContext& context) {
+  const std::string& f = spec_.field;
+  if (!schedule_.due(context)) return;
+  const double elapsed = schedule_.elapsed(context);
+
+  GeometryCache geometry;
+  recomputeGeometry(tissue, geometry, GeometryOptions{.edges = tissue.dim() == 2, .second_moments = false});
+  std::vector<int> index(tissue.cellSlots(), -1);
+  std::vector<CellId> cells;
+  for (CellId c : tissue.cells()) {
+    index[c.index()] = static_cast<int>(cells.size());
+    cells.push_back(c);
+  }
+  const auto n = static_cast<Eigen::Index>(cells.size());
+  const Eigen::VectorXd perm = detail::perCell(tissue, spec_.permeability, spec_.type_property, "compartments");
+  const Eigen::VectorXd decay = detail::perCell(tissue, spec_.decay, spec_.type_property, "compartments");
+  const Eigen::VectorXd prod = detail::perCell(tissue, spec_.production, spec_.type_property, "compartments");
+  const std::vector<bool> source = detail::marked(tissue, f + "_source");
+  const std::vector<bool> pumps = spec_.polar_all ? std::vector<bool>(tissue.cellSlots(), true)
+                                                  : detail::marked(tissue, f + "_polar");
+  CompartmentNetwork net;
+  net.volume.resize(n);
+  net.decay.resize(n);
+  net.production.resize(n);
+  auto& amount = detail::doubleColumn(tissue, f + "_amount", DivisionPolicy::SplitByMeasure);
+  auto& conc = detail::doubleColumn(tissue, f, DivisionPolicy::Copy);
+  Eigen::VectorXd c(n);
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const CellId cell = cells[static_cast<std::size_t>(k)];
+    const std::size_t i = cell.index();
+    net.volume[k] = geometry.cellMeasure(tissue, cell);
+    net.decay[k] = decay[static_cast<Eigen::Index>(i)];
+    net.production[k] = prod[static_cast<Eigen::Index>(i)] + (source[i] ? spec_.source.rate : 0.0);
+    c[k] = amount[cell] / net.volume[k];
+  }
+  for (WallId w : tissue.walls()) {
+    const std::vector<CellId> two = tissue.wallCells(w);
+    if (two.size() != 2) continue;
+    const CellId a = two[0], b = two[1];
+    CompartmentWall wall;
+    wall.cell_i = index[a.index()];
+    wall.cell_j = index[b.index()];
+    wall.area = tissue.dim() == 2 ? geometry.edge_length[w.index()] : geometry.face_area[w.index()];
+    wall.permeability = std::min(perm[a.index()], perm[b.index()]);
+    if (spec_.polar_rate > 0) {
+      const double along = (geometry.cellCentroid(tissue, b) - geometry.cellCentroid(tissue, a)).dot(spec_.polar_direction);
+      if (along > 0 && pumps[a.index()]) wall.polar_ij = spec_.polar_rate;
+      if (along < 0 && pumps[b.index()]) wall.polar_ji = spec_.polar_rate;
+    }
+    net.walls.push_back(wall);
+  }
+  const Eigen::VectorXd volume = net.volume;
+  CompartmentTransport transport(std::move(net), spec_.scheme);
+  if (elapsed > 0) transport.advance(c, elapsed, stepLength(spec_.dt, elapsed));
+  for (Eigen::Index k = 0; k < n; ++k) {
+    const CellId cell = cells[static_cast<std::size_t>(k)];
+    conc[cell] = c[k];
+    amount[cell] = c[k] * volume[k];
+  }
+  schedule_.solved(context);
+}
+
+// --- elasticity ----------------------------------------------------------------
+
+ElasticityStage::ElasticityStage(ElasticitySpec spec, std::shared_ptr<FieldMesh> mesh)
+    : MeshFieldStage(std::move(mesh)), spec_(std::move(spec)), schedule_(spec_.every) {}
+
+void ElasticityStage::apply(Tissue& tissue, const StepContext& context) {
+  if (!schedule_.due(context)) return;
+  mesh_->update(tissue);
+  const FeMesh& mesh = mesh_->mesh();
+  if (spec_.model == ElasticModel::Solid && mesh.dim != 3)
+    throw InputError("elasticity.model: solid needs a 3D tissue; use plane_stress or plane_strain for 2D");
+  if (spec_.model != ElasticModel::Solid && mesh.dim != 2)
+    throw InputError("elasticity.model: plane models need a 2D tissue; use solid for 3D");
+  ElasticityProblem p;
+  p.model = spec_.model;
+  p.young = detail::perCell(tissue, spec_.young, spec_.type_property, "elasticity");
+  p.poisson = detail::perCell(tissue, spec_.poisson, spec_.type_property, "elasticity");
+  p.thickness = spec_.thickness;
+  for (const auto& [region, fixed] : spec_.fixed)
+    p.displacement.push_back({detail::regionFacets(mesh, region, "elasticity.fixed"), {}, fixed, Eigen::Vector3d::Zero()});
+  if (spec_.stretch_region) {
+    const int axis = (static_cast<int>(*spec_.stretch_region) - 1) / 2;
+    DisplacementCondition d{detail::regionFacets(mesh, *spec_.stretch_region, "elasticity.stretch_region"), {},
+                            {false, false, false}, Eigen::Vector3d::Zero()};
+    d.fixed[static_cast<std::size_t>(axis)] = true;
+    d.value[axis] = spec_.stretch;
+    p.displacement.push_back(std::move(d));
+  }
+  if (spec_.traction_region)
+    p.traction.push_back({detail::regionFacets(mesh, *spec_.traction_region, "elasticity.traction_region"),
+                          spec_.traction});
+  const ElasticityResult r = solveElasticity(mesh, p);
+  const char* axes[] = {"displacement_x", "displacement_y", "displacement_z"};
+  for (int a = 0; a < 3; ++a) mesh_->setField(axes[a], r.displacement.col(a), false);
+  const char* names[] = {"stress_xx", "stress_yy", "stress_zz", "stress_yz", "stress_xz", "stress_xy"};
+  for (int k = 0; k < 6; ++k) {
+    auto& column = detail::doubleColumn(tissue, names[k], DivisionPolicy::Copy);
+    for (CellId c : tissue.cells())
+      column[c] = static_cast<Eigen::Index>(c.index()) < r.cell_stress.rows() ? r.cell_stress(c.index(), k) : 0.0;
+  }
+  auto& top = detail::doubleColumn(tissue, "stress_max_principal", DivisionPolicy::Copy);
+  for (CellId c : tissue.cells())
+    top[c] = static_cast<Eigen::Index>(c.index()) < r.principal_stress.rows() ? r.principal_stress(c.index(), 2) : 0.0;
+  schedule_.solved(context);
+}
+
+}  // namespace tessella::sim

@@ -1,0 +1,64 @@
+#include "tessella/sim/stages/field_mesh.hpp"
+
+#include <stdexcept>
+
+#include "tessella/mesh/field_transfer.hpp"
+#include "tessella/mesh/mesh_tissue.hpp"
+#include "tessella/tissue/errors.hpp"
+
+namespace tessella::sim {
+
+FieldMesh::FieldMesh(MeshOptions options) : options_(options) { validateMeshOptions(options_); }
+
+bool FieldMesh::update(const Tissue& tissue) {
+  if (tissue_ && topology_ == tissue.topologyVersion() && geometry_ == tissue.geometryVersion()) return false;
+  FeMesh fresh = meshTissue(tissue, options_);
+  std::map<std::string, Eigen::VectorXd> carried;
+  for (const std::string& name : carried_) {
+    const auto it = fields_.find(name);
+    if (it == fields_.end()) continue;
+    try {
+      carried[name] = transferConcentration(*tissue_, mesh_, it->second, tissue, fresh);
+    } catch (const InputError& e) {
+      // Cells more than one division away from the last mesh: solve more often.
+      throw InputError("cannot carry field '" + name + "' to the new mesh: " + e.what() +
+                       " (solve at least once between two divisions of a cell: lower `every`)");
+    }
+  }
+  mesh_ = std::move(fresh);
+  fields_ = std::move(carried);
+  tissue_ = tissue;
+  topology_ = tissue.topologyVersion();
+  geometry_ = tissue.geometryVersion();
+  ++version_;
+  cell_measures_ = tessella::cellIntegrals(mesh_, Eigen::VectorXd::Ones(mesh_.numNodes()), tissue.cellSlots());
+  return true;
+}
+
+const FeMesh& FieldMesh::mesh() const {
+  if (!tissue_) throw std::logic_error("FieldMesh::mesh: no mesh yet (call update first)");
+  return mesh_;
+}
+
+void FieldMesh::setField(const std::string& name, Eigen::VectorXd values, bool carried) {
+  if (values.size() != mesh().numNodes())
+    throw InputError("field '" + name + "' has " + std::to_string(values.size()) + " values for a mesh of " +
+                     std::to_string(mesh_.numNodes()) + " nodes");
+  fields_[name] = std::move(values);
+  if (carried)
+    carried_.insert(name);
+  else
+    carried_.erase(name);
+}
+
+const Eigen::VectorXd& FieldMesh::field(const std::string& name) const {
+  const auto it = fields_.find(name);
+  if (it == fields_.end()) throw std::logic_error("FieldMesh::field: no field '" + name + "'");
+  return it->second;
+}
+
+std::vector<double> FieldMesh::cellIntegrals(const Eigen::VectorXd& field) const {
+  return tessella::cellIntegrals(mesh(), field, tissue_->cellSlots());
+}
+
+}  // namespace tessella::sim
