@@ -11,16 +11,22 @@
 
 namespace tessella::python {
 
-inline void stepRestoringOnError(growth::GrowthIntegrator& integrator, Tissue& t, double dt) {
+/// Runs step(), a growth step of t; positions and clock restored if it throws.
+template <typename Step>
+void restoringOnError(Tissue& t, Step&& step) {
   const std::vector<Vec3> before(t.positions().begin(), t.positions().end());
   const double time = t.time();
   try {
-    integrator.step(t, dt);
+    step();
   } catch (...) {
     std::ranges::copy(before, t.mutablePositions().begin());
     t.setTime(time);
     throw;
   }
+}
+
+inline void stepRestoringOnError(growth::GrowthIntegrator& integrator, Tissue& t, double dt) {
+  restoringOnError(t, [&] { integrator.step(t, dt); });
 }
 
 }  // namespace tessella::python

@@ -28,7 +28,7 @@ class IntegratorStage final : public Stage {
   std::string name() const override { return "growth"; }
   void apply(Tissue& t, const StepContext& c) override {
     t.setTime(c.time);  // the integrator runs from the tissue's clock
-    stepRestoringOnError(*g_, t, c.dt);
+    restoringOnError(t, [&] { c.geometry ? g_->step(t, c.dt, *c.geometry) : g_->step(t, c.dt); });
   }
 
  private:
@@ -43,8 +43,9 @@ class SchedulerStage final : public Stage {
   std::string name() const override { return "division"; }
   void apply(Tissue& t, const StepContext& c) override {
     t.setTime(c.end_time);
-    if (c.rng) s_->step(t, geometry_, *c.rng);
-    else s_->step(t, geometry_);
+    GeometryCache& geometry = c.geometry ? *c.geometry : geometry_;  // the run's: fresh after growth
+    if (c.rng) s_->step(t, geometry, *c.rng);
+    else s_->step(t, geometry);
     raiseDeferredError();
   }
 

@@ -38,7 +38,7 @@ class DivisionStage final : public Stage {
 
  private:
   growth::DivisionScheduler scheduler_;
-  GeometryCache geometry_;
+  GeometryCache geometry_;  // when the step context shares none
   std::size_t divisions_ = 0, skipped_ = 0;
 };
 
