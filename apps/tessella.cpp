@@ -9,6 +9,7 @@
 //   tessella render RUN_DIR|SERIES.pvd|SNAPSHOT.vtu [--property NAME] [--out DIR] [--size WxH] [--every N]
 //                   [--view X,Y,Z] [--range LOW,HIGH] [--no-movie]
 //   tessella sweep CONFIG.yaml --vary KEY=V1,V2,... [--vary ...] [--replicates N] [--set ...] --out DIR [--overwrite]
+//   tessella report RUN_DIR [--property NAME]   (RUN_DIR/report.html: plots, frames, config)
 //   tessella schema          (the config key reference, as in docs/config.md)
 //
 // Exit codes: 0 success, 1 an error Tessella reports (bad config or file, a
@@ -41,6 +42,7 @@
 #include "tessella/io/import.hpp"
 #include "tessella/io/mesh_vtu.hpp"
 #include "tessella/io/vtu.hpp"
+#include "tessella/render/run_report.hpp"
 #include "tessella/render/series_pictures.hpp"
 #include "tessella/sim/run/sweep.hpp"
 #include "tessella/tissue/parameters.hpp"
@@ -303,6 +305,16 @@ int sweepCommand(const SweepArgs& a) {
   return 0;
 }
 
+int reportCommand(const std::string& run_dir, const std::string& property) {
+  tessella::render::RunReportOptions o;
+  if (!property.empty()) o.property = property;
+  const tessella::render::RunReport r = tessella::render::writeRunReport(run_dir, o);
+  fmt::print("read         {} snapshots ({} divisions between them), drew {} frames\n", r.snapshots, r.divisions,
+             r.frames);
+  fmt::print("wrote        {}\n", r.html);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -388,6 +400,12 @@ int main(int argc, char** argv) {
   sweep->add_option("--out,-o", sweep_args.out, "Sweep directory to write")->required();
   sweep->add_flag("--overwrite", sweep_args.overwrite, "Replace a sweep already in the directory");
 
+  auto* report = app.add_subcommand(
+      "report", "Write RUN_DIR/report.html: cell counts, sizes, division orientations, field totals, frames, config");
+  std::string report_dir, report_property;
+  report->add_option("run", report_dir, "Run directory written by tessella run")->required();
+  report->add_option("--property,-p", report_property, "Cell property the frames are coloured by (default: size)");
+
   app.add_subcommand("schema", "Print the configuration key reference (Markdown, as in docs/config.md)");
 
   CLI11_PARSE(app, argc, argv);
@@ -398,6 +416,7 @@ int main(int argc, char** argv) {
     if (import->parsed()) return importCommand(import_args);
     if (render->parsed()) return renderCommand(render_args);
     if (sweep->parsed()) return sweepCommand(sweep_args);
+    if (report->parsed()) return reportCommand(report_dir, report_property);
     fmt::print("{}", tessella::sim::schemaReferenceMarkdown(tessella::sim::tessellaSchema()));
     return 0;
   } catch (const tessella::Error& e) {  // bad input, or a stage that failed on it

@@ -449,6 +449,44 @@ case "$case_name" in
     "$tessella" sweep "$src/configs/voronoi_growth.yaml" --vary division.mean=1,2 --out "$tmp/sweep" 2>"$tmp/stderr"
     [ $? -eq 1 ] && grep -q "already holds a sweep" "$tmp/stderr" || fail "existing sweep: $(cat "$tmp/stderr")"
     ;;
+  report_in_browser)
+    command -v chromium >/dev/null || fail "chromium is not installed (scripts/install-deps.sh installs it)"
+    "$tessella" run "$src/configs/voronoi_growth.yaml" --out "$tmp/run" -q --set time.end=2 \
+      --set tissue.voronoi.count=20 || fail "run failed"
+    "$tessella" report "$tmp/run" >"$tmp/stdout" 2>"$tmp/stderr" || fail "report failed: $(cat "$tmp/stderr")"
+    cat "$tmp/stdout"
+    [ -s "$tmp/run/report.html" ] || fail "no report.html"
+    # cells.csv holds every cell of every snapshot: as many rows as stats.csv counts cells.
+    cells=$(awk -F, 'NR > 1 { n += $2 } END { print n }' "$tmp/run/stats.csv")
+    [ "$(($(wc -l <"$tmp/run/report/cells.csv") - 1))" -eq "$cells" ] || fail "cells.csv rows != $cells"
+    # Each division seen is one counted in stats.csv (a sister that divided again hides one).
+    divisions=$(awk -F, 'NR > 1 { n += $3 } END { print n }' "$tmp/run/stats.csv")
+    seen=$(($(wc -l <"$tmp/run/report/divisions.csv") - 1))
+    [ "$seen" -gt 0 ] && [ "$seen" -le "$divisions" ] || fail "divisions seen $seen, counted $divisions"
+    # In a real browser: every image of the page loads, and the page is not blank.
+    chromium --headless --no-sandbox --disable-gpu --virtual-time-budget=10000 --dump-dom \
+      "file://$tmp/run/report.html" >"$tmp/dom.html" 2>"$tmp/chromium.log" || fail "chromium failed: $(tail "$tmp/chromium.log")"
+    loaded=$(grep -o 'data-images-loaded="[0-9]*/[0-9]*"' "$tmp/dom.html") || fail "the page's load handler did not run"
+    echo "$loaded"
+    images=$(grep -c '<img ' "$tmp/run/report.html")
+    [ "$loaded" = "data-images-loaded=\"$images/$images\"" ] || fail "not every image loaded: $loaded of $images"
+    chromium --headless --no-sandbox --disable-gpu --hide-scrollbars --virtual-time-budget=10000 --window-size=1000,1400 \
+      --screenshot="$tmp/page.png" "file://$tmp/run/report.html" >/dev/null 2>&1 || fail "no screenshot"
+    /usr/bin/python3 - "$tmp/page.png" <<'PY' || fail "screenshot check failed"
+import sys
+import matplotlib.image as mpimg
+img = mpimg.imread(sys.argv[1])
+assert img.shape[:2] == (1400, 1000), img.shape
+rgb = img[:, :, :3]
+ink = (rgb.min(axis=2) < 0.9).mean()
+colour = ((rgb.max(axis=2) - rgb.min(axis=2)) > 0.2).mean()  # the plots' coloured marks, not black text
+print(f"screenshot 1000x1400: {ink:.1%} of the pixels not white, {colour:.2%} coloured")
+assert ink > 0.01 and colour > 0.002, "the page looks blank or shows no plot"
+PY
+    "$tessella" report "$tmp" 2>"$tmp/stderr"
+    [ $? -eq 1 ] && grep -q "is not a run directory written by tessella run: it has no tissue.pvd" "$tmp/stderr" \
+      || fail "a non-run directory: $(cat "$tmp/stderr")"
+    ;;
   import_errors)
     # A malformed file: exit 1, an error naming the file and line, no output file.
     head -c 60000 "$src/tests/data/mgx_meristem_cropped/mesh_meristem_cropped_T0.ply" >"$tmp/cut.ply"
