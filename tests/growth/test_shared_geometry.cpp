@@ -8,7 +8,7 @@
 #include <memory>
 
 #include "growth_fixtures.hpp"
-#include "tessella/growth/division_rule_factory.hpp"
+#include "tessella/growth/registries.hpp"
 #include "tessella/growth/division_scheduler.hpp"
 #include "tessella/growth/growth_integrator.hpp"
 #include "tessella/growth/linear_field.hpp"
