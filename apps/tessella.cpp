@@ -23,40 +23,37 @@
 #include <CLI/CLI.hpp>
 #include <fmt/core.h>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <atomic>
-#include <cerrno>
 #include <chrono>
 #include <csignal>
-#include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <exception>
-#include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include "tessella/io/import.hpp"
 #include "tessella/io/mesh_vtu.hpp"
+#include "tessella/io/output_file.hpp"
 #include "tessella/io/vtu.hpp"
+#include "tessella/mesh/mesh_agreement.hpp"
+#include "tessella/mesh/mesh_options.hpp"
+#include "tessella/mesh/mesh_tissue.hpp"
 #include "tessella/render/run_report.hpp"
 #include "tessella/render/series_pictures.hpp"
-#include "tessella/sim/run/sweep.hpp"
-#include "tessella/tissue/parameters.hpp"
-#include "tessella/mesh/mesh_measures.hpp"
-#include "tessella/mesh/mesh_tissue.hpp"
 #include "tessella/sim/config/config_loader.hpp"
 #include "tessella/sim/config/schema_docs.hpp"
 #include "tessella/sim/run/progress_meter.hpp"
 #include "tessella/sim/run/run.hpp"
+#include "tessella/sim/run/sweep.hpp"
 #include "tessella/sim/run/tissue_summary.hpp"
 #include "tessella/sim/sections/mesh_section.hpp"
 #include "tessella/sim/sections/tessella_schema.hpp"
 #include "tessella/tissue/errors.hpp"
-#include "tessella/tissue/geometry.hpp"
+#include "tessella/tissue/format.hpp"
+#include "tessella/tissue/tissue.hpp"
 
 namespace {
 
@@ -175,23 +172,6 @@ struct MeshArgs {
   std::optional<std::string> volume_method;
 };
 
-/// An output file can be written: its directory exists and is writable, and
-/// the path is not a directory. Checked for every output before any work.
-void checkOutputFile(const std::string& path, const std::string& flag) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (path.empty()) throw tessella::InputError(flag + ": the output file name is empty");
-  if (fs::is_directory(path, ec)) throw tessella::InputError(flag + " " + path + ": is a directory");
-  fs::path dir = fs::path(path).parent_path();
-  if (dir.empty()) dir = ".";
-  if (!fs::is_directory(dir, ec))
-    throw tessella::InputError(flag + " " + path + ": the directory " + dir.string() +
-                               (fs::exists(dir, ec) ? " is not a directory" : " does not exist"));
-  if (::access(dir.c_str(), W_OK | X_OK) != 0)
-    throw tessella::InputError(flag + " " + path + ": cannot write into " + dir.string() + ": " +
-                               std::strerror(errno));
-}
-
 int meshCommand(const MeshArgs& a) {
   using namespace tessella;
   const auto t0 = Clock::now();
@@ -205,8 +185,8 @@ int meshCommand(const MeshArgs& a) {
   if (a.volume_method) options.volume_method = sim::volumeMethodNamed(*a.volume_method);
   if (a.max_elements) options.max_elements = *a.max_elements;
   validateMeshOptions(options);  // before reading: a bad flag fails fast
-  checkOutputFile(a.out, "--out");  // every output, before meshing or writing any of them
-  if (!a.walls_out.empty()) checkOutputFile(a.walls_out, "--walls");
+  io::checkOutputFile(a.out, "--out");  // every output, before meshing or writing any of them
+  if (!a.walls_out.empty()) io::checkOutputFile(a.walls_out, "--walls");
 
   const Tissue tissue = io::readTissueVtu(a.snapshot);
   const double t_read = secondsSince(t0);
@@ -214,17 +194,7 @@ int meshCommand(const MeshArgs& a) {
   const FeMesh mesh = meshTissue(tissue, options);
   const double t_mesh = secondsSince(t1);
 
-  // Per-cell agreement of the mesh measures with the tissue's.
-  const std::vector<double> sums = cellMeasuresOfMesh(mesh, tissue.slots(tissue.dim()));
-  double worst = -1.0;
-  Index worst_cell = kInvalidIndex;
-  for (CellId c : tissue.cells()) {
-    const double m = cellMeasure(tissue, c);
-    const double rel = std::abs(sums[c.index()] - m) / std::abs(m);
-    if (!(rel <= worst)) worst = rel, worst_cell = c.index();  // NaN counts as worst
-  }
-  const double total = totalMeasure(tissue);
-  const double total_rel = std::abs(totalMeasureOfMesh(mesh) - total) / std::abs(total);
+  const MeshAgreement agreement = meshAgreement(tissue, mesh);
 
   io::writeFeMeshVtu(mesh, a.out);  // atomic: no partial file on failure
   if (!a.walls_out.empty()) io::writeWallFacetsVtu(mesh, a.walls_out);
@@ -239,7 +209,7 @@ int meshCommand(const MeshArgs& a) {
              mesh.numWallFacets());
   fmt::print("time         {:.3f} s ({:.0f} elements/s)\n", t_mesh, mesh.numElements() / std::max(t_mesh, 1e-9));
   fmt::print("cell {:<7} worst relative difference {:.3g} (cell {}), total {:.3g}\n", measureName(tissue.dim()),
-             worst, worst_cell, total_rel);
+             agreement.worst_cell_difference, agreement.worst_cell, agreement.total_difference);
   fmt::print("wrote        {}", a.out);
   if (!a.walls_out.empty()) fmt::print(" and {}", a.walls_out);
   fmt::print("\n");

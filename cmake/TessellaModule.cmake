@@ -53,3 +53,31 @@ function(tessella_add_module name)
     endif()
   endif()
 endfunction()
+
+# tessella_add_header_part(name HEADERS <paths under include/> PUBLIC_DEPS ...)
+# A header-only part of the current module that other modules can link alone,
+# without the module's library and its private dependencies: target
+# `tessella_<name>` (INTERFACE) with the aliases `tessella::<name>` and
+# `Tessella::<name>`, exported and installed like a module. Example: fe_mesh,
+# the FeMesh type of mesh/, all that solvers/ and io/ need of it (no CGAL, no
+# TetGen). Its headers stay in the module's include/ tree; they are installed
+# here too, so the part is complete when the module itself is not built.
+function(tessella_add_header_part name)
+  cmake_parse_arguments(ARG "" "" "HEADERS;PUBLIC_DEPS" ${ARGN})
+  set(target tessella_${name})
+  add_library(${target} INTERFACE)
+  target_include_directories(${target} INTERFACE
+    $<BUILD_INTERFACE:${CMAKE_CURRENT_SOURCE_DIR}/include> $<INSTALL_INTERFACE:${CMAKE_INSTALL_INCLUDEDIR}>)
+  target_link_libraries(${target} INTERFACE ${ARG_PUBLIC_DEPS})
+  set_target_properties(${target} PROPERTIES EXPORT_NAME ${name})
+  add_library(tessella::${name} ALIAS ${target})
+  add_library(Tessella::${name} ALIAS ${target})
+  _tessella_record_dependencies(${target})
+  if(TESSELLA_INSTALL)
+    install(TARGETS ${target} EXPORT TessellaTargets)
+    foreach(header IN LISTS ARG_HEADERS)
+      get_filename_component(dir ${header} DIRECTORY)
+      install(FILES ${CMAKE_CURRENT_SOURCE_DIR}/include/${header} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/${dir})
+    endforeach()
+  endif()
+endfunction()

@@ -4,13 +4,14 @@
 
 #include "tessella/growth/registries.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::growth {
 
 BessonDumaisRule::BessonDumaisRule(double beta, ShortestWallSearchOptions options)
     : beta_(beta), options_(options) {
   if (!(beta >= 0) || !std::isfinite(beta))
-    throw InputError("besson_dumais rule: beta = " + std::to_string(beta) +
+    throw InputError("besson_dumais rule: beta = " + formatNumber(beta) +
                      " must be finite and >= 0");
 }
 

@@ -5,6 +5,7 @@
 
 #include "tessella/growth/registries.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::growth {
 
@@ -12,16 +13,16 @@ BumpField::BumpField(const BumpFieldParams& params) : p_(params) {
   if (!std::isfinite(p_.a) || !std::isfinite(p_.b) || !std::isfinite(p_.h) || !std::isfinite(p_.x0))
     throw InputError("bump field: parameters a, b, h, x0 must be finite");
   if (p_.h <= 0)
-    throw InputError("bump field: h = " + std::to_string(p_.h) + " must be > 0 (squared bump width)");
+    throw InputError("bump field: h = " + formatNumber(p_.h) + " must be > 0 (squared bump width)");
   if (p_.b < 0)
-    throw InputError("bump field: b = " + std::to_string(p_.b) +
+    throw InputError("bump field: b = " + formatNumber(p_.b) +
                      " must be >= 0 (the bump width h + b t would vanish)");
 }
 
 Vec3 BumpField::velocity(const Vec3& x, double t) const {
   const double w = p_.h + p_.b * t;  // squared width at time t
   if (w <= 0)
-    throw InputError("bump field evaluated at t = " + std::to_string(t) + " where h + b t <= 0");
+    throw InputError("bump field evaluated at t = " + formatNumber(t) + " where h + b t <= 0");
   const double dx = x.x() - p_.x0;
   const double x2 = dx * dx;
   return Vec3(0.0, p_.a * (1.0 + p_.b * t * x2 / (w * w)) * std::exp(-x2 / w), 0.0);

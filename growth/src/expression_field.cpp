@@ -11,6 +11,7 @@
 #include "tessella/growth/parallel_threshold.hpp"
 #include "tessella/growth/registries.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::growth {
 
@@ -109,7 +110,7 @@ ExpressionField::ExpressionField(ExpressionFieldSpec spec) : spec_(std::move(spe
       throw ParamError("parameters", "velocity expression parameter '" + name +
                                          "' clashes with a variable (x, y, z and t are reserved)");
     if (!std::isfinite(value))
-      throw ParamError("parameters", "velocity expression parameter '" + name + "' = " + std::to_string(value) +
+      throw ParamError("parameters", "velocity expression parameter '" + name + "' = " + formatNumber(value) +
                                          " is not finite");
   }
   workspaces_.push_back(makeWorkspace());  // parses, so errors surface at construction

@@ -1,10 +1,11 @@
 #include "tessella/growth/growth_integrator.hpp"
 
 #include <cmath>
-#include <sstream>
+#include <string>
 
 #include "tessella/growth/parallel_threshold.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::growth {
 
@@ -46,19 +47,11 @@ std::size_t firstNonFinite(std::span<const Vec3> v, const std::vector<std::uint8
   return static_cast<std::size_t>(bad);
 }
 
-// "nan" whatever the sign bit says (0/0 is -nan on x86).
-std::string number(double x) {
-  if (std::isnan(x)) return "nan";
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
+// Positions, velocities and times in these messages are computed: six significant digits say enough.
+constexpr int kDigits = 6;
 
-std::string vec(const Vec3& v) {
-  std::ostringstream s;
-  s << "(" << number(v.x()) << ", " << number(v.y()) << ", " << number(v.z()) << ")";
-  return s.str();
-}
+std::string number(double x) { return formatNumber(x, kDigits); }
+std::string vec(const Vec3& v) { return formatPoint(v, kDigits); }
 
 }  // namespace
 
@@ -88,14 +81,13 @@ void GrowthIntegrator::velocities(const Tissue& t, std::span<const Vec3> x, doub
 
 GeometryError GrowthIntegrator::nonFiniteVelocity(std::size_t vertex, const Vec3& x, const Vec3& v,
                                                   double time) const {
-  std::ostringstream msg;
-  msg << "the velocity field " << field_->describe() << " is not finite at vertex " << vertex << ", position "
-      << vec(x) << ", t = " << time << ": velocity " << vec(v);
+  std::string msg = "the velocity field " + field_->describe() + " is not finite at vertex " +
+                    std::to_string(vertex) + ", position " + vec(x) + ", t = " + number(time) + ": velocity " + vec(v);
   for (int c = 0; c < 3; ++c) {
     const std::string component = field_->describeComponent(c);
-    if (!std::isfinite(v[c]) && !component.empty()) msg << "; " << component << " gives " << number(v[c]);
+    if (!std::isfinite(v[c]) && !component.empty()) msg += "; " + component + " gives " + number(v[c]);
   }
-  return GeometryError(msg.str(), ElementId{0, static_cast<Index>(vertex)});
+  return GeometryError(msg, ElementId{0, static_cast<Index>(vertex)});
 }
 
 void GrowthIntegrator::checkVelocities(const Tissue& t, std::span<const Vec3> x, std::span<const Vec3> v,
@@ -114,13 +106,12 @@ void GrowthIntegrator::checkPositions(Tissue& t, double t0, double t1, std::span
   const std::span<const Vec3> x = t.positions();
   const std::size_t bad = firstNonFinite(x, t.topology().aliveFlags(0));
   if (bad == x.size()) return;
-  std::ostringstream msg;
-  msg << "growth step from t = " << t0 << " to t = " << t1 << " (dt = " << (t1 - t0) << ") moved vertex " << bad
-      << " from " << vec(x0_[bad]) << " to the non-finite position " << vec(x[bad]) << " (velocity "
-      << vec(k2.empty() ? k1_[bad] : Vec3(0.5 * (k1_[bad] + k2[bad])))
-      << " of the velocity field " << field_->describe() << ")";
-  msg << "; positions restored";  // by step()
-  throw GeometryError(msg.str(), ElementId{0, static_cast<Index>(bad)});
+  const std::string msg = "growth step from t = " + number(t0) + " to t = " + number(t1) + " (dt = " +
+                          number(t1 - t0) + ") moved vertex " + std::to_string(bad) + " from " + vec(x0_[bad]) +
+                          " to the non-finite position " + vec(x[bad]) + " (velocity " +
+                          vec(k2.empty() ? k1_[bad] : Vec3(0.5 * (k1_[bad] + k2[bad]))) + " of the velocity field " +
+                          field_->describe() + "); positions restored";  // by step()
+  throw GeometryError(msg, ElementId{0, static_cast<Index>(bad)});
 }
 
 void GrowthIntegrator::project(const Tissue& t, std::span<Vec3> x) const {
@@ -136,7 +127,7 @@ void GrowthIntegrator::project(const Tissue& t, std::span<Vec3> x) const {
 
 void GrowthIntegrator::step(Tissue& t, double dt, GeometryCache& geometry) {
   if (!(dt > 0) || !std::isfinite(dt))
-    throw InputError("growth step: dt = " + std::to_string(dt) + " must be positive and finite");
+    throw InputError("growth step: dt = " + formatNumber(dt) + " must be positive and finite");
   const double t0 = t.time(), t1 = t0 + dt;
   const std::size_t n = t.slots(0);
   x0_.resize(n);  // filled by the first update sweep
@@ -212,17 +203,17 @@ void GrowthIntegrator::checkCells(Tissue& t, const GeometryCache& geometry, doub
   if (bad == nc) return;
 
   const CellId cell(static_cast<Index>(bad));
-  std::ostringstream msg;
-  msg << "growth step from t = " << t0 << " to t = " << t1 << " (dt = " << (t1 - t0)
-      << ") inverted or collapsed cell " << bad << " (lineage id " << t.lineageId(cell) << "): ";
+  std::string msg = "growth step from t = " + number(t0) + " to t = " + number(t1) + " (dt = " + number(t1 - t0) +
+                    ") inverted or collapsed cell " + std::to_string(bad) + " (lineage id " +
+                    std::to_string(t.lineageId(cell)) + "): ";
   if (dim == 3) {
-    msg << "signed volume " << geometry.volume[bad];
+    msg += "signed volume " + number(geometry.volume[bad]);
   } else {
-    msg << "area " << geometry.face_area[bad] << ", normal (" << geometry.face_normal[bad].transpose()
-        << ")" << (emb == Embedding::Planar ? " instead of +z" : " turned against its previous normal");
+    msg += "area " + number(geometry.face_area[bad]) + ", normal " + vec(geometry.face_normal[bad]) +
+           (emb == Embedding::Planar ? " instead of +z" : " turned against its previous normal");
   }
-  msg << "; positions restored, try a smaller dt";  // by step()
-  throw GeometryError(msg.str(), ElementId{dim, static_cast<Index>(bad)});
+  msg += "; positions restored, try a smaller dt";  // by step()
+  throw GeometryError(msg, ElementId{dim, static_cast<Index>(bad)});
 }
 
 }  // namespace tessella::growth

@@ -5,6 +5,7 @@
 
 #include "tessella/growth/registries.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::growth {
 
@@ -15,10 +16,10 @@ MeristemField::MeristemField(const MeristemFieldParams& params) : p_(params) {
     throw InputError("meristem field: all parameters must be finite");
   if (p_.axis.norm() == 0) throw InputError("meristem field: axis must be non-zero");
   if (p_.central_radius <= 0)
-    throw InputError("meristem field: central_radius = " + std::to_string(p_.central_radius) +
+    throw InputError("meristem field: central_radius = " + formatNumber(p_.central_radius) +
                      " must be > 0");
   if (p_.transition_width <= 0)
-    throw InputError("meristem field: transition_width = " + std::to_string(p_.transition_width) +
+    throw InputError("meristem field: transition_width = " + formatNumber(p_.transition_width) +
                      " must be > 0");
   p_.axis.normalize();
 }

@@ -9,6 +9,7 @@
 #include "tessella/growth/main_axis_rule.hpp"
 #include "tessella/growth/registries.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"
 
 namespace tessella::growth {
@@ -18,7 +19,7 @@ PerpendicularWallRule::PerpendicularWallRule(double junction_tolerance,
     : junction_tolerance_(junction_tolerance), fallback_(std::move(fallback)) {
   if (!(junction_tolerance >= 0) || !(junction_tolerance < 0.5))
     throw InputError("perpendicular_to_mother_wall rule: junction_tolerance = " +
-                     std::to_string(junction_tolerance) + " must be in [0, 0.5)");
+                     formatNumber(junction_tolerance) + " must be in [0, 0.5)");
   if (!fallback_) fallback_ = std::make_shared<MainAxisRule>();
 }
 

@@ -5,6 +5,7 @@
 
 #include "tessella/growth/registries.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::growth {
 
@@ -13,7 +14,7 @@ RadialField::RadialField(const RadialFieldParams& params) : p_(params) {
       !std::isfinite(p_.exponent))
     throw InputError("radial growth field: centre, axis, rate and exponent must be finite");
   if (p_.exponent < 0)
-    throw InputError("radial growth field: exponent = " + std::to_string(p_.exponent) +
+    throw InputError("radial growth field: exponent = " + formatNumber(p_.exponent) +
                      " must be >= 0 (a negative one is singular at the centre)");
   if (p_.axis.norm() > 0) p_.axis.normalize();
 }

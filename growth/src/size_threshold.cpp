@@ -5,12 +5,13 @@
 #include <sstream>
 
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::growth {
 
 SizeThreshold SizeThreshold::fixed(double size) {
   if (!(size > 0) || !std::isfinite(size))
-    throw InputError("division threshold: size = " + std::to_string(size) +
+    throw InputError("division threshold: size = " + formatNumber(size) +
                      " must be positive and finite");
   SizeThreshold s;
   s.kind_ = Kind::Fixed;
@@ -28,10 +29,10 @@ SizeThreshold SizeThreshold::fromProperty(std::string name) {
 
 SizeThreshold SizeThreshold::noisy(double mean, double stddev, std::string property) {
   if (!(mean > 0) || !std::isfinite(mean))
-    throw InputError("division threshold: mean = " + std::to_string(mean) +
+    throw InputError("division threshold: mean = " + formatNumber(mean) +
                      " must be positive and finite");
   if (!(stddev >= 0) || !std::isfinite(stddev))
-    throw InputError("division threshold: stddev = " + std::to_string(stddev) +
+    throw InputError("division threshold: stddev = " + formatNumber(stddev) +
                      " must be >= 0 and finite");
   if (property.empty()) throw InputError("division threshold: property name must not be empty");
   SizeThreshold s;

@@ -4,12 +4,13 @@
 #include <string>
 
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::growth {
 
 SurfaceProjection sphereProjection(const Vec3& center, double radius) {
   if (!(radius > 0) || !std::isfinite(radius))
-    throw InputError("sphere projection: radius = " + std::to_string(radius) + " must be > 0");
+    throw InputError("sphere projection: radius = " + formatNumber(radius) + " must be > 0");
   return [center, radius](const Vec3& p) -> Vec3 {
     const Vec3 d = p - center;
     const double n = d.norm();
@@ -20,7 +21,7 @@ SurfaceProjection sphereProjection(const Vec3& center, double radius) {
 
 SurfaceProjection paraboloidProjection(const Vec3& apex, double curvature) {
   if (!(curvature > 0) || !std::isfinite(curvature))
-    throw InputError("paraboloid projection: curvature = " + std::to_string(curvature) +
+    throw InputError("paraboloid projection: curvature = " + formatNumber(curvature) +
                      " must be > 0");
   return [apex, curvature](const Vec3& p) -> Vec3 {
     // Work in the meridian plane: point (r0, z0) relative to the apex, surface

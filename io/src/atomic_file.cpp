@@ -8,7 +8,6 @@
 #include <filesystem>
 #include <system_error>
 
-#include "tessella/io/text_file.hpp"
 #include "tessella/tissue/errors.hpp"
 
 namespace tessella::io::detail {
@@ -81,11 +80,3 @@ void replaceAtomically(const std::string& path, const std::function<void(const s
 }
 
 }  // namespace tessella::io::detail
-
-namespace tessella::io {
-
-void writeTextFile(const std::string& path, std::string_view text, bool durable) {
-  detail::replaceAtomically(path, [&](const std::string& tmp) { detail::writeBytes(tmp, text, path); }, durable);
-}
-
-}  // namespace tessella::io

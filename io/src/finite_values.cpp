@@ -1,9 +1,9 @@
 #include "finite_values.hpp"
 
 #include <cmath>
-#include <sstream>
 
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::io::detail {
 
@@ -21,19 +21,14 @@ bool finite(const Sym3& s) {
   return true;
 }
 
-std::string text(double x) {
-  if (std::isnan(x)) return "nan";  // not "-nan"
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
+// A value of the data, quoted exactly.
+std::string text(double x) { return formatNumber(x); }
 std::string text(float x) { return text(static_cast<double>(x)); }
 template <typename Derived>
 std::string text(const Eigen::MatrixBase<Derived>& m) {  // row by row
-  std::ostringstream s;
-  s << "(";
-  for (Eigen::Index i = 0; i < m.size(); ++i) s << (i ? ", " : "") << text(m(i / m.cols(), i % m.cols()));
-  return s.str() + ")";
+  std::string s = "(";
+  for (Eigen::Index i = 0; i < m.size(); ++i) s += (i ? ", " : "") + text(m(i / m.cols(), i % m.cols()));
+  return s + ")";
 }
 std::string text(const Sym3& v) { return text(Eigen::Matrix<double, 6, 1>(v.v.data())); }
 

@@ -6,7 +6,7 @@
 #include <span>
 #include <string>
 
-#include "property_arrays.hpp"
+#include "vtu_property_arrays.hpp"
 #include "tessella/tissue/tissue.hpp"
 
 namespace tessella::io::detail {

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::io::detail {
 
@@ -29,15 +30,11 @@ std::string stepFileName(const std::string& name, std::size_t step) {
 }
 
 void checkNextTime(const std::string& pvd_path, const double* previous, double time) {
-  auto text = [](double x) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.17g", x);
-    return std::string(b);
-  };
-  if (!std::isfinite(time)) throw InputError("'" + pvd_path + "': step time " + text(time) + " is not finite");
+  if (!std::isfinite(time))
+    throw InputError("'" + pvd_path + "': step time " + formatNumber(time) + " is not finite");
   if (previous && !(time > *previous))
-    throw InputError("'" + pvd_path + "': step time " + text(time) + " is not after the previous step's time " +
-                     text(*previous) + " (ParaView would merge the two steps)");
+    throw InputError("'" + pvd_path + "': step time " + formatNumber(time) + " is not after the previous step's time " +
+                     formatNumber(*previous) + " (ParaView would merge the two steps)");
 }
 
 }  // namespace tessella::io::detail

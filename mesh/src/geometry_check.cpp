@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <unordered_map>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -14,6 +13,7 @@
 
 #include "polygon_fan.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "wall_triangulation.hpp"
 
@@ -26,19 +26,9 @@ namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 
-std::string str(const Vec3& p) {
-  std::ostringstream s;
-  s.precision(9);
-  s << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
-  return s.str();
-}
-
-std::string num(double x) {
-  std::ostringstream s;
-  s.precision(6);
-  s << x;
-  return s.str();
-}
+// Where a defect is (nine digits tell neighbouring vertices apart) and how small it is (computed: six digits).
+std::string str(const Vec3& p) { return formatPoint(p, 9); }
+std::string num(double x) { return formatNumber(x, 6); }
 
 MeshabilityReport defect(const std::string& message, ElementId element) {
   return MeshabilityReport{false, message, element};

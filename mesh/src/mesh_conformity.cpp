@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "tessella/mesh/mesh_measures.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella {
 namespace {
@@ -52,7 +53,7 @@ ConformityReport checkConformity(const FeMesh& m) {
         return fail("element " + std::to_string(e) + " has a bad node index " + std::to_string(m.elements(e, k)));
     if (m.dim == 3 && !(signedTetVolume(m, e) > 0.0))
       return fail("tetrahedron " + std::to_string(e) + " is not positively oriented (volume " +
-                  std::to_string(signedTetVolume(m, e)) + ")");
+                  formatNumber(signedTetVolume(m, e), 6) + ")");
     if (m.dim == 2 && !(elementMeasure(m, e) > 0.0)) return fail("triangle " + std::to_string(e) + " is degenerate");
     for (int skip = 0; skip < corners; ++skip) {
       std::array<int, 3> ids{-1, -1, -1};

@@ -4,12 +4,13 @@
 #include <string>
 
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella {
 namespace {
 
 void require(bool ok, const char* field, double value, const char* range) {
-  if (!ok) throw InputError(std::string("mesh option ") + field + " = " + std::to_string(value) + " is out of range: " + range);
+  if (!ok) throw InputError(std::string("mesh option ") + field + " = " + formatNumber(value) + " is out of range: " + range);
 }
 
 }  // namespace

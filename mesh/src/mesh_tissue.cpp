@@ -2,22 +2,18 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"
 
 namespace tessella {
 
 namespace {
 
-std::string text(double v) {
-  std::ostringstream s;
-  s.precision(6);
-  s << v;
-  return s.str();
-}
+// Options, an estimate and a measure: six significant digits say enough.
+std::string text(double v) { return formatNumber(v, 6); }
 
 }  // namespace
 

@@ -4,7 +4,6 @@
 // facet.
 
 #include <algorithm>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -12,6 +11,7 @@
 
 #include "tessella/mesh/mesh_options.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::mesh_detail {
 
@@ -30,12 +30,19 @@ inline std::string tetgenErrorMeaning(int code) {
 
 /// `base` followed by the quality and volume bounds: q<ratio>[/<dihedral>][a<volume>].
 inline std::string tetgenSwitches(const std::string& base, const MeshOptions& o) {
-  std::ostringstream s;
-  s.precision(17);
-  s << base << "q" << o.radius_edge_ratio;
-  if (o.min_dihedral_degrees > 0.0) s << "/" << o.min_dihedral_degrees;
-  if (o.max_volume > 0.0) s << "a" << o.max_volume;
-  return s.str();
+  // Appended piece by piece: GCC 12 warns (-Wrestrict, a false positive) about "q" + std::string&&.
+  std::string s = base;
+  s += 'q';
+  s += formatNumber(o.radius_edge_ratio);
+  if (o.min_dihedral_degrees > 0.0) {
+    s += '/';
+    s += formatNumber(o.min_dihedral_degrees);
+  }
+  if (o.max_volume > 0.0) {
+    s += 'a';
+    s += formatNumber(o.max_volume);
+  }
+  return s;
 }
 
 /// tetrahedralize(), with TetGen's integer throws turned into a GeometryError

@@ -11,11 +11,11 @@
 namespace tessella::mesh_detail {
 
 /// One TetGen run on the piecewise-linear complex of all walls, one region
-/// per cell; TetGen refines the walls itself (whole_tissue_mesher.cpp).
+/// per cell; TetGen refines the walls itself (volume_methods_whole_tissue.cpp).
 FeMesh meshWholeTissue(const Tissue& t, const MeshOptions& options, const WallTriangulation& walls);
 
 /// Walls meshed first (wall_surface_mesh.hpp), then one TetGen run per cell
-/// that keeps those wall triangles, cells in parallel (cell_by_cell_mesher.cpp).
+/// that keeps those wall triangles, cells in parallel (volume_methods_cell_by_cell.cpp).
 FeMesh meshCellByCell(const Tissue& t, const MeshOptions& options, const WallTriangulation& walls);
 
 /// A point strictly inside cell c, clear of its walls by 1e-6 cbrt(volume):

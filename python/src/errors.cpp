@@ -5,9 +5,9 @@
 //   tessella.TopologyError    (Error)  an edit that would break the complex
 //   tessella.SimulationError  (Error)  a stage failed; names stage, step and time
 // InputError derives from ValueError so that `except ValueError` works as
-// Python code expects for bad arguments. The solvers' errors (a separate
-// std::runtime_error family) map onto these: InvalidProblemError (a badly
-// posed problem) -> InputError; FactorizationError, ConvergenceError -> Error.
+// Python code expects for bad arguments. The solvers' errors (SolverError, a
+// tessella::Error) map onto these: InvalidProblemError (a badly posed problem)
+// -> InputError; FactorizationError, ConvergenceError -> Error.
 #include "bindings.hpp"
 #include "tessella/sim/simulation.hpp"
 #include "tessella/solvers/errors.hpp"
@@ -53,11 +53,9 @@ void bindErrors(py::module_& m) {
       PyErr_SetString(geometry.ptr(), e.what());
     } catch (const TopologyError& e) {
       PyErr_SetString(topology.ptr(), e.what());
-    } catch (const Error& e) {
-      PyErr_SetString(error.ptr(), e.what());
     } catch (const InvalidProblemError& e) {
       PyErr_SetString(input.ptr(), e.what());
-    } catch (const SolverError& e) {
+    } catch (const Error& e) {  // SolverError and its other kinds too
       PyErr_SetString(error.ptr(), e.what());
     }
   });

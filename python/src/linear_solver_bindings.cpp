@@ -3,6 +3,7 @@
 #include "bindings.hpp"
 #include "enum_strings.hpp"
 #include "tessella/solvers/linear_solver.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::python {
 
@@ -49,7 +50,7 @@ void bindLinearSolver(py::module_& m) {
       .def("__repr__", [](const SolveReport& r) {
         return "SolveReport(method=" + toString(r.method) + ", unknowns=" + std::to_string(r.unknowns) +
                ", iterations=" + std::to_string(r.iterations) +
-               ", relative_residual=" + std::to_string(r.relative_residual) + ")";
+               ", relative_residual=" + formatNumber(r.relative_residual, 6) + ")";
       });
 }
 

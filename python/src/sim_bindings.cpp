@@ -12,6 +12,7 @@
 #include "tessella/sim/sections/simulation_config.hpp"
 #include "tessella/sim/simulation.hpp"
 #include "tessella/sim/stages/growth_stages.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::python {
 
@@ -85,9 +86,9 @@ simulation lives. A stage's exception is raised as SimulationError naming the
 stage, step and time, followed by the cause's message.
 )doc")
       .def(py::init([](const Tissue& t, double start, double end, double dt, std::uint64_t seed) {
-             if (!(dt > 0.0)) throw InputError("Simulation: dt must be > 0, got " + std::to_string(dt));
+             if (!(dt > 0.0)) throw InputError("Simulation: dt must be > 0, got " + formatNumber(dt));
              if (!(end >= start))
-               throw InputError("Simulation: end (" + std::to_string(end) + ") must be >= start (" + std::to_string(start) + ")");
+               throw InputError("Simulation: end (" + formatNumber(end) + ") must be >= start (" + formatNumber(start) + ")");
              return Simulation(t, sim::SimulationParameters{.time = {start, end, dt}, .rng_seed = seed, .rng_state = {}, .carried = {}});
            }),
            py::arg("tissue"), py::arg("start") = 0.0, py::arg("end") = 10.0, py::arg("dt") = 1.0, py::arg("rng_seed") = 0)

@@ -6,6 +6,7 @@
 
 #include "bindings.hpp"
 #include "deferred_error.hpp"
+#include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/validate.hpp"
 
@@ -80,7 +81,7 @@ fetch a new view after every edit. Growth (moving vertices) keeps views valid.
            [](const Tissue& t) {
              return "<tessella.Tissue dim=" + std::to_string(t.dim()) + " embedding=" +
                     embeddingName(t.embedding()) + " cells=" + std::to_string(t.numCells()) +
-                    " vertices=" + std::to_string(t.numVertices()) + " time=" + std::to_string(t.time()) +
+                    " vertices=" + std::to_string(t.numVertices()) + " time=" + formatNumber(t.time()) +
                     ">";
            })
       // --- kind and counts

@@ -5,14 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <limits>
 #include <memory>
 
 #include "tessella/render/colour_map.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
-#include "tessella/tissue/parameters.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::render {
 
@@ -94,11 +93,7 @@ std::string scalarPropertyNames(const Tissue& t) {
 }
 
 // "1.5", "0.000123", "1.2e+06": short labels for the colour bar.
-std::string label(double x) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.4g", x);
-  return buf;
-}
+std::string label(double x) { return formatNumber(x, 4); }
 
 struct SurfaceDeleter {
   void operator()(cairo_surface_t* s) const { cairo_surface_destroy(s); }

@@ -11,7 +11,7 @@
 #include "tessella/io/pvd.hpp"
 #include "tessella/io/vtu.hpp"
 #include "tessella/tissue/errors.hpp"
-#include "tessella/tissue/parameters.hpp"
+#include "tessella/tissue/format.hpp"
 
 extern char** environ;
 

@@ -6,6 +6,7 @@
 
 #include "config/exact_text.hpp"
 #include "tessella/sim/config/config_value.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::sim {
 
@@ -20,15 +21,14 @@ std::mt19937_64 stageStream(std::uint64_t seed) {
 std::string number(double x) { return formatValue(x); }
 }  // namespace
 
-using detail::exactText;
 using detail::parseExact;
 
 io::RunState Simulation::runState() const {
   std::ostringstream stream;
   stream << rng_;
   io::RunState state = parameters_.carried;
-  state["clock.start"] = exactText(parameters_.time.clockOrigin());
-  state["clock.dt"] = exactText(parameters_.time.dt);
+  state["clock.start"] = formatNumber(parameters_.time.clockOrigin());
+  state["clock.dt"] = formatNumber(parameters_.time.dt);
   state["clock.step"] = std::to_string(parameters_.time.origin_steps + step_);
   state["rng_seed"] = std::to_string(parameters_.rng_seed);
   state["rng.stream"] = stream.str();

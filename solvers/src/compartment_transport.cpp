@@ -1,6 +1,7 @@
 #include "tessella/solvers/compartment_transport.hpp"
 
 #include "tessella/solvers/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 #include <cmath>
 #include <sstream>
@@ -21,7 +22,7 @@ CompartmentTransport::CompartmentTransport(CompartmentNetwork network, TimeSchem
   for (Eigen::Index i = 0; i < n; ++i)
     if (!(std::isfinite(network_.volume[i]) && network_.volume[i] > 0.0)) {
       std::ostringstream msg;
-      msg << "volume of cell " << i << " is " << network_.volume[i] << "; it must be > 0";
+      msg << "volume of cell " << i << " is " << formatNumber(network_.volume[i]) << "; it must be > 0";
       bad(msg.str());
     }
   if (network_.decay.size() != 0 && network_.decay.size() != n) bad("decay must be empty or have one value per cell");

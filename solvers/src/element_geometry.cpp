@@ -1,6 +1,7 @@
 #include "tessella/solvers/element_geometry.hpp"
 
 #include "tessella/solvers/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 #include <Eigen/Geometry>  // cross product
 #include <Eigen/LU>
@@ -17,7 +18,7 @@ Eigen::Vector3d node(const FeMesh& mesh, int i) { return mesh.nodes.row(i).trans
 
 [[noreturn]] void degenerate(int e, double measure) {
   std::ostringstream msg;
-  msg << "FE mesh: element " << e << " is degenerate (measure " << measure << ")";
+  msg << "FE mesh: element " << e << " is degenerate (measure " << formatNumber(measure, 6) << ")";
   throw InvalidProblemError(msg.str());
 }
 
@@ -119,7 +120,7 @@ Eigen::VectorXd cellToElement(const FeMesh& mesh, const Eigen::VectorXd& per_cel
     const double v = per_cell[c];
     if (!std::isfinite(v) || (nonnegative && v < 0.0)) {
       std::ostringstream msg;
-      msg << what << " of cell " << c << " is " << v << (nonnegative ? "; it must be finite and >= 0" : "; it must be finite");
+      msg << what << " of cell " << c << " is " << formatNumber(v) << (nonnegative ? "; it must be finite and >= 0" : "; it must be finite");
       throw InvalidProblemError(msg.str());
     }
   }

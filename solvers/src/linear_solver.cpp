@@ -2,6 +2,7 @@
 
 #include "external_solver.hpp"
 #include "tessella/solvers/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -89,7 +90,7 @@ void LinearSolver::compute(const SparseMatrix& A) {
     if (dmin <= tol * dmax) {
       std::ostringstream msg;
       msg << "LinearSolver: matrix is " << (dmin < -tol * dmax ? "not positive definite" : "singular")
-          << " (smallest LDL^T pivot " << dmin << ", largest " << dmax << ", n = " << n << ")";
+          << " (smallest LDL^T pivot " << formatNumber(dmin, 6) << ", largest " << formatNumber(dmax, 6) << ", n = " << n << ")";
       throw FactorizationError(msg.str());
     }
   } else {
@@ -138,8 +139,8 @@ Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b, const Eigen::Vecto
       if (!(res <= 10.0 * options_.tolerance)) {
         std::ostringstream msg;
         msg << "LinearSolver: conjugate gradient + BoomerAMG did not converge in " << iterations
-            << " iterations (relative residual " << res << ", tolerance " << options_.tolerance << ", n = " << n
-            << "; is the matrix symmetric positive definite?)";
+            << " iterations (relative residual " << formatNumber(res, 6) << ", tolerance "
+            << formatNumber(options_.tolerance) << ", n = " << n << "; is the matrix symmetric positive definite?)";
         throw ConvergenceError(msg.str());
       }
     }
@@ -168,7 +169,7 @@ Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b, const Eigen::Vecto
       const double res = (b - matrix_ * x).norm() / bnorm;
       std::ostringstream msg;
       msg << "LinearSolver: conjugate gradient did not converge in " << iterations << " iterations (relative residual "
-          << res << ", tolerance " << options_.tolerance << ", n = " << n << ")";
+          << formatNumber(res, 6) << ", tolerance " << formatNumber(options_.tolerance) << ", n = " << n << ")";
       throw ConvergenceError(msg.str());
     }
   }

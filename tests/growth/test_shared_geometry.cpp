@@ -13,7 +13,7 @@
 #include "tessella/growth/growth_integrator.hpp"
 #include "tessella/growth/linear_field.hpp"
 #include "tessella/growth/meristem_field.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 
 using namespace tessella;
 using namespace tessella::growth;

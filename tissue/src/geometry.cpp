@@ -1,7 +1,6 @@
 #include "tessella/tissue/geometry.hpp"
 
 #include <array>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -9,6 +8,7 @@
 
 #include "polygon_kernels.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella {
 
@@ -283,11 +283,9 @@ std::string polygonDefectText(const PolygonDefect& d, std::span<const VertexId> 
     case PolygonDefect::None:
       return {};
     case PolygonDefect::Pinched: {
-      std::ostringstream gap;
-      gap.precision(3);
-      gap << (loop[static_cast<std::size_t>(d.first)] - loop[static_cast<std::size_t>(d.second)]).norm();
+      const double gap = (loop[static_cast<std::size_t>(d.first)] - loop[static_cast<std::size_t>(d.second)]).norm();
       return "is pinched: its non-adjacent vertices " + vid(d.first) + " and " + vid(d.second) + " are " +
-             gap.str() + " apart (at most 1e-12 of the cell's size)";
+             formatNumber(gap, 3) + " apart (at most 1e-12 of the cell's size)";
     }
     case PolygonDefect::SelfIntersecting:
       return "has a self-intersecting outline (in its best-fit plane): its edges " + vid(d.first) + "-" +

@@ -1,6 +1,5 @@
 #include "tessella/tissue/parameters.hpp"
 
-#include <charconv>
 #include <cmath>
 
 #include "tessella/tissue/errors.hpp"
@@ -19,12 +18,6 @@ const char* paramTypeName(ParamType type) {
     case ParamType::Path: return "path";
   }
   return "?";
-}
-
-std::string formatNumber(double x) {
-  char buf[64];
-  const auto [end, ec] = std::to_chars(buf, buf + sizeof buf, x);
-  return std::string(buf, end);
 }
 
 namespace {
@@ -68,9 +61,12 @@ bool ParamRange::contains(double x) const {
 }
 
 std::string ParamRange::text() const {
+  // Six significant digits, as printf's %g: bounds are round declared numbers, and integer bounds read
+  // "100000" rather than the shorter "1e+05" (docs/config.md is generated from this text).
+  const auto bound = [](double x) { return formatNumber(x, 6); };
   std::string out;
-  if (min) out = std::string(min_exclusive ? "> " : ">= ") + formatNumber(*min);
-  if (max) out += std::string(out.empty() ? "" : " and ") + (max_exclusive ? "< " : "<= ") + formatNumber(*max);
+  if (min) out = std::string(min_exclusive ? "> " : ">= ") + bound(*min);
+  if (max) out += std::string(out.empty() ? "" : " and ") + (max_exclusive ? "< " : "<= ") + bound(*max);
   return out;
 }
 

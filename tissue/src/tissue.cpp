@@ -4,6 +4,7 @@
 #include <string_view>
 
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 #include "tessella/tissue/validate.hpp"
 
 namespace tessella {
@@ -191,8 +192,7 @@ std::span<Vec3> Tissue::mutablePositions() {
 
 VertexId Tissue::addVertex(const Vec3& p) {
   if (!p.allFinite())
-    throw InputError("vertex position is not finite: (" + std::to_string(p.x()) + ", " +
-                     std::to_string(p.y()) + ", " + std::to_string(p.z()) + ")");
+    throw InputError("vertex position is not finite: " + formatPoint(p));
   const VertexId v = complex_.addVertex();
   positions_.push_back(p);
   grew(0);

@@ -7,6 +7,7 @@
 #include <unordered_set>
 
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"
 
 namespace tessella {
@@ -258,7 +259,7 @@ void checkMeasures(const Tissue& t) {
   int orientation = 0;
   for (FaceId f : t.faces()) {
     const PolygonMeasures m = polygonMeasures(t, f);
-    if (!(m.area > 0)) fail(2, f.index(), "has non-positive area " + std::to_string(m.area));
+    if (!(m.area > 0)) fail(2, f.index(), "has non-positive area " + formatNumber(m.area, 6));
     if (t.embedding() == Embedding::Planar) {
       const int s = m.normal.z() > 0 ? 1 : -1;
       if (orientation == 0) orientation = s;

@@ -1,19 +1,12 @@
 #pragma once
-// Numbers as text that reads back bit for bit (the run state a snapshot
-// carries for an exact restart).
+// Reading back numbers written as text bit for bit (the run state a snapshot
+// carries for an exact restart); they are written by tessella::formatNumber.
 
 #include <charconv>
 #include <string>
 #include <system_error>
 
 namespace tessella::sim::detail {
-
-/// Shortest text that reads back to the same double.
-inline std::string exactText(double x) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
-  return std::string(buffer, result.ptr);
-}
 
 /// Parses the whole of `text` into `out`; false on anything else.
 template <typename T>

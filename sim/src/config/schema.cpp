@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
+
+#include "tessella/tissue/parameters.hpp"
 
 namespace tessella::sim {
 
@@ -25,19 +26,8 @@ bool isTemplatePath(const std::string& path) { return path.find(kEntryPlaceholde
 
 std::string KeySpec::name() const { return leafName(path); }
 
-namespace {
-std::string number(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-}  // namespace
-
 std::string KeySpec::rangeText() const {
-  std::string s;
-  if (min) s += (min_exclusive ? "> " : ">= ") + number(*min);
-  if (max) s += (s.empty() ? "" : " and ") + std::string(max_exclusive ? "< " : "<= ") + number(*max);
-  return s;
+  return ParamRange{.min = min, .max = max, .min_exclusive = min_exclusive, .max_exclusive = max_exclusive}.text();
 }
 
 std::string KeySpec::expectation() const {

@@ -10,19 +10,15 @@
 
 #include "tessella/sim/stages/growth_stages.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"
 
 namespace tessella::sim {
 
 namespace {
 
-// Enough digits to read every value back exactly; empty for "no value".
-std::string cell(double x) {
-  if (std::isnan(x)) return "";
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", x);
-  return buffer;
-}
+// Every value reads back exactly; empty for "no value".
+std::string cell(double x) { return std::isnan(x) ? std::string() : formatNumber(x); }
 
 struct Summary {
   double total = 0, mean = std::numeric_limits<double>::quiet_NaN(), min = mean, max = mean, std = mean;

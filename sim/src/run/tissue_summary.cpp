@@ -1,12 +1,12 @@
 #include "tessella/sim/run/tissue_summary.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
 
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"
 
 namespace tessella::sim {
@@ -76,10 +76,8 @@ std::string printed(const char* format, ...) {
 
 std::string formatTissueSummary(const TissueSummary& s, double time) {
   const char* measure = s.dim == 2 ? "area" : "volume";
-  char shortest[64];
-  const auto end = std::to_chars(shortest, shortest + sizeof shortest, time).ptr;
   std::string out = printed("tissue       %dD, %s, time %s\n", s.dim, embeddingName(s.embedding),
-                            std::string(shortest, end).c_str());
+                            formatNumber(time).c_str());
   out += printed("elements     %zu vertices, %zu edges, %zu faces", s.counts[0], s.counts[1], s.counts[2]);
   if (s.dim == 3) out += printed(", %zu volumes", s.counts[3]);
   out += printed("\ncells        %zu\n", s.cells);

@@ -4,9 +4,10 @@
 #include <string>
 
 #include "../config/exact_text.hpp"
+#include "tessella/generators/grids.hpp"
 #include "tessella/io/vtu.hpp"
 #include "tessella/sim/config/config_error.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::sim {
 
@@ -298,10 +299,10 @@ TissueSpec readTissueSection(const Config& c) {
 
 io::RunState domeRunState(const Dome& dome) {
   return {{"dome.shape", dome.shape == Dome::Shape::Paraboloid ? "paraboloid" : "spherical_cap"},
-          {"dome.base_radius", detail::exactText(dome.base_radius)},
-          {"dome.height", detail::exactText(dome.height)},
-          {"dome.base_center", detail::exactText(dome.base_center.x()) + " " + detail::exactText(dome.base_center.y()) +
-                                   " " + detail::exactText(dome.base_center.z())}};
+          {"dome.base_radius", formatNumber(dome.base_radius)},
+          {"dome.height", formatNumber(dome.height)},
+          {"dome.base_center", formatNumber(dome.base_center.x()) + " " + formatNumber(dome.base_center.y()) +
+                                   " " + formatNumber(dome.base_center.z())}};
 }
 
 namespace {

@@ -1,6 +1,8 @@
 #pragma once
 // FeMesh: a finite-element mesh as plain Eigen arrays, independent of the cell
-// complex's mutation API. mesh/ produces it from a tissue; solvers/ consume it.
+// complex. mesh/ produces it from a tissue; solvers/ solve on it and io/ writes
+// it. This header alone is the target tessella::fe_mesh (Eigen only), so those
+// two link it without the meshers.
 
 #include <Eigen/Core>
 

@@ -1,15 +1,16 @@
 #pragma once
-// Errors raised by solvers/. All derive from SolverError (a std::runtime_error)
-// so a caller can catch the family at once, or one kind when it can react to it.
+// Errors raised by solvers/. All derive from SolverError, itself a tessella::Error
+// (the root of every error Tessella throws on purpose), so a caller can catch
+// every Tessella error, the solver family, or one kind when it can react to it.
 
-#include <stdexcept>
+#include "tessella/tissue/errors.hpp"
 
 namespace tessella {
 
 /// Base of every error thrown by solvers/.
-class SolverError : public std::runtime_error {
+class SolverError : public Error {
  public:
-  using std::runtime_error::runtime_error;
+  using Error::Error;
 };
 
 /// The problem as posed is ill-defined: bad sizes, negative diffusivity or

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"  // formatNumber, which the texts of values use
 #include "tessella/tissue/vec3.hpp"
 
 namespace tessella {
@@ -33,9 +34,6 @@ const char* paramTypeName(ParamType type);
 
 using ParamValue = std::variant<bool, std::int64_t, double, std::string, std::vector<double>>;
 
-/// Shortest text that reads back as the same double ("0.1", "1", "1e-08"):
-/// the one formatter of numbers in messages.
-std::string formatNumber(double x);
 /// A value as written in YAML: flow style for lists, floats always with a
 /// point or exponent ("1.0", not "1"), so the text reads back as the same type.
 std::string formatParamValue(const ParamValue& value);

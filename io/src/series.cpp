@@ -1,0 +1,42 @@
+#include "tessella/io/series.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "tessella/io/pvd.hpp"
+#include "tessella/tissue/errors.hpp"
+#include "series_naming.hpp"
+
+namespace tessella::io {
+
+SeriesWriter::SeriesWriter(std::string directory, std::string name, VtuOptions options)
+    : directory_(std::move(directory)), name_(std::move(name)), options_(options) {
+  detail::checkSeriesName(name_);
+  detail::createSeriesDirectory(directory_);
+  pvd_path_ = (std::filesystem::path(directory_) / (name_ + ".pvd")).string();
+}
+
+std::string SeriesWriter::write(const Tissue& tissue, double time, const RunState& state, GeometryCache* geometry) {
+  detail::checkNextTime(pvd_path_, entries_.empty() ? nullptr : &entries_.back().time, time);
+  const std::string file = detail::stepFileName(name_, entries_.size());
+  const std::string path = (std::filesystem::path(directory_) / file).string();
+  writeTissueVtu(tissue, path, options_, state, geometry);
+  entries_.push_back({time, file});
+  try {
+    writePvd();
+  } catch (...) {
+    entries_.pop_back();  // the .pvd on disk still lists the earlier steps only
+    throw;
+  }
+  return path;
+}
+
+void SeriesWriter::writePvd() const {
+  std::vector<PvdEntry> list;
+  list.reserve(entries_.size());
+  for (const Entry& e : entries_) list.push_back({e.time, e.file});
+  writePvdFile(pvd_path_, list, options_.durable);
+}
+
+}  // namespace tessella::io

@@ -1,0 +1,199 @@
+// Planar tissues: one constrained Delaunay triangulation of every vertex with
+// every wall edge as a constraint (CGAL), refined for angle and size with
+// Delaunay_mesher_2. Because the whole tissue is one triangulation, a Steiner
+// point the refinement puts on a wall is shared by both cells by construction.
+//
+// Cell tagging: the face to the left of the first sub-edge of each oriented
+// loop edge of a cell (loops run counter-clockwise) is seeded with the cell,
+// then a flood fill spreads the tag across unconstrained edges. Done once
+// before refinement (to mark the mesh domain, so holes between cells stay
+// empty) and once after it (refinement replaces faces).
+
+#include "tessella/mesh/mesh_tissue.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <queue>
+#include <string>
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Constrained_triangulation_plus_2.h>
+#include <CGAL/Delaunay_mesh_face_base_2.h>
+#include <CGAL/Delaunay_mesh_size_criteria_2.h>
+#include <CGAL/Delaunay_mesh_vertex_base_2.h>
+#include <CGAL/Delaunay_mesher_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+
+#include "bounded_refinement.hpp"
+#include "tessella/mesh/geometry_check.hpp"
+#include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
+#include "tessella/tissue/geometry.hpp"
+#include "triangle_criteria.hpp"
+#include "wall_segments.hpp"
+
+namespace tessella {
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+struct NodeInfo {
+  int vertex = -1;  // tissue vertex, -1 for a Steiner point
+  int node = -1;
+};
+using Vb = CGAL::Triangulation_vertex_base_with_info_2<NodeInfo, K, CGAL::Delaunay_mesh_vertex_base_2<K>>;
+using Fb = CGAL::Triangulation_face_base_with_info_2<int, K, CGAL::Delaunay_mesh_face_base_2<K>>;
+using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
+using Cdt = CGAL::Constrained_triangulation_plus_2<
+    CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag>>;
+using Criteria = CGAL::Delaunay_mesh_size_criteria_2<Cdt>;
+using Mesher = CGAL::Delaunay_mesher_2<Cdt, Criteria>;
+
+/// Tags every face with the cell containing it (-1 outside all cells).
+void tagCells(Cdt& cdt, const Tissue& t, const std::vector<Cdt::Constraint_id>& constraint) {
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->info() = -1;
+  const auto& topo = t.topology();
+  std::queue<Cdt::Face_handle> queue;
+  for (CellId c : t.cells()) {
+    const int cell = static_cast<int>(c.index());
+    for (OrientedEdge oe : topo.faceEdges(t.cellFace(c))) {
+      // First sub-edge of the wall in the loop's direction.
+      const auto cid = constraint[oe.handle().index()];
+      Cdt::Vertex_handle a, b;
+      if (!oe.reversed()) {
+        auto it = cdt.vertices_in_constraint_begin(cid);
+        a = *it;
+        b = *++it;
+      } else {
+        auto it = cdt.vertices_in_constraint_end(cid);
+        a = *--it;
+        b = *--it;
+      }
+      Cdt::Face_handle f;
+      int opposite = 0;
+      if (!cdt.is_edge(a, b, f, opposite))
+        throw GeometryError("planar mesher: wall " + std::to_string(oe.handle().index()) +
+                                " of cell " + std::to_string(cell) + " is missing from the triangulation",
+                            ElementId{1, oe.handle().index()});
+      if (f->vertex(f->ccw(opposite)) != a) f = f->neighbor(opposite);  // the face left of a -> b
+      if (cdt.is_infinite(f))
+        throw GeometryError("planar mesher: cell " + std::to_string(cell) + " lies outside its own wall " +
+                                std::to_string(oe.handle().index()) + " (clockwise loop)",
+                            ElementId{2, c.index()});
+      if (f->info() == cell) continue;
+      if (f->info() != -1)
+        throw GeometryError("planar mesher: cells " + std::to_string(f->info()) + " and " + std::to_string(cell) +
+                                " overlap (a triangle lies in both)",
+                            ElementId{2, c.index()});
+      f->info() = cell;
+      queue.push(f);
+    }
+  }
+  while (!queue.empty()) {
+    const auto f = queue.front();
+    queue.pop();
+    for (int i = 0; i < 3; ++i) {
+      if (f->is_constrained(i)) continue;
+      const auto g = f->neighbor(i);
+      if (g->info() == f->info()) continue;
+      if (g->info() != -1 || cdt.is_infinite(g))
+        throw GeometryError("planar mesher: cell " + std::to_string(f->info()) +
+                                " is not closed by its walls (it leaks into " +
+                                (cdt.is_infinite(g) ? std::string("the outside") : "cell " + std::to_string(g->info())) +
+                                ")",
+                            ElementId{2, static_cast<Index>(f->info())});
+      g->info() = f->info();
+      queue.push(g);
+    }
+  }
+}
+
+}  // namespace
+
+FeMesh meshPlanarTissue(const Tissue& t, const MeshOptions& options) {
+  validateMeshOptions(options);
+  if (t.dim() != 2 || t.embedding() != Embedding::Planar)
+    throw InputError(std::string("meshPlanarTissue needs a planar 2D tissue, got a ") + embeddingName(t.embedding()) +
+                     " tissue of dimension " + std::to_string(t.dim()));
+  checkMeshable(t, options);
+  checkElementLimit(t, options);
+
+  Cdt cdt;
+  std::vector<Cdt::Vertex_handle> handle(t.slots(0));
+  Cdt::Face_handle hint;
+  for (VertexId v : t.vertices()) {
+    const Vec3& p = t.position(v);
+    handle[v.index()] = cdt.insert(K::Point_2(p.x(), p.y()), hint);
+    handle[v.index()]->info().vertex = static_cast<int>(v.index());
+    hint = handle[v.index()]->face();
+  }
+  const auto& topo = t.topology();
+  std::vector<Cdt::Constraint_id> constraint(t.slots(1));
+  for (EdgeId e : t.edges()) constraint[e.index()] = cdt.insert_constraint(handle[topo.edgeFrom(e).index()], handle[topo.edgeTo(e).index()]);
+  if (cdt.number_of_vertices() != t.numVertices())
+    throw GeometryError("planar mesher: walls cross (the constrained triangulation gained " +
+                        std::to_string(cdt.number_of_vertices() - t.numVertices()) + " intersection vertices)");
+
+  tagCells(cdt, t, constraint);
+  for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->set_in_domain(f->info() >= 0);
+  const double angle_bound = mesh_detail::shapeBound(options.min_angle_degrees);
+  if (angle_bound > 0.0 || options.max_edge_length > 0.0) {
+    double shortest = std::numeric_limits<double>::infinity();
+    for (EdgeId e : t.edges()) shortest = std::min(shortest, (t.position(topo.edgeTo(e)) - t.position(topo.edgeFrom(e))).norm());
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (VertexId v : t.vertices()) lo = lo.cwiseMin(t.position(v)), hi = hi.cwiseMax(t.position(v));
+    const std::size_t budget =
+        mesh_detail::refinementBudget(t.numVertices(), totalMeasure(t), (hi - lo).norm(), shortest, options.max_edge_length);
+    Mesher mesher(cdt, Criteria(angle_bound, options.max_edge_length));
+    // The domain is the tagged faces.
+    mesh_detail::refineWithinBudget(
+        mesher, cdt, budget,
+        [&](std::size_t vertices) {
+          throw GeometryError("planar mesher: refinement did not finish within " + std::to_string(vertices) +
+                              " vertices (" + std::to_string(t.numVertices()) + " tissue vertices, shortest wall " +
+                              formatNumber(shortest, 6) + ", min_angle_degrees " +
+                              formatNumber(options.min_angle_degrees) + "); lower min_angle_degrees");
+        },
+        true);
+    tagCells(cdt, t, constraint);
+  }
+
+  FeMesh mesh;
+  mesh.dim = 2;
+  int nodes = 0;
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) v->info().node = nodes++;
+  mesh.nodes.resize(nodes, 3);
+  mesh.node_vertex.resize(nodes);
+  for (auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v) {
+    const int n = v->info().node;
+    mesh.nodes.row(n) << v->point().x(), v->point().y(), 0.0;
+    mesh.node_vertex(n) = v->info().vertex;
+  }
+  std::vector<std::array<int, 4>> elements;  // 3 nodes + cell
+  for (auto f = cdt.finite_faces_begin(); f != cdt.finite_faces_end(); ++f)
+    if (f->info() >= 0)
+      elements.push_back({f->vertex(0)->info().node, f->vertex(1)->info().node, f->vertex(2)->info().node, f->info()});
+  mesh.elements.resize(static_cast<Eigen::Index>(elements.size()), 3);
+  mesh.element_cell.resize(static_cast<Eigen::Index>(elements.size()));
+  for (std::size_t i = 0; i < elements.size(); ++i) {
+    mesh.elements.row(static_cast<Eigen::Index>(i)) << elements[i][0], elements[i][1], elements[i][2];
+    mesh.element_cell(static_cast<Eigen::Index>(i)) = elements[i][3];
+  }
+
+  std::vector<std::array<int, 3>> facets;  // 2 nodes + wall
+  std::vector<bool> boundary;
+  for (EdgeId e : t.edges()) {
+    const bool on_boundary = t.isBoundaryWall(handle_cast<WallId>(e));
+    auto it = cdt.vertices_in_constraint_begin(constraint[e.index()]);
+    const auto end = cdt.vertices_in_constraint_end(constraint[e.index()]);
+    for (auto next = std::next(it); next != end; ++it, ++next) {
+      facets.push_back({(*it)->info().node, (*next)->info().node, static_cast<int>(e.index())});
+      boundary.push_back(on_boundary);
+    }
+  }
+  mesh_detail::storeWallSegments(mesh, facets, boundary);
+  return mesh;
+}
+
+}  // namespace tessella

@@ -1,0 +1,25 @@
+// meshVolumeTissue: checks the 3D tissue, then hands it to the volume method
+// the options name (volume_methods.hpp).
+
+#include "tessella/mesh/mesh_tissue.hpp"
+
+#include <string>
+
+#include "tessella/tissue/errors.hpp"
+#include "volume_methods.hpp"
+
+namespace tessella {
+
+FeMesh meshVolumeTissue(const Tissue& t, const MeshOptions& options) {
+  validateMeshOptions(options);
+  if (t.dim() != 3)
+    throw InputError("meshVolumeTissue needs a 3D tissue, got one of dimension " + std::to_string(t.dim()));
+  mesh_detail::WallTriangulation walls;
+  if (const auto report = mesh_detail::checkVolumeGeometry(t, options, walls); !report)
+    throw GeometryError("cannot mesh the tissue: " + report.message, report.element);
+  checkElementLimit(t, options);
+  return options.volume_method == VolumeMethod::WholeTissue ? mesh_detail::meshWholeTissue(t, options, walls)
+                                                            : mesh_detail::meshCellByCell(t, options, walls);
+}
+
+}  // namespace tessella

@@ -1,0 +1,256 @@
+// 3D tissues, cell by cell: the walls are meshed first, once, to the size and
+// angle bounds (wall_surface_mesh.hpp), and then every cell is filled by its
+// own TetGen run on the closed surface of its wall triangles, with -Y so that
+// TetGen keeps those triangles as they are. Two cells sharing a wall therefore
+// share every node on it, and the cells can be meshed in parallel.
+//
+// Why not one TetGen run on all walls (volume_methods_whole_tissue.cpp): TetGen 1.5's
+// facet repair walks its whole queue of subfaces for every refinement step
+// that encroaches one, which grows quadratically with the number of walls
+// (docs/meshing.md). Per cell, that queue holds one cell's walls.
+//
+// TetGen switches: p mesh a PLC, Y keep the input wall triangles, z number
+// from 0, A region attributes (the cell's region is 1; 0 is a cavity such as
+// a cell enclosed by this one, dropped), Q quiet, T<tol> coplanarity
+// tolerance, then q<ratio>[/<dihedral>][a<volume>].
+//
+// The runs happen in worker processes (isolated_tasks.hpp): TetGen 1.5 calls
+// abort() on a failed assertion and can flip forever on near-degenerate
+// input, and it is not reentrant (tetgen_support.hpp). The wall points of a
+// planar wall are coplanar only up to rounding, so neighbouring wall
+// triangles meet at folds of ~1e-16 that the coplanarity tolerance decides
+// about: a cell whose run fails is tried again with the next tolerance.
+
+#include "volume_methods.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include <omp.h>
+#include <tetgen.h>
+
+#include "isolated_tasks.hpp"
+#include "tessella/tissue/errors.hpp"
+#include "tetgen_support.hpp"
+#include "wall_surface_mesh.hpp"
+
+namespace tessella::mesh_detail {
+namespace {
+
+/// One cell's tetrahedra. Corners >= 0 are wall-mesh nodes; < 0 are
+/// -(k + 1) for the cell's own interior point k.
+struct CellMesh {
+  std::vector<Vec3> added;
+  std::vector<std::array<int, 4>> tets;
+};
+
+/// Longest wall-triangle edge: max_edge_length if given, else the edge of
+/// the regular tetrahedron of volume max_volume, else none.
+double wallEdgeBound(const MeshOptions& o) {
+  if (o.max_edge_length > 0.0) return o.max_edge_length;
+  if (o.max_volume > 0.0) return std::cbrt(6.0 * std::sqrt(2.0) * o.max_volume);
+  return 0.0;
+}
+
+/// Coplanarity tolerances (TetGen -T) to try, in order, for a cell whose
+/// TetGen run fails: the default (1e-8) failed on some Voronoi cells with
+/// short edges (never-ending flips, failed assertions) where 1e-7 worked,
+/// and 1e-6 merges the ends of edges shorter than 1e-6 x the cell's size.
+constexpr const char* kTolerances[] = {"T1e-7", "", "T1e-9", "T1e-6"};
+/// A cell's TetGen run normally takes milliseconds; one this slow is stuck.
+constexpr double kCellTimeoutSeconds = 60.0;
+
+std::string serialize(const CellMesh& cm) {
+  const std::uint64_t sizes[2] = {cm.added.size(), cm.tets.size()};
+  std::string out(sizeof sizes + cm.added.size() * sizeof(Vec3) + cm.tets.size() * sizeof(std::array<int, 4>), '\0');
+  char* p = out.data();
+  std::memcpy(p, sizes, sizeof sizes);
+  p += sizeof sizes;
+  if (!cm.added.empty()) std::memcpy(p, cm.added.data(), cm.added.size() * sizeof(Vec3));
+  p += cm.added.size() * sizeof(Vec3);
+  if (!cm.tets.empty()) std::memcpy(p, cm.tets.data(), cm.tets.size() * sizeof(std::array<int, 4>));
+  return out;
+}
+
+CellMesh deserialize(const std::string& bytes) {
+  std::uint64_t sizes[2];
+  std::memcpy(sizes, bytes.data(), sizeof sizes);
+  CellMesh cm;
+  cm.added.resize(sizes[0]);
+  cm.tets.resize(sizes[1]);
+  const char* p = bytes.data() + sizeof sizes;
+  if (sizes[0] > 0) std::memcpy(static_cast<void*>(cm.added.data()), p, sizes[0] * sizeof(Vec3));
+  p += sizes[0] * sizeof(Vec3);
+  if (sizes[1] > 0) std::memcpy(cm.tets.data(), p, sizes[1] * sizeof(std::array<int, 4>));
+  return cm;
+}
+
+/// `local_of` is scratch: one -1 per wall-mesh node, left as found.
+CellMesh meshCell(const Tissue& t, const WallSurfaceMesh& wm, CellId c, const Vec3& seed, const std::string& switches,
+                  std::vector<int>& local_of) {
+  const auto cellError = [&](const std::string& what) {
+    return GeometryError("cell-by-cell mesher: cell " + std::to_string(c.index()) + ": " + what, ElementId{3, c.index()});
+  };
+  std::vector<int> global;  // local point -> wall-mesh node
+  std::vector<std::array<int, 3>> triangles;
+  for (OrientedFace of : t.topology().volumeFaces(handle_cast<VolumeId>(c))) {
+    const std::size_t w = of.handle().index();
+    for (std::size_t k = wm.wall_begin[w]; k < wm.wall_begin[w + 1]; ++k) {
+      std::array<int, 3> tri{};
+      for (std::size_t j = 0; j < 3; ++j) {
+        int& local = local_of[static_cast<std::size_t>(wm.triangles[k][j])];
+        if (local < 0) {
+          local = static_cast<int>(global.size());
+          global.push_back(wm.triangles[k][j]);
+        }
+        tri[j] = local;
+      }
+      triangles.push_back(tri);
+    }
+  }
+  for (int g : global) local_of[static_cast<std::size_t>(g)] = -1;
+
+  tetgenio in, out;
+  in.firstnumber = 0;
+  in.numberofpoints = static_cast<int>(global.size());
+  in.pointlist = new REAL[global.size() * 3];
+  for (std::size_t i = 0; i < global.size(); ++i)
+    for (std::size_t k = 0; k < 3; ++k) in.pointlist[3 * i + k] = wm.nodes[static_cast<std::size_t>(global[i])](static_cast<Eigen::Index>(k));
+  in.numberoffacets = static_cast<int>(triangles.size());
+  in.facetlist = new tetgenio::facet[triangles.size()];
+  for (std::size_t f = 0; f < triangles.size(); ++f)
+    setPolygon(in.facetlist[f], {triangles[f][0], triangles[f][1], triangles[f][2]});
+  in.numberofregions = 1;
+  in.regionlist = new REAL[5]{seed.x(), seed.y(), seed.z(), 1.0, 0.0};
+  runTetgen(switches, in, out, "meshing cell " + std::to_string(c.index()));
+
+  // -Y: the walls must come back exactly as given (TetGen may not split or
+  // merge them, or the neighbour's copy of a wall would no longer match).
+  const int inputs = in.numberofpoints;
+  const auto sorted = [](std::array<int, 3> tri) {
+    std::sort(tri.begin(), tri.end());
+    return tri;
+  };
+  std::vector<std::array<int, 3>> given, returned;
+  for (const auto& tri : triangles) given.push_back(sorted(tri));
+  for (int f = 0; f < out.numberoftrifaces; ++f)
+    returned.push_back(sorted({out.trifacelist[3 * f], out.trifacelist[3 * f + 1], out.trifacelist[3 * f + 2]}));
+  std::sort(given.begin(), given.end());
+  std::sort(returned.begin(), returned.end());
+  if (out.numberofpoints < inputs || given != returned)
+    throw cellError("TetGen changed the cell's wall triangles (" + std::to_string(triangles.size()) + " given, " +
+                    std::to_string(out.numberoftrifaces) + " returned, " +
+                    std::to_string(std::max(0, out.numberofpoints - inputs)) + " points added)");
+
+  CellMesh cm;
+  std::vector<int> added_of(static_cast<std::size_t>(out.numberofpoints - inputs), -1);
+  const auto node = [&](int p) {
+    if (p < inputs) return global[static_cast<std::size_t>(p)];
+    int& a = added_of[static_cast<std::size_t>(p - inputs)];
+    if (a < 0) {
+      a = static_cast<int>(cm.added.size());
+      cm.added.emplace_back(out.pointlist[3 * p], out.pointlist[3 * p + 1], out.pointlist[3 * p + 2]);
+    }
+    return -a - 1;
+  };
+  const auto position = [&](int p) { return Vec3(out.pointlist[3 * p], out.pointlist[3 * p + 1], out.pointlist[3 * p + 2]); };
+  for (int e = 0; e < out.numberoftetrahedra; ++e) {
+    if (std::lround(out.tetrahedronattributelist[e * out.numberoftetrahedronattributes]) != 1) continue;  // a cavity
+    std::array<int, 4> p{};
+    for (int k = 0; k < 4; ++k) p[static_cast<std::size_t>(k)] = out.tetrahedronlist[e * out.numberofcorners + k];
+    const Vec3 a = position(p[0]);
+    if ((position(p[1]) - a).dot((position(p[2]) - a).cross(position(p[3]) - a)) < 0) std::swap(p[2], p[3]);
+    cm.tets.push_back({node(p[0]), node(p[1]), node(p[2]), node(p[3])});
+  }
+  return cm;
+}
+
+}  // namespace
+
+FeMesh meshCellByCell(const Tissue& t, const MeshOptions& options, const WallTriangulation& walls) {
+  const WallSurfaceMesh wm = meshWallSurfaces(t, walls, wallEdgeBound(options), options.min_angle_degrees);
+  const std::vector<CellId> cells(t.cells().begin(), t.cells().end());
+
+  // Every cell in a worker process (isolated_tasks.hpp): a TetGen run that
+  // aborts or never ends costs that cell's attempt, not the caller. A cell
+  // that fails is tried again with the next coplanarity tolerance.
+  std::vector<CellMesh> meshed(cells.size());
+  std::vector<std::size_t> todo(cells.size());
+  for (std::size_t i = 0; i < cells.size(); ++i) todo[i] = i;
+  std::vector<std::string> failures(cells.size());
+  std::vector<int> local_of(wm.nodes.size(), -1);  // each worker's own copy
+  for (const char* tolerance : kTolerances) {
+    if (todo.empty()) break;
+    const std::string switches = tetgenSwitches(std::string("pYzAQ") + tolerance, options);
+    const auto results = runIsolated(todo, omp_get_max_threads(), kCellTimeoutSeconds, [&](std::size_t i) {
+      return serialize(meshCell(t, wm, cells[i], cellSeed(t, walls, cells[i]), switches, local_of));
+    });
+    std::vector<std::size_t> failed;
+    for (std::size_t k = 0; k < todo.size(); ++k) {
+      if (results[k].ok) {
+        meshed[todo[k]] = deserialize(results[k].bytes);
+      } else {
+        failures[todo[k]] += std::string(failures[todo[k]].empty() ? "" : "; ") + "switches " + switches + ": " +
+                             results[k].failure;
+        failed.push_back(todo[k]);
+      }
+    }
+    todo = std::move(failed);
+  }
+  if (!todo.empty()) {
+    const CellId c = cells[todo.front()];
+    throw GeometryError("cell-by-cell mesher: TetGen could not mesh cell " + std::to_string(c.index()) + " (" +
+                            std::to_string(todo.size()) + " cells failed) with any tolerance tried: " +
+                            failures[todo.front()],
+                        ElementId{3, c.index()});
+  }
+
+  // Nodes: the wall mesh's, then each cell's interior points, cell by cell.
+  std::size_t nodes = wm.nodes.size(), elements = 0;
+  std::vector<std::size_t> first_added(cells.size());
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    first_added[i] = nodes;
+    nodes += meshed[i].added.size();
+    elements += meshed[i].tets.size();
+  }
+  FeMesh mesh;
+  mesh.dim = 3;
+  mesh.nodes.resize(static_cast<Eigen::Index>(nodes), 3);
+  mesh.node_vertex.setConstant(static_cast<Eigen::Index>(nodes), -1);
+  for (std::size_t n = 0; n < wm.nodes.size(); ++n) {
+    mesh.nodes.row(static_cast<Eigen::Index>(n)) = wm.nodes[n].transpose();
+    mesh.node_vertex(static_cast<Eigen::Index>(n)) = wm.node_vertex[n];
+  }
+  mesh.elements.resize(static_cast<Eigen::Index>(elements), 4);
+  mesh.element_cell.resize(static_cast<Eigen::Index>(elements));
+  Eigen::Index row = 0;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const CellMesh& cm = meshed[i];
+    for (std::size_t k = 0; k < cm.added.size(); ++k) mesh.nodes.row(static_cast<Eigen::Index>(first_added[i] + k)) = cm.added[k].transpose();
+    for (const auto& tet : cm.tets) {
+      for (Eigen::Index k = 0; k < 4; ++k) {
+        const int n = tet[static_cast<std::size_t>(k)];
+        mesh.elements(row, k) = n >= 0 ? n : static_cast<int>(first_added[i]) - n - 1;
+      }
+      mesh.element_cell(row++) = static_cast<int>(cells[i].index());
+    }
+  }
+
+  const auto facets = static_cast<Eigen::Index>(wm.triangles.size());
+  mesh.wall_facets.resize(facets, 3);
+  mesh.facet_wall.resize(facets);
+  mesh.facet_on_boundary.resize(facets);
+  for (Eigen::Index f = 0; f < facets; ++f) {
+    const auto& tri = wm.triangles[static_cast<std::size_t>(f)];
+    mesh.wall_facets.row(f) << tri[0], tri[1], tri[2];
+    mesh.facet_wall(f) = wm.triangle_wall[static_cast<std::size_t>(f)];
+    mesh.facet_on_boundary(f) = t.isBoundaryWall(WallId(static_cast<Index>(mesh.facet_wall(f))));
+  }
+  return mesh;
+}
+
+}  // namespace tessella::mesh_detail

@@ -1,0 +1,76 @@
+// Dome tissues: a footprint Voronoi tissue lifted onto a spherical cap or a
+// paraboloid; every vertex must lie on the analytic surface.
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numbers>
+#include <string>
+
+#include "tessella/generators/dome.hpp"
+#include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/geometry.hpp"
+#include "tessella/tissue/validate.hpp"
+
+using namespace tessella;
+
+TEST_CASE("a spherical-cap dome has every vertex on its sphere", "[dome]") {
+  Dome dome;
+  dome.base_center = Vec3(2, -1, 0.5);
+  dome.base_radius = 3;
+  dome.height = 1.2;
+  const auto seeds = randomSeeds(Disk{Vec3(2, -1, 0), 3, 256}, 250, 17);
+  const Tissue t = domeTissue(seeds, dome);
+  REQUIRE(t.embedding() == Embedding::Surface);
+  REQUIRE(t.numCells() == seeds.size());
+  const auto report = validate(t);
+  INFO(report.message);
+  REQUIRE(report.ok);
+
+  // Sphere through the base circle and the summit.
+  const double R = (3.0 * 3.0 + 1.2 * 1.2) / (2 * 1.2);
+  const Vec3 centre = dome.base_center + Vec3(0, 0, 1.2 - R);
+  for (VertexId v : t.vertices()) {
+    const Vec3& p = t.position(v);
+    CHECK(std::abs((p - centre).norm() - R) <= 1e-12 * R);
+    CHECK(p.z() >= dome.base_center.z() - 1e-12);
+  }
+  // Lifting only raises vertices: the curved sheet is larger than its footprint.
+  CHECK(totalMeasure(t) > 256 / 2.0 * 9 * std::sin(2 * std::numbers::pi / 256));
+  CHECK(dome.heightAt(0) == Approx(1.2));
+  CHECK(dome.heightAt(3) == Approx(0).margin(1e-14));
+}
+
+TEST_CASE("a paraboloid dome has every vertex on its paraboloid", "[dome]") {
+  Dome dome;
+  dome.shape = Dome::Shape::Paraboloid;
+  dome.base_radius = 1;
+  dome.height = 2;  // taller than wide is fine for a paraboloid
+  const auto seeds = randomSeeds(Disk{}, 150, 4);
+  VoronoiOptions options;
+  options.lloyd_iterations = 3;
+  const Tissue t = domeTissue(seeds, dome, options);
+  const auto report = validate(t);
+  INFO(report.message);
+  REQUIRE(report.ok);
+  for (VertexId v : t.vertices()) {
+    const Vec3& p = t.position(v);
+    const double r2 = p.x() * p.x() + p.y() * p.y();
+    CHECK(p.z() == Approx(2 * (1 - r2)).margin(1e-12));
+  }
+}
+
+TEST_CASE("bad domes raise InputError naming the field", "[dome][errors]") {
+  Dome cap;
+  cap.height = 1.5;  // taller than the base radius: overhangs
+  const auto seeds = randomSeeds(Disk{}, 20, 1);
+  CHECK_THROWS_WITH(domeTissue(seeds, cap), Catch::Contains("dome.height"));
+  Dome flat;
+  flat.height = 0;
+  CHECK_THROWS_AS(domeTissue(seeds, flat), InputError);
+  Dome ok;
+  CHECK_THROWS_WITH(ok.heightAt(1.5), Catch::Contains("1.5"));
+  auto outside = seeds;
+  outside[7] = Vec3(1.5, 0, 0);
+  CHECK_THROWS_WITH(domeTissue(outside, ok), Catch::Contains("seed 7 "));
+}
