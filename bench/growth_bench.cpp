@@ -78,10 +78,11 @@ void growthWithDivision(const char* label, const Tissue& start, int threads, int
   // so a few per cent of the cells divide at every step from the first on.
   DivisionScheduler d(SizeThreshold::noisy(1.1 * mean, 0.1 * mean), makeDivisionRule("main_axis"));
   std::size_t divisions = 0;
+  GeometryCache geometry;  // shared by growth and division, as in a Simulation
   const auto a = Clock::now();
   for (int s = 0; s < steps; ++s) {
-    g.step(t, 0.05);
-    divisions += d.step(t, const_cast<GeometryCache&>(g.geometry())).divided.size();
+    g.step(t, 0.05, geometry);
+    divisions += d.step(t, geometry).divided.size();
   }
   const double sec = seconds(a, Clock::now());
   std::printf("  %-14s %d thr: %8.2f steps/s  (%6.1f ms/step), %zu divisions (%zu -> %zu cells)\n", label,

@@ -66,10 +66,8 @@ DivisionRecord DivisionScheduler::divide(Tissue& t, CellId c, Rng& rng) {
 }
 
 DivisionReport DivisionScheduler::step(Tissue& t, GeometryCache& geometry, Rng& rng) {
-  if (!geometry.fresh(t))
-    recomputeGeometry(t, geometry, GeometryOptions{.edges = false, .second_moments = false});
   DivisionReport report;
-  const std::vector<CellId> due = trigger_.cellsDue(t, geometry, rng);
+  const std::vector<CellId> due = trigger_.cellsDue(t, geometry.require(t, kCellMeasures), rng);
   for (CellId c : due) {
     if (options_.gate && !options_.gate(t, c)) continue;
     try {

@@ -99,8 +99,7 @@ void GrowthIntegrator::checkVelocities(const Tissue& t, std::span<const Vec3> x,
 void GrowthIntegrator::undo(Tissue& t, double t0) {
   std::span<Vec3> x = t.mutablePositions();
   std::copy(x0_.begin(), x0_.end(), x.begin());
-  t.setTime(t0);
-  cache_ = GeometryCache{};
+  t.setTime(t0);  // restoring the positions bumped the geometry version: caches of the step are stale
 }
 
 void GrowthIntegrator::checkPositions(Tissue& t, double t0, double t1, std::span<const Vec3> k2) {
@@ -126,7 +125,7 @@ void GrowthIntegrator::project(const Tissue& t, std::span<Vec3> x) const {
   }
 }
 
-void GrowthIntegrator::step(Tissue& t, double dt) {
+void GrowthIntegrator::step(Tissue& t, double dt, GeometryCache& geometry) {
   if (!(dt > 0) || !std::isfinite(dt))
     throw InputError("growth step: dt = " + formatNumber(dt) + " must be positive and finite");
   const double t0 = t.time(), t1 = t0 + dt;
@@ -135,14 +134,10 @@ void GrowthIntegrator::step(Tissue& t, double dt) {
   k1_.resize(n);
 
   // Surface cells are checked against their orientation before the step.
-  if (options_.check_inversion && t.embedding() == Embedding::Surface) {
-    normal_before_.assign(t.slots(2), Vec3::Zero());
-    const auto& alive = t.topology().aliveFlags(2);
-    const std::ptrdiff_t nf = static_cast<std::ptrdiff_t>(t.slots(2));
-#pragma omp parallel for schedule(static) if(nf >= kParallelMinItems)
-    for (std::ptrdiff_t f = 0; f < nf; ++f)
-      if (alive[f]) normal_before_[f] = polygonMeasures(t, FaceId(static_cast<Index>(f))).normal;
-  }
+  // (From the cache, fresh since the last step unless the tissue changed:
+  // the same kernel as polygonMeasures, so the same normals.)
+  if (options_.check_inversion && t.embedding() == Embedding::Surface)
+    normal_before_ = geometry.require(t, GeometryQuantity::FaceMeasures).face_normal;
 
   // A non-finite velocity or position is an error whatever check_inversion
   // says: it would poison the tissue (and every snapshot written after).
@@ -178,15 +173,15 @@ void GrowthIntegrator::step(Tissue& t, double dt) {
       checkPositions(t, t0, t1, k2_);
     }
     t.setTime(t1);
-    recomputeGeometry(t, cache_, GeometryOptions{.edges = false, .second_moments = false});
-    if (options_.check_inversion) checkCells(t, t0, t1);
+    geometry.require(t, kCellMeasures);
+    if (options_.check_inversion) checkCells(t, geometry, t0, t1);
   } catch (...) {
     undo(t, t0);
     throw;
   }
 }
 
-void GrowthIntegrator::checkCells(Tissue& t, double t0, double t1) {
+void GrowthIntegrator::checkCells(Tissue& t, const GeometryCache& geometry, double t0, double t1) {
   const int dim = t.dim();
   const Embedding emb = t.embedding();
   const std::ptrdiff_t nc = static_cast<std::ptrdiff_t>(t.cellSlots());
@@ -197,11 +192,11 @@ void GrowthIntegrator::checkCells(Tissue& t, double t0, double t1) {
     if (!alive[c]) continue;
     bool wrong;
     if (dim == 3) {
-      wrong = !(cache_.volume[c] > options_.min_cell_measure);
+      wrong = !(geometry.volume[c] > options_.min_cell_measure);
     } else {
       const Vec3 ref = emb == Embedding::Planar ? Vec3::UnitZ() : normal_before_[c];
-      wrong = !(cache_.face_area[c] > options_.min_cell_measure) ||
-              !(cache_.face_normal[c].dot(ref) > 0);
+      wrong = !(geometry.face_area[c] > options_.min_cell_measure) ||
+              !(geometry.face_normal[c].dot(ref) > 0);
     }
     if (wrong && c < bad) bad = c;
   }
@@ -212,9 +207,9 @@ void GrowthIntegrator::checkCells(Tissue& t, double t0, double t1) {
                     ") inverted or collapsed cell " + std::to_string(bad) + " (lineage id " +
                     std::to_string(t.lineageId(cell)) + "): ";
   if (dim == 3) {
-    msg += "signed volume " + number(cache_.volume[bad]);
+    msg += "signed volume " + number(geometry.volume[bad]);
   } else {
-    msg += "area " + number(cache_.face_area[bad]) + ", normal " + vec(cache_.face_normal[bad]) +
+    msg += "area " + number(geometry.face_area[bad]) + ", normal " + vec(geometry.face_normal[bad]) +
            (emb == Embedding::Planar ? " instead of +z" : " turned against its previous normal");
   }
   msg += "; positions restored, try a smaller dt";  // by step()

@@ -17,11 +17,11 @@ SeriesWriter::SeriesWriter(std::string directory, std::string name, VtuOptions o
   pvd_path_ = (std::filesystem::path(directory_) / (name_ + ".pvd")).string();
 }
 
-std::string SeriesWriter::write(const Tissue& tissue, double time, const RunState& state) {
+std::string SeriesWriter::write(const Tissue& tissue, double time, const RunState& state, GeometryCache* geometry) {
   detail::checkNextTime(pvd_path_, entries_.empty() ? nullptr : &entries_.back().time, time);
   const std::string file = detail::stepFileName(name_, entries_.size());
   const std::string path = (std::filesystem::path(directory_) / file).string();
-  writeTissueVtu(tissue, path, options_, state);
+  writeTissueVtu(tissue, path, options_, state, geometry);
   entries_.push_back({time, file});
   try {
     writePvd();

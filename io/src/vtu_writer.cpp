@@ -154,13 +154,10 @@ void setPolyhedronCells(vtkUnstructuredGrid* grid, const Tissue& t, const RowSel
                  faces);
 }
 
-vtkSmartPointer<vtkDoubleArray> cellMeasures(const Tissue& t, const RowSelection& cells, const char* name) {
-  GeometryCache cache;
-  GeometryOptions options;
-  options.edges = false;
-  options.second_moments = false;
-  recomputeGeometry(t, cache, options);
-  const std::vector<double>& measure = t.dim() == 2 ? cache.face_area : cache.volume;
+vtkSmartPointer<vtkDoubleArray> cellMeasures(const Tissue& t, const RowSelection& cells, const char* name,
+                                             GeometryCache& geometry) {
+  geometry.require(t, kCellMeasures);
+  const std::vector<double>& measure = t.dim() == 2 ? geometry.face_area : geometry.volume;
   auto array = vtkSmartPointer<vtkDoubleArray>::New();
   array->SetName(name);
   double* out = array->WritePointer(0, static_cast<vtkIdType>(cells.count));
@@ -213,7 +210,7 @@ vtkSmartPointer<vtkStringArray> runStateArray(const RunState& state, const std::
 }  // namespace
 
 void writeTissueVtu(const Tissue& tissue, const std::string& path, const VtuOptions& options,
-                    const RunState& state) {
+                    const RunState& state, GeometryCache* geometry) {
   const CellComplex& topo = tissue.topology();
   const RowSelection vertex_rows = detail::liveRows(topo.aliveFlags(0), tissue.numVertices());
   const RowSelection cell_rows = detail::liveRows(topo.aliveFlags(tissue.dim()), tissue.numCells());
@@ -236,8 +233,10 @@ void writeTissueVtu(const Tissue& tissue, const std::string& path, const VtuOpti
   // The derived measure, unless a property already uses its name (the
   // property list in the field data tells readers which is which).
   const char* measure_name = tissue.dim() == 2 ? detail::kAreaArray : detail::kVolumeArray;
-  if (!tissue.cellProperties().has(measure_name))
-    grid->GetCellData()->AddArray(cellMeasures(tissue, cell_rows, measure_name));
+  if (!tissue.cellProperties().has(measure_name)) {
+    GeometryCache own;
+    grid->GetCellData()->AddArray(cellMeasures(tissue, cell_rows, measure_name, geometry ? *geometry : own));
+  }
 
   field->AddArray(singleValue<vtkIntArray>(detail::kFormatVersionArray, detail::kSnapshotFormatVersion));
   field->AddArray(singleValue<vtkDoubleArray>(detail::kTimeArray, tissue.time()));

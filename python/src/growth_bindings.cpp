@@ -175,7 +175,7 @@ vectorised NumPy. An exception raised in fn propagates out of step().
            }),
            py::arg("field"), py::arg("scheme") = "heun", py::arg("projection") = py::none(),
            py::arg("velocities") = "field", py::arg("check_inversion") = true, py::arg("min_cell_measure") = 0.0)
-      .def("step", &growth::GrowthIntegrator::step, py::arg("tissue"), py::arg("dt"),
+      .def("step", py::overload_cast<Tissue&, double>(&growth::GrowthIntegrator::step), py::arg("tissue"), py::arg("dt"),
            "Advances the tissue from tissue.time to tissue.time + dt; on any error positions and clock are restored.")
       .def(
           "velocities",

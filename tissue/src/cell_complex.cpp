@@ -335,7 +335,7 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
                   ef.begin() + static_cast<std::ptrdiff_t>(ef_start[e + 1]));
     c.edge_faces_ = RaggedArray<FaceId>::fromPool(std::move(ef), std::span(ef_start).first(ne), edge_face_count);
   }
-  c.version_ = num_vertices + ne + nf;
+  ++c.version_;
   return c;
 }
 

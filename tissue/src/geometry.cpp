@@ -89,32 +89,93 @@ void polyhedronKernel(const Tissue& t, VolumeId c, bool moments, double& volume,
       second_moment);
 }
 
-// Measures of every face into the cache (sized by the caller).
-template <bool Planar, bool Moments>
+// Face measures and/or second moments of every face into the cache (its
+// arrays sized by the caller). Without Measures the kernel's area, centroid
+// and normal go to locals: the second moments come out of the same
+// arithmetic either way, so they are bit-identical to a pass computing both.
+template <bool Planar, bool Measures, bool Moments>
 void facesLoop(const Tissue& t, GeometryCache& cache) {
   const CellComplex& k = t.topology();
   const auto& face_alive = k.aliveFlags(2);
   const std::int64_t nf = static_cast<std::int64_t>(k.slots(2));
   const Vec3* x = t.positions().data();
-  double* area = cache.face_area.data();
-  Vec3* centroid = cache.face_centroid.data();
-  Vec3* normal = cache.face_normal.data();
+  double* area = Measures ? cache.face_area.data() : nullptr;
+  Vec3* centroid = Measures ? cache.face_centroid.data() : nullptr;
+  Vec3* normal = Measures ? cache.face_normal.data() : nullptr;
   Sym3* second = Moments ? cache.face_second_moment.data() : nullptr;
 #pragma omp parallel for schedule(static)
   for (std::int64_t f = 0; f < nf; ++f) {
     if (!face_alive[f]) {
-      area[f] = 0;
-      centroid[f].setZero();
-      normal[f].setZero();
+      if constexpr (Measures) {
+        area[f] = 0;
+        centroid[f].setZero();
+        normal[f].setZero();
+      }
       if constexpr (Moments) second[f] = Sym3{};
       continue;
     }
     const auto loop = k.faceVertices(FaceId(static_cast<Index>(f)));
+    double a;
+    Vec3 g, n;
     Mat3 m;
     detail::polygonKernel(
         loop.size(), [&](std::size_t i) -> const Vec3& { return x[loop[i].index()]; }, Planar, Moments,
-        area[f], centroid[f], normal[f], Moments ? &m : nullptr);
+        Measures ? area[f] : a, Measures ? centroid[f] : g, Measures ? normal[f] : n, Moments ? &m : nullptr);
     if constexpr (Moments) second[f] = Sym3::fromMatrix(m);
+  }
+}
+
+template <bool Planar>
+void facesLoop(const Tissue& t, GeometryCache& cache, bool measures, bool moments) {
+  if (measures)
+    moments ? facesLoop<Planar, true, true>(t, cache) : facesLoop<Planar, true, false>(t, cache);
+  else if (moments)
+    facesLoop<Planar, false, true>(t, cache);
+}
+
+// Volume measures and/or second moments of every volume (3D); measures read
+// the face areas, which the caller has made fresh.
+void volumesLoop(const Tissue& t, GeometryCache& cache, bool measures, bool moments) {
+  const CellComplex& k = t.topology();
+  const auto& face_alive = k.aliveFlags(2);
+  const auto& vol_alive = k.aliveFlags(3);
+  const std::int64_t nf = static_cast<std::int64_t>(k.slots(2));
+  const std::int64_t nc = static_cast<std::int64_t>(k.slots(3));
+  // Face surfaces (vertex mean, folded triangles), shared by the two volumes of each face.
+  std::vector<FaceSurface> surfaces(nf);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t f = 0; f < nf; ++f)
+    if (face_alive[f]) surfaces[f] = faceSurface(t, FaceId(static_cast<Index>(f)));
+  if (measures) {
+    cache.volume.resize(nc);
+    cache.volume_surface.resize(nc);
+    cache.volume_centroid.resize(nc);
+  }
+  if (moments) cache.volume_second_moment.resize(nc);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t c = 0; c < nc; ++c) {
+    if (!vol_alive[c]) {
+      if (measures) {
+        cache.volume[c] = cache.volume_surface[c] = 0;
+        cache.volume_centroid[c].setZero();
+      }
+      if (moments) cache.volume_second_moment[c] = Sym3{};
+      continue;
+    }
+    const VolumeId vc(static_cast<Index>(c));
+    const auto faces_of = k.volumeFaces(vc);
+    double v;
+    Vec3 g;
+    Mat3 m;
+    polyhedronKernel(
+        t, vc, [&](std::size_t i) -> const FaceSurface& { return surfaces[faces_of[i].handle().index()]; }, moments,
+        measures ? cache.volume[c] : v, measures ? cache.volume_centroid[c] : g, moments ? &m : nullptr);
+    if (moments) cache.volume_second_moment[c] = Sym3::fromMatrix(m);
+    if (measures) {
+      double s = 0;
+      for (OrientedFace of : faces_of) s += cache.face_area[of.handle().index()];
+      cache.volume_surface[c] = s;
+    }
   }
 }
 
@@ -299,67 +360,104 @@ double totalMeasure(const Tissue& t) {
   return total;
 }
 
-void recomputeGeometry(const Tissue& t, GeometryCache& cache, const GeometryOptions& options) {
-  const CellComplex& k = t.topology();
-  const bool flat = planar(t);
-  const bool moments = options.second_moments;
-  const auto& edge_alive = k.aliveFlags(1);
-  const auto& face_alive = k.aliveFlags(2);
-  const std::int64_t ne = static_cast<std::int64_t>(k.slots(1));
-  const std::int64_t nf = static_cast<std::int64_t>(k.slots(2));
+const char* geometryQuantityName(GeometryQuantity q) {
+  switch (q) {
+    case GeometryQuantity::EdgeLengths: return "edge_lengths";
+    case GeometryQuantity::FaceMeasures: return "face_measures";
+    case GeometryQuantity::FaceSecondMoments: return "face_second_moments";
+    case GeometryQuantity::VolumeMeasures: return "volume_measures";
+    case GeometryQuantity::VolumeSecondMoments: return "volume_second_moments";
+  }
+  return "?";
+}
 
-  if (options.edges) {
-    cache.edge_length.resize(ne);
+namespace {
+constexpr std::array<GeometryQuantity, kGeometryQuantityCount> kEveryQuantity{
+    GeometryQuantity::EdgeLengths, GeometryQuantity::FaceMeasures, GeometryQuantity::FaceSecondMoments,
+    GeometryQuantity::VolumeMeasures, GeometryQuantity::VolumeSecondMoments};
+
+// The quantities a tissue has: no volumes in 2D.
+GeometryQuantities applicable(const Tissue& t, GeometryQuantities quantities) {
+  return t.dim() == 3 ? quantities
+                      : quantities.without(GeometryQuantity::VolumeMeasures | GeometryQuantity::VolumeSecondMoments);
+}
+}  // namespace
+
+bool GeometryCache::fresh(const Tissue& t, GeometryQuantities quantities) const {
+  quantities = applicable(t, quantities);
+  for (GeometryQuantity q : kEveryQuantity) {
+    const Versions& v = versions_[static_cast<std::size_t>(q)];
+    if (quantities.contains(q) && (v.topology != t.topologyVersion() || v.geometry != t.geometryVersion()))
+      return false;
+  }
+  return true;
+}
+
+const GeometryCache& GeometryCache::require(const Tissue& t, GeometryQuantities quantities) {
+  GeometryQuantities stale;
+  for (GeometryQuantity q : kEveryQuantity)
+    if (quantities.contains(q) && !fresh(t, q)) stale = stale | q;
+  if (!stale.empty()) compute(t, stale);
+  return *this;
+}
+
+void GeometryCache::recompute(const Tissue& t, GeometryQuantities quantities) { compute(t, quantities); }
+
+void GeometryCache::forget() { versions_.fill(Versions{}); }
+
+void GeometryCache::compute(const Tissue& t, GeometryQuantities quantities) {
+  using Q = GeometryQuantity;
+  quantities = applicable(t, quantities);
+  // Volume measures sum the face areas into each volume's surface.
+  if (quantities.contains(Q::VolumeMeasures) && !fresh(t, Q::FaceMeasures)) quantities = quantities | Q::FaceMeasures;
+  const CellComplex& k = t.topology();
+
+  if (quantities.contains(Q::EdgeLengths)) {
+    const auto& edge_alive = k.aliveFlags(1);
+    const std::int64_t ne = static_cast<std::int64_t>(k.slots(1));
+    edge_length.resize(ne);
 #pragma omp parallel for schedule(static)
     for (std::int64_t e = 0; e < ne; ++e)
-      cache.edge_length[e] = edge_alive[e] ? edgeLength(t, EdgeId(static_cast<Index>(e))) : 0.0;
+      edge_length[e] = edge_alive[e] ? edgeLength(t, EdgeId(static_cast<Index>(e))) : 0.0;
   }
 
-  cache.face_area.resize(nf);
-  cache.face_centroid.resize(nf);
-  cache.face_normal.resize(nf);
-  if (moments) cache.face_second_moment.resize(nf);
-  // The embedding and the moments flag as template arguments: each of the
-  // four loops is compiled with its own straight kernel (same arithmetic).
-  if (flat)
-    moments ? facesLoop<true, true>(t, cache) : facesLoop<true, false>(t, cache);
+  const bool face_measures = quantities.contains(Q::FaceMeasures);
+  const bool face_moments = quantities.contains(Q::FaceSecondMoments);
+  const std::size_t nf = k.slots(2);
+  if (face_measures) {
+    face_area.resize(nf);
+    face_centroid.resize(nf);
+    face_normal.resize(nf);
+  }
+  if (face_moments) face_second_moment.resize(nf);
+  // The embedding and what to compute as template arguments: each loop is
+  // compiled with its own straight kernel (same arithmetic).
+  if (planar(t))
+    facesLoop<true>(t, *this, face_measures, face_moments);
   else
-    moments ? facesLoop<false, true>(t, cache) : facesLoop<false, false>(t, cache);
+    facesLoop<false>(t, *this, face_measures, face_moments);
 
-  if (t.dim() == 3) {
-    const auto& vol_alive = k.aliveFlags(3);
-    const std::int64_t nc = static_cast<std::int64_t>(k.slots(3));
-    // Face surfaces (vertex mean, folded triangles), shared by the two volumes of each face.
-    std::vector<FaceSurface> surfaces(nf);
-#pragma omp parallel for schedule(static)
-    for (std::int64_t f = 0; f < nf; ++f)
-      if (face_alive[f]) surfaces[f] = faceSurface(t, FaceId(static_cast<Index>(f)));
-    cache.volume.resize(nc);
-    cache.volume_surface.resize(nc);
-    cache.volume_centroid.resize(nc);
-    if (moments) cache.volume_second_moment.resize(nc);
-#pragma omp parallel for schedule(static)
-    for (std::int64_t c = 0; c < nc; ++c) {
-      if (!vol_alive[c]) {
-        cache.volume[c] = cache.volume_surface[c] = 0;
-        cache.volume_centroid[c].setZero();
-        if (moments) cache.volume_second_moment[c] = Sym3{};
-        continue;
-      }
-      const VolumeId vc(static_cast<Index>(c));
-      const auto faces_of = k.volumeFaces(vc);
-      Mat3 m;
-      polyhedronKernel(
-          t, vc, [&](std::size_t i) -> const FaceSurface& { return surfaces[faces_of[i].handle().index()]; }, moments,
-          cache.volume[c], cache.volume_centroid[c], moments ? &m : nullptr);
-      if (moments) cache.volume_second_moment[c] = Sym3::fromMatrix(m);
-      double s = 0;
-      for (OrientedFace of : k.volumeFaces(vc)) s += cache.face_area[of.handle().index()];
-      cache.volume_surface[c] = s;
+  const bool volume_measures = quantities.contains(Q::VolumeMeasures);
+  const bool volume_moments = quantities.contains(Q::VolumeSecondMoments);
+  if (volume_measures || volume_moments) volumesLoop(t, *this, volume_measures, volume_moments);
+
+  for (GeometryQuantity q : kEveryQuantity)
+    if (quantities.contains(q)) {
+      versions_[static_cast<std::size_t>(q)] = Versions{t.topologyVersion(), t.geometryVersion()};
+      ++computations_[static_cast<std::size_t>(q)];
     }
-  }
-  cache.topology_version = t.topologyVersion();
-  cache.geometry_version = t.geometryVersion();
+}
+
+GeometryQuantities geometryQuantities(const GeometryOptions& options) {
+  GeometryQuantities quantities = kCellMeasures;
+  if (options.edges) quantities = quantities | GeometryQuantity::EdgeLengths;
+  if (options.second_moments)
+    quantities = quantities | GeometryQuantity::FaceSecondMoments | GeometryQuantity::VolumeSecondMoments;
+  return quantities;
+}
+
+void recomputeGeometry(const Tissue& t, GeometryCache& cache, const GeometryOptions& options) {
+  cache.recompute(t, geometryQuantities(options));
 }
 
 }  // namespace tessella

@@ -12,7 +12,7 @@ void SeriesOutput::writeIfDue(const Simulation& simulation) {
 
 void SeriesOutput::write(const Simulation& simulation) {
   if (simulation.stepsDone() == last_written_step_) return;
-  writer_.write(simulation.tissue(), simulation.time(), simulation.runState());
+  writer_.write(simulation.tissue(), simulation.time(), simulation.runState(), &simulation.geometry());
   last_written_step_ = simulation.stepsDone();
 }
 

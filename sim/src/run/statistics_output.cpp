@@ -72,8 +72,7 @@ void StatisticsOutput::writeIfDue(const Simulation& simulation) {
 void StatisticsOutput::write(const Simulation& simulation) {
   if (simulation.stepsDone() == last_step_) return;
   const Tissue& t = simulation.tissue();
-  GeometryCache geometry;
-  recomputeGeometry(t, geometry, GeometryOptions{.edges = false, .second_moments = false});
+  const GeometryCache& geometry = simulation.geometry().require(t, kCellMeasures);
   std::vector<double> measures;
   measures.reserve(t.numCells());
   for (CellId c : t.cells()) measures.push_back(geometry.cellMeasure(t, c));

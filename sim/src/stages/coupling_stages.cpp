@@ -173,8 +173,10 @@ void CompartmentStage::apply(Tissue& tissue, const StepContext& context) {
   if (!schedule_.due(context)) return;
   const double elapsed = schedule_.elapsed(context);
 
-  GeometryCache geometry;
-  recomputeGeometry(tissue, geometry, GeometryOptions{.edges = tissue.dim() == 2, .second_moments = false});
+  // Wall lengths (2D) or areas (3D), cell measures and centroids.
+  GeometryCache own;
+  GeometryCache& geometry = context.geometry ? *context.geometry : own;
+  geometry.require(tissue, tissue.dim() == 2 ? kCellMeasures | GeometryQuantity::EdgeLengths : kCellMeasures);
   std::vector<int> index(tissue.cellSlots(), -1);
   std::vector<CellId> cells;
   for (CellId c : tissue.cells()) {

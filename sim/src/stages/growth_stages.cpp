@@ -16,7 +16,10 @@ void GrowthStage::apply(Tissue& tissue, const StepContext& context) {
   // The integrator runs from the tissue's clock; the Simulation keeps it at
   // the step's start time.
   tissue.setTime(context.time);
-  integrator_->step(tissue, context.dt);
+  if (context.geometry)
+    integrator_->step(tissue, context.dt, *context.geometry);
+  else
+    integrator_->step(tissue, context.dt);
 }
 
 namespace {
@@ -44,8 +47,9 @@ DivisionStage::DivisionStage(std::shared_ptr<growth::DivisionScheduler> schedule
 
 void DivisionStage::apply(Tissue& tissue, const StepContext& context) {
   tissue.setTime(context.end_time);  // daughters are born at the end of the step
-  const growth::DivisionReport report = context.rng ? scheduler_->step(tissue, geometry_, *context.rng)
-                                                    : scheduler_->step(tissue, geometry_);
+  GeometryCache& geometry = context.geometry ? *context.geometry : geometry_;  // shared: fresh after growth
+  const growth::DivisionReport report = context.rng ? scheduler_->step(tissue, geometry, *context.rng)
+                                                    : scheduler_->step(tissue, geometry);
   divisions_ += report.divided.size();
   skipped_ += report.skipped.size();
 }

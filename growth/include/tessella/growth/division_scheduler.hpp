@@ -61,8 +61,9 @@ class DivisionScheduler {
   DivisionScheduler(SizeThreshold trigger, std::shared_ptr<const DivisionRule> rule,
                     DivisionOptions options = {});
 
-  /// Divides every due cell. `geometry` must be fresh for t (e.g. the
-  /// integrator's cache after its step); if it is stale it is recomputed.
+  /// Divides every due cell. The cell measures are required from `geometry`
+  /// (shared with the integrator, they are fresh after its step and nothing
+  /// is computed again); the divisions leave it stale.
   DivisionReport step(Tissue& t, GeometryCache& geometry) { return step(t, geometry, rng_); }
   /// The same, drawing from a caller's random stream (a simulation's single
   /// stream, so a run is reproducible from one seed).

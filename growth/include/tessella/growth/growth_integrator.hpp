@@ -64,15 +64,21 @@ class GrowthIntegrator {
   /// the new time. On any error (a GeometryError, or an exception from the
   /// field or the projection) the positions and the clock are restored.
   /// dt must be positive and finite (InputError otherwise).
-  void step(Tissue& t, double dt);
+  /// Uses the integrator's own geometry cache (geometry()).
+  void step(Tissue& t, double dt) { step(t, dt, cache_); }
+  /// The same with a shared cache (a Simulation's): the face normals before
+  /// the step (surface tissues) are required from it, and it holds the cell
+  /// measures (kCellMeasures) of the moved tissue after the step, so a
+  /// division stage reading it computes nothing again.
+  void step(Tissue& t, double dt, GeometryCache& geometry);
 
   /// Velocities the integrator uses for the current positions at time `time`
   /// (every vertex slot; dead slots hold zero).
   void velocities(const Tissue& t, std::span<const Vec3> positions, double time,
                   std::span<Vec3> out);
 
-  /// The geometry of the tissue after the last step (fresh until the tissue
-  /// is edited again).
+  /// The integrator's own cache: the geometry of the tissue after the last
+  /// step(t, dt) (fresh until the tissue is edited again).
   const GeometryCache& geometry() const { return cache_; }
   const GrowthOptions& options() const { return options_; }
   const VelocityField& field() const { return *field_; }
@@ -80,7 +86,7 @@ class GrowthIntegrator {
 
  private:
   void project(const Tissue& t, std::span<Vec3> x) const;
-  void checkCells(Tissue& t, double t0, double t1);
+  void checkCells(Tissue& t, const GeometryCache& geometry, double t0, double t1);
   // Non-finite velocities (at alive vertices) and positions are errors naming
   // the field, the vertex, its position and the time.
   GeometryError nonFiniteVelocity(std::size_t vertex, const Vec3& x, const Vec3& v, double time) const;

@@ -19,8 +19,9 @@ class SeriesWriter {
 
   /// Writes one snapshot for simulation time `time` and updates the .pvd.
   /// Returns the snapshot's path.
-  /// `state` is stored with it (RunState).
-  std::string write(const Tissue& tissue, double time, const RunState& state = {});
+  /// `state` is stored with it (RunState); `geometry` as for writeTissueVtu.
+  std::string write(const Tissue& tissue, double time, const RunState& state = {},
+                    GeometryCache* geometry = nullptr);
 
   const std::string& pvdPath() const { return pvd_path_; }
   std::size_t steps() const { return entries_.size(); }

@@ -18,6 +18,10 @@
 #include "tessella/tissue/properties.hpp"
 #include "tessella/tissue/tissue.hpp"
 
+namespace tessella {
+struct GeometryCache;  // tessella/tissue/geometry.hpp
+}
+
 namespace tessella::io {
 
 enum class Compression { None, LZ4, ZLib };
@@ -51,9 +55,11 @@ using RunState = std::map<std::string, std::string>;
 /// Writes a snapshot atomically (temporary file, then rename): a crash never
 /// leaves a half-written file under `path`. Throws InputError naming the path
 /// when the file cannot be written (missing directory, disk full) and when
-/// options.compression_level is outside 1..9.
+/// options.compression_level is outside 1..9. The derived area / volume
+/// comes from `geometry` when given (a cache shared with the caller, e.g. a
+/// Simulation's: computed there only if stale), else is computed for the write.
 void writeTissueVtu(const Tissue& tissue, const std::string& path, const VtuOptions& options = {},
-                    const RunState& state = {});
+                    const RunState& state = {}, GeometryCache* geometry = nullptr);
 
 /// Reads a snapshot written by writeTissueVtu back into a tissue (topology,
 /// positions, time, every cell and vertex property with its division policy

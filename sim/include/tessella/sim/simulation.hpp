@@ -27,6 +27,7 @@
 #include "tessella/sim/stages/stage.hpp"
 #include "tessella/sim/time_span.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/tissue.hpp"
 
 namespace tessella::sim {
@@ -81,6 +82,11 @@ class Simulation {
   std::size_t numSteps() const { return parameters_.time.numSteps(); }
   bool finished() const { return step_ >= numSteps(); }
   std::mt19937_64& rng() { return rng_; }
+  /// The tissue's geometry shared by the stages (StepContext::geometry) and
+  /// the outputs: `sim.geometry().require(sim.tissue(), kCellMeasures)`.
+  /// A cache of quantities that depend on the tissue only, so it can be
+  /// filled through a const Simulation (an output's step callback).
+  GeometryCache& geometry() const { return geometry_; }
   /// What a restart needs besides the tissue to continue this run exactly:
   /// the clock (clock.start, clock.dt, clock.step) and the random stream
   /// (rng_seed, rng.stream), with the parameters' carried entries. Written
@@ -118,6 +124,7 @@ class Simulation {
   Tissue tissue_;
   SimulationParameters parameters_;
   std::mt19937_64 rng_;
+  mutable GeometryCache geometry_;
   std::size_t step_ = 0;
   std::vector<std::unique_ptr<Stage>> stages_;
   std::vector<StepCallback> callbacks_;

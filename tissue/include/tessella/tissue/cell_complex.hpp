@@ -20,6 +20,7 @@
 
 #include "tessella/tissue/handles.hpp"
 #include "tessella/tissue/ragged_array.hpp"
+#include "tessella/tissue/version_stamp.hpp"
 
 namespace tessella {
 
@@ -135,7 +136,7 @@ class CellComplex {
   Renumbering compact();
 
   /// Bumped by every topological change: caches compare it to know when to rebuild.
-  std::uint64_t version() const { return version_; }
+  std::uint64_t version() const { return version_.value(); }
   const std::vector<std::uint8_t>& aliveFlags(int degree) const { return alive_[degree]; }
   std::size_t bytes() const;
 
@@ -153,7 +154,7 @@ class CellComplex {
   RaggedArray<EdgeId> vertex_edges_;
   RaggedArray<FaceId> edge_faces_;
   RaggedArray<VolumeId> face_volumes_;
-  std::uint64_t version_ = 0;
+  VersionStamp version_;
 };
 
 }  // namespace tessella

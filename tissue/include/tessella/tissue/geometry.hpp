@@ -29,6 +29,8 @@
 // exactly the same wall surface and their volumes add up to the tissue's.
 
 #include <array>
+#include <cstddef>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
@@ -120,41 +122,121 @@ PrincipalAxes cellPrincipalAxes(const Tissue& t, CellId c);
 /// Sum of cell measures: the tissue's total area (2D) or volume (3D).
 double totalMeasure(const Tissue& t);
 
-// --- batched -------------------------------------------------------------------
-/// All measures of a tissue, struct-of-arrays indexed by element slot
-/// (tombstone slots hold zeros). Filled by recomputeGeometry().
+// --- batched: one shared, versioned cache -----------------------------------------
+/// The quantities a GeometryCache holds. Each is computed, stamped with the
+/// tissue's versions and counted on its own.
+enum class GeometryQuantity : std::uint8_t {
+  EdgeLengths,          ///< edge_length
+  FaceMeasures,         ///< face_area, face_centroid, face_normal (2D cells, 3D walls)
+  FaceSecondMoments,    ///< face_second_moment
+  VolumeMeasures,       ///< volume, volume_surface, volume_centroid (3D; reads face_area)
+  VolumeSecondMoments,  ///< volume_second_moment (3D)
+};
+inline constexpr std::size_t kGeometryQuantityCount = 5;
+/// "edge_lengths", "face_measures", ... (for messages and statistics).
+const char* geometryQuantityName(GeometryQuantity q);
+
+/// A set of GeometryQuantity: `FaceMeasures | FaceSecondMoments`.
+class GeometryQuantities {
+ public:
+  constexpr GeometryQuantities() = default;
+  constexpr GeometryQuantities(GeometryQuantity q) : bits_(bit(q)) {}  // NOLINT: a quantity is a set of one
+  constexpr bool contains(GeometryQuantity q) const { return (bits_ & bit(q)) != 0; }
+  constexpr bool empty() const { return bits_ == 0; }
+  constexpr GeometryQuantities operator|(GeometryQuantities other) const { return of(bits_ | other.bits_); }
+  constexpr GeometryQuantities without(GeometryQuantities other) const { return of(bits_ & ~other.bits_); }
+  constexpr bool operator==(const GeometryQuantities&) const = default;
+
+ private:
+  static constexpr unsigned bit(GeometryQuantity q) { return 1u << static_cast<unsigned>(q); }
+  static constexpr GeometryQuantities of(unsigned bits) {
+    GeometryQuantities s;
+    s.bits_ = bits;
+    return s;
+  }
+  unsigned bits_ = 0;
+};
+constexpr GeometryQuantities operator|(GeometryQuantity a, GeometryQuantity b) {
+  return GeometryQuantities(a) | GeometryQuantities(b);
+}
+
+/// Cell areas (2D) or volumes (3D) with their centroids, and face normals:
+/// what growth, division, compartments and output read.
+inline constexpr GeometryQuantities kCellMeasures = GeometryQuantity::FaceMeasures | GeometryQuantity::VolumeMeasures;
+/// Every quantity.
+inline constexpr GeometryQuantities kAllGeometry = GeometryQuantity::EdgeLengths | GeometryQuantity::FaceMeasures |
+                                                   GeometryQuantity::FaceSecondMoments |
+                                                   GeometryQuantity::VolumeMeasures |
+                                                   GeometryQuantity::VolumeSecondMoments;
+
+/// The measures of a tissue, struct-of-arrays indexed by element slot
+/// (tombstone slots hold zeros), shared by whoever reads the same tissue
+/// (a Simulation's stages and outputs share one through the step context).
+///
+/// A consumer asks for the quantities it reads, `cache.require(t, kCellMeasures)`,
+/// then reads their arrays. The cache remembers, per quantity, the tissue's
+/// topology and geometry versions it was computed at, and computes only the
+/// quantities that are missing or stale: asking again without a change to the
+/// tissue computes nothing; asking for second moments after areas computes
+/// the second moments only. An array is valid while fresh(t, quantity).
 struct GeometryCache {
   std::vector<double> edge_length;
   std::vector<double> face_area;
   std::vector<Vec3> face_centroid;
   std::vector<Vec3> face_normal;
   std::vector<Sym3> face_second_moment;
-  std::vector<double> volume;           // 3D only
-  std::vector<double> volume_surface;   // 3D only
-  std::vector<Vec3> volume_centroid;    // 3D only
+  std::vector<double> volume;              // 3D only
+  std::vector<double> volume_surface;      // 3D only
+  std::vector<Vec3> volume_centroid;       // 3D only
   std::vector<Sym3> volume_second_moment;  // 3D only
-  std::uint64_t topology_version = ~0ull;
-  std::uint64_t geometry_version = ~0ull;
 
-  bool fresh(const Tissue& t) const {
-    return topology_version == t.topologyVersion() && geometry_version == t.geometryVersion();
-  }
+  /// Makes `quantities` fresh for t, computing those missing or stale (and
+  /// face measures where volume measures need them) and nothing else.
+  /// Volume quantities of a 2D tissue are nothing to compute. In parallel
+  /// with OpenMP, bit-identical for any number of threads.
+  const GeometryCache& require(const Tissue& t, GeometryQuantities quantities);
+  /// Computes `quantities` whether fresh or not (recomputeGeometry).
+  void recompute(const Tissue& t, GeometryQuantities quantities);
+  /// Marks every quantity stale (the arrays keep their values).
+  void forget();
+
+  /// Computed at t's current topology and geometry versions (a volume
+  /// quantity of a 2D tissue always is).
+  bool fresh(const Tissue& t, GeometryQuantities quantities) const;
+  /// Every quantity the tissue has is fresh (all five in 3D, three in 2D).
+  bool fresh(const Tissue& t) const { return fresh(t, kAllGeometry); }
+
+  /// Statistics: how many times `q` has been computed into this cache.
+  std::uint64_t computations(GeometryQuantity q) const { return computations_[static_cast<std::size_t>(q)]; }
+
   double cellMeasure(const Tissue& t, CellId c) const {
     return t.dim() == 2 ? face_area[c.index()] : volume[c.index()];
   }
   const Vec3& cellCentroid(const Tissue& t, CellId c) const {
     return t.dim() == 2 ? face_centroid[c.index()] : volume_centroid[c.index()];
   }
+
+ private:
+  struct Versions {
+    std::uint64_t topology = ~0ull;
+    std::uint64_t geometry = ~0ull;
+  };
+  void compute(const Tissue& t, GeometryQuantities quantities);
+  std::array<Versions, kGeometryQuantityCount> versions_{};
+  std::array<std::uint64_t, kGeometryQuantityCount> computations_{};
 };
 
+/// Which quantities recomputeGeometry computes: face and volume measures
+/// always, edge lengths and second moments as asked.
 struct GeometryOptions {
   bool edges = true;
   bool second_moments = true;
 };
+GeometryQuantities geometryQuantities(const GeometryOptions& options);
 
-/// Recomputes every measure, in parallel with OpenMP. Each element is computed
-/// independently by the same arithmetic, so the result is bit-identical for
-/// any number of threads.
+/// Recomputes the quantities `options` names whether fresh or not
+/// (cache.recompute): each element is computed independently by the same
+/// arithmetic, so the result is bit-identical for any number of threads.
 void recomputeGeometry(const Tissue& t, GeometryCache& cache, const GeometryOptions& options = {});
 
 }  // namespace tessella

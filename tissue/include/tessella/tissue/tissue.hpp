@@ -20,6 +20,7 @@
 #include "tessella/tissue/handles.hpp"
 #include "tessella/tissue/properties.hpp"
 #include "tessella/tissue/vec3.hpp"
+#include "tessella/tissue/version_stamp.hpp"
 
 namespace tessella {
 
@@ -188,9 +189,11 @@ class Tissue {
   void setTime(double t) { time_ = t; }
 
   // --- change counters --------------------------------------------------------
+  // Values unique in the process (VersionStamp): equal versions mean the same
+  // topology / geometry, whichever tissue (or copy) they are read from.
   std::uint64_t topologyVersion() const { return complex_.version(); }
   /// Bumped by every position change and every topological change.
-  std::uint64_t geometryVersion() const { return geometry_version_; }
+  std::uint64_t geometryVersion() const { return geometry_version_.value(); }
   void markGeometryChanged() { ++geometry_version_; }
 
   // --- building -------------------------------------------------------------
@@ -258,7 +261,7 @@ class Tissue {
   PropertyColumn<double>* birth_ = nullptr;
   std::int64_t next_lineage_ = 0;
   double time_ = 0.0;
-  std::uint64_t geometry_version_ = 0;
+  VersionStamp geometry_version_;
   std::vector<std::uint8_t> no_elements_;  // alive flags of an absent degree (volumes in 2D)
 
  public:

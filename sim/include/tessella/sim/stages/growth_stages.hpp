@@ -60,7 +60,7 @@ class DivisionStage final : public Stage {
 
  private:
   std::shared_ptr<growth::DivisionScheduler> scheduler_;
-  GeometryCache geometry_;
+  GeometryCache geometry_;  // when the step context shares none
   std::size_t divisions_ = 0, skipped_ = 0;
 };
 

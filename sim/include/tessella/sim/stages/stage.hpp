@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/tissue.hpp"
 
 namespace tessella::sim {
@@ -26,6 +27,10 @@ struct StepContext {
   /// Time at the end of the step: exactly the next step's `time` (time + dt
   /// may differ from it in the last bit), so births and restarts agree.
   double end_time = 0.0;
+  /// The tissue's geometry, shared by the stages and outputs of the run
+  /// (Simulation::geometry()): a stage requires the quantities it reads, so
+  /// each is computed once per change of the tissue. Null: the stage keeps its own.
+  GeometryCache* geometry = nullptr;
 };
 
 class Stage {
