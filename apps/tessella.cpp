@@ -6,6 +6,10 @@
 //   tessella mesh SNAPSHOT.vtu --out MESH.vtu [--walls WALLS.vtu] [--size H] [--min-angle A] [--max-volume V]
 //                 [--volume-method cell_by_cell|whole_tissue] [--max-elements N] [--config CFG.yaml]
 //   tessella import FILE --out TISSUE.vtu [--format F] [--scale S] [--simplify TOL] [--repair]
+//   tessella render RUN_DIR|SERIES.pvd|SNAPSHOT.vtu [--property NAME] [--out DIR] [--size WxH] [--every N]
+//                   [--view X,Y,Z] [--range LOW,HIGH] [--no-movie]
+//   tessella sweep CONFIG.yaml --vary KEY=V1,V2,... [--vary ...] [--replicates N] [--set ...] --out DIR [--overwrite]
+//   tessella report RUN_DIR [--property NAME]   (RUN_DIR/report.html: plots, frames, config)
 //   tessella schema          (the config key reference, as in docs/config.md)
 //
 // Exit codes: 0 success, 1 an error Tessella reports (bad config or file, a
@@ -38,6 +42,10 @@
 #include "tessella/io/import.hpp"
 #include "tessella/io/mesh_vtu.hpp"
 #include "tessella/io/vtu.hpp"
+#include "tessella/render/run_report.hpp"
+#include "tessella/render/series_pictures.hpp"
+#include "tessella/sim/run/sweep.hpp"
+#include "tessella/tissue/parameters.hpp"
 #include "tessella/mesh/mesh_measures.hpp"
 #include "tessella/mesh/mesh_tissue.hpp"
 #include "tessella/sim/config/config_loader.hpp"
@@ -238,6 +246,75 @@ int meshCommand(const MeshArgs& a) {
   return 0;
 }
 
+struct RenderArgs {
+  std::string source, out, property, size = "800x800";
+  int every = 1;
+  std::vector<double> view = {0, 0, 1}, range;
+  bool no_movie = false;
+};
+
+int renderCommand(const RenderArgs& a) {
+  using namespace tessella;
+  render::SeriesPictureOptions o;
+  o.picture.property = a.property;
+  const auto x = a.size.find('x');
+  try {
+    std::size_t used_w = 0, used_h = 0;
+    o.picture.width = std::stoi(a.size.substr(0, x), &used_w);
+    o.picture.height = std::stoi(a.size.substr(x + 1), &used_h);
+    if (x == std::string::npos || used_w != x || used_h != a.size.size() - x - 1) throw std::invalid_argument("");
+  } catch (const std::exception&) {
+    throw InputError("--size: expected WIDTHxHEIGHT in pixels (e.g. 800x600), got '" + a.size + "'");
+  }
+  o.picture.view = Vec3(a.view[0], a.view[1], a.view[2]);
+  if (!a.range.empty()) o.picture.range = render::ColourRange{a.range[0], a.range[1]};
+  o.every = a.every;
+  o.movie = !a.no_movie;
+  namespace fs = std::filesystem;
+  std::string out = a.out;
+  if (out.empty())  // beside the run: RUN_DIR/frames, or SNAPSHOT_frames
+    out = fs::is_directory(a.source) ? (fs::path(a.source) / "frames").string()
+                                     : (fs::path(a.source).parent_path() / (fs::path(a.source).stem().string() + "_frames")).string();
+  const render::SeriesPictures made = render::writeSeriesPictures(a.source, out, o);
+  fmt::print("wrote        {} frame{} to {}\n", made.frames.size(), made.frames.size() == 1 ? "" : "s", out);
+  if (!a.property.empty())
+    fmt::print("colours      {} from {} to {} (viridis)\n", a.property, formatNumber(made.range.low),
+               formatNumber(made.range.high));
+  if (!made.movie.empty()) fmt::print("movie        {}\n", made.movie);
+  if (!made.movie_note.empty() && o.movie && made.frames.size() > 1) fmt::print("movie        {}\n", made.movie_note);
+  return 0;
+}
+
+struct SweepArgs {
+  std::string config, out;
+  std::vector<std::string> vary, sets;
+  int replicates = 1;
+  bool overwrite = false;
+};
+
+int sweepCommand(const SweepArgs& a) {
+  using namespace tessella;
+  std::vector<sim::SweepAxis> axes;
+  for (const auto& v : a.vary) axes.push_back(sim::parseSweepAxis(v));
+  const sim::SweepPlan plan = sim::planSweep(a.config, a.sets, axes, a.replicates);
+  std::error_code ec;
+  const std::string self = std::filesystem::read_symlink("/proc/self/exe", ec).string();
+  sim::writeSweep(plan, a.out, ec ? std::string("tessella") : self, a.overwrite);
+  fmt::print("wrote        {} run configs, design.csv and a Snakefile to {}\n", plan.runs.size(), a.out);
+  fmt::print("run them     cd {} && snakemake -j 2   (results: sweep.csv)\n", a.out);
+  return 0;
+}
+
+int reportCommand(const std::string& run_dir, const std::string& property) {
+  tessella::render::RunReportOptions o;
+  if (!property.empty()) o.property = property;
+  const tessella::render::RunReport r = tessella::render::writeRunReport(run_dir, o);
+  fmt::print("read         {} snapshots ({} divisions between them), drew {} frames\n", r.snapshots, r.divisions,
+             r.frames);
+  fmt::print("wrote        {}\n", r.html);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -289,6 +366,46 @@ int main(int argc, char** argv) {
                      "Simplify wall polylines between junctions to this tolerance (0 = keep every vertex)");
   import->add_flag("--repair", import_args.repair, "Repair harmless defects (a one-triangle sliver), each reported");
 
+  auto* render = app.add_subcommand(
+      "render", "Draw the snapshots of a run as PNG frames coloured by a cell property (and a movie with ffmpeg)");
+  RenderArgs render_args;
+  render->add_option("source", render_args.source, "Run directory (its tissue.pvd), a .pvd series or a .vtu snapshot")
+      ->required();
+  render->add_option("--property,-p", render_args.property,
+                     "Cell property to colour by (any number per cell; 'size' is the area or volume)");
+  render->add_option("--out,-o", render_args.out, "Directory for the frames (default: RUN_DIR/frames)");
+  render->add_option("--size", render_args.size, "Picture size in pixels, WIDTHxHEIGHT (default 800x800)");
+  render->add_option("--every", render_args.every, "Draw every N-th snapshot (and the last)")->check(CLI::PositiveNumber);
+  render->add_option("--view", render_args.view, "Direction towards the viewer (default 0,0,1: from above)")
+      ->expected(3)
+      ->delimiter(',');
+  render->add_option("--range", render_args.range, "Colour range LOW,HIGH (default: the series' own range)")
+      ->expected(2)
+      ->delimiter(',');
+  render->add_flag("--no-movie", render_args.no_movie, "Do not encode movie.mp4 even if ffmpeg is installed");
+
+  auto* sweep = app.add_subcommand(
+      "sweep", "Write a parameter sweep: one config per combination and replicate, and a Snakemake workflow");
+  SweepArgs sweep_args;
+  sweep->add_option("config", sweep_args.config, "YAML configuration the runs start from")->required();
+  sweep->add_option("--vary", sweep_args.vary, "A key and its values: --vary division.size=1.5,2 (repeatable)")
+      ->required()
+      ->take_all()
+      ->allow_extra_args(false);
+  sweep->add_option("--replicates,-r", sweep_args.replicates, "Runs per combination, seeds rng_seed, rng_seed + 1, ...")
+      ->check(CLI::PositiveNumber);
+  sweep->add_option("--set,-s", sweep_args.sets, "Override a key in every run: --set time.end=5")
+      ->take_all()
+      ->allow_extra_args(false);
+  sweep->add_option("--out,-o", sweep_args.out, "Sweep directory to write")->required();
+  sweep->add_flag("--overwrite", sweep_args.overwrite, "Replace a sweep already in the directory");
+
+  auto* report = app.add_subcommand(
+      "report", "Write RUN_DIR/report.html: cell counts, sizes, division orientations, field totals, frames, config");
+  std::string report_dir, report_property;
+  report->add_option("run", report_dir, "Run directory written by tessella run")->required();
+  report->add_option("--property,-p", report_property, "Cell property the frames are coloured by (default: size)");
+
   app.add_subcommand("schema", "Print the configuration key reference (Markdown, as in docs/config.md)");
 
   CLI11_PARSE(app, argc, argv);
@@ -297,6 +414,9 @@ int main(int argc, char** argv) {
     if (info->parsed()) return infoCommand(vtu_path);
     if (mesh->parsed()) return meshCommand(mesh_args);
     if (import->parsed()) return importCommand(import_args);
+    if (render->parsed()) return renderCommand(render_args);
+    if (sweep->parsed()) return sweepCommand(sweep_args);
+    if (report->parsed()) return reportCommand(report_dir, report_property);
     fmt::print("{}", tessella::sim::schemaReferenceMarkdown(tessella::sim::tessellaSchema()));
     return 0;
   } catch (const tessella::Error& e) {  // bad input, or a stage that failed on it

@@ -20,10 +20,10 @@
 #include <string>
 #include <vector>
 
-#include "tessella/growth/division_rule_factory.hpp"
 #include "tessella/growth/division_scheduler.hpp"
 #include "tessella/growth/growth_integrator.hpp"
 #include "tessella/growth/linear_field.hpp"
+#include "tessella/growth/registries.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/generators/grids.hpp"
 #include "tessella/generators/voronoi.hpp"

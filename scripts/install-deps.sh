@@ -10,6 +10,7 @@ packages=(
   catch2
   libsuitesparse-dev libhypre-dev
   python3-dev pybind11-dev python3-numpy python3-pytest
+  libcairo2-dev snakemake python3-matplotlib chromium
 )
 
 missing=()

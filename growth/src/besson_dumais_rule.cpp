@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "tessella/growth/registries.hpp"
 #include "tessella/tissue/errors.hpp"
 
 namespace tessella::growth {
@@ -44,6 +45,18 @@ Plane BessonDumaisRule::plane(const Tissue& t, CellId c, Rng& rng) const {
     if (u < acc) return Plane{point, w.normal};
   }
   return Plane{point, cands.back().first.normal};
+}
+
+DivisionRuleEntry bessonDumaisRuleEntry() {
+  return {"besson_dumais", "The stochastic shortest wall of Besson and Dumais: a random choice among the local minima "
+                           "of the new wall's length.",
+          {ParamSpec("beta", ParamType::Float,
+                     "Besson-Dumais selectivity: candidate walls are chosen with probability ~ exp(-beta L / L_min).")
+               .byDefault(10.0)
+               .atLeast(0)},
+          [](const ParamValues& p) {
+            return blameParam("beta", [&] { return std::make_shared<const BessonDumaisRule>(p.getFloat("beta")); });
+          }};
 }
 
 }  // namespace tessella::growth

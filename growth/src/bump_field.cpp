@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "tessella/growth/registries.hpp"
 #include "tessella/tissue/errors.hpp"
 
 namespace tessella::growth {
@@ -37,6 +38,23 @@ std::string BumpField::describe() const {
   std::ostringstream s;
   s << "bump field a=" << p_.a << " b=" << p_.b << " h=" << p_.h << " x0=" << p_.x0;
   return s.str();
+}
+
+
+VelocityFieldEntry bumpFieldEntry() {
+  return {"bump",
+          "The paper's bump field (figure 17): v = (0, a [1 + b t dx^2/(h + b t)^2] exp(-dx^2/(h + b t)), 0), "
+          "dx = x - x0.",
+          {ParamSpec("a", ParamType::Float, "Speed at the bump's centre.").byDefault(1.0),
+           ParamSpec("b", ParamType::Float, "Widening rate of the bump.").byDefault(1.0).atLeast(0),
+           ParamSpec("h", ParamType::Float, "Squared width of the bump at t = 0.").byDefault(1.0).above(0),
+           ParamSpec("x0", ParamType::Float, "Abscissa of the bump's centre.").byDefault(0.0)},
+          [](const ParamValues& p) {
+            return blameParam("h", [&] {
+              return std::make_shared<const BumpField>(BumpFieldParams{
+                  .a = p.getFloat("a"), .b = p.getFloat("b"), .h = p.getFloat("h"), .x0 = p.getFloat("x0")});
+            });
+          }};
 }
 
 }  // namespace tessella::growth

@@ -6,8 +6,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <sstream>
 
 #include "tessella/growth/parallel_threshold.hpp"
+#include "tessella/growth/registries.hpp"
 #include "tessella/tissue/errors.hpp"
 
 namespace tessella::growth {
@@ -20,7 +22,38 @@ bool reservedName(const std::string& name) {
   return name == "x" || name == "y" || name == "z" || name == "t";
 }
 
+std::string trim(const std::string& s) {
+  const auto b = s.find_first_not_of(" \t"), e = s.find_last_not_of(" \t");
+  return b == std::string::npos ? std::string() : s.substr(b, e - b + 1);
+}
+
 }  // namespace
+
+std::map<std::string, double> parseExpressionParameters(const std::string& text) {
+  std::map<std::string, double> out;
+  std::stringstream all(text);
+  std::string item;
+  while (std::getline(all, item, ',')) {
+    item = trim(item);
+    if (item.empty()) continue;
+    const auto eq = item.find('=');
+    if (eq == std::string::npos)
+      throw ParamError("parameters", "expected name=value items separated by commas, got '" + item + "'");
+    const std::string name = trim(item.substr(0, eq)), value = trim(item.substr(eq + 1));
+    std::size_t used = 0;
+    double v = 0;
+    try {
+      v = std::stod(value, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (name.empty() || used == 0 || used != value.size())
+      throw ParamError("parameters", "parameter '" + item + "' is not name=number");
+    if (out.count(name)) throw ParamError("parameters", "parameter '" + name + "' is given twice");
+    out[name] = v;
+  }
+  return out;
+}
 
 // In bulk mode muparser reads every variable as an array indexed by the bulk
 // position, so x, y, z and t each get a buffer of the batch size.
@@ -46,26 +79,25 @@ struct ExpressionField::Workspace {
 
 std::unique_ptr<ExpressionField::Workspace> ExpressionField::makeWorkspace() const {
   auto ws = std::make_unique<Workspace>();
+  ws->define(1);
   const std::array<const std::string*, 3> exprs = {&spec_.vx, &spec_.vy, &spec_.vz};
+  // One component after the other, so an error names the first bad one.
   for (int c = 0; c < 3; ++c) {
     mu::Parser& p = ws->parsers[c];
     try {
       for (const auto& [name, value] : spec_.parameters) p.DefineConst(name, value);
       p.SetExpr(*exprs[c]);
     } catch (const mu::Parser::exception_type& e) {
-      throw InputError(std::string("velocity expression ") + kComponent[c] + " = \"" + *exprs[c] +
-                       "\": " + e.GetMsg() + " (at position " + std::to_string(e.GetPos()) + ")");
+      throw ParamError(kComponent[c], std::string("velocity expression ") + kComponent[c] + " = \"" + *exprs[c] +
+                                          "\": " + e.GetMsg() + " (at position " + std::to_string(e.GetPos()) + ")");
     }
-  }
-  ws->define(1);
-  for (int c = 0; c < 3; ++c) {
     try {
-      ws->parsers[c].Eval();  // forces the parse: unknown names and syntax errors surface here
+      p.Eval();  // forces the parse: unknown names and syntax errors surface here
     } catch (const mu::Parser::exception_type& e) {
       const std::string token = e.GetToken().empty() ? "" : " near '" + e.GetToken() + "'";
-      throw InputError(std::string("velocity expression ") + kComponent[c] + " = \"" + *exprs[c] +
-                       "\": " + e.GetMsg() + token + " (at position " + std::to_string(e.GetPos()) +
-                       ")");
+      throw ParamError(kComponent[c], std::string("velocity expression ") + kComponent[c] + " = \"" + *exprs[c] +
+                                          "\": " + e.GetMsg() + token + " (at position " +
+                                          std::to_string(e.GetPos()) + ")");
     }
   }
   return ws;
@@ -74,11 +106,11 @@ std::unique_ptr<ExpressionField::Workspace> ExpressionField::makeWorkspace() con
 ExpressionField::ExpressionField(ExpressionFieldSpec spec) : spec_(std::move(spec)) {
   for (const auto& [name, value] : spec_.parameters) {
     if (reservedName(name))
-      throw InputError("velocity expression parameter '" + name +
-                       "' clashes with a variable (x, y, z and t are reserved)");
+      throw ParamError("parameters", "velocity expression parameter '" + name +
+                                         "' clashes with a variable (x, y, z and t are reserved)");
     if (!std::isfinite(value))
-      throw InputError("velocity expression parameter '" + name + "' = " + std::to_string(value) +
-                       " is not finite");
+      throw ParamError("parameters", "velocity expression parameter '" + name + "' = " + std::to_string(value) +
+                                         " is not finite");
   }
   workspaces_.push_back(makeWorkspace());  // parses, so errors surface at construction
 }
@@ -132,6 +164,21 @@ std::string ExpressionField::describeComponent(int c) const {
   if (c < 0 || c > 2) return {};
   const std::array<const std::string*, 3> exprs = {&spec_.vx, &spec_.vy, &spec_.vz};
   return std::string(kComponent[c]) + " = \"" + *exprs[c] + "\"";
+}
+
+VelocityFieldEntry expressionFieldEntry() {
+  return {"expression", "Velocity components as muparser expressions of x, y, z, t and the named parameters.",
+          {ParamSpec("vx", ParamType::String, "x component.").byDefault(std::string("0")),
+           ParamSpec("vy", ParamType::String, "y component.").byDefault(std::string("0")),
+           ParamSpec("vz", ParamType::String, "z component.").byDefault(std::string("0")),
+           ParamSpec("parameters", ParamType::String,
+                     "Named constants for the expressions, as \"name=value, name=value\".")
+               .whenAbsent("no parameters")},
+          [](const ParamValues& p) {
+            ExpressionFieldSpec spec{.vx = p.getString("vx"), .vy = p.getString("vy"), .vz = p.getString("vz")};
+            if (p.has("parameters")) spec.parameters = parseExpressionParameters(p.getString("parameters"));
+            return std::make_shared<const ExpressionField>(std::move(spec));
+          }};
 }
 
 }  // namespace tessella::growth

@@ -1,6 +1,7 @@
 #include "tessella/growth/fixed_direction_rule.hpp"
 
 #include "tessella/growth/cell_frame.hpp"
+#include "tessella/growth/registries.hpp"
 #include "tessella/tissue/errors.hpp"
 
 namespace tessella::growth {
@@ -13,6 +14,16 @@ FixedDirectionRule::FixedDirectionRule(const Vec3& normal) : normal_(normal) {
 
 Plane FixedDirectionRule::plane(const Tissue& t, CellId c, Rng&) const {
   return planeThroughCentroid(t, c, normal_, "fixed division rule");
+}
+
+DivisionRuleEntry fixedDirectionRuleEntry() {
+  return {"fixed", "A fixed direction: every plane has the normal `fixed_normal` (made tangent on curved sheets).",
+          {ParamSpec("fixed_normal", ParamType::Vec3, "Normal of every division plane (rule: fixed).")
+               .byDefault(std::vector<double>{1, 0, 0})},
+          [](const ParamValues& p) {
+            return blameParam("fixed_normal",
+                              [&] { return std::make_shared<const FixedDirectionRule>(p.getVec3("fixed_normal")); });
+          }};
 }
 
 }  // namespace tessella::growth

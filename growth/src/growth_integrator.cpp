@@ -8,9 +8,28 @@
 
 namespace tessella::growth {
 
-const char* schemeName(IntegrationScheme s) {
-  return s == IntegrationScheme::Euler ? "euler" : "heun";
+const EnumTable<IntegrationScheme>& integrationSchemes() {
+  static const EnumTable<IntegrationScheme> table(
+      "integration scheme",
+      {{"euler", IntegrationScheme::Euler, "Explicit Euler (first order)."},
+       {"heun", IntegrationScheme::Heun, "Heun (second order, two field evaluations per step)."}},
+      {{"rk2", IntegrationScheme::Heun}});
+  return table;
 }
+
+const EnumTable<VelocitySource>& velocitySources() {
+  static const EnumTable<VelocitySource> table(
+      "velocity source",
+      {{"field", VelocitySource::Field, "Every vertex moves with the field."},
+       {"boundary", VelocitySource::HarmonicFromControl,
+        "The field is evaluated on the boundary vertices only and interior velocities are interpolated "
+        "harmonically (uniform-weight graph Laplacian), the paper's second mode."}});
+  return table;
+}
+
+const char* schemeName(IntegrationScheme s) { return integrationSchemes().name(s).c_str(); }
+
+IntegrationScheme parseScheme(const std::string& name) { return integrationSchemes().parse(name); }
 
 namespace {
 
@@ -42,12 +61,6 @@ std::string vec(const Vec3& v) {
 }
 
 }  // namespace
-
-IntegrationScheme parseScheme(const std::string& name) {
-  if (name == "euler") return IntegrationScheme::Euler;
-  if (name == "heun" || name == "rk2") return IntegrationScheme::Heun;
-  throw InputError("unknown integration scheme '" + name + "' (expected euler, heun or rk2)");
-}
 
 GrowthIntegrator::GrowthIntegrator(std::shared_ptr<const VelocityField> field, GrowthOptions options)
     : field_(std::move(field)), options_(std::move(options)) {
@@ -107,8 +120,7 @@ void GrowthIntegrator::checkPositions(Tissue& t, double t0, double t1, std::span
       << " from " << vec(x0_[bad]) << " to the non-finite position " << vec(x[bad]) << " (velocity "
       << vec(k2.empty() ? k1_[bad] : Vec3(0.5 * (k1_[bad] + k2[bad])))
       << " of the velocity field " << field_->describe() << ")";
-  undo(t, t0);
-  msg << "; positions restored";
+  msg << "; positions restored";  // by step()
   throw GeometryError(msg.str(), ElementId{0, static_cast<Index>(bad)});
 }
 
@@ -156,29 +168,31 @@ void GrowthIntegrator::step(Tissue& t, double dt) {
     x[i] = x0_[i] + dt * k1_[i];
     if (planar) x[i].z() = 0.0;
   }
-  if (!planar) project(t, x);
-  checkPositions(t, t0, t1, {});
-  if (options_.scheme == IntegrationScheme::Heun) {
-    // Heun: predictor x1 = x0 + dt k1 (above), corrector x0 + dt/2 (k1 + v(x1, t1)).
-    k2_.resize(n);
-    try {
+  // From here on any failure (a refused step, an exception from a field or a
+  // projection written in Python) leaves the tissue as it was: positions and clock.
+  try {
+    if (!planar) project(t, x);
+    checkPositions(t, t0, t1, {});
+    if (options_.scheme == IntegrationScheme::Heun) {
+      // Heun: predictor x1 = x0 + dt k1 (above), corrector x0 + dt/2 (k1 + v(x1, t1)).
+      k2_.resize(n);
       velocities(t, x, t1, k2_);
       checkVelocities(t, x, k2_, t1);
-    } catch (...) {
-      undo(t, t0);
-      throw;
-    }
 #pragma omp parallel for schedule(static) if(m >= kParallelMinItems)
-    for (std::ptrdiff_t i = 0; i < m; ++i) {
-      x[i] = x0_[i] + (0.5 * dt) * (k1_[i] + k2_[i]);
-      if (planar) x[i].z() = 0.0;
+      for (std::ptrdiff_t i = 0; i < m; ++i) {
+        x[i] = x0_[i] + (0.5 * dt) * (k1_[i] + k2_[i]);
+        if (planar) x[i].z() = 0.0;
+      }
+      if (!planar) project(t, x);
+      checkPositions(t, t0, t1, k2_);
     }
-    if (!planar) project(t, x);
-    checkPositions(t, t0, t1, k2_);
+    t.setTime(t1);
+    recomputeGeometry(t, cache_, GeometryOptions{.edges = false, .second_moments = false});
+    if (options_.check_inversion) checkCells(t, t0, t1);
+  } catch (...) {
+    undo(t, t0);
+    throw;
   }
-  t.setTime(t1);
-  recomputeGeometry(t, cache_, GeometryOptions{.edges = false, .second_moments = false});
-  if (options_.check_inversion) checkCells(t, t0, t1);
 }
 
 void GrowthIntegrator::checkCells(Tissue& t, double t0, double t1) {
@@ -212,8 +226,7 @@ void GrowthIntegrator::checkCells(Tissue& t, double t0, double t1) {
     msg << "area " << cache_.face_area[bad] << ", normal (" << cache_.face_normal[bad].transpose()
         << ")" << (emb == Embedding::Planar ? " instead of +z" : " turned against its previous normal");
   }
-  msg << "; positions restored, try a smaller dt";
-  undo(t, t0);  // leave the tissue as it was before the step
+  msg << "; positions restored, try a smaller dt";  // by step()
   throw GeometryError(msg.str(), ElementId{dim, static_cast<Index>(bad)});
 }
 

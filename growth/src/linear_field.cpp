@@ -3,6 +3,7 @@
 #include <sstream>
 
 #include "tessella/growth/parallel_threshold.hpp"
+#include "tessella/growth/registries.hpp"
 #include "tessella/tissue/errors.hpp"
 
 namespace tessella::growth {
@@ -33,6 +34,32 @@ LinearField uniformExpansion(double rate, const Vec3& center) {
 
 LinearField anisotropicGrowth(const Vec3& axis_rates, const Vec3& center) {
   return LinearField(axis_rates.asDiagonal().toDenseMatrix(), center);
+}
+
+
+VelocityFieldEntry uniformFieldEntry() {
+  return {"uniform", "Uniform expansion: v = rate (x - center).",
+          {ParamSpec("rate", ParamType::Float, "Relative growth rate of lengths (areas grow at 2 rate).")
+               .byDefault(0.1),
+           ParamSpec("center", ParamType::Vec3, "Fixed point of the expansion.")
+               .byDefault(std::vector<double>{0, 0, 0})},
+          [](const ParamValues& p) {
+            return blameParam("rate", [&] {
+              return std::make_shared<const LinearField>(uniformExpansion(p.getFloat("rate"), p.getVec3("center")));
+            });
+          }};
+}
+
+VelocityFieldEntry anisotropicFieldEntry() {
+  return {"anisotropic", "Anisotropic (per-axis) growth: v = diag(rates) (x - center).",
+          {ParamSpec("rates", ParamType::Vec3, "Relative growth rates along x, y and z.")
+               .byDefault(std::vector<double>{0.1, 0.0, 0.0}),
+           ParamSpec("center", ParamType::Vec3, "Fixed point of the growth.").byDefault(std::vector<double>{0, 0, 0})},
+          [](const ParamValues& p) {
+            return blameParam("rates", [&] {
+              return std::make_shared<const LinearField>(anisotropicGrowth(p.getVec3("rates"), p.getVec3("center")));
+            });
+          }};
 }
 
 }  // namespace tessella::growth

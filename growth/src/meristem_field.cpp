@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "tessella/growth/registries.hpp"
 #include "tessella/tissue/errors.hpp"
 
 namespace tessella::growth {
@@ -38,6 +39,30 @@ std::string MeristemField::describe() const {
   s << "meristem field apex (" << p_.apex.transpose() << ") central zone radius "
     << p_.central_radius << " rates " << p_.central_rate << " -> " << p_.peripheral_rate;
   return s.str();
+}
+
+
+VelocityFieldEntry meristemFieldEntry() {
+  return {"meristem",
+          "Shoot apical meristem, a dome with a slow central zone: v = k(rho) (x - apex), k rising smoothly (tanh) "
+          "from central_rate inside the central zone to peripheral_rate outside; rho is the distance from the axis.",
+          {ParamSpec("apex", ParamType::Vec3, "Summit of the dome.").byDefault(std::vector<double>{0, 0, 0}),
+           ParamSpec("axis", ParamType::Vec3, "Axis of the dome.").byDefault(std::vector<double>{0, 0, 1}),
+           ParamSpec("central_radius", ParamType::Float, "Radius of the slow central zone.").byDefault(1.0).above(0),
+           ParamSpec("transition_width", ParamType::Float, "Width of the transition between the zones.")
+               .byDefault(0.2)
+               .above(0),
+           ParamSpec("central_rate", ParamType::Float, "Relative growth rate in the central zone.").byDefault(0.02),
+           ParamSpec("peripheral_rate", ParamType::Float, "Relative growth rate in the peripheral zone.")
+               .byDefault(0.1)},
+          [](const ParamValues& p) {
+            return blameParam("axis", [&] {
+              return std::make_shared<const MeristemField>(MeristemFieldParams{
+                  .apex = p.getVec3("apex"), .axis = p.getVec3("axis"),
+                  .central_radius = p.getFloat("central_radius"), .transition_width = p.getFloat("transition_width"),
+                  .central_rate = p.getFloat("central_rate"), .peripheral_rate = p.getFloat("peripheral_rate")});
+            });
+          }};
 }
 
 }  // namespace tessella::growth

@@ -7,6 +7,7 @@
 #include "tessella/growth/cell_frame.hpp"
 #include "tessella/growth/division_walls.hpp"
 #include "tessella/growth/main_axis_rule.hpp"
+#include "tessella/growth/registries.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
 
@@ -84,6 +85,23 @@ Plane PerpendicularWallRule::plane(const Tissue& t, CellId c, Rng& rng) const {
   for (VertexId v : wall_vertices) d.push_back(p.normal.dot(t.position(v) - p.point));
   p.point += junctionFreeShift(d, junction_tolerance_ * size) * p.normal;
   return p;
+}
+
+DivisionRuleEntry perpendicularWallRuleEntry() {
+  return {"perpendicular_to_mother_wall",
+          "The new wall meets the wall the cell was born through at right angles (Hofmeister/Sachs); founder "
+          "cells divide across their main axis.",
+          {ParamSpec("junction_tolerance", ParamType::Float,
+                     "Hofmeister/Sachs: how far (relative to the cell size) the new wall keeps from existing "
+                     "junctions on the mother wall, avoiding four-way junctions.")
+               .byDefault(0.05)
+               .atLeast(0)
+               .atMost(0.45)},
+          [](const ParamValues& p) {
+            return blameParam("junction_tolerance", [&] {
+              return std::make_shared<const PerpendicularWallRule>(p.getFloat("junction_tolerance"));
+            });
+          }};
 }
 
 }  // namespace tessella::growth

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "tessella/growth/registries.hpp"
 #include "tessella/tissue/errors.hpp"
 
 namespace tessella::growth {
@@ -32,6 +33,27 @@ std::string RadialField::describe() const {
     << p_.center.transpose() << ")";
   if (p_.axis.squaredNorm() > 0) s << " axis (" << p_.axis.transpose() << ")";
   return s.str();
+}
+
+
+VelocityFieldEntry radialFieldEntry() {
+  return {"radial", "Radial growth: points move away from a centre (or an axis) at speed rate * distance^exponent.",
+          {ParamSpec("center", ParamType::Vec3, "Centre of the growth.").byDefault(std::vector<double>{0, 0, 0}),
+           ParamSpec("axis", ParamType::Vec3,
+                     "Zero: spherical growth from the centre; otherwise growth away from this axis through the centre.")
+               .byDefault(std::vector<double>{0, 0, 0}),
+           ParamSpec("rate", ParamType::Float, "Speed factor.").byDefault(0.1),
+           ParamSpec("exponent", ParamType::Float,
+                     "1: uniform expansion; 0: constant outward speed; > 1: growth concentrated at the rim.")
+               .byDefault(1.0)
+               .atLeast(0)},
+          [](const ParamValues& p) {
+            return blameParam("rate", [&] {
+              return std::make_shared<const RadialField>(
+                  RadialFieldParams{.center = p.getVec3("center"), .axis = p.getVec3("axis"),
+                                    .rate = p.getFloat("rate"), .exponent = p.getFloat("exponent")});
+            });
+          }};
 }
 
 }  // namespace tessella::growth

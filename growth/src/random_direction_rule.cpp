@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "tessella/growth/cell_frame.hpp"
+#include "tessella/growth/registries.hpp"
 
 namespace tessella::growth {
 
@@ -18,6 +19,11 @@ Plane RandomDirectionRule::plane(const Tissue& t, CellId c, Rng& rng) const {
   do n = Vec3(g(rng), g(rng), g(rng));
   while (n.norm() < 1e-12);
   return Plane{f.centroid, n.normalized()};
+}
+
+DivisionRuleEntry randomDirectionRuleEntry() {
+  return {"random", "A random direction through the centroid (uniform in the tangent plane, or on the sphere in 3D).",
+          {}, [](const ParamValues&) { return std::make_shared<const RandomDirectionRule>(); }};
 }
 
 }  // namespace tessella::growth

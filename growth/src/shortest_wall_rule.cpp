@@ -1,11 +1,18 @@
 #include "tessella/growth/shortest_wall_rule.hpp"
 
+#include "tessella/growth/registries.hpp"
+
 namespace tessella::growth {
 
 Plane ShortestWallRule::plane(const Tissue& t, CellId c, Rng&) const {
   const NewWallMeasure m(t, c);
   const std::vector<WallCandidate> minima = newWallLocalMinima(m, options_);
   return m.plane(minima.front().normal);  // the global minimum
+}
+
+DivisionRuleEntry shortestWallRuleEntry() {
+  return {"shortest_wall", "The plane through the centroid that makes the new wall shortest (Errera).", {},
+          [](const ParamValues&) { return std::make_shared<const ShortestWallRule>(); }};
 }
 
 }  // namespace tessella::growth

@@ -4,11 +4,12 @@
 
 #include "bindings.hpp"
 #include "deferred_error.hpp"
-#include "tessella/growth/division_rule_factory.hpp"
+#include "param_values.hpp"
 #include "tessella/growth/division_scheduler.hpp"
 #include "tessella/growth/fixed_direction_rule.hpp"
 #include "tessella/growth/main_axis_rule.hpp"
 #include "tessella/growth/random_direction_rule.hpp"
+#include "tessella/growth/registries.hpp"
 #include "tessella/growth/shortest_wall_rule.hpp"
 #include "tessella/tissue/geometry.hpp"
 
@@ -90,16 +91,39 @@ cutting plane of `cell`. `tissue` is the dividing tissue itself (no copy):
 read it, do not edit it, and do not keep it after the call.
 )doc")
       .def(py::init<py::function, std::string>(), py::arg("fn"), py::arg("name") = "python");
+  const auto& rules = growth::divisionRules();
+  const std::string make_rule_doc =
+      "A rule by its configuration name, with its parameters as keywords (a parameter of another rule is "
+      "ignored; positional parameters are fixed_normal, beta, junction_tolerance, in that order):" +
+      registryDoc(rules);
   m.def(
       "make_division_rule",
-      [](const std::string& name, const Vec3& normal, double beta, double tol) {
-        return std::const_pointer_cast<DivisionRule>(growth::makeDivisionRule(
-            name, growth::DivisionRuleParams{.fixed_normal = normal, .beta = beta, .junction_tolerance = tol}));
+      [](const std::string& name, const py::args& args, const py::kwargs& kwargs) {
+        const auto& table = growth::divisionRules();
+        const auto& entry = table.at(name);
+        // The order of the positional parameters before the table existed.
+        static const std::vector<std::string> positional = {"fixed_normal", "beta", "junction_tolerance"};
+        if (args.size() > positional.size())
+          throw InputError("make_division_rule: at most " + std::to_string(positional.size()) +
+                           " positional parameters, got " + std::to_string(args.size()));
+        std::vector<std::pair<std::string, py::handle>> given;
+        for (std::size_t i = 0; i < args.size(); ++i) given.emplace_back(positional[i], args[i]);
+        for (const auto& [key, value] : kwargs) given.emplace_back(py::cast<std::string>(key), value);
+        ParamValues values;
+        for (const auto& [param, value] : given) {
+          if (values.has(param)) throw InputError("make_division_rule: parameter '" + param + "' given twice");
+          if (const ParamSpec* spec = findParam(entry, param)) {
+            values.set(param, paramValueFromPython(*spec, value));
+            continue;
+          }
+          bool another_rule_reads_it = false;
+          for (const auto& e : table.entries()) another_rule_reads_it = another_rule_reads_it || findParam(e, param);
+          if (!another_rule_reads_it)
+            throw InputError("make_division_rule: no division rule has a parameter '" + param + "'");
+        }
+        return std::const_pointer_cast<DivisionRule>(table.make(name, values));
       },
-      py::arg("name"), py::arg("fixed_normal") = Vec3(Vec3::UnitX()), py::arg("beta") = 10.0,
-      py::arg("junction_tolerance") = 0.05,
-      "A rule by its configuration name: main_axis, shortest_wall, perpendicular_to_mother_wall, random, fixed, "
-      "besson_dumais.");
+      py::arg("name"), make_rule_doc.c_str());
 
   py::class_<growth::SizeThreshold>(m, "SizeThreshold", "When a cell divides: its area/volume exceeds a threshold.")
       .def_static("fixed", &growth::SizeThreshold::fixed, py::arg("size"))

@@ -3,14 +3,15 @@
 #include <memory>
 
 #include "bindings.hpp"
+#include "param_values.hpp"
 #include "python_field.hpp"
-#include "safe_step.hpp"
 #include "tessella/growth/bump_field.hpp"
 #include "tessella/growth/expression_field.hpp"
 #include "tessella/growth/growth_integrator.hpp"
 #include "tessella/growth/linear_field.hpp"
 #include "tessella/growth/meristem_field.hpp"
 #include "tessella/growth/radial_field.hpp"
+#include "tessella/growth/registries.hpp"
 #include "tessella/growth/surface_projection.hpp"
 #include "tessella/tissue/dome_surface.hpp"
 
@@ -30,10 +31,19 @@ struct Projection {
 growth::IntegrationScheme scheme(const std::string& s) { return growth::parseScheme(s); }
 
 growth::VelocitySource source(const std::string& s) {
-  if (s == "field") return growth::VelocitySource::Field;
-  if (s == "boundary") return growth::VelocitySource::HarmonicFromControl;
-  throw InputError("velocities: expected 'field' (every vertex) or 'boundary' (boundary vertices, harmonic "
-                   "interpolation inside), got '" + s + "'");
+  try {
+    return growth::velocitySources().parse(s);
+  } catch (const InputError& e) {
+    throw InputError(std::string("velocities: ") + e.what());
+  }
+}
+
+// "  name: doc" for every value of an enum table.
+template <typename E>
+std::string enumDoc(const EnumTable<E>& table) {
+  std::string out;
+  for (const auto& e : table.entries()) out += "\n  " + e.name + ": " + e.doc;
+  return out;
 }
 
 }  // namespace
@@ -104,6 +114,24 @@ void bindGrowth(py::module_& m) {
            py::arg("vx") = "0", py::arg("vy") = "0", py::arg("vz") = "0",
            py::arg("parameters") = std::map<std::string, double>{});
 
+  const std::string make_field_doc =
+      "A velocity field by its configuration name (growth.field), with its parameters as keywords:" +
+      registryDoc(growth::velocityFields());
+  m.def(
+      "make_velocity_field",
+      [](const std::string& name, const py::kwargs& kwargs) {
+        const auto& entry = growth::velocityFields().at(name);
+        ParamValues values;
+        for (const auto& [key, value] : kwargs) {
+          const std::string param = py::cast<std::string>(key);
+          const ParamSpec* spec = findParam(entry, param);
+          // Unknown names go through as they are, so make() names the field and its parameters.
+          values.set(param, spec ? paramValueFromPython(*spec, value) : ParamValue(std::string(py::str(value))));
+        }
+        return std::const_pointer_cast<VelocityField>(growth::velocityFields().make(name, values));
+      },
+      py::arg("name"), make_field_doc.c_str());
+
   py::class_<PythonField, VelocityField, std::shared_ptr<PythonField>>(m, "PythonField", R"doc(
 A velocity field written in Python: fn(points, t) -> velocities, where points
 is a read-only (n, 3) float64 array (a copy of the positions being evaluated)
@@ -128,13 +156,12 @@ vectorised NumPy. An exception raised in fn propagates out of step().
         [](const Vec3& apex, double k) { return Projection{growth::paraboloidProjection(apex, k), "paraboloid"}; },
         py::arg("apex"), py::arg("curvature"));
 
-  py::class_<growth::GrowthIntegrator, std::shared_ptr<growth::GrowthIntegrator>>(m, "GrowthIntegrator", R"doc(
-Moves every vertex with a velocity field over one step (Euler or Heun),
-projects onto the surface, advances the tissue clock and refuses (GeometryError,
-positions and clock restored) a step that inverts or collapses a cell.
-velocities: 'field' (every vertex) or 'boundary' (the field on the boundary,
-harmonic interpolation inside, as in the PlantGL paper).
-)doc")
+  const std::string integrator_doc =
+      "Moves every vertex with a velocity field over one step, projects onto the surface, advances the tissue\n"
+      "clock and refuses (GeometryError, positions and clock restored) a step that inverts or collapses a cell.\n"
+      "scheme:" + enumDoc(growth::integrationSchemes()) + "\nvelocities:" + enumDoc(growth::velocitySources()) + "\n";
+  py::class_<growth::GrowthIntegrator, std::shared_ptr<growth::GrowthIntegrator>>(m, "GrowthIntegrator",
+                                                                                 integrator_doc.c_str())
       .def(py::init([](std::shared_ptr<VelocityField> field, const std::string& sch, std::optional<Projection> projection,
                        const std::string& velocities, bool check_inversion, double min_cell_measure) {
              if (!field) throw InputError("GrowthIntegrator: field must not be None");
@@ -148,7 +175,7 @@ harmonic interpolation inside, as in the PlantGL paper).
            }),
            py::arg("field"), py::arg("scheme") = "heun", py::arg("projection") = py::none(),
            py::arg("velocities") = "field", py::arg("check_inversion") = true, py::arg("min_cell_measure") = 0.0)
-      .def("step", &stepRestoringOnError, py::arg("tissue"), py::arg("dt"),
+      .def("step", &growth::GrowthIntegrator::step, py::arg("tissue"), py::arg("dt"),
            "Advances the tissue from tissue.time to tissue.time + dt; on any error positions and clock are restored.")
       .def(
           "velocities",

@@ -5,13 +5,13 @@
 
 #include "bindings.hpp"
 #include "deferred_error.hpp"
-#include "safe_step.hpp"
 #include "tessella/growth/division_scheduler.hpp"
 #include "tessella/growth/growth_integrator.hpp"
 #include "tessella/sim/run/run.hpp"
 #include "tessella/sim/run/series_output.hpp"
 #include "tessella/sim/sections/simulation_config.hpp"
 #include "tessella/sim/simulation.hpp"
+#include "tessella/sim/stages/growth_stages.hpp"
 
 namespace tessella::python {
 
@@ -21,36 +21,21 @@ using sim::Simulation;
 using sim::Stage;
 using sim::StepContext;
 
-/// Moves the vertices with a Python-built integrator (as sim::GrowthStage does).
-class IntegratorStage final : public Stage {
+/// A sim stage after which the error a Python division function deferred
+/// (deferred_error.hpp) is raised, so that the Simulation names the stage and
+/// the step it happened in.
+class RaisingDeferredErrors final : public Stage {
  public:
-  explicit IntegratorStage(std::shared_ptr<growth::GrowthIntegrator> g) : g_(std::move(g)) {}
-  std::string name() const override { return "growth"; }
+  explicit RaisingDeferredErrors(std::unique_ptr<Stage> stage) : stage_(std::move(stage)) {}
+  std::string name() const override { return stage_->name(); }
+  void prepare(Tissue& t, double time) override { stage_->prepare(t, time); }
   void apply(Tissue& t, const StepContext& c) override {
-    t.setTime(c.time);  // the integrator runs from the tissue's clock
-    stepRestoringOnError(*g_, t, c.dt);
-  }
-
- private:
-  std::shared_ptr<growth::GrowthIntegrator> g_;
-};
-
-/// Divides with a Python-built scheduler, drawing from the run's random
-/// stream (as sim::DivisionStage does); daughters are born at the step's end.
-class SchedulerStage final : public Stage {
- public:
-  explicit SchedulerStage(std::shared_ptr<growth::DivisionScheduler> s) : s_(std::move(s)) {}
-  std::string name() const override { return "division"; }
-  void apply(Tissue& t, const StepContext& c) override {
-    t.setTime(c.end_time);
-    if (c.rng) s_->step(t, geometry_, *c.rng);
-    else s_->step(t, geometry_);
+    stage_->apply(t, c);
     raiseDeferredError();
   }
 
  private:
-  std::shared_ptr<growth::DivisionScheduler> s_;
-  GeometryCache geometry_;
+  std::unique_ptr<Stage> stage_;
 };
 
 /// A stage written in Python: fn(tissue, step, time, dt), run on the calling thread.
@@ -127,9 +112,10 @@ stage, step and time, followed by the cause's message.
           "add_stage",
           [](Simulation& s, py::object stage, const std::string& name) {
             if (py::isinstance<growth::GrowthIntegrator>(stage))
-              s.addStage(std::make_unique<IntegratorStage>(stage.cast<std::shared_ptr<growth::GrowthIntegrator>>()));
+              s.addStage(std::make_unique<sim::GrowthStage>(stage.cast<std::shared_ptr<growth::GrowthIntegrator>>()));
             else if (py::isinstance<growth::DivisionScheduler>(stage))
-              s.addStage(std::make_unique<SchedulerStage>(stage.cast<std::shared_ptr<growth::DivisionScheduler>>()));
+              s.addStage(std::make_unique<RaisingDeferredErrors>(
+                  std::make_unique<sim::DivisionStage>(stage.cast<std::shared_ptr<growth::DivisionScheduler>>())));
             else if (PyCallable_Check(stage.ptr()))
               s.addStage(std::make_unique<PythonStage>(stage.cast<py::function>(), name.empty() ? "python" : name));
             else

@@ -397,6 +397,96 @@ case "$case_name" in
     awk -v a="$a1" -v b="$a2" 'BEGIN { r = b / (4 * a); exit !(r > 0.98 && r < 1.02) }' \
       || fail "scale 2 did not multiply the area by about 4 ($a1 -> $a2)"
     ;;
+  render_run)
+    "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/hex" -q || fail "run failed"
+    "$tessella" render "$tmp/hex" --property size --size 320x240 --no-movie >"$tmp/stdout" 2>"$tmp/stderr" \
+      || fail "render failed: $(cat "$tmp/stderr")"
+    cat "$tmp/stdout"
+    grep -q "wrote        4 frames to $tmp/hex/frames" "$tmp/stdout" || fail "expected 4 frames in RUN_DIR/frames"
+    for f in "$tmp/hex/frames"/frame_00000[0-3].png; do
+      # A PNG's IHDR holds width and height as big-endian 32-bit integers at bytes 16..23.
+      size=$(od -An -tu1 -j16 -N8 "$f" | awk '{print $3*256+$4 "x" $7*256+$8}')
+      [ "$size" = "320x240" ] || fail "$f is $size, expected 320x240"
+    done
+    "$tessella" render "$tmp/hex/tissue_000000.vtu" --out "$tmp/one" >/dev/null || fail "render of one snapshot failed"
+    [ -f "$tmp/one/frame_000000.png" ] || fail "no frame for a single snapshot"
+    "$tessella" render "$tmp/hex" --property auxin --out "$tmp/bad" 2>"$tmp/stderr"
+    [ $? -eq 1 ] || fail "an unknown property was not refused"
+    grep -q "no cell property 'auxin' (scalar cell properties: size, lineage_id" "$tmp/stderr" || fail "unclear: $(cat "$tmp/stderr")"
+    [ ! -e "$tmp/bad" ] || fail "frames directory created for a refused render"
+    "$tessella" render "$tmp/nothing" 2>"$tmp/stderr"
+    [ $? -eq 1 ] && grep -q "no such file or directory" "$tmp/stderr" || fail "missing source: $(cat "$tmp/stderr")"
+    ;;
+  sweep_snakemake)
+    command -v snakemake >/dev/null || fail "snakemake is not installed (scripts/install-deps.sh installs it)"
+    "$tessella" sweep "$src/configs/voronoi_growth.yaml" --vary division.rule=main_axis,shortest_wall \
+      --vary growth.uniform.rate=0.05,0.1 --replicates 2 --set time.end=1 --set tissue.voronoi.count=12 \
+      --out "$tmp/sweep" >"$tmp/stdout" 2>"$tmp/stderr" || fail "sweep failed: $(cat "$tmp/stderr")"
+    grep -q "wrote        8 run configs" "$tmp/stdout" || fail "expected 8 runs: $(cat "$tmp/stdout")"
+    (cd "$tmp/sweep" && snakemake -j 2 >"$tmp/sm.log" 2>&1) || fail "snakemake failed: $(tail -20 "$tmp/sm.log")"
+    csv="$tmp/sweep/sweep.csv"
+    [ "$(head -1 "$csv" | cut -d, -f1-7)" = "run,replicate,rng_seed,division.rule,growth.uniform.rate,time,cells" ] \
+      || fail "sweep.csv header: $(head -1 "$csv")"
+    [ "$(wc -l <"$csv")" -eq 9 ] || fail "sweep.csv should hold 8 runs"
+    # Replicates take seeds 5 and 6 (the config's rng_seed 5, then 5 + 1), the same for every combination;
+    # every run reached time.end = 1 and the faster growth gives the larger total area.
+    awk -F, 'NR > 1 && ($3 != 5 + $2 || $6 != 1) { exit 1 }' "$csv" || fail "seeds or end times wrong: $(cat "$csv")"
+    awk -F, 'NR > 1 { a[$5] += $9; n[$5]++ } END { exit !(a["0.1"] / n["0.1"] > a["0.05"] / n["0.05"]) }' "$csv" \
+      || fail "growth rate does not show in the area: $(cat "$csv")"
+    # Each run's own config carries its values; rerunning does nothing; a lost run is redone alone.
+    grep -q "rule: shortest_wall" "$tmp/sweep/configs/run_0007.yaml" || fail "run_0007's config lacks its rule"
+    (cd "$tmp/sweep" && snakemake -j 2 2>&1) | grep -q "Nothing to be done" || fail "a rerun did work again"
+    rm "$tmp/sweep/sweep.csv" "$tmp/sweep/runs/run_0003/finished"
+    (cd "$tmp/sweep" && snakemake -j 2 >"$tmp/sm2.log" 2>&1) || fail "resumed snakemake failed"
+    [ "$(grep -c 'wildcards: run=' "$tmp/sm2.log")" -eq 1 ] || fail "resuming reran more than the lost run"
+    # Refusals: an inactive key, a malformed --vary, an existing sweep.
+    "$tessella" sweep "$src/configs/hex_grid_2d.yaml" --vary growth.uniform.rate=1,2 --out "$tmp/s2" 2>"$tmp/stderr"
+    [ $? -eq 1 ] && grep -q "ignores this key" "$tmp/stderr" && [ ! -e "$tmp/s2" ] || fail "inactive key: $(cat "$tmp/stderr")"
+    "$tessella" sweep "$src/configs/voronoi_growth.yaml" --vary division.size --out "$tmp/s3" 2>"$tmp/stderr"
+    [ $? -eq 1 ] && grep -q "no '='" "$tmp/stderr" || fail "malformed --vary: $(cat "$tmp/stderr")"
+    "$tessella" sweep "$src/configs/voronoi_growth.yaml" --vary division.mean=-1,2 --out "$tmp/s4" 2>"$tmp/stderr"
+    [ $? -eq 1 ] && grep -q "division.mean" "$tmp/stderr" && [ ! -e "$tmp/s4" ] || fail "bad value: $(cat "$tmp/stderr")"
+    "$tessella" sweep "$src/configs/voronoi_growth.yaml" --vary division.mean=1,2 --out "$tmp/sweep" 2>"$tmp/stderr"
+    [ $? -eq 1 ] && grep -q "already holds a sweep" "$tmp/stderr" || fail "existing sweep: $(cat "$tmp/stderr")"
+    ;;
+  report_in_browser)
+    command -v chromium >/dev/null || fail "chromium is not installed (scripts/install-deps.sh installs it)"
+    "$tessella" run "$src/configs/voronoi_growth.yaml" --out "$tmp/run" -q --set time.end=2 \
+      --set tissue.voronoi.count=20 || fail "run failed"
+    "$tessella" report "$tmp/run" >"$tmp/stdout" 2>"$tmp/stderr" || fail "report failed: $(cat "$tmp/stderr")"
+    cat "$tmp/stdout"
+    [ -s "$tmp/run/report.html" ] || fail "no report.html"
+    # cells.csv holds every cell of every snapshot: as many rows as stats.csv counts cells.
+    cells=$(awk -F, 'NR > 1 { n += $2 } END { print n }' "$tmp/run/stats.csv")
+    [ "$(($(wc -l <"$tmp/run/report/cells.csv") - 1))" -eq "$cells" ] || fail "cells.csv rows != $cells"
+    # Each division seen is one counted in stats.csv (a sister that divided again hides one).
+    divisions=$(awk -F, 'NR > 1 { n += $3 } END { print n }' "$tmp/run/stats.csv")
+    seen=$(($(wc -l <"$tmp/run/report/divisions.csv") - 1))
+    [ "$seen" -gt 0 ] && [ "$seen" -le "$divisions" ] || fail "divisions seen $seen, counted $divisions"
+    # In a real browser: every image of the page loads, and the page is not blank.
+    chromium --headless --no-sandbox --disable-gpu --virtual-time-budget=10000 --dump-dom \
+      "file://$tmp/run/report.html" >"$tmp/dom.html" 2>"$tmp/chromium.log" || fail "chromium failed: $(tail "$tmp/chromium.log")"
+    loaded=$(grep -o 'data-images-loaded="[0-9]*/[0-9]*"' "$tmp/dom.html") || fail "the page's load handler did not run"
+    echo "$loaded"
+    images=$(grep -c '<img ' "$tmp/run/report.html")
+    [ "$loaded" = "data-images-loaded=\"$images/$images\"" ] || fail "not every image loaded: $loaded of $images"
+    chromium --headless --no-sandbox --disable-gpu --hide-scrollbars --virtual-time-budget=10000 --window-size=1000,1400 \
+      --screenshot="$tmp/page.png" "file://$tmp/run/report.html" >/dev/null 2>&1 || fail "no screenshot"
+    /usr/bin/python3 - "$tmp/page.png" <<'PY' || fail "screenshot check failed"
+import sys
+import matplotlib.image as mpimg
+img = mpimg.imread(sys.argv[1])
+assert img.shape[:2] == (1400, 1000), img.shape
+rgb = img[:, :, :3]
+ink = (rgb.min(axis=2) < 0.9).mean()
+colour = ((rgb.max(axis=2) - rgb.min(axis=2)) > 0.2).mean()  # the plots' coloured marks, not black text
+print(f"screenshot 1000x1400: {ink:.1%} of the pixels not white, {colour:.2%} coloured")
+assert ink > 0.01 and colour > 0.002, "the page looks blank or shows no plot"
+PY
+    "$tessella" report "$tmp" 2>"$tmp/stderr"
+    [ $? -eq 1 ] && grep -q "is not a run directory written by tessella run: it has no tissue.pvd" "$tmp/stderr" \
+      || fail "a non-run directory: $(cat "$tmp/stderr")"
+    ;;
   import_errors)
     # A malformed file: exit 1, an error naming the file and line, no output file.
     head -c 60000 "$src/tests/data/mgx_meristem_cropped/mesh_meristem_cropped_T0.ply" >"$tmp/cut.ply"

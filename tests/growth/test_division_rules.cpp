@@ -5,15 +5,16 @@
 
 #include "growth_fixtures.hpp"
 #include "tessella/growth/besson_dumais_rule.hpp"
-#include "tessella/growth/division_rule_factory.hpp"
 #include "tessella/growth/division_walls.hpp"
 #include "tessella/growth/fixed_direction_rule.hpp"
 #include "tessella/growth/main_axis_rule.hpp"
 #include "tessella/growth/perpendicular_wall_rule.hpp"
 #include "tessella/growth/random_direction_rule.hpp"
+#include "tessella/growth/registries.hpp"
 #include "tessella/growth/shortest_wall_rule.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
+#include "tessella/generators/grids.hpp"
 #include "tessella/tissue/validate.hpp"
 
 using namespace tessella;
@@ -41,7 +42,8 @@ TEST_CASE("a 2:1 rectangle divides across its long side", "[growth][rules]") {
   for (const char* name : {"main_axis", "shortest_wall", "besson_dumais"}) {
     INFO(name);
     Tissue t = testing::rectangleCell(2.0, 1.0);
-    auto rule = makeDivisionRule(name, DivisionRuleParams{.beta = 50.0});
+    const ParamValues params = std::string(name) == "besson_dumais" ? ParamValues{{"beta", 50.0}} : ParamValues{};
+    auto rule = makeDivisionRule(name, params);
     const Plane p = rule->plane(t, CellId(0), rng);
     CHECK(alignment(p.normal, Vec3::UnitX()) == Approx(1.0).margin(1e-12));
     CHECK(p.point.isApprox(Vec3(1.0, 0.5, 0.0)));
@@ -215,7 +217,8 @@ TEST_CASE("on a surface every rule's plane contains the cell normal", "[growth][
   Rng rng(9);
   for (const std::string& name : divisionRuleNames()) {
     INFO(name);
-    auto rule = makeDivisionRule(name, DivisionRuleParams{.fixed_normal = Vec3(1, 0.3, 0)});
+    auto rule = makeDivisionRule(
+        name, name == "fixed" ? ParamValues{{"fixed_normal", std::vector<double>{1, 0.3, 0}}} : ParamValues{});
     for (CellId c : cap.cells()) {
       const Vec3 n = polygonMeasures(cap, cap.cellFace(c)).normal;
       const Plane p = rule->plane(cap, c, rng);
@@ -235,4 +238,112 @@ TEST_CASE("on a surface every rule's plane contains the cell normal", "[growth][
 
 TEST_CASE("unknown rule names are input errors listing the known ones", "[growth][rules]") {
   CHECK_THROWS_WITH(makeDivisionRule("errera"), Contains("'errera'") && Contains("shortest_wall"));
+}
+
+namespace {
+
+// A 64-gon on the ellipse with semi-axes a > b, its major axis at angle phi
+// (counter-clockwise from x): its main axis is exactly the major axis.
+Tissue ellipseCell(double a, double b, double phi) {
+  std::vector<Vec3> p;
+  std::vector<Index> loop;
+  for (int i = 0; i < 64; ++i) {
+    const double s = 2 * M_PI * i / 64, x = a * std::cos(s), y = b * std::sin(s);
+    p.emplace_back(x * std::cos(phi) - y * std::sin(phi), x * std::sin(phi) + y * std::cos(phi), 0);
+    loop.push_back(static_cast<Index>(i));
+  }
+  return buildPolygonTissue(p, {loop});
+}
+
+double radians(double degrees) { return degrees * M_PI / 180; }
+
+// Every vertex moved by up to `amount` in each direction (z too when `in_z`).
+void jitter(Tissue& t, double amount, bool in_z, std::uint64_t seed) {
+  Rng rng(seed);
+  std::uniform_real_distribution<double> u(-amount, amount);
+  for (Vec3& x : t.mutablePositions()) x += Vec3(u(rng), u(rng), in_z ? u(rng) : 0.0);
+}
+
+}  // namespace
+
+TEST_CASE("fixed_angle_to_main_axis turns the main-axis wall by the angle", "[growth][rules]") {
+  // Rectangle 2 x 1 (main axis x) and an ellipse whose major axis is at 0.4 rad:
+  // the plane normal is the major axis turned by the angle, counter-clockwise
+  // seen from +z, and so is the new wall (the main-axis wall is across the major axis).
+  Rng rng(10);
+  for (const double phi : {0.0, 0.4}) {
+    for (const double angle : {0.0, 30.0, -45.0, 60.0, 90.0, -90.0}) {
+      INFO("phi " << phi << ", angle " << angle);
+      Tissue t = phi == 0.0 ? testing::rectangleCell(2.0, 1.0) : ellipseCell(2.0, 1.0, phi);
+      const Vec3 centroid = cellCentroid(t, CellId(0));
+      const auto rule = makeDivisionRule("fixed_angle_to_main_axis", {{"angle", angle}});
+      const Plane p = rule->plane(t, CellId(0), rng);
+      const double turned = phi + radians(angle);
+      CHECK(p.normal.z() == 0.0);
+      CHECK(alignment(p.normal, Vec3(std::cos(turned), std::sin(turned), 0)) == Approx(1.0).margin(1e-12));
+      CHECK((p.point - centroid).norm() < 1e-12);
+      // The signed angle from the main-axis plane, modulo pi.
+      const Vec3 n0 = MainAxisRule().plane(t, CellId(0), rng).normal;
+      const double signed_angle = std::atan2(n0.cross(p.normal).z(), n0.dot(p.normal));
+      CHECK(std::abs(std::remainder(signed_angle - radians(angle), M_PI)) < 1e-12);
+      // The new wall runs along the main-axis wall turned by the angle.
+      const CellSplit s = splitAndCheck(t, *rule, rng);
+      const auto ends = t.topology().edgeVertices(EdgeId(s.wall.index()));
+      const Vec3 wall = t.position(ends[1]) - t.position(ends[0]);
+      CHECK(alignment(wall, Vec3(-std::sin(turned), std::cos(turned), 0)) == Approx(1.0).margin(1e-12));
+      CHECK(wall.normalized().cross(centroid - t.position(ends[0])).norm() < 1e-12);  // through the centroid
+    }
+  }
+}
+
+TEST_CASE("fixed_angle_to_main_axis at angle 0 is the main-axis rule, bit for bit", "[growth][rules]") {
+  Tissue sheet = hexagonalGrid(6, 5, 1.0);
+  jitter(sheet, 0.2, false, 11);
+  Tissue box = boxGrid(3, 3, 2, 1.5, 1.0, 0.8);
+  jitter(box, 0.1, true, 12);
+  Tissue cap = testing::sphericalCapGrid(4, 1.6, 2.0);
+  Rng rng(13);
+  const auto zero = makeDivisionRule("fixed_angle_to_main_axis");  // the default angle is 0
+  const MainAxisRule main_axis;
+  for (const Tissue* t : {&sheet, &box, &cap}) {
+    for (CellId c : t->cells()) {
+      const Plane a = zero->plane(*t, c, rng), b = main_axis.plane(*t, c, rng);
+      CHECK(a.point == b.point);
+      CHECK(a.normal == b.normal);
+    }
+  }
+}
+
+TEST_CASE("fixed_angle_to_main_axis on a curved sheet and in 3D", "[growth][rules]") {
+  Rng rng(14);
+  SECTION("curved sheet: turned about the cell normal, within the tangent plane") {
+    Tissue cap = testing::sphericalCapGrid(4, 1.6, 2.0);
+    jitter(cap, 0.03, false, 15);  // cells with a definite main axis
+    const double angle = 35.0;
+    const auto rule = makeDivisionRule("fixed_angle_to_main_axis", {{"angle", angle}});
+    for (CellId c : cap.cells()) {
+      const Vec3 normal = polygonMeasures(cap, cap.cellFace(c)).normal.normalized();
+      const Vec3 n0 = MainAxisRule().plane(cap, c, rng).normal, n = rule->plane(cap, c, rng).normal;
+      CHECK(std::abs(n.dot(normal)) < 1e-12);
+      const double signed_angle = std::atan2(n0.cross(n).dot(normal), n0.dot(n));
+      CHECK(std::abs(std::remainder(signed_angle - radians(angle), M_PI)) < 1e-9);
+    }
+  }
+  SECTION("3D: a 3 x 2 x 1 box turns about its shortest axis z") {
+    for (const double angle : {0.0, 30.0, 90.0}) {
+      INFO(angle);
+      Tissue t = testing::boxCell(3.0, 2.0, 1.0);
+      const auto rule = makeDivisionRule("fixed_angle_to_main_axis", {{"angle", angle}});
+      const Plane p = rule->plane(t, CellId(0), rng);
+      // n = cos a x + sin a (z x x) = (cos a, sin a, 0), up to the sign of the whole normal.
+      CHECK(alignment(p.normal, Vec3(std::cos(radians(angle)), std::sin(radians(angle)), 0)) ==
+            Approx(1.0).margin(1e-12));
+      const CellSplit s = splitAndCheck(t, *rule, rng);
+      const Vec3 wall_normal = polygonMeasures(t, FaceId(s.wall.index())).normal;
+      CHECK(alignment(wall_normal, p.normal) == Approx(1.0).margin(1e-12));
+      CHECK(cellMeasure(t, s.daughter) == Approx(3.0).epsilon(1e-12));  // through the centroid of a box
+    }
+  }
+  CHECK_THROWS_WITH(makeDivisionRule("fixed_angle_to_main_axis", {{"angle", 120.0}}),
+                    Contains("parameter 'angle' must be a number >= -90 and <= 90, got 120.0"));
 }

@@ -4,9 +4,9 @@
 #include <set>
 
 #include "growth_fixtures.hpp"
-#include "tessella/growth/division_rule_factory.hpp"
 #include "tessella/growth/division_scheduler.hpp"
 #include "tessella/growth/division_walls.hpp"
+#include "tessella/growth/registries.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/generators/grids.hpp"
 #include "tessella/tissue/validate.hpp"

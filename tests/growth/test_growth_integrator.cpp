@@ -2,6 +2,9 @@
 
 #include <cmath>
 #include <memory>
+#include <span>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "growth_fixtures.hpp"
@@ -245,6 +248,31 @@ TEST_CASE("a velocity that overflows in Heun's second stage is refused and undon
     CHECK(t.time() == 0.0);
     for (VertexId v : t.vertices()) CHECK(t.position(v) == before[v.index()]);
   }
+}
+
+namespace {
+// A field that fails like a Python field raising an exception: at the
+// predictor's time, in Heun's second stage, after the vertices have moved.
+class FailingLaterField final : public VelocityField {
+ public:
+  Vec3 velocity(const Vec3& x, double t) const override {
+    if (t > 0) throw std::runtime_error("field failed at t > 0");
+    return 0.5 * x;
+  }
+  void velocities(std::span<const Vec3> x, double t, std::span<Vec3> out) const override {
+    for (std::size_t i = 0; i < x.size(); ++i) out[i] = velocity(x[i], t);
+  }
+  std::string describe() const override { return "failing field"; }
+};
+}  // namespace
+
+TEST_CASE("any exception during a step leaves positions and clock as they were", "[growth][integrator]") {
+  Tissue t = rectangularGrid(2, 2);
+  const std::vector<Vec3> before(t.positions().begin(), t.positions().end());
+  GrowthIntegrator g(std::make_shared<FailingLaterField>(), GrowthOptions{.scheme = IntegrationScheme::Heun});
+  CHECK_THROWS_WITH(g.step(t, 0.1), Contains("field failed"));
+  CHECK(t.time() == 0.0);
+  for (VertexId v : t.vertices()) CHECK(t.position(v) == before[v.index()]);
 }
 
 TEST_CASE("a step that moves a vertex to a non-finite position is refused and undone", "[growth][integrator][finite]") {

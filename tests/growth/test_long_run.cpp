@@ -5,10 +5,10 @@
 #include <set>
 #include <string>
 
-#include "tessella/growth/division_rule_factory.hpp"
 #include "tessella/growth/division_scheduler.hpp"
 #include "tessella/growth/growth_integrator.hpp"
 #include "tessella/growth/linear_field.hpp"
+#include "tessella/growth/registries.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/generators/grids.hpp"
 #include "tessella/tissue/validate.hpp"

@@ -23,6 +23,33 @@ endfunction()
 
 run("install" ${CMAKE_COMMAND} --install ${BUILD_DIR} --prefix ${prefix})
 
+# The program, its docs and (when built) the Python module, importable from
+# the prefix with its version.
+if(EXISTS ${BUILD_DIR}/bin/tessella)
+  foreach(file ${prefix}/bin/tessella ${prefix}/share/doc/tessella/README.md ${prefix}/share/doc/tessella/LICENSE
+               ${prefix}/share/doc/tessella/config.md ${prefix}/share/doc/tessella/configs/figure17.yaml)
+    if(NOT EXISTS ${file})
+      message(FATAL_ERROR "install test: ${file} was not installed")
+    endif()
+  endforeach()
+  run("installed program" ${prefix}/bin/tessella --version)
+endif()
+file(GLOB _python_modules ${BUILD_DIR}/python/tessella*.so)
+if(_python_modules AND EXISTS /usr/bin/python3)
+  file(GLOB _installed ${prefix}/lib/python3*/site-packages/tessella*.so)
+  if(NOT _installed)
+    message(FATAL_ERROR "install test: the Python module was not installed into ${prefix}/lib/python3.X/site-packages")
+  endif()
+  get_filename_component(_site ${_installed} DIRECTORY)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env PYTHONPATH=${_site} PYTHONNOUSERSITE=1 /usr/bin/python3 -c
+                          "import tessella; print(tessella.__file__, tessella.__version__)"
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message("${out}${err}")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "${_site}")
+    message(FATAL_ERROR "install test: the installed Python module does not import from ${_site}: ${out}${err}")
+  endif()
+endif()
+
 # What a consumer needs must be there, and nothing of the build tree.
 set(pkg ${prefix}/lib/cmake/Tessella)
 foreach(file ${pkg}/TessellaConfig.cmake ${pkg}/TessellaConfigVersion.cmake

@@ -137,6 +137,23 @@ TEST_CASE("growth and division config errors name their key", "[sim][growth][con
     CHECK_THROWS_WITH(Simulation::fromYaml(grid + "division:\n  rule: fixed\n  fixed_normal: [0, 0, 0]\n"),
                       Contains("division.fixed_normal"));
   }
+  SECTION("a zero meristem axis (refused by the field itself)") {
+    try {
+      Simulation::fromYaml(grid + "growth:\n  field: meristem\n  meristem:\n    axis: [0, 0, 0]\n");
+      FAIL("no error");
+    } catch (const ConfigError& e) {
+      CHECK(e.keyPath() == "growth.meristem.axis");
+    }
+  }
+  SECTION("an expression parameter named like a variable") {
+    try {
+      Simulation::fromYaml(grid + "growth:\n  field: expression\n  expression:\n    parameters: \"x=1\"\n");
+      FAIL("no error");
+    } catch (const ConfigError& e) {
+      CHECK(e.keyPath() == "growth.expression.parameters");
+      CHECK_THAT(e.what(), Contains("reserved"));
+    }
+  }
   SECTION("a negative bump width") {
     CHECK_THROWS_WITH(Simulation::fromYaml(grid + "growth:\n  field: bump\n  bump:\n    h: -1\n"),
                       Contains("growth.bump.h"));

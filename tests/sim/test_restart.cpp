@@ -17,6 +17,7 @@
 
 #include "tessella/io/vtu.hpp"
 #include "tessella/sim/config/config_loader.hpp"
+#include "tessella/sim/sections/simulation_config.hpp"
 #include "tessella/sim/simulation.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "test_support.hpp"

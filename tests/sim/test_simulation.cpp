@@ -116,5 +116,5 @@ TEST_CASE("a Simulation from YAML builds the generator's tissue", "[sim][simulat
   CHECK(sim.time() == 1.0);
   CHECK(sim.numSteps() == 2);
   CHECK(sim.parameters().rng_seed == 5);
-  CHECK(sim.numStages() == 0);  // no growth/division sections yet
+  CHECK(sim.numStages() == 0);  // the config turns on no growth, division or solver section
 }

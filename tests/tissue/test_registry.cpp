@@ -4,6 +4,7 @@
 #include <functional>
 #include <limits>
 
+#include "tessella/tissue/enum_table.hpp"
 #include "tessella/tissue/registry.hpp"
 
 using namespace tessella;
@@ -72,4 +73,47 @@ TEST_CASE("numbers are formatted as the shortest text that reads back", "[regist
   CHECK(formatParamValue(1.0) == "1.0");
   CHECK(formatParamValue(std::vector<double>{1, 0.5}) == "[1.0, 0.5]");
   CHECK(ParamRange{.min = 0.0, .max = 1.0, .min_exclusive = true}.text() == "> 0 and <= 1");
+}
+
+TEST_CASE("a parameter error names the parameter at fault", "[registry]") {
+  try {
+    shapes().make("square", {{"side", -1.0}}, 1.0);
+    FAIL("no error");
+  } catch (const ParamError& e) {
+    CHECK(e.param() == "side");
+  }
+  try {
+    shapes().make("grid", {}, 1.0);
+    FAIL("no error");
+  } catch (const ParamError& e) {
+    CHECK(e.param() == "n");
+    CHECK_THAT(e.what(), Contains("is required"));
+  }
+  // blameParam turns another InputError into a ParamError and keeps a ParamError as it is.
+  CHECK_THROWS_WITH(blameParam("side", []() -> int { throw InputError("too small"); }), "too small");
+  try {
+    blameParam("side", []() -> int { throw InputError("too small"); });
+  } catch (const ParamError& e) {
+    CHECK(e.param() == "side");
+  }
+  try {
+    blameParam("side", []() -> int { throw ParamError("n", "bad n"); });
+  } catch (const ParamError& e) {
+    CHECK(e.param() == "n");
+  }
+  CHECK(blameParam("side", [] { return 3; }) == 3);
+}
+
+TEST_CASE("an enum table names each value once and parses names and aliases", "[registry]") {
+  enum class Colour { Red, Green };
+  const EnumTable<Colour> colours("colour", {{"red", Colour::Red, "Warm."}, {"green", Colour::Green, "Cool."}},
+                                  {{"verde", Colour::Green}});
+  CHECK(colours.names() == std::vector<std::string>{"red", "green"});
+  CHECK(colours.namesText() == "red, green");
+  CHECK(colours.parse("green") == Colour::Green);
+  CHECK(colours.parse("verde") == Colour::Green);
+  CHECK(colours.name(Colour::Red) == "red");
+  CHECK_THROWS_WITH(colours.parse("blue"), "unknown colour 'blue' (known: red, green, verde)");
+  CHECK_THROWS_AS(EnumTable<Colour>("colour", {{"red", Colour::Red, ""}, {"red", Colour::Green, ""}}),
+                  std::logic_error);
 }

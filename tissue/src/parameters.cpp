@@ -122,7 +122,7 @@ namespace {
 ParamValue checked(const ParamSpec& spec, const ParamValue& value, const std::string& owner) {
   const std::string where = owner + ": parameter '" + spec.name + "' ";
   const auto fail = [&](const std::string& expected) {
-    return InputError(where + "must be " + expected + ", got " + formatParamValue(value));
+    return ParamError(spec.name, where + "must be " + expected + ", got " + formatParamValue(value));
   };
   const auto inRange = [&](double x) {
     if (!std::isfinite(x)) throw fail("a finite number");
@@ -191,7 +191,7 @@ ParamValues completeParams(const std::vector<ParamSpec>& specs, const ParamValue
     } else if (spec.default_value && !(!spec.unless_set.empty() && values.has(spec.unless_set))) {
       out.set(spec.name, *spec.default_value);
     } else if (!spec.default_value && spec.absent_doc.empty() && spec.unless_set.empty()) {
-      throw InputError(owner + ": parameter '" + spec.name + "' is required");
+      throw ParamError(spec.name, owner + ": parameter '" + spec.name + "' is required");
     }
   }
   return out;

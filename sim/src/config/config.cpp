@@ -44,6 +44,15 @@ Vec3 Config::getVec(const std::string& path) const {
   return Vec3(v.at(0), v.at(1), v.size() > 2 ? v[2] : 0.0);
 }
 
+ParamValues Config::params(const std::string& section, const std::vector<ParamSpec>& params) const {
+  ParamValues values;
+  for (const ParamSpec& p : params) {
+    const std::string path = joinPath(section, p.name);
+    if (has(path)) values.set(p.name, entry(path).value);
+  }
+  return values;
+}
+
 bool Config::conditionHolds(const Condition& c) const {
   if (!isActive(c.key) || !has(c.key)) return false;
   const auto* value = std::get_if<std::string>(&entry(c.key).value);

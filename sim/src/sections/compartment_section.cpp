@@ -116,4 +116,8 @@ CompartmentSpec readCompartmentSection(const Config& c) {
   return d;
 }
 
+void addCompartmentStage(const CompartmentSpec& k, StageList& stages) {
+  if (!k.field.empty()) stages.add(std::make_unique<CompartmentStage>(k));
+}
+
 }  // namespace tessella::sim

@@ -10,15 +10,6 @@
 
 namespace tessella::sim {
 
-const std::vector<std::string>& boundaryRegionNames() {
-  static const std::vector<std::string> names = {"all", "x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
-  return names;
-}
-
-const char* boundaryRegionName(BoundaryRegion region) {
-  return boundaryRegionNames()[static_cast<std::size_t>(region)].c_str();
-}
-
 namespace detail {
 
 namespace {

@@ -2,8 +2,8 @@
 #include <cstdint>
 #include <set>
 
+#include "../stages/reaction_terms.hpp"
 #include "coupling_values.hpp"
-#include "reaction_terms.hpp"
 #include "tessella/sim/sections/coupling_section.hpp"
 
 namespace tessella::sim {
@@ -190,6 +190,10 @@ DiffusionSpec readDiffusionSection(const Config& c) {
     }
   }
   return d;
+}
+
+void addDiffusionStage(const DiffusionSpec& d, StageList& stages) {
+  if (!d.species.empty()) stages.add(std::make_unique<DiffusionStage>(d, stages.fieldMesh()));
 }
 
 }  // namespace tessella::sim

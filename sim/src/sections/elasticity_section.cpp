@@ -6,6 +6,12 @@ namespace tessella::sim {
 namespace {
 const std::vector<std::string> kModels = {"plane_stress", "plane_strain", "solid"};
 
+std::string joined(const std::vector<std::string>& names) {
+  std::string text;
+  for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
+  return text;
+}
+
 std::vector<std::string> regionChoices() {
   std::vector<std::string> c = {"none"};
   for (const auto& r : boundaryRegionNames()) c.push_back(r);
@@ -18,9 +24,9 @@ void declareElasticitySection(Schema& s) {
             "Linear elasticity (small strains, P1) of the tissue's current shape under boundary "
             "conditions on faces of its bounding box: plane stress / plane strain for flat 2D tissues, "
             "solid for 3D ones. Nodal displacements go to the mesh series (displacement_x/_y/_z), the "
-            "cell-averaged stress to the tissue (stress_xx, stress_yy, stress_zz, stress_yz, stress_xz, "
-            "stress_xy, stress_max_principal). The displacement is not applied to the tissue. Off unless "
-            "`model` is set. See docs/solvers.md.");
+            "cell-averaged stress to the tissue (" + joined(ElasticityStage::stressPropertyNames()) +
+                "). The displacement is not applied to the tissue. Off unless `model` is set. See "
+                "docs/solvers.md.");
   s.key("elasticity.model", ValueType::Enum, "The elastic model.")
       .oneOf({"none", "plane_stress", "plane_strain", "solid"})
       .byDefault(std::string("none"));
@@ -100,15 +106,8 @@ ElasticitySpec readElasticitySection(const Config& c) {
   return e;
 }
 
-std::vector<std::string> coupledCellProperties(const DiffusionSpec& d, const CompartmentSpec& k,
-                                               const ElasticitySpec& e) {
-  std::vector<std::string> names;
-  for (const SpeciesSpec& sp : d.species) names.insert(names.end(), {sp.name, sp.name + "_amount"});
-  if (!k.field.empty()) names.insert(names.end(), {k.field, k.field + "_amount"});
-  if (e.enabled)
-    names.insert(names.end(), {"stress_xx", "stress_yy", "stress_zz", "stress_yz", "stress_xz", "stress_xy",
-                               "stress_max_principal"});
-  return names;
+void addElasticityStage(const ElasticitySpec& e, StageList& stages) {
+  if (e.enabled) stages.add(std::make_unique<ElasticityStage>(e, stages.fieldMesh()));
 }
 
 }  // namespace tessella::sim

@@ -7,6 +7,7 @@
 #include "tessella/sim/config/config_loader.hpp"
 #include "tessella/sim/sections/tessella_schema.hpp"
 #include "tessella/sim/simulation.hpp"
+#include "tessella/sim/stages/stage.hpp"
 #include "tissue_shape_checks.hpp"
 
 namespace tessella::sim {
@@ -63,19 +64,18 @@ SimulationConfig readSimulationConfig(Config config) {
       throw config.errorAt("tissue.snapshot.file", e.what());
     }
   }
-  OutputSpec output = readOutputSection(config);
-  GrowthSpec growth = readGrowthSection(config, tissue);
-  DivisionSpec division = readDivisionSection(config);
-  DiffusionSpec diffusion = readDiffusionSection(config);
-  CompartmentSpec compartments = readCompartmentSection(config);
-  ElasticitySpec elasticity = readElasticitySection(config);
-  checkDivisionGate(config, division, coupledCellProperties(diffusion, compartments, elasticity));
-  // Extension point: read new sections here.
-  SimulationConfig result{std::move(config),      seed,
-                          std::move(tissue),      time,
-                          std::move(output),      std::move(growth),
-                          std::move(division),    std::move(diffusion),
-                          std::move(compartments), std::move(elasticity)};
+  SimulationConfig result{.config = std::move(config), .rng_seed = seed, .tissue = std::move(tissue), .time = time};
+  for (const SectionUnit& unit : sectionUnits())
+    if (unit.read) unit.read(result.config, result);
+  // A division gate reads a value another stage writes: ask the stages the sections make.
+  if (result.division.gate) {
+    std::vector<std::string> written;
+    for (const auto& stage : makeStages(result)) {
+      const std::vector<std::string> names = stage->cellPropertiesWritten();
+      written.insert(written.end(), names.begin(), names.end());
+    }
+    checkDivisionGate(result.config, result.division, written);
+  }
   detail::checkTissueShape(result);  // keys that assume a dimension, against the tissue's
   return result;
 }
@@ -88,6 +88,17 @@ SimulationConfig loadSimulationConfigString(const std::string& yaml, const std::
                                             const std::string& base_directory) {
   return readSimulationConfig(
       loadConfigString(yaml, overrides, tessellaSchema(), "simulation", "<string>", base_directory));
+}
+
+StageList makeStageList(const SimulationConfig& config) {
+  StageList stages(config.config);
+  for (const SectionUnit& unit : sectionUnits())
+    if (unit.make_stages) unit.make_stages(config, stages);
+  return stages;
+}
+
+std::vector<std::unique_ptr<Stage>> makeStages(const SimulationConfig& config) {
+  return makeStageList(config).release();
 }
 
 }  // namespace tessella::sim

@@ -1,11 +1,6 @@
 #include "tessella/sim/sections/tessella_schema.hpp"
 
-#include "tessella/sim/sections/coupling_section.hpp"
-#include "tessella/sim/sections/growth_section.hpp"
-#include "tessella/sim/sections/mesh_section.hpp"
-#include "tessella/sim/sections/output_section.hpp"
-#include "tessella/sim/sections/time_section.hpp"
-#include "tessella/sim/sections/tissue_section.hpp"
+#include "tessella/sim/sections/simulation_config.hpp"
 
 #ifndef TESSELLA_VERSION
 #error "TESSELLA_VERSION must be defined by the build (sim/CMakeLists.txt)"
@@ -27,14 +22,7 @@ Schema makeSchema() {
       .whenAbsent("drawn from the system's random source and recorded in run.yaml");
   declareTissueSection(s);
   declareTimeSection(s);
-  declareGrowthSection(s);
-  declareDivisionSection(s);
-  declareOutputSection(s);
-  declareDiffusionSection(s);
-  declareCompartmentSection(s);
-  declareElasticitySection(s);
-  declareMeshSection(s);
-  // Extension point: declare new sections here (declareGrowthSection(s); ...).
+  for (const SectionUnit& unit : sectionUnits()) unit.declare(s);
   return s;
 }
 }  // namespace

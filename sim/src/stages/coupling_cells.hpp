@@ -9,7 +9,7 @@
 #include <Eigen/Core>
 
 #include "tessella/mesh/fe_mesh.hpp"
-#include "tessella/sim/sections/coupling_section.hpp"
+#include "tessella/sim/stages/coupling_stages.hpp"
 #include "tessella/tissue/tissue.hpp"
 
 namespace tessella::sim::detail {

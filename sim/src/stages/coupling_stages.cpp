@@ -2,14 +2,23 @@
 
 #include <cmath>
 
-#include "../sections/reaction_terms.hpp"
 #include "coupling_cells.hpp"
+#include "reaction_terms.hpp"
 #include "tessella/solvers/compartment_transport.hpp"
 #include "tessella/solvers/elasticity.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
 
 namespace tessella::sim {
+
+const std::vector<std::string>& boundaryRegionNames() {
+  static const std::vector<std::string> names = {"all", "x_min", "x_max", "y_min", "y_max", "z_min", "z_max"};
+  return names;
+}
+
+const char* boundaryRegionName(BoundaryRegion region) {
+  return boundaryRegionNames()[static_cast<std::size_t>(region)].c_str();
+}
 
 bool SolveSchedule::due(const StepContext& context) {
   if (!start_) {
@@ -39,6 +48,12 @@ DiffusionStage::DiffusionStage(DiffusionSpec spec, std::shared_ptr<FieldMesh> me
     }
     reaction_ = std::make_shared<detail::ReactionTerms>(names, expressions, keys);  // compiled once per stage
   }
+}
+
+std::vector<std::string> DiffusionStage::cellPropertiesWritten() const {
+  std::vector<std::string> names;
+  for (const SpeciesSpec& sp : spec_.species) names.insert(names.end(), {sp.name, sp.name + "_amount"});
+  return names;
 }
 
 void DiffusionStage::prepare(Tissue& tissue, double /*time*/) {
@@ -130,6 +145,10 @@ void DiffusionStage::apply(Tissue& tissue, const StepContext& context) {
 
 CompartmentStage::CompartmentStage(CompartmentSpec spec) : spec_(std::move(spec)), schedule_(spec_.every) {}
 
+std::vector<std::string> CompartmentStage::cellPropertiesWritten() const {
+  return {spec_.field, spec_.field + "_amount"};
+}
+
 void CompartmentStage::prepare(Tissue& tissue, double /*time*/) {
   const std::string& f = spec_.field;
   {
@@ -216,6 +235,12 @@ void CompartmentStage::apply(Tissue& tissue, const StepContext& context) {
 ElasticityStage::ElasticityStage(ElasticitySpec spec, std::shared_ptr<FieldMesh> mesh)
     : MeshFieldStage(std::move(mesh)), spec_(std::move(spec)), schedule_(spec_.every) {}
 
+const std::vector<std::string>& ElasticityStage::stressPropertyNames() {
+  static const std::vector<std::string> names = {"stress_xx", "stress_yy", "stress_zz",           "stress_yz",
+                                                 "stress_xz", "stress_xy", "stress_max_principal"};
+  return names;
+}
+
 void ElasticityStage::apply(Tissue& tissue, const StepContext& context) {
   if (!schedule_.due(context)) return;
   mesh_->update(tissue);
@@ -245,13 +270,13 @@ void ElasticityStage::apply(Tissue& tissue, const StepContext& context) {
   const ElasticityResult r = solveElasticity(mesh, p);
   const char* axes[] = {"displacement_x", "displacement_y", "displacement_z"};
   for (int a = 0; a < 3; ++a) mesh_->setField(axes[a], r.displacement.col(a), false);
-  const char* names[] = {"stress_xx", "stress_yy", "stress_zz", "stress_yz", "stress_xz", "stress_xy"};
+  const std::vector<std::string>& names = stressPropertyNames();
   for (int k = 0; k < 6; ++k) {
-    auto& column = detail::doubleColumn(tissue, names[k], DivisionPolicy::Copy);
+    auto& column = detail::doubleColumn(tissue, names[static_cast<std::size_t>(k)], DivisionPolicy::Copy);
     for (CellId c : tissue.cells())
       column[c] = static_cast<Eigen::Index>(c.index()) < r.cell_stress.rows() ? r.cell_stress(c.index(), k) : 0.0;
   }
-  auto& top = detail::doubleColumn(tissue, "stress_max_principal", DivisionPolicy::Copy);
+  auto& top = detail::doubleColumn(tissue, names[6], DivisionPolicy::Copy);
   for (CellId c : tissue.cells())
     top[c] = static_cast<Eigen::Index>(c.index()) < r.principal_stress.rows() ? r.principal_stress(c.index(), 2) : 0.0;
   schedule_.solved(context);

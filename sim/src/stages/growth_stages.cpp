@@ -1,26 +1,30 @@
 #include "tessella/sim/stages/growth_stages.hpp"
 
-#include <cmath>
+#include <stdexcept>
 #include <typeindex>
 
 namespace tessella::sim {
 
-GrowthStage::GrowthStage(const GrowthSpec& spec) : integrator_(spec.field, spec.options) {}
+GrowthStage::GrowthStage(std::shared_ptr<const growth::VelocityField> field, growth::GrowthOptions options)
+    : integrator_(std::make_shared<growth::GrowthIntegrator>(std::move(field), std::move(options))) {}
+
+GrowthStage::GrowthStage(std::shared_ptr<growth::GrowthIntegrator> integrator) : integrator_(std::move(integrator)) {
+  if (!integrator_) throw std::invalid_argument("GrowthStage: null integrator");
+}
 
 void GrowthStage::apply(Tissue& tissue, const StepContext& context) {
   // The integrator runs from the tissue's clock; the Simulation keeps it at
   // the step's start time.
   tissue.setTime(context.time);
-  integrator_.step(tissue, context.dt);
+  integrator_->step(tissue, context.dt);
 }
 
 namespace {
-growth::DivisionOptions withGate(const DivisionSpec& spec) {
-  growth::DivisionOptions options = spec.options;
-  if (spec.gate_field.empty()) return options;
+growth::DivisionOptions withGate(growth::DivisionOptions options, const std::optional<DivisionGate>& gate) {
+  if (!gate) return options;
   // The field is a cell property a solver stage writes after each solve;
   // until it exists (before the first solve) the gate stays closed.
-  options.gate = [name = spec.gate_field, above = spec.gate_above](const Tissue& t, CellId c) {
+  options.gate = [name = gate->field, above = gate->above](const Tissue& t, CellId c) {
     const PropertyColumnBase* column = t.cellProperties().find(name);
     if (!column || column->type() != std::type_index(typeid(double))) return false;
     return t.cellProperties().get<double>(name)[c] > above;
@@ -29,13 +33,19 @@ growth::DivisionOptions withGate(const DivisionSpec& spec) {
 }
 }  // namespace
 
-DivisionStage::DivisionStage(const DivisionSpec& spec)
-    : scheduler_(*spec.threshold, spec.rule, withGate(spec)) {}
+DivisionStage::DivisionStage(std::shared_ptr<const growth::DivisionRule> rule, growth::SizeThreshold threshold,
+                             growth::DivisionOptions options, std::optional<DivisionGate> gate)
+    : scheduler_(std::make_shared<growth::DivisionScheduler>(std::move(threshold), std::move(rule),
+                                                             withGate(std::move(options), gate))) {}
+
+DivisionStage::DivisionStage(std::shared_ptr<growth::DivisionScheduler> scheduler) : scheduler_(std::move(scheduler)) {
+  if (!scheduler_) throw std::invalid_argument("DivisionStage: null scheduler");
+}
 
 void DivisionStage::apply(Tissue& tissue, const StepContext& context) {
   tissue.setTime(context.end_time);  // daughters are born at the end of the step
-  const growth::DivisionReport report = context.rng ? scheduler_.step(tissue, geometry_, *context.rng)
-                                                    : scheduler_.step(tissue, geometry_);
+  const growth::DivisionReport report = context.rng ? scheduler_->step(tissue, geometry_, *context.rng)
+                                                    : scheduler_->step(tissue, geometry_);
   divisions_ += report.divided.size();
   skipped_ += report.skipped.size();
 }

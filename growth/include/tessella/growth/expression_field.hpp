@@ -24,6 +24,11 @@ struct ExpressionFieldSpec {
   std::map<std::string, double> parameters{};
 };
 
+/// "r=0.1, k=2" -> {r: 0.1, k: 2}: named constants written as text (the
+/// expression field's `parameters`). A ParamError at "parameters" quotes the
+/// item that is not name=number or names one given twice.
+std::map<std::string, double> parseExpressionParameters(const std::string& text);
+
 class ExpressionField final : public VelocityField {
  public:
   explicit ExpressionField(ExpressionFieldSpec spec);

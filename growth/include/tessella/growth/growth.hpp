@@ -1,10 +1,10 @@
 #pragma once
 // Everything in growth/: velocity fields, the integrator, harmonic
-// interpolation, division rules, thresholds and the scheduler.
+// interpolation, division rules, thresholds, the scheduler and the tables
+// that name them (registries.hpp).
 
 #include "tessella/growth/besson_dumais_rule.hpp"
 #include "tessella/growth/bump_field.hpp"
-#include "tessella/growth/division_rule_factory.hpp"
 #include "tessella/growth/division_scheduler.hpp"
 #include "tessella/growth/division_walls.hpp"
 #include "tessella/growth/expression_field.hpp"
@@ -16,6 +16,7 @@
 #include "tessella/growth/meristem_field.hpp"
 #include "tessella/growth/perpendicular_wall_rule.hpp"
 #include "tessella/growth/radial_field.hpp"
+#include "tessella/growth/registries.hpp"
 #include "tessella/growth/random_direction_rule.hpp"
 #include "tessella/growth/shortest_wall_rule.hpp"
 #include "tessella/growth/size_threshold.hpp"

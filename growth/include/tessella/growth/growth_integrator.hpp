@@ -17,6 +17,7 @@
 #include "tessella/growth/harmonic_interpolation.hpp"
 #include "tessella/growth/surface_projection.hpp"
 #include "tessella/growth/velocity_field.hpp"
+#include "tessella/tissue/enum_table.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/tissue.hpp"
@@ -29,8 +30,13 @@ enum class VelocitySource {
   HarmonicFromControl  ///< the field at control vertices, harmonic interpolation elsewhere
 };
 
+/// The names of the schemes: euler, heun (also accepted: rk2).
+const EnumTable<IntegrationScheme>& integrationSchemes();
+/// The names of the velocity sources: field, boundary (HarmonicFromControl).
+const EnumTable<VelocitySource>& velocitySources();
+
 const char* schemeName(IntegrationScheme s);
-/// "euler" / "heun" (also "rk2"); InputError naming the value otherwise.
+/// "euler" / "heun" (also "rk2"); InputError naming the value and the known names otherwise.
 IntegrationScheme parseScheme(const std::string& name);
 
 struct GrowthOptions {
@@ -55,8 +61,9 @@ class GrowthIntegrator {
   GrowthIntegrator(std::shared_ptr<const VelocityField> field, GrowthOptions options = {});
 
   /// Advances the tissue from t.time() to t.time() + dt and sets the clock to
-  /// the new time. On a GeometryError the positions and the clock are
-  /// restored. dt must be positive and finite (InputError otherwise).
+  /// the new time. On any error (a GeometryError, or an exception from the
+  /// field or the projection) the positions and the clock are restored.
+  /// dt must be positive and finite (InputError otherwise).
   void step(Tissue& t, double dt);
 
   /// Velocities the integrator uses for the current positions at time `time`

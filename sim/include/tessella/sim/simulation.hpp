@@ -24,13 +24,15 @@
 #include <vector>
 
 #include "tessella/io/vtu.hpp"
-#include "tessella/sim/sections/simulation_config.hpp"
-#include "tessella/sim/sections/time_section.hpp"
 #include "tessella/sim/stages/stage.hpp"
+#include "tessella/sim/time_span.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/tissue.hpp"
 
 namespace tessella::sim {
+
+/// A validated config read into its sections (sections/simulation_config.hpp).
+struct SimulationConfig;
 
 /// A stage failed: names the stage, the step and the time, then the cause.
 class SimulationError : public Error {
@@ -57,7 +59,9 @@ class Simulation {
   Simulation(Tissue tissue, SimulationParameters parameters);
 
   /// From a validated config: builds the tissue its generator describes and
-  /// the stages its sections ask for (makeStages). Throws ConfigError.
+  /// the stages its sections ask for (makeStages). Defined with the config
+  /// (run/build_simulation.cpp): include sections/simulation_config.hpp to
+  /// call fromConfig. Throws ConfigError.
   static Simulation fromConfig(const SimulationConfig& config);
   static Simulation fromFile(const std::string& path, const std::vector<std::string>& overrides = {});
   static Simulation fromYaml(const std::string& yaml, const std::vector<std::string>& overrides = {},
@@ -126,9 +130,5 @@ class Simulation {
 /// step time is the uninterrupted run's, bit for bit; returns the random stream to continue when `seed` is the saved seed
 /// (else ""). Changes nothing and returns "" for a state without these keys.
 std::string continueRunState(const io::RunState& state, double snapshot_time, std::uint64_t seed, TimeSpan& time);
-
-/// The stages a config asks for, in execution order (growth, division, then
-/// the solver sections).
-std::vector<std::unique_ptr<Stage>> makeStages(const SimulationConfig& config);
 
 }  // namespace tessella::sim

@@ -17,6 +17,7 @@
 #include <variant>
 #include <vector>
 
+#include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/vec3.hpp"
 
 namespace tessella {
@@ -104,5 +105,30 @@ class ParamValues {
 /// and the value for an unknown name, a wrong type, a value out of range or
 /// not among the choices, or a missing required parameter.
 ParamValues completeParams(const std::vector<ParamSpec>& specs, const ParamValues& values, const std::string& owner);
+
+/// An InputError caused by one parameter's value, naming it, so a reader
+/// can point at that parameter's key (sim/ makes it a ConfigError there).
+class ParamError : public InputError {
+ public:
+  ParamError(std::string param, const std::string& what) : InputError(what), param_(std::move(param)) {}
+  const std::string& param() const { return param_; }
+
+ private:
+  std::string param_;
+};
+
+/// make(), with an InputError it throws blamed on `param` (a ParamError
+/// stays as it is): for a factory whose constructor checks its arguments
+/// together but whose likely culprit is one parameter.
+template <typename Make>
+auto blameParam(const std::string& param, Make&& make) {
+  try {
+    return make();
+  } catch (const ParamError&) {
+    throw;
+  } catch (const InputError& e) {
+    throw ParamError(param, e.what());
+  }
+}
 
 }  // namespace tessella

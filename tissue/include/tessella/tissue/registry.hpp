@@ -22,6 +22,21 @@
 
 namespace tessella {
 
+/// The `name` of every entry, in order (registries and enum tables).
+template <typename Entries>
+std::vector<std::string> entryNames(const Entries& entries) {
+  std::vector<std::string> out;
+  for (const auto& e : entries) out.push_back(e.name);
+  return out;
+}
+
+/// "a, b, c".
+inline std::string joinNames(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
 template <typename Factory>
 struct RegistryEntry {
   std::string name;
@@ -48,17 +63,9 @@ class Registry {
 
   const std::string& kind() const { return kind_; }
   const std::vector<Entry>& entries() const { return entries_; }
-  std::vector<std::string> names() const {
-    std::vector<std::string> out;
-    for (const auto& e : entries_) out.push_back(e.name);
-    return out;
-  }
+  std::vector<std::string> names() const { return entryNames(entries_); }
   /// "a, b, c": the names for messages and docs.
-  std::string namesText() const {
-    std::string out;
-    for (const auto& e : entries_) out += (out.empty() ? "" : ", ") + e.name;
-    return out;
-  }
+  std::string namesText() const { return joinNames(names()); }
 
   const Entry* find(std::string_view name) const {
     for (const auto& e : entries_)

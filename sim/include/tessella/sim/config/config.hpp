@@ -14,6 +14,7 @@
 #include "tessella/sim/config/config_error.hpp"
 #include "tessella/sim/config/config_value.hpp"
 #include "tessella/sim/config/schema.hpp"
+#include "tessella/tissue/parameters.hpp"
 #include "tessella/tissue/vec3.hpp"
 
 namespace tessella::sim {
@@ -55,6 +56,11 @@ class Config {
   const std::string& getString(const std::string& path) const;
   /// Vec2 keys give z = 0.
   Vec3 getVec(const std::string& path) const;
+
+  /// The values of `params` under `section` (the key `<section>.<name>` of
+  /// each parameter that has a value), for a registry entry's factory
+  /// (tessella/tissue/registry.hpp; sim/config/registry_config.hpp).
+  ParamValues params(const std::string& section, const std::vector<ParamSpec>& params) const;
 
   /// Whether a key or section matters under the current values (all the
   /// conditions along its path hold).

@@ -17,9 +17,9 @@
 // (diffusion.species_map.<name>.decay); the loader records the entry names
 // given, in file order (Config::entryNames).
 //
-// Extension point: a new config section is one file that declares its keys
-// (see tissue_section.hpp, time_section.hpp, output_section.hpp) and one line
-// in tessellaSchema() (tessella_schema.cpp).
+// A new config section is a unit {declare its keys, read them, make its
+// stages} in the table sectionUnits() (sections/simulation_config.hpp);
+// docs/extending.md, "Add a solver section".
 
 #include <deque>
 #include <optional>

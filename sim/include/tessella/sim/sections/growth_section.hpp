@@ -17,7 +17,9 @@
 #include "tessella/growth/velocity_field.hpp"
 #include "tessella/sim/config/config.hpp"
 #include "tessella/sim/config/schema.hpp"
+#include "tessella/sim/sections/section_unit.hpp"
 #include "tessella/sim/sections/tissue_section.hpp"
+#include "tessella/sim/stages/growth_stages.hpp"
 
 namespace tessella::sim {
 
@@ -32,11 +34,8 @@ struct DivisionSpec {
   std::shared_ptr<const growth::DivisionRule> rule;
   std::optional<growth::SizeThreshold> threshold;
   growth::DivisionOptions options;
-  /// division.gate: a cell divides only where the double cell property
-  /// `gate_field` (a solver field's cell average) exceeds `gate_above`.
-  /// Empty: no gate.
-  std::string gate_field;
-  double gate_above = 0.0;
+  /// division.gate; none: no gate.
+  std::optional<DivisionGate> gate;
 };
 
 void declareGrowthSection(Schema& schema);
@@ -44,8 +43,12 @@ void declareDivisionSection(Schema& schema);
 /// `tissue` is needed for growth.surface: dome (the dome the tissue was built on).
 GrowthSpec readGrowthSection(const Config& config, const TissueSpec& tissue);
 DivisionSpec readDivisionSection(const Config& config);
-/// division.gate.field must name one of the cell properties the solver
-/// sections write (`fields`); ConfigError at the key otherwise.
+/// The growth stage, when growth.field is not none.
+void addGrowthStage(const GrowthSpec& growth, StageList& stages);
+/// The division stage, when division.rule is not none.
+void addDivisionStage(const DivisionSpec& division, StageList& stages);
+/// division.gate.field must name one of the cell properties the stages write
+/// (`fields`, Stage::cellPropertiesWritten); ConfigError at the key otherwise.
 void checkDivisionGate(const Config& config, const DivisionSpec& division, const std::vector<std::string>& fields);
 
 }  // namespace tessella::sim

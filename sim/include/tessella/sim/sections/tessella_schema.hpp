@@ -6,11 +6,8 @@
 namespace tessella::sim {
 
 /// Built once, on first use. Top-level keys: rng_seed, tessella_version;
-/// sections: tissue, time, output (see docs/config.md).
-///
-/// Extension point: a module adding a config section (e.g. growth:,
-/// division:) writes <name>_section.hpp/.cpp with declare<Name>Section() and
-/// read<Name>Section(), and calls the former in tessella_schema.cpp.
+/// sections: tissue, time, then those of the table sectionUnits()
+/// (sections/simulation_config.hpp), in its order (see docs/config.md).
 const Schema& tessellaSchema();
 
 /// Version of the library, written to run.yaml.

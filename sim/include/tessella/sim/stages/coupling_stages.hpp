@@ -1,5 +1,6 @@
 #pragma once
-// The solver stages of a Simulation (see stage.hpp, coupling_section.hpp).
+// The solver stages of a Simulation (see stage.hpp) and their parameters,
+// which the solver sections read (coupling_section.hpp) or a model builds.
 // Each solves every `every` steps, after growth and division, over the time
 // since its previous solve:
 //   DiffusionStage    remeshes the tissue if it changed (FieldMesh, shared),
@@ -13,18 +14,135 @@
 //   ElasticityStage   remeshes if needed and solves the current shape;
 //                     displacements on the FieldMesh, stresses per cell.
 
+#include <array>
 #include <cstddef>
+#include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
-#include "tessella/sim/sections/coupling_section.hpp"
 #include "tessella/sim/stages/field_mesh.hpp"
 #include "tessella/sim/stages/stage.hpp"
+#include "tessella/solvers/assembly.hpp"
 #include "tessella/solvers/diffusion_reaction.hpp"
+#include "tessella/solvers/elasticity.hpp"
+#include "tessella/tissue/vec3.hpp"
 
 namespace tessella::sim {
+
+// --- the stages' parameters (the solver sections read them from YAML) --------
+
+/// A part of the tissue boundary chosen by position: every boundary wall
+/// facet (`all`), or the facets lying on a face of the tissue's bounding box
+/// (`x_min` = the facets whose nodes all have x = the smallest x, within
+/// 1e-6 of the box diagonal).
+enum class BoundaryRegion { All, XMin, XMax, YMin, YMax, ZMin, ZMax };
+const std::vector<std::string>& boundaryRegionNames();
+const char* boundaryRegionName(BoundaryRegion region);
+
+struct RegionValue {
+  BoundaryRegion region = BoundaryRegion::All;
+  double value = 0.0;
+};
+
+/// A coefficient uniform over the tissue, or by cell type: the value of the
+/// cell property named by the section's `by_property` (an integer) selects the entry of
+/// `by_type`, and types not listed take `uniform`.
+struct CellCoefficient {
+  double uniform = 0.0;
+  std::map<std::int64_t, double> by_type;
+};
+
+/// Source cells: chosen once, at the first solve, among the cells whose
+/// centroid lies within `radius` of `center` and the cells whose lineage id is
+/// listed; marked with the cell property `<name>_source` (copied at
+/// division, so daughters of a source cell are sources). They get the extra
+/// production `rate`.
+struct SourceSpec {
+  double rate = 0.0;
+  Vec3 center = Vec3::Zero();
+  double radius = 0.0;
+  std::vector<std::int64_t> lineage_ids;
+};
+
+/// One diffusing species: its name (the name of its outputs and of its
+/// variable in reaction expressions), coefficients and boundary conditions.
+struct SpeciesSpec {
+  std::string name;
+  /// Where its keys are in the config: "diffusion" (single-species form) or
+  /// "diffusion.species_map.<name>"; error messages name keys under it.
+  std::string key_prefix = "diffusion";
+  double initial = 0.0;
+  CellCoefficient diffusivity{1.0, {}}, decay{0.0, {}}, production{0.0, {}};
+  SourceSpec source;
+  std::vector<RegionValue> dirichlet, flux, robin;
+  double robin_exterior = 0.0;
+  /// Reaction rate r(species...) added to du/dt, a muparser expression in
+  /// the species names; empty: none. Checked when the config is read.
+  std::string reaction;
+};
+
+struct DiffusionSpec {
+  /// Empty: no diffusion stage. Several species share the mesh, the solver
+  /// (one DiffusionReaction) and the keys below.
+  std::vector<SpeciesSpec> species;
+  bool steady = false;
+  TimeScheme scheme = TimeScheme::ImplicitEuler;
+  MassType mass = MassType::Consistent;
+  std::size_t every = 1;
+  /// Solver step; unset: one step over the whole time since the last solve.
+  std::optional<double> dt;
+  /// Integer cell property selecting per-type coefficients; empty: uniform.
+  std::string type_property;
+
+  bool hasReaction() const {
+    for (const SpeciesSpec& s : species)
+      if (!s.reaction.empty()) return true;
+    return false;
+  }
+};
+
+struct CompartmentSpec {
+  /// Empty: no compartment stage.
+  std::string field;
+  TimeScheme scheme = TimeScheme::ImplicitEuler;
+  std::size_t every = 1;
+  std::optional<double> dt;
+  double initial = 0.0;
+  std::string type_property;
+  CellCoefficient permeability{1.0, {}}, decay{0.0, {}}, production{0.0, {}};
+  SourceSpec source;
+  /// Polar (active) transport: a pumping cell moves `polar_rate` * wall area
+  /// * its concentration per unit time across each wall to a neighbour whose
+  /// centroid lies downstream along `polar_direction`.
+  double polar_rate = 0.0;
+  Vec3 polar_direction = Vec3(1, 0, 0);
+  /// Lineage ids of the pumping cells (from polar.cells); empty with
+  /// polar_all: every cell pumps.
+  std::vector<std::int64_t> polar_cells;
+  bool polar_all = true;
+};
+
+struct ElasticitySpec {
+  bool enabled = false;
+  ElasticModel model = ElasticModel::Solid;
+  std::size_t every = 1;
+  std::string type_property;
+  CellCoefficient young{1.0, {}}, poisson{0.3, {}};
+  double thickness = 1.0;
+  /// Components (x, y, z) fixed to zero on each region.
+  std::vector<std::pair<BoundaryRegion, std::array<bool, 3>>> fixed;
+  /// A region displaced along its own axis (x_max: +x) by `stretch`.
+  std::optional<BoundaryRegion> stretch_region;
+  double stretch = 0.0;
+  std::optional<BoundaryRegion> traction_region;
+  Vec3 traction = Vec3::Zero();
+};
+
+// --- the stages -------------------------------------------------------------
 
 namespace detail {
 class ReactionTerms;
@@ -63,6 +181,8 @@ class DiffusionStage final : public MeshFieldStage {
  public:
   DiffusionStage(DiffusionSpec spec, std::shared_ptr<FieldMesh> mesh);
   std::string name() const override { return "diffusion"; }
+  /// <species> (cell average) and <species>_amount, for every species.
+  std::vector<std::string> cellPropertiesWritten() const override;
   /// Marks the source cells; transient: meshes and sets the initial field.
   void prepare(Tissue& tissue, double time) override;
   void apply(Tissue& tissue, const StepContext& context) override;
@@ -85,6 +205,8 @@ class CompartmentStage final : public Stage {
  public:
   explicit CompartmentStage(CompartmentSpec spec);
   std::string name() const override { return "compartments"; }
+  /// <field> (concentration) and <field>_amount.
+  std::vector<std::string> cellPropertiesWritten() const override;
   /// Marks source and pumping cells and sets the initial amounts.
   void prepare(Tissue& tissue, double time) override;
   void apply(Tissue& tissue, const StepContext& context) override;
@@ -99,6 +221,12 @@ class ElasticityStage final : public MeshFieldStage {
  public:
   ElasticityStage(ElasticitySpec spec, std::shared_ptr<FieldMesh> mesh);
   std::string name() const override { return "elasticity"; }
+  /// stressPropertyNames().
+  std::vector<std::string> cellPropertiesWritten() const override { return stressPropertyNames(); }
+  /// The cell-averaged stress: the six components in the solver's order
+  /// (stress_xx, stress_yy, stress_zz, stress_yz, stress_xz, stress_xy), then
+  /// the largest principal stress (stress_max_principal).
+  static const std::vector<std::string>& stressPropertyNames();
   void apply(Tissue& tissue, const StepContext& context) override;
   std::size_t solves() const { return schedule_.solves(); }
 

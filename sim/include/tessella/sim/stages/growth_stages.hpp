@@ -5,31 +5,53 @@
 //   DivisionStage  divides the cells over their size threshold
 //                  (growth::DivisionScheduler), drawing from the run's
 //                  random stream; daughters are born at the step's end time.
+// Both are built from growth/ objects (the growth section builds them from
+// its keys; a C++ or Python model from its own field, rule and threshold),
+// or share an integrator / scheduler a model built and keeps using.
 
 #include <cstddef>
 #include <memory>
+#include <optional>
+#include <string>
 
+#include "tessella/growth/division_rule.hpp"
 #include "tessella/growth/division_scheduler.hpp"
 #include "tessella/growth/growth_integrator.hpp"
-#include "tessella/sim/sections/growth_section.hpp"
+#include "tessella/growth/size_threshold.hpp"
+#include "tessella/growth/velocity_field.hpp"
 #include "tessella/sim/stages/stage.hpp"
 
 namespace tessella::sim {
 
 class GrowthStage final : public Stage {
  public:
-  explicit GrowthStage(const GrowthSpec& spec);
+  GrowthStage(std::shared_ptr<const growth::VelocityField> field, growth::GrowthOptions options = {});
+  /// Steps with `integrator`, shared with its builder.
+  explicit GrowthStage(std::shared_ptr<growth::GrowthIntegrator> integrator);
   std::string name() const override { return "growth"; }
+  /// Throws what the integrator throws, the tissue left as it was.
   void apply(Tissue& tissue, const StepContext& context) override;
-  const growth::GrowthIntegrator& integrator() const { return integrator_; }
+  const growth::GrowthIntegrator& integrator() const { return *integrator_; }
 
  private:
-  growth::GrowthIntegrator integrator_;
+  std::shared_ptr<growth::GrowthIntegrator> integrator_;
+};
+
+/// A cell divides only where the double cell property `field` (a solver
+/// field's cell average) exceeds `above`; until the property exists (before
+/// the first solve) no cell divides.
+struct DivisionGate {
+  std::string field;
+  double above = 0.0;
 };
 
 class DivisionStage final : public Stage {
  public:
-  explicit DivisionStage(const DivisionSpec& spec);
+  /// A gate replaces options.gate.
+  DivisionStage(std::shared_ptr<const growth::DivisionRule> rule, growth::SizeThreshold threshold,
+                growth::DivisionOptions options = {}, std::optional<DivisionGate> gate = std::nullopt);
+  /// Divides with `scheduler`, shared with its builder.
+  explicit DivisionStage(std::shared_ptr<growth::DivisionScheduler> scheduler);
   std::string name() const override { return "division"; }
   void apply(Tissue& tissue, const StepContext& context) override;
   /// Totals over the run so far.
@@ -37,7 +59,7 @@ class DivisionStage final : public Stage {
   std::size_t skipped() const { return skipped_; }
 
  private:
-  growth::DivisionScheduler scheduler_;
+  std::shared_ptr<growth::DivisionScheduler> scheduler_;
   GeometryCache geometry_;
   std::size_t divisions_ = 0, skipped_ = 0;
 };

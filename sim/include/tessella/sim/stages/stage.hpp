@@ -3,11 +3,14 @@
 // a solve...). Stages run in the order they were added.
 //
 // The built-in stages (growth_stages.hpp, coupling_stages.hpp) wrap growth/
-// and solvers/; makeStages() turns config sections into them.
+// and solvers/; each is built from objects (a velocity field, a rule and a
+// threshold, a solver's parameters), by a model in C++ or Python or by the
+// YAML sections (makeStages(), sections/simulation_config.hpp).
 
 #include <cstddef>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "tessella/tissue/tissue.hpp"
 
@@ -37,6 +40,10 @@ class Stage {
   /// time, before any step: a stage with state on the tissue (a solver's
   /// initial field) sets it up here, so the initial snapshot shows it.
   virtual void prepare(Tissue& /*tissue*/, double /*time*/) {}
+  /// The double cell properties this stage writes (a solver's cell averages,
+  /// amounts, stresses): values other stages may read, such as a division
+  /// gate. Marks (source cells) are not values and are not listed.
+  virtual std::vector<std::string> cellPropertiesWritten() const { return {}; }
 };
 
 }  // namespace tessella::sim

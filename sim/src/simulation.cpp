@@ -4,10 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "../config/exact_text.hpp"
-#include "tessella/mesh/mesh_tissue.hpp"
-#include "tessella/sim/config/config_error.hpp"
-#include "tessella/sim/sections/mesh_section.hpp"
+#include "config/exact_text.hpp"
+#include "tessella/sim/config/config_value.hpp"
 
 namespace tessella::sim {
 
@@ -80,42 +78,6 @@ Simulation::Simulation(Tissue tissue, SimulationParameters parameters)
     if (saved.fail()) throw InputError("Simulation: the saved random stream (rng.stream) is not a valid state");
   }
   tissue_.setTime(t.start);
-}
-
-namespace {
-// A mesh the size bounds make too large is refused before the stages start,
-// not at the first solve (after output began); named at the size key.
-void checkMeshSize(const SimulationConfig& config, const Tissue& tissue) {
-  const Config& c = config.config;
-  if (config.diffusion.species.empty() && !config.elasticity.enabled && !c.getBool("mesh.output")) return;
-  const MeshOptions o = meshOptionsFromConfig(c);
-  try {
-    checkElementLimit(tissue, o);
-  } catch (const InputError& e) {
-    const bool by_volume = tissue.dim() == 3 && o.max_volume > 0 &&
-                           (o.max_edge_length == 0 || o.volume_method == VolumeMethod::WholeTissue);
-    throw c.errorAt(by_volume ? "mesh.max_volume" : "mesh.max_edge_length", e.what());
-  }
-}
-}  // namespace
-
-Simulation Simulation::fromConfig(const SimulationConfig& config) {
-  SimulationParameters parameters{config.time, config.rng_seed, {}, {}};
-  if (const auto* snapshot = std::get_if<SnapshotSpec>(&config.tissue)) parameters.rng_state = snapshot->rng_state;
-  if (const std::optional<Dome> dome = tissueDome(config.tissue)) parameters.carried = domeRunState(*dome);
-  Simulation sim(buildTissue(config.tissue, config.rng_seed, config.config), parameters);
-  checkMeshSize(config, sim.tissue());
-  for (auto& stage : makeStages(config)) sim.addStage(std::move(stage));
-  return sim;
-}
-
-Simulation Simulation::fromFile(const std::string& path, const std::vector<std::string>& overrides) {
-  return fromConfig(loadSimulationConfigFile(path, overrides));
-}
-
-Simulation Simulation::fromYaml(const std::string& yaml, const std::vector<std::string>& overrides,
-                                const std::string& base_directory) {
-  return fromConfig(loadSimulationConfigString(yaml, overrides, base_directory));
 }
 
 void Simulation::addStage(std::unique_ptr<Stage> stage) {
