@@ -15,9 +15,7 @@
 namespace tessella {
 
 Tissue GeneratorFactory::operator()(const ParamValues& params, std::uint64_t rng_seed) const {
-  if (check)
-    if (const std::optional<ParamProblem> problem = check(params, [](const std::string& p) { return p; }))
-      throw InputError(problem->param + ": " + problem->message);
+  if (check) check(params, [](const std::string& p) { return p; });
   return build(params, rng_seed);
 }
 
@@ -31,17 +29,16 @@ std::size_t count(const ParamValues& p, const std::string& name) {
   return static_cast<std::size_t>(p.getInt(name));
 }
 
-std::optional<ParamProblem> cellCountProblem(const ParamValues& p, const std::vector<std::string>& counts) {
+void checkCellCount(const ParamValues& p, const std::vector<std::string>& counts) {
   double cells = 1;
   std::string product;
   for (const std::string& n : counts) {
     cells *= static_cast<double>(p.getInt(n));
     product += (product.empty() ? "" : " * ") + n;
   }
-  if (cells <= kMaxGeneratedCells) return std::nullopt;
-  return ParamProblem{counts.front(), product + " = " + formatParamValue(cells) +
-                                          " cells is more than the limit of " +
-                                          formatParamValue(kMaxGeneratedCells)};
+  if (cells > kMaxGeneratedCells)
+    throw ParamError(counts.front(), product + " = " + formatParamValue(cells) + " cells is more than the limit of " +
+                                         formatParamValue(kMaxGeneratedCells));
 }
 
 // --- Seed points of Voronoi and dome tissues ---------------------------------
@@ -73,15 +70,13 @@ std::vector<ParamSpec> seedParams() {
   };
 }
 
-std::optional<ParamProblem> seedProblem(const ParamValues& p, const ParamNamer& key, int dim) {
+void checkSeeds(const ParamValues& p, const ParamNamer& key, int dim) {
   if (p.has("seed_file")) {
     if (p.has("count"))
-      return ParamProblem{"count", "give either " + key("count") + " or " + key("seed_file") + ", not both"};
+      throw ParamError("count", "give either " + key("count") + " or " + key("seed_file") + ", not both");
   } else if (dim == 3 && p.getInt("count") < 4) {
-    return ParamProblem{"count", "a 3D Voronoi tissue needs at least 4 seeds, got " +
-                                     std::to_string(p.getInt("count"))};
+    throw ParamError("count", "a 3D Voronoi tissue needs at least 4 seeds, got " + std::to_string(p.getInt("count")));
   }
-  return std::nullopt;
 }
 
 VoronoiOptions voronoiOptions(const ParamValues& p) {
@@ -98,19 +93,30 @@ std::vector<Vec3> seedPoints(const ParamValues& p, const Domain& domain, int dim
   return randomSeeds(domain, count(p, "count"), rng_seed);
 }
 
+// A tissue made from seed points: what goes wrong with seeds read from a file
+// (malformed, outside the domain, duplicates) is blamed on the file.
+template <typename Make>
+Tissue fromSeeds(const ParamValues& p, Make&& make) {
+  if (p.has("seed_file")) return blameParam("seed_file", make);
+  return make();
+}
+
 // --- Voronoi domains: a table of their own, read by the voronoi entry --------
 
 struct DomainFactory {
   int dim = 2;
-  /// The Voronoi tissue of the seeds `seeds` reads, in the domain `domain` reads.
+  /// The Voronoi tissue of the seeds the voronoi parameters `seeds` give, in
+  /// the domain its own parameters `domain` give.
   std::function<Tissue(const ParamValues& domain, const ParamValues& seeds, std::uint64_t rng_seed)> build;
-  /// min < max of a rectangle or box; empty otherwise.
+  /// The domain is given by corners `min` and `max`, which must be in order.
   bool has_min_max = false;
 };
 
 template <typename Domain>
 Tissue voronoiIn(const Domain& domain, const ParamValues& seeds, int dim, std::uint64_t rng_seed) {
-  return voronoiTissue(seedPoints(seeds, domain, dim, rng_seed), domain, voronoiOptions(seeds));
+  return fromSeeds(seeds, [&] {
+    return voronoiTissue(seedPoints(seeds, domain, dim, rng_seed), domain, voronoiOptions(seeds));
+  });
 }
 
 const Registry<DomainFactory>& voronoiDomains() {
@@ -202,24 +208,24 @@ ParamValues groupValues(const ParamValues& p, const std::string& prefix) {
   return out;
 }
 
-std::optional<ParamProblem> voronoiProblem(const ParamValues& p, const ParamNamer& key) {
+void checkVoronoi(const ParamValues& p, const ParamNamer& key) {
   const std::string& name = p.getString("domain");
   const auto& domain = voronoiDomains().at(name);
   if (domain.make.has_min_max) {
     const auto &lo = p.getList(name + ".min"), &hi = p.getList(name + ".max");
     for (std::size_t i = 0; i < lo.size(); ++i)
       if (!(hi[i] > lo[i]))
-        return ParamProblem{name + ".max", "must exceed " + key(name + ".min") + " = " + formatParamValue(lo) +
-                                               " in every coordinate, got " + formatParamValue(hi)};
+        throw ParamError(name + ".max", "must exceed " + key(name + ".min") + " = " + formatParamValue(lo) +
+                                            " in every coordinate, got " + formatParamValue(hi));
   }
-  return seedProblem(p, key, domain.make.dim);
+  checkSeeds(p, key, domain.make.dim);
 }
 
 // --- Dome ---------------------------------------------------------------------
 
 Dome domeOf(const ParamValues& p) {
   Dome dome;
-  dome.shape = domeShapeFromName(p.getString("shape"));
+  dome.shape = domeShapes().parse(p.getString("shape"));
   dome.base_radius = p.getFloat("base_radius");
   dome.height = p.getFloat("height");
   dome.base_center = p.getVec3("base_center");
@@ -229,8 +235,8 @@ Dome domeOf(const ParamValues& p) {
 std::vector<ParamSpec> domeParams() {
   std::vector<ParamSpec> params{
       ParamSpec("shape", ParamType::Enum, "Profile of the dome.")
-          .oneOf(domeShapeNames())
-          .byDefault(domeShapeName(Dome::Shape::SphericalCap)),
+          .oneOf(domeShapes().names())
+          .byDefault(domeShapes().name(Dome::Shape::SphericalCap)),
       ParamSpec("base_radius", ParamType::Float, "Radius of the footprint disk.").byDefault(5.0).above(0),
       ParamSpec("height", ParamType::Float,
                 "Height of the summit above the base plane (a spherical cap needs height <= base_radius).")
@@ -242,20 +248,19 @@ std::vector<ParamSpec> domeParams() {
   return params;
 }
 
-std::optional<ParamProblem> domeProblem(const ParamValues& p, const ParamNamer& key) {
+void checkDomeParams(const ParamValues& p, const ParamNamer& key) {
   const Dome dome = domeOf(p);
   if (dome.shape == Dome::Shape::SphericalCap && dome.height > dome.base_radius)
-    return ParamProblem{"height", "a spherical cap cannot be higher than its base radius (" +
-                                      formatParamValue(dome.base_radius) + "), got " +
-                                      formatParamValue(dome.height) + "; use shape: " +
-                                      domeShapeName(Dome::Shape::Paraboloid)};
-  return seedProblem(p, key, 2);
+    throw ParamError("height", "a spherical cap cannot be higher than its base radius (" +
+                                   formatParamValue(dome.base_radius) + "), got " + formatParamValue(dome.height) +
+                                   "; use shape: " + domeShapes().name(Dome::Shape::Paraboloid));
+  checkSeeds(p, key, 2);
 }
 
 Tissue buildDome(const ParamValues& p, std::uint64_t rng_seed) {
   const Dome dome = domeOf(p);
   const Disk footprint{dome.base_center, dome.base_radius};
-  return domeTissue(seedPoints(p, footprint, 2, rng_seed), dome, voronoiOptions(p));
+  return fromSeeds(p, [&] { return domeTissue(seedPoints(p, footprint, 2, rng_seed), dome, voronoiOptions(p)); });
 }
 
 }  // namespace
@@ -275,7 +280,7 @@ const GeneratorRegistry& generators() {
                                       p.getVec3("origin"));
              },
          .shape = [](const ParamValues&) { return GeneratedShape{2, Embedding::Planar, ""}; },
-         .check = [](const ParamValues& p, const ParamNamer&) { return cellCountProblem(p, {"nx", "ny"}); }}},
+         .check = [](const ParamValues& p, const ParamNamer&) { checkCellCount(p, {"nx", "ny"}); }}},
        {"hexagonal_grid",
         "`nx` x `ny` regular hexagons (pointy side up, offset rows): a flat 2D tissue in which every inner cell "
         "has six neighbours.",
@@ -291,7 +296,7 @@ const GeneratorRegistry& generators() {
                return hexagonalGrid(count(p, "nx"), count(p, "ny"), p.getFloat("radius"), p.getVec3("origin"));
              },
          .shape = [](const ParamValues&) { return GeneratedShape{2, Embedding::Planar, ""}; },
-         .check = [](const ParamValues& p, const ParamNamer&) { return cellCountProblem(p, {"nx", "ny"}); }}},
+         .check = [](const ParamValues& p, const ParamNamer&) { checkCellCount(p, {"nx", "ny"}); }}},
        {"box_grid",
         "`nx` x `ny` x `nz` box cells: a 3D tissue.",
         {gridCount("nx", "Number of cells along x.", 4), gridCount("ny", "Number of cells along y.", 4),
@@ -306,7 +311,7 @@ const GeneratorRegistry& generators() {
                               p.getFloat("dz"), p.getVec3("origin"));
              },
          .shape = [](const ParamValues&) { return GeneratedShape{3, Embedding::Volume, ""}; },
-         .check = [](const ParamValues& p, const ParamNamer&) { return cellCountProblem(p, {"nx", "ny", "nz"}); }}},
+         .check = [](const ParamValues& p, const ParamNamer&) { checkCellCount(p, {"nx", "ny", "nz"}); }}},
        {"voronoi",
         "Voronoi cells of seed points (the dual of their Delaunay triangulation, computed with CGAL), clipped to "
         "a domain: a rectangle or disk gives a flat 2D tissue, a box or ball a 3D one.",
@@ -321,17 +326,15 @@ const GeneratorRegistry& generators() {
                const int dim = voronoiDomains().at(p.getString("domain")).make.dim;
                return GeneratedShape{dim, dim == 2 ? Embedding::Planar : Embedding::Volume, "domain"};
              },
-         .check = voronoiProblem,
-         .groups = voronoiGroups(),
-         .file_param = "seed_file"}},
+         .check = checkVoronoi,
+         .groups = voronoiGroups()}},
        {"dome",
         "A curved sheet of cells on a dome, the usual start of shoot apical meristem models: a Voronoi tissue of "
         "the footprint disk (in the z = 0 plane) lifted vertically onto the dome surface.",
         domeParams(),
         {.build = buildDome,
          .shape = [](const ParamValues&) { return GeneratedShape{2, Embedding::Surface, ""}; },
-         .check = domeProblem,
-         .file_param = "seed_file",
+         .check = checkDomeParams,
          .dome = [](const ParamValues& p) { return std::optional<Dome>(domeOf(p)); }}}});
   return table;
 }

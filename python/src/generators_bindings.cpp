@@ -99,7 +99,7 @@ void bindGenerators(py::module_& m) {
   py::class_<Dome>(m, "Dome", "A spherical-cap or paraboloid dome over a footprint disk (meristem models).")
       .def(py::init([](const std::string& shape, double base_radius, double height, const Vec3& center) {
              Dome d;
-             d.shape = domeShapeFromName(shape);
+             d.shape = domeShapes().parse(shape);
              d.base_radius = base_radius;
              d.height = height;
              d.base_center = center;

@@ -22,7 +22,9 @@ struct Snapshot {
   std::uint64_t topology, geometry;
   std::vector<Vec3> positions;
   explicit Snapshot(const Tissue& t)
-      : topology(t.topologyVersion()), geometry(t.geometryVersion()), positions(t.positions().begin(), t.positions().end()) {}
+      : topology(t.topologyVersion()),
+        geometry(t.geometryVersion()),
+        positions(t.positions().begin(), t.positions().end()) {}
   bool operator==(const Snapshot&) const = default;
 };
 

@@ -34,8 +34,8 @@ void checkSplitOptions(const SplitOptions& o) {
     return s.str();
   };
   if (!(o.snap_tolerance >= 0.0 && o.snap_tolerance <= kMaxSnapTolerance))
-    throw InputError("splitCell: option snap_tolerance = " + text(o.snap_tolerance) + " is out of range; expected [0, " +
-                     text(kMaxSnapTolerance) + "] (a fraction of the cell size)");
+    throw InputError("splitCell: option snap_tolerance = " + text(o.snap_tolerance) +
+                     " is out of range; expected [0, " + text(kMaxSnapTolerance) + "] (a fraction of the cell size)");
   if (!(o.min_fraction >= 0.0 && o.min_fraction < 0.5))
     throw InputError("splitCell: option min_fraction = " + text(o.min_fraction) +
                      " is out of range; expected [0, 0.5) (a fraction of the cell's measure)");

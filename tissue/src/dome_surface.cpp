@@ -7,7 +7,6 @@
 #include <cmath>
 #include <sstream>
 #include <string>
-#include <vector>
 
 #include "tessella/tissue/errors.hpp"
 
@@ -50,21 +49,11 @@ double Dome::heightAt(double r) const {
   return height - r * r / (std::sqrt((sphere_radius - r) * (sphere_radius + r)) + sphere_radius);
 }
 
-const std::vector<std::string>& domeShapeNames() {
-  static const std::vector<std::string> names{"spherical_cap", "paraboloid"};
-  return names;
-}
-
-const std::string& domeShapeName(Dome::Shape shape) { return domeShapeNames()[static_cast<std::size_t>(shape)]; }
-
-Dome::Shape domeShapeFromName(const std::string& name) {
-  const auto& names = domeShapeNames();
-  for (std::size_t k = 0; k < names.size(); ++k)
-    if (names[k] == name) return static_cast<Dome::Shape>(k);
-  std::string expected;
-  for (std::size_t k = 0; k < names.size(); ++k)
-    expected += (k == 0 ? "'" : k + 1 == names.size() ? " or '" : ", '") + names[k] + "'";
-  throw InputError("Dome shape: expected " + expected + ", got '" + name + "'");
+const EnumTable<Dome::Shape>& domeShapes() {
+  static const EnumTable<Dome::Shape> shapes(
+      "dome shape", {{"spherical_cap", Dome::Shape::SphericalCap, "A spherical cap (height <= base radius)."},
+                     {"paraboloid", Dome::Shape::Paraboloid, "A paraboloid of revolution."}});
+  return shapes;
 }
 
 Vec3 Dome::lift(const Vec3& p) const {

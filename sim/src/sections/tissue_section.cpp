@@ -123,9 +123,11 @@ TissueSpec readTissueSection(const Config& c) {
   if (const auto* g = generators().find(name)) {
     const GeneratorSpec spec = describedGenerator(c, name);
     const ParamNamer key = [&](const std::string& param) { return joinPath(section, param); };
-    if (g->make.check)
-      if (const std::optional<ParamProblem> problem = g->make.check(spec.params, key))
-        throw c.errorAt(key(problem->param), problem->message);
+    try {
+      if (g->make.check) g->make.check(spec.params, key);
+    } catch (const ParamError& e) {
+      throw c.errorAt(key(e.param()), e.what());
+    }
     return spec;
   }
   const auto& source = tissueFileSources().at(name);
@@ -139,7 +141,7 @@ TissueSpec readTissueSection(const Config& c) {
 }
 
 io::RunState domeRunState(const Dome& dome) {
-  return {{"dome.shape", domeShapeName(dome.shape)},
+  return {{"dome.shape", domeShapes().name(dome.shape)},
           {"dome.base_radius", detail::exactText(dome.base_radius)},
           {"dome.height", detail::exactText(dome.height)},
           {"dome.base_center", detail::exactText(dome.base_center.x()) + " " + detail::exactText(dome.base_center.y()) +
@@ -153,9 +155,9 @@ std::optional<Dome> domeFromRunState(const io::RunState& state) {
   if (shape == state.end() || radius == state.end() || height == state.end() || center == state.end())
     return std::nullopt;
   Dome dome;
-  const auto& shapes = domeShapeNames();
-  if (std::find(shapes.begin(), shapes.end(), shape->second) == shapes.end()) return std::nullopt;
-  dome.shape = domeShapeFromName(shape->second);
+  const auto names = domeShapes().names();
+  if (std::find(names.begin(), names.end(), shape->second) == names.end()) return std::nullopt;
+  dome.shape = domeShapes().parse(shape->second);
   std::istringstream words(center->second);
   std::string x, y, z, extra;
   words >> x >> y >> z;
@@ -202,15 +204,13 @@ Tissue buildTissue(const TissueSpec& spec, std::uint64_t rng_seed, const Config&
   } catch (const ConfigError&) {
     throw;
   } catch (const InputError& e) {
-    // Point at the key the bad input came from: the file the generator read
-    // if it was given one, the imported file, else the generator choice.
-    std::string key = "tissue.generator";
-    if (const auto* g = std::get_if<GeneratorSpec>(&spec)) {
-      const std::string& file_param = generators().at(g->name).make.file_param;
-      if (!file_param.empty() && g->params.has(file_param)) key = joinPath(sectionOf(g->name), file_param);
-    }
-    if (std::holds_alternative<ImportSpec>(spec)) key = "tissue.import.file";
-    throw config.errorAt(key, e.what());
+    // A generator blames a parameter (a seed file) ...
+    const auto* blamed = dynamic_cast<const ParamError*>(&e);
+    if (const auto* g = std::get_if<GeneratorSpec>(&spec); g && blamed)
+      throw config.errorAt(joinPath(sectionOf(g->name), blamed->param()), e.what());
+    // Else the imported file, or the generator choice.
+    throw config.errorAt(std::holds_alternative<ImportSpec>(spec) ? "tissue.import.file" : "tissue.generator",
+                         e.what());
   }
 }
 

@@ -38,32 +38,25 @@ struct ParamGroup {
   std::string selector;
 };
 
-/// A problem across parameters, at the parameter to blame.
-struct ParamProblem {
-  std::string param;
-  std::string message;
-};
-
 /// How the caller spells a parameter in messages: sim passes
 /// "tissue.voronoi.<param>", a script the parameter name itself.
 using ParamNamer = std::function<std::string(const std::string& param)>;
 
 struct GeneratorFactory {
-  /// The tissue; `rng_seed` draws random seed points.
+  /// The tissue; `rng_seed` draws random seed points. An InputError caused by
+  /// a file a parameter names (a seed file) is a ParamError at that parameter.
   std::function<Tissue(const ParamValues&, std::uint64_t rng_seed)> build = {};
   std::function<GeneratedShape(const ParamValues&)> shape = {};
   /// Checks across parameters (count and seed_file, min < max, the cell count
-  /// limit); empty when there are none.
-  std::function<std::optional<ParamProblem>(const ParamValues&, const ParamNamer&)> check = {};
+  /// limit): a ParamError at the parameter to blame, whose message names the
+  /// others as `key` spells them. Empty when there are none.
+  std::function<void(const ParamValues&, const ParamNamer& key)> check = {};
   std::vector<ParamGroup> groups = {};
-  /// The parameter naming a file the generator reads: errors reading it are
-  /// located there when it is given. "" when none.
-  std::string file_param = {};
   /// The dome a generated sheet lies on (growth can keep it there); empty
   /// when the generator makes no dome sheet.
   std::function<std::optional<Dome>(const ParamValues&)> dome = {};
 
-  /// check() (an InputError naming the parameter), then build().
+  /// check(), then build().
   Tissue operator()(const ParamValues& params, std::uint64_t rng_seed) const;
 };
 

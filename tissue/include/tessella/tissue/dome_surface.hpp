@@ -4,9 +4,7 @@
 // a sheet's vertices on it, generators/dome.hpp) and growth (which keeps them
 // there, growth::domeProjection), so neither has to know the other.
 
-#include <string>
-#include <vector>
-
+#include "tessella/tissue/enum_table.hpp"
 #include "tessella/tissue/vec3.hpp"
 
 namespace tessella {
@@ -34,11 +32,8 @@ struct Dome {
 /// hemisphere (no longer a height field over its footprint).
 void checkDome(const Dome& dome);
 
-/// The shapes' names in configurations, scripts and saved run states
-/// ("spherical_cap", "paraboloid"), in the order of Dome::Shape.
-const std::vector<std::string>& domeShapeNames();
-const std::string& domeShapeName(Dome::Shape shape);
-/// InputError listing the names when `name` is none of them.
-Dome::Shape domeShapeFromName(const std::string& name);
+/// The shapes' names in configurations, scripts and saved run states:
+/// spherical_cap, paraboloid.
+const EnumTable<Dome::Shape>& domeShapes();
 
 }  // namespace tessella
