@@ -18,9 +18,9 @@
 #include <string_view>
 #include <vector>
 
+#include "tessella/generators/voronoi.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/excerpt.hpp"
-#include "tessella/generators/voronoi.hpp"
 #include "voronoi_domain.hpp"
 
 namespace tessella {

@@ -39,9 +39,9 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #pragma GCC diagnostic pop
 
+#include "tessella/generators/voronoi.hpp"
 #include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/errors.hpp"
-#include "tessella/generators/voronoi.hpp"
 #include "voronoi_cells.hpp"
 #include "spatial_order.hpp"
 #include "voronoi_domain.hpp"
@@ -279,16 +279,22 @@ std::optional<Triangulation2> triangulateSplit(std::span<const Vec3> seeds, std:
   return tr;
 }
 
-// The cells of `tr`'s seeds clipped to the domain, or nothing when a cell
-// read from a half of a split triangulation is not certainly exact.
-std::optional<ClippedCells2> clipCells(std::span<const Vec3> seeds, const ConvexDomain2& domain,
-                                       double duplicate_tolerance, CellOutput output, const Triangulation2& tr,
-                                       std::span<const Index> order) {
-  const std::size_t n = seeds.size();
-  const auto& handle = tr.handle;
+// --- clipCells, phase 1: the dual arrays ---------------------------------------
+
+// The Voronoi vertices before welding: one circumcentre per finite triangle
+// (by global triangle id), whether it lies inside the domain by the interior
+// margin, and its weld group: adjacent triangles with (nearly) equal
+// circumcentres are one vertex, named by the group's lowest triangle.
+struct DualVertices2 {
+  std::vector<Vec2> cc;
+  std::vector<std::uint8_t> inside;
+  std::vector<Index> group;
+};
+
+// A cell is interior when all its triangles are finite and their circumcentres
+// lie inside the domain by a margin far above the clipping tolerances.
+void computeCircumcentres(const Triangulation2& tr, const ConvexDomain2& domain, DualVertices2& dual) {
   const auto& tri = tr.tri;
-  // A cell is interior when all its triangles are finite and their circumcentres
-  // lie inside the domain by a margin far above the clipping tolerances.
   const double margin = kInteriorMargin * domain.scale;
   auto inside = [&](const Vec2& p) {
     if (domain.is_rectangle)
@@ -298,25 +304,29 @@ std::optional<ClippedCells2> clipCells(std::span<const Vec3> seeds, const Convex
     return domain.excess(p) < -margin;
   };
   const std::int64_t nt = static_cast<std::int64_t>(tri.size());
-  std::vector<Vec2> cc(tri.size());
-  std::vector<std::uint8_t> cc_inside(tri.size());
+  dual.cc.resize(tri.size());
+  dual.inside.resize(tri.size());
 #pragma omp parallel for schedule(static)
   for (std::int64_t t = 0; t < nt; ++t) {
     const Point c = CGAL::circumcenter(tri[t]->vertex(0)->point(), tri[t]->vertex(1)->point(),
                                        tri[t]->vertex(2)->point());
-    cc[t] = Vec2(c.x(), c.y());
-    cc_inside[t] = inside(cc[t]);
+    dual.cc[t] = Vec2(c.x(), c.y());
+    dual.inside[t] = inside(dual.cc[t]);
   }
-  // One Voronoi vertex per group of adjacent triangles with (nearly) equal
-  // circumcentres; the group's id is its lowest triangle.
-  const double weld = kWeldTolerance * domain.scale;
-  std::vector<Index> group(tri.size());
+}
+
+void groupCloseCircumcentres(const Triangulation2& tr, double weld, DualVertices2& dual) {
+  const auto& tri = tr.tri;
+  const auto& cc = dual.cc;
+  std::vector<Index>& group = dual.group;
+  group.resize(tri.size());
   for (std::size_t t = 0; t < tri.size(); ++t) group[t] = static_cast<Index>(t);
   auto root = [&](Index t) {
     while (group[t] != t) t = group[t] = group[group[t]];
     return t;
   };
   // Such neighbours are rare (cocircular seeds): find them in parallel, join serially.
+  const std::int64_t nt = static_cast<std::int64_t>(tri.size());
   std::vector<std::vector<std::pair<Index, Index>>> close(omp_get_max_threads());
 #pragma omp parallel
   {
@@ -336,190 +346,281 @@ std::optional<ClippedCells2> clipCells(std::span<const Vec3> seeds, const Convex
     }
   for (const auto& pairs : close)
     for (const auto& [t, u] : pairs) group[t] = root(t), group[u] = root(u);
+}
 
-  const double on = kOnTolerance * domain.scale;
-  const std::vector<Vec2> start =
-      domain.is_rectangle ? domain.corners
-                          : std::vector<Vec2>{domain.lo, {domain.hi.x(), domain.lo.y()}, domain.hi,
-                                              {domain.lo.x(), domain.hi.y()}};
-  const bool complex = output == CellOutput::Complex;
-  ClippedCells2 out;
-  if (!complex) out.centroids.resize(n);
-  // Interior cells' loops of triangle groups go to per-thread flat buffers
-  // (no allocation per cell): cell i is buffer loop_buf[i] from loop_at[i],
-  // loop_len[i] long. Boundary cells keep their clipped polygon.
-  const int nthreads = omp_get_max_threads();
-  std::vector<std::vector<Index>> buffers(complex ? nthreads : 0);
-  std::vector<std::uint32_t> loop_buf(complex ? n : 0), loop_at(complex ? n : 0), loop_len(complex ? n : 0);
-  std::vector<std::vector<Vec2>> clipped(complex ? n : 0);  // boundary cells: clipped polygon
-  std::vector<std::uint8_t> vanished(n, 0), inexact(n, 0);
-  std::vector<Index> duplicate(n, kInvalidIndex);  // a neighbour closer than duplicate_distance
-  const double d2 = std::pow(duplicate_tolerance * domain.scale, 2);
-  const std::int64_t ns = static_cast<std::int64_t>(n);
-#pragma omp parallel
-  {
+DualVertices2 dualVertices(const Triangulation2& tr, const ConvexDomain2& domain) {
+  DualVertices2 dual;
+  computeCircumcentres(tr, domain, dual);
+  groupCloseCircumcentres(tr, kWeldTolerance * domain.scale, dual);
+  return dual;
+}
+
+// --- clipCells, phase 2: reading (interior) or clipping (boundary) each cell ----
+
+// What reading the cells found. Interior cells' loops of weld groups go to
+// per-thread flat buffers (no allocation per cell): cell i is buffers[buf[i]]
+// from at[i], len[i] long. Boundary cells keep their clipped polygon.
+struct CellLoops2 {
+  std::vector<std::vector<Index>> buffers;
+  std::vector<std::uint32_t> buf, at, len;
+  std::vector<std::vector<Vec2>> clipped;
+  std::vector<std::uint8_t> vanished, inexact;
+  std::vector<Index> duplicate;  // a neighbour closer than the duplicate distance
+};
+
+// One cell at a time, from any thread: each writes only its own cell's slots.
+struct CellReader2 {
+  const ConvexDomain2& domain;
+  const Triangulation2& tr;
+  const DualVertices2& dual;
+  bool complex;
+  double d2;  // squared duplicate distance
+  double on;  // clipping tolerance
+  std::vector<Vec2> start;  // the polygon every boundary cell is clipped from
+  CellLoops2& loops;
+  ClippedCells2& out;
+
+  struct Scratch {
     std::vector<Vec2> poly, scratch;
     std::vector<double> side;
     std::vector<Index> loop;
+  };
+
+  // The cell's loop of weld groups if it is interior (true); false for a
+  // boundary cell, left to clip().
+  bool readInterior(Index i, int thread, Scratch& s) const {
+    const std::uint8_t half = tr.owner[i];
+    const Delaunay& dt = *tr.dts[half];
+    // Seed positions come from the triangulation's vertices (already in
+    // cache), not from the seeds, whose order is the user's.
+    const Point& pi = tr.handle[i]->point();
+    const Vec2 seed(pi.x(), pi.y());
+    bool interior = true, exact_loop = true;
+    s.loop.clear();
+    auto fc = dt.incident_faces(tr.handle[i]), done = fc;
+    do {
+      const Index t = fc->info();
+      if (t == kInvalidIndex || !dual.inside[t]) {
+        interior = false;
+        break;
+      }
+      const auto nb = fc->vertex(Delaunay::ccw(fc->index(tr.handle[i])));
+      if (CGAL::squared_distance(nb->point(), pi) < d2) loops.duplicate[i] = nb->info();
+      exact_loop &= tr.exact(half, seed, dual.cc[t]);
+      if (s.loop.empty() || s.loop.back() != dual.group[t]) s.loop.push_back(dual.group[t]);
+    } while (++fc != done);
+    while (interior && s.loop.size() > 1 && s.loop.back() == s.loop.front()) s.loop.pop_back();
+    if (!interior || s.loop.size() < 3) return false;
+    loops.inexact[i] = !exact_loop;
+    if (complex) {
+      std::vector<Index>& buf = loops.buffers[thread];
+      loops.buf[i] = static_cast<std::uint32_t>(thread);
+      loops.at[i] = static_cast<std::uint32_t>(buf.size());
+      loops.len[i] = static_cast<std::uint32_t>(s.loop.size());
+      buf.insert(buf.end(), s.loop.begin(), s.loop.end());
+    } else {
+      s.poly.clear();
+      for (Index g : s.loop) s.poly.push_back(dual.cc[g]);
+      const Vec2 c = polygonCentroid(s.poly);
+      out.centroids[i] = Vec3(c.x(), c.y(), 0);
+    }
+    return true;
+  }
+
+  // A boundary cell: the domain cut by the bisector of every Delaunay neighbour.
+  void clip(Index i, Scratch& s) const {
+    const std::uint8_t half = tr.owner[i];
+    const Delaunay& dt = *tr.dts[half];
+    const Point& pi = tr.handle[i]->point();
+    const Vec2 seed(pi.x(), pi.y());
+    s.poly = start;
+    auto circ = dt.incident_vertices(tr.handle[i]), vdone = circ;
+    do {
+      if (dt.is_infinite(circ)) continue;
+      if (CGAL::squared_distance(circ->point(), pi) < d2) loops.duplicate[i] = circ->info();
+      const Vec2 t(circ->point().x(), circ->point().y());
+      const Vec2 d = t - seed;
+      const Vec2 normal = d / d.norm();
+      clipPolygon(s.poly, s.scratch, s.side, normal, normal.dot((seed + t) / 2), on);
+    } while (++circ != vdone);
+    if (!domain.is_rectangle) {
+      // Only cells reaching past the polygon's inscribed circle meet its sides.
+      double reach = 0;
+      for (const Vec2& p : s.poly) reach = std::max(reach, (p - seed).norm());
+      if ((seed - domain.center).norm() + reach >= domain.inner_radius) {
+        for (const HalfPlane& hp : domain.sides)
+          if (hp.offset - hp.normal.dot(seed) < reach + on)
+            clipPolygon(s.poly, s.scratch, s.side, hp.normal, hp.offset, on);
+      }
+    }
+    if (s.poly.size() < 3) {
+      loops.vanished[i] = 1;
+      return;
+    }
+    if (tr.dts.size() > 1) {
+      for (const Vec2& p : s.poly) loops.inexact[i] |= !tr.exact(half, seed, p);
+      auto face = dt.incident_faces(tr.handle[i]), first = face;
+      do {  // circumcentres the boundary welding uses (weldBoundaryCells)
+        const Index t = face->info();
+        if (t != kInvalidIndex && weldedAsCircumcentre(domain, dual.cc[t]))
+          loops.inexact[i] |= !tr.exact(half, seed, dual.cc[t]);
+      } while (++face != first);
+    }
+    if (complex) {
+      loops.clipped[i] = s.poly;
+    } else {
+      const Vec2 c = polygonCentroid(s.poly);
+      out.centroids[i] = Vec3(c.x(), c.y(), 0);
+    }
+  }
+};
+
+CellLoops2 readCells(std::size_t n, const ConvexDomain2& domain, double duplicate_tolerance, bool complex,
+                     const Triangulation2& tr, const DualVertices2& dual, std::span<const Index> order,
+                     ClippedCells2& out) {
+  const int nthreads = omp_get_max_threads();
+  CellLoops2 loops;
+  loops.buffers.resize(complex ? nthreads : 0);
+  loops.buf.resize(complex ? n : 0);
+  loops.at.resize(complex ? n : 0);
+  loops.len.resize(complex ? n : 0);
+  loops.clipped.resize(complex ? n : 0);
+  loops.vanished.assign(n, 0);
+  loops.inexact.assign(n, 0);
+  loops.duplicate.assign(n, kInvalidIndex);
+  const CellReader2 reader{
+      domain, tr, dual, complex, std::pow(duplicate_tolerance * domain.scale, 2), kOnTolerance * domain.scale,
+      domain.is_rectangle ? domain.corners
+                          : std::vector<Vec2>{domain.lo, {domain.hi.x(), domain.lo.y()}, domain.hi,
+                                              {domain.lo.x(), domain.hi.y()}},
+      loops, out};
+  const std::int64_t ns = static_cast<std::int64_t>(n);
+#pragma omp parallel
+  {
+    CellReader2::Scratch scratch;
     const int me = omp_get_thread_num();
-    if (complex) buffers[me].reserve(7 * n / nthreads + 1024);
+    if (complex) loops.buffers[me].reserve(7 * n / nthreads + 1024);
 #pragma omp for schedule(dynamic, 1024)
     for (std::int64_t q = 0; q < ns; ++q) {
       const Index i = order[q];
-      const std::uint8_t half = tr.owner[i];
-      const Delaunay& dt = *tr.dts[half];
-      // Seed positions come from the triangulation's vertices (already in
-      // cache), not from `seeds`, whose order is the user's.
-      const Point& pi = handle[i]->point();
-      const Vec2 s(pi.x(), pi.y());
-      bool interior = true, exact_loop = true;
-      loop.clear();
-      auto fc = dt.incident_faces(handle[i]), done = fc;
-      do {
-        const Index t = fc->info();
-        if (t == kInvalidIndex || !cc_inside[t]) {
-          interior = false;
-          break;
-        }
-        const auto nb = fc->vertex(Delaunay::ccw(fc->index(handle[i])));
-        if (CGAL::squared_distance(nb->point(), pi) < d2) duplicate[i] = nb->info();
-        exact_loop &= tr.exact(half, s, cc[t]);
-        if (loop.empty() || loop.back() != group[t]) loop.push_back(group[t]);
-      } while (++fc != done);
-      while (interior && loop.size() > 1 && loop.back() == loop.front()) loop.pop_back();
-      if (interior && loop.size() >= 3) {
-        inexact[i] = !exact_loop;
-        if (complex) {
-          std::vector<Index>& buf = buffers[me];
-          loop_buf[i] = static_cast<std::uint32_t>(me);
-          loop_at[i] = static_cast<std::uint32_t>(buf.size());
-          loop_len[i] = static_cast<std::uint32_t>(loop.size());
-          buf.insert(buf.end(), loop.begin(), loop.end());
-        } else {
-          poly.clear();
-          for (Index g : loop) poly.push_back(cc[g]);
-          const Vec2 c = polygonCentroid(poly);
-          out.centroids[i] = Vec3(c.x(), c.y(), 0);
-        }
-        continue;
-      }
-      poly = start;
-      auto circ = dt.incident_vertices(handle[i]), vdone = circ;
-      do {
-        if (dt.is_infinite(circ)) continue;
-        if (CGAL::squared_distance(circ->point(), pi) < d2) duplicate[i] = circ->info();
-        const Vec2 t(circ->point().x(), circ->point().y());
-        const Vec2 d = t - s;
-        const Vec2 normal = d / d.norm();
-        clipPolygon(poly, scratch, side, normal, normal.dot((s + t) / 2), on);
-      } while (++circ != vdone);
-      if (!domain.is_rectangle) {
-        // Only cells reaching past the polygon's inscribed circle meet its sides.
-        double reach = 0;
-        for (const Vec2& p : poly) reach = std::max(reach, (p - s).norm());
-        if ((s - domain.center).norm() + reach >= domain.inner_radius) {
-          for (const HalfPlane& hp : domain.sides)
-            if (hp.offset - hp.normal.dot(s) < reach + on)
-              clipPolygon(poly, scratch, side, hp.normal, hp.offset, on);
-        }
-      }
-      if (poly.size() < 3) {
-        vanished[i] = 1;
-        continue;
-      }
-      if (tr.dts.size() > 1) {
-        for (const Vec2& p : poly) inexact[i] |= !tr.exact(half, s, p);
-        auto face = dt.incident_faces(handle[i]), first = face;
-        do {  // circumcentres the boundary welding uses (see below)
-          const Index t = face->info();
-          if (t != kInvalidIndex && weldedAsCircumcentre(domain, cc[t])) inexact[i] |= !tr.exact(half, s, cc[t]);
-        } while (++face != first);
-      }
-      if (complex) {
-        clipped[i] = poly;
-      } else {
-        const Vec2 c = polygonCentroid(poly);
-        out.centroids[i] = Vec3(c.x(), c.y(), 0);
-      }
+      if (!reader.readInterior(i, me, scratch)) reader.clip(i, scratch);
     }
   }
-  for (std::size_t i = 0; i < n; ++i)
-    if (duplicate[i] != kInvalidIndex) throwDuplicate(seeds, i, duplicate[i]);
-  if (std::find(inexact.begin(), inexact.end(), 1) != inexact.end()) return std::nullopt;
-  for (std::size_t i = 0; i < n; ++i)
-    if (vanished[i])
-      throw GeometryError("the Voronoi cell of " + describeSeed(i, seeds[i]) +
-                          " vanished when clipped to the domain");
-  if (!complex) return out;
+  return loops;
+}
 
-  // Vertex keys: a triangle group (< nt), or nt + k for the k-th point made
-  // by clipping. Clipped points weld onto the circumcentres of the boundary
-  // cells' triangles first (entered before any of them), then onto each other.
-  VertexWelder welder(Vec3(domain.lo.x(), domain.lo.y(), 0), weld, 0);
+// Duplicate seeds and vanished cells are errors; false when a cell read from
+// a half of a split triangulation is not certainly exact.
+bool certified(std::span<const Vec3> seeds, const CellLoops2& loops) {
+  const std::size_t n = seeds.size();
+  for (std::size_t i = 0; i < n; ++i)
+    if (loops.duplicate[i] != kInvalidIndex) throwDuplicate(seeds, i, loops.duplicate[i]);
+  if (std::find(loops.inexact.begin(), loops.inexact.end(), 1) != loops.inexact.end()) return false;
+  for (std::size_t i = 0; i < n; ++i)
+    if (loops.vanished[i])
+      throw GeometryError("the Voronoi cell of " + describeSeed(i, seeds[i]) + " vanished when clipped to the domain");
+  return true;
+}
+
+// --- clipCells, phase 3: welding the boundary cells' vertices --------------------
+
+// Vertex keys: a triangle group (< nt), or nt + k for the k-th point made by
+// clipping. Clipped points weld onto the circumcentres of the boundary cells'
+// triangles first (entered before any of them), then onto each other. Each
+// boundary cell's loop of keys goes to one more buffer; returns the points
+// made by clipping.
+std::vector<Vec3> weldBoundaryCells(std::span<const Vec3> seeds, const ConvexDomain2& domain,
+                                    const Triangulation2& tr, const DualVertices2& dual, CellLoops2& loops) {
+  const std::size_t n = seeds.size(), nt = dual.cc.size();
+  VertexWelder welder(Vec3(domain.lo.x(), domain.lo.y(), 0), kWeldTolerance * domain.scale, 0);
   std::vector<Index> key_of_weld;
   std::vector<Vec3> extra;
   std::vector<Index> boundary;  // boundary cells in seed order
   for (std::size_t i = 0; i < n; ++i)
-    if (!clipped[i].empty()) boundary.push_back(static_cast<Index>(i));
+    if (!loops.clipped[i].empty()) boundary.push_back(static_cast<Index>(i));
   for (Index i : boundary) {
-    auto fc = tr.dts[tr.owner[i]]->incident_faces(handle[i]), done = fc;
+    auto fc = tr.dts[tr.owner[i]]->incident_faces(tr.handle[i]), done = fc;
     do {
       const Index t = fc->info();
-      if (t == kInvalidIndex || !weldedAsCircumcentre(domain, cc[t])) continue;
-      const Index w = welder.weld(Vec3(cc[t].x(), cc[t].y(), 0));
-      if (w == key_of_weld.size()) key_of_weld.push_back(group[t]);
+      if (t == kInvalidIndex || !weldedAsCircumcentre(domain, dual.cc[t])) continue;
+      const Index w = welder.weld(Vec3(dual.cc[t].x(), dual.cc[t].y(), 0));
+      if (w == key_of_weld.size()) key_of_weld.push_back(dual.group[t]);
     } while (++fc != done);
   }
-  std::vector<Index> boundary_keys;  // boundary cell b's loop from boundary_at[b]
-  std::vector<std::uint32_t> boundary_at(boundary.size() + 1, 0);
+  const auto boundary_buffer = static_cast<std::uint32_t>(loops.buffers.size());
+  std::vector<Index> keys;  // boundary cell b's loop from starts[b]
+  std::vector<std::uint32_t> starts(boundary.size() + 1, 0);
   for (std::size_t b = 0; b < boundary.size(); ++b) {
     const Index i = boundary[b];
-    const std::size_t first = boundary_keys.size();
-    for (const Vec2& p : clipped[i]) {
+    const std::size_t first = keys.size();
+    for (const Vec2& p : loops.clipped[i]) {
       const Index w = welder.weld(Vec3(p.x(), p.y(), 0));
       if (w == key_of_weld.size()) {
         key_of_weld.push_back(static_cast<Index>(nt + extra.size()));
         extra.push_back(Vec3(p.x(), p.y(), 0));
       }
       const Index k = key_of_weld[w];
-      if (boundary_keys.size() == first || boundary_keys.back() != k) boundary_keys.push_back(k);
+      if (keys.size() == first || keys.back() != k) keys.push_back(k);
     }
-    while (boundary_keys.size() > first + 1 && boundary_keys.back() == boundary_keys[first])
-      boundary_keys.pop_back();
-    if (boundary_keys.size() - first < 3)
+    while (keys.size() > first + 1 && keys.back() == keys[first]) keys.pop_back();
+    if (keys.size() - first < 3)
       throw GeometryError("the Voronoi cell of " + describeSeed(i, seeds[i]) +
                           " collapsed to fewer than 3 vertices when its vertices were welded");
-    boundary_at[b + 1] = static_cast<std::uint32_t>(boundary_keys.size());
-    loop_buf[i] = static_cast<std::uint32_t>(nthreads);  // the boundary buffer
-    loop_at[i] = boundary_at[b];
-    loop_len[i] = boundary_at[b + 1] - boundary_at[b];
+    starts[b + 1] = static_cast<std::uint32_t>(keys.size());
+    loops.buf[i] = boundary_buffer;
+    loops.at[i] = starts[b];
+    loops.len[i] = starts[b + 1] - starts[b];
   }
-  buffers.push_back(std::move(boundary_keys));
-  // Loops listed in visiting order: loop q is cell order[q].
+  loops.buffers.push_back(std::move(keys));
+  return extra;
+}
+
+// --- clipCells, phase 4: the loops and vertices of the tissue --------------------
+
+// Loops listed in visiting order (loop q is cell order[q]); vertices numbered
+// by first use along them: neighbouring vertices get nearby numbers whatever
+// the seeds' order, which keeps building the complex cache-friendly; the
+// numbering does not depend on the thread count.
+void buildLoops(const DualVertices2& dual, const CellLoops2& loops, const std::vector<Vec3>& extra,
+                std::span<const Index> order, ClippedCells2& out) {
+  const std::size_t n = order.size(), nt = dual.cc.size();
   out.offsets.resize(n + 1);
   out.offsets[0] = 0;
-  for (std::size_t q = 0; q < n; ++q) out.offsets[q + 1] = out.offsets[q] + loop_len[order[q]];
+  for (std::size_t q = 0; q < n; ++q) out.offsets[q + 1] = out.offsets[q] + loops.len[order[q]];
   out.loops.resize(out.offsets[n]);
+  const std::int64_t ns = static_cast<std::int64_t>(n);
 #pragma omp parallel for schedule(static)
   for (std::int64_t q = 0; q < ns; ++q) {
     const Index i = order[q];
-    const Index* src = buffers[loop_buf[i]].data() + loop_at[i];
-    std::copy(src, src + loop_len[i], out.loops.begin() + out.offsets[q]);
+    const Index* src = loops.buffers[loops.buf[i]].data() + loops.at[i];
+    std::copy(src, src + loops.len[i], out.loops.begin() + out.offsets[q]);
   }
-  // Vertices numbered by first use along the listed loops: neighbouring
-  // vertices get nearby numbers whatever the seeds' order, which keeps
-  // building the complex cache-friendly; the numbering does not depend on
-  // the thread count.
-  std::vector<Index> id(tri.size() + extra.size(), kInvalidIndex);
+  std::vector<Index> id(nt + extra.size(), kInvalidIndex);
   out.positions.reserve(2 * n + extra.size());
   for (Index& k : out.loops) {
     if (id[k] == kInvalidIndex) {
       id[k] = static_cast<Index>(out.positions.size());
-      out.positions.push_back(k < tri.size() ? Vec3(cc[k].x(), cc[k].y(), 0) : extra[k - tri.size()]);
+      out.positions.push_back(k < nt ? Vec3(dual.cc[k].x(), dual.cc[k].y(), 0) : extra[k - nt]);
     }
     k = id[k];
   }
   out.order.assign(order.begin(), order.end());
+}
+
+// The cells of `tr`'s seeds clipped to the domain, or nothing when a cell
+// read from a half of a split triangulation is not certainly exact.
+std::optional<ClippedCells2> clipCells(std::span<const Vec3> seeds, const ConvexDomain2& domain,
+                                       double duplicate_tolerance, CellOutput output, const Triangulation2& tr,
+                                       std::span<const Index> order) {
+  const DualVertices2 dual = dualVertices(tr, domain);
+  const bool complex = output == CellOutput::Complex;
+  ClippedCells2 out;
+  if (!complex) out.centroids.resize(seeds.size());
+  CellLoops2 loops = readCells(seeds.size(), domain, duplicate_tolerance, complex, tr, dual, order, out);
+  if (!certified(seeds, loops)) return std::nullopt;
+  if (!complex) return out;
+  const std::vector<Vec3> extra = weldBoundaryCells(seeds, domain, tr, dual, loops);
+  buildLoops(dual, loops, extra, order, out);
   return out;
 }
 
@@ -536,7 +637,8 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
   // halves' cells cannot all be certified exact.
   if (seeds.size() >= kSplitMinSeeds) {
     if (std::optional<Triangulation2> tr = triangulateSplit(seeds, orders.insertion, domain))
-      if (std::optional<ClippedCells2> cells = clipCells(seeds, domain, duplicate_tolerance, output, *tr, orders.hilbert))
+      if (std::optional<ClippedCells2> cells =
+              clipCells(seeds, domain, duplicate_tolerance, output, *tr, orders.hilbert))
         return std::move(*cells);
   }
   const Triangulation2 tr = triangulateWhole(seeds, orders.insertion);

@@ -5,8 +5,8 @@
 #include <span>
 #include <string>
 
-#include "tessella/tissue/vec3.hpp"
 #include "tessella/generators/voronoi.hpp"
+#include "tessella/tissue/vec3.hpp"
 #include "voronoi_domain.hpp"
 
 namespace tessella::detail {

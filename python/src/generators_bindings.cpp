@@ -2,6 +2,7 @@
 // Seeds travel as (n, 3) float64 arrays (z = 0 for 2D domains).
 #include "bindings.hpp"
 #include "tessella/generators/dome.hpp"
+#include "tessella/generators/generator_registry.hpp"
 #include "tessella/generators/grids.hpp"
 #include "tessella/generators/voronoi.hpp"
 
@@ -24,6 +25,40 @@ void bindVoronoi(py::module_& m) {
           return voronoiTissue(s, d, voronoiOptions(lloyd, tol));
         },
         py::arg("seeds"), py::arg("domain"), py::arg("lloyd_iterations") = 0, py::arg("duplicate_tolerance") = 1e-9);
+}
+
+// A Python dict of parameters as ParamValues: bool, int, float, str, or a
+// sequence of numbers (a vector). The generator's table checks the rest.
+ParamValues paramValues(const py::dict& params) {
+  ParamValues values;
+  for (const auto& [key, value] : params) {
+    const std::string name = py::str(key);
+    if (py::isinstance<py::bool_>(value))
+      values.set(name, value.cast<bool>());
+    else if (py::isinstance<py::int_>(value))
+      values.set(name, value.cast<std::int64_t>());
+    else if (py::isinstance<py::float_>(value))
+      values.set(name, value.cast<double>());
+    else if (py::isinstance<py::str>(value))
+      values.set(name, value.cast<std::string>());
+    else
+      values.set(name, value.cast<std::vector<double>>());
+  }
+  return values;
+}
+
+// generate()'s docstring: every generator of the table with its parameters.
+std::string generateDoc() {
+  std::string doc =
+      "generate(name, params={}, rng_seed=0): the tissue of the generator `name`, as `tissue.generator: name` "
+      "with the keys `params` of its section in a configuration (docs/config.md). `rng_seed` draws random "
+      "seed points. Generators:\n";
+  for (const auto& g : generators().entries()) {
+    doc += "\n" + g.name + ": " + g.doc + "\n  parameters:";
+    for (const ParamSpec& p : g.params) doc += " " + p.name;
+    doc += "\n";
+  }
+  return doc;
 }
 
 }  // namespace
@@ -64,9 +99,7 @@ void bindGenerators(py::module_& m) {
   py::class_<Dome>(m, "Dome", "A spherical-cap or paraboloid dome over a footprint disk (meristem models).")
       .def(py::init([](const std::string& shape, double base_radius, double height, const Vec3& center) {
              Dome d;
-             if (shape == "spherical_cap") d.shape = Dome::Shape::SphericalCap;
-             else if (shape == "paraboloid") d.shape = Dome::Shape::Paraboloid;
-             else throw InputError("Dome shape: expected 'spherical_cap' or 'paraboloid', got '" + shape + "'");
+             d.shape = domeShapes().parse(shape);
              d.base_radius = base_radius;
              d.height = height;
              d.base_center = center;
@@ -87,6 +120,14 @@ void bindGenerators(py::module_& m) {
         },
         py::arg("footprint_seeds"), py::arg("dome"), py::arg("lloyd_iterations") = 0,
         py::arg("duplicate_tolerance") = 1e-9, "A Voronoi sheet of the footprint disk lifted onto the dome (surface).");
+
+  static const std::string generate_doc = generateDoc();  // pybind11 keeps the pointer
+  m.def(
+      "generate",
+      [](const std::string& name, const py::dict& params, std::uint64_t rng_seed) {
+        return generators().make(name, paramValues(params), rng_seed);
+      },
+      py::arg("name"), py::arg("params") = py::dict(), py::arg("rng_seed") = 0, generate_doc.c_str());
 }
 
 }  // namespace tessella::python

@@ -245,6 +245,27 @@ def test_dome_vertices_lie_on_the_dome():
     np.testing.assert_allclose(dome.summit, [0, 0, 1.0])
 
 
+def test_generate_makes_any_generator_of_the_table_by_name():
+    # The generators of a configuration's tissue.generator, with its keys.
+    for name in ("rectangular_grid", "hexagonal_grid", "box_grid", "voronoi", "dome"):
+        assert name in tessella.generate.__doc__
+    t = tessella.generate("hexagonal_grid", {"nx": 3, "ny": 2, "radius": 0.5})
+    np.testing.assert_array_equal(t.positions(), tessella.hexagonal_grid(3, 2, radius=0.5).positions())
+    # The same random seeds as random_seeds with the same rng_seed.
+    v = tessella.generate("voronoi", {"domain": "disk", "count": 30, "disk.radius": 2.0}, rng_seed=3)
+    disk = tessella.Disk(radius=2.0)
+    expected = tessella.voronoi_tissue(tessella.random_seeds(disk, 30, rng_seed=3), disk)
+    np.testing.assert_array_equal(v.positions(), expected.positions())
+    d = tessella.generate("dome", {"shape": "paraboloid", "height": 6.0, "count": 20}, rng_seed=1)
+    assert d.embedding == "surface" and d.num_cells == 20
+    with pytest.raises(ValueError, match=r"unknown generator 'hexagon'.*hexagonal_grid"):
+        tessella.generate("hexagon")
+    with pytest.raises(ValueError, match=r"parameter 'radius' must be a number > 0"):
+        tessella.generate("hexagonal_grid", {"radius": -1.0})
+    with pytest.raises(ValueError, match=r"spherical cap cannot be higher"):
+        tessella.generate("dome", {"height": 6.0})
+
+
 def test_copy_is_deep():
     t = tessella.rectangular_grid(2, 2)
     t.add_property("x", 1.0)

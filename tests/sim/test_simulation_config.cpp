@@ -13,10 +13,12 @@ using Catch::Matchers::Contains;
 
 TEST_CASE("a minimal config gets every default", "[sim][config]") {
   const SimulationConfig s = loadSimulationConfigString("tissue: {generator: hexagonal_grid}\nrng_seed: 12\n");
-  const auto& hex = std::get<HexagonalGridSpec>(s.tissue);
-  CHECK(hex.nx == 10);
-  CHECK(hex.ny == 10);
-  CHECK(hex.radius == 1.0);
+  const auto& spec = std::get<GeneratorSpec>(s.tissue);
+  REQUIRE(spec.name == "hexagonal_grid");
+  const tessella::ParamValues& hex = spec.params;
+  CHECK(hex.getInt("nx") == 10);
+  CHECK(hex.getInt("ny") == 10);
+  CHECK(hex.getFloat("radius") == 1.0);
   CHECK(s.time.start == 0.0);
   CHECK(s.time.end == 10.0);
   CHECK(s.time.dt == 1.0);
@@ -39,41 +41,49 @@ TEST_CASE("every generator's section is read into its spec", "[sim][config]") {
   SECTION("rectangular grid") {
     const auto s = loadSimulationConfigString(
         "tissue:\n  generator: rectangular_grid\n  rectangular_grid: {nx: 3, ny: 2, dx: 0.5, dy: 2, origin: [1, 1]}\n");
-    const auto& g = std::get<RectangularGridSpec>(s.tissue);
-    CHECK(g.nx == 3);
-    CHECK(g.ny == 2);
-    CHECK(g.dx == 0.5);
-    CHECK(g.dy == 2.0);
-    CHECK(g.origin == tessella::Vec3(1, 1, 0));
+    const auto& spec = std::get<GeneratorSpec>(s.tissue);
+    REQUIRE(spec.name == "rectangular_grid");
+    const tessella::ParamValues& g = spec.params;
+    CHECK(g.getInt("nx") == 3);
+    CHECK(g.getInt("ny") == 2);
+    CHECK(g.getFloat("dx") == 0.5);
+    CHECK(g.getFloat("dy") == 2.0);
+    CHECK(g.getVec3("origin") == tessella::Vec3(1, 1, 0));
   }
   SECTION("box grid") {
     const auto s = loadSimulationConfigString("tissue:\n  generator: box_grid\n  box_grid: {nz: 2, dz: 3}\n");
-    const auto& g = std::get<BoxGridSpec>(s.tissue);
-    CHECK(g.nx == 4);
-    CHECK(g.nz == 2);
-    CHECK(g.dz == 3.0);
+    const auto& spec = std::get<GeneratorSpec>(s.tissue);
+    REQUIRE(spec.name == "box_grid");
+    const tessella::ParamValues& g = spec.params;
+    CHECK(g.getInt("nx") == 4);
+    CHECK(g.getInt("nz") == 2);
+    CHECK(g.getFloat("dz") == 3.0);
   }
   SECTION("voronoi in a ball") {
     const auto s = loadSimulationConfigString(
         "tissue:\n  generator: voronoi\n  voronoi:\n    domain: ball\n    count: 20\n    lloyd_iterations: 2\n"
         "    ball: {radius: 3, subdivisions: 2}\n");
-    const auto& v = std::get<VoronoiSpec>(s.tissue);
-    CHECK(v.dim() == 3);
-    CHECK(v.seeds.count == 20);
-    CHECK(v.seeds.file.empty());
-    CHECK(v.seeds.options.lloyd_iterations == 2);
-    const auto& ball = std::get<tessella::Ball>(v.domain);
-    CHECK(ball.radius == 3.0);
-    CHECK(ball.subdivisions == 2);
+    const auto& v = std::get<GeneratorSpec>(s.tissue);
+    REQUIRE(v.name == "voronoi");
+    CHECK(v.shape().dim == 3);
+    CHECK(v.params.getInt("count") == 20);
+    CHECK_FALSE(v.params.has("seed_file"));
+    CHECK(v.params.getInt("lloyd_iterations") == 2);
+    REQUIRE(v.params.getString("domain") == "ball");
+    CHECK(v.params.getFloat("ball.radius") == 3.0);
+    CHECK(v.params.getInt("ball.subdivisions") == 2);
   }
   SECTION("dome") {
     const auto s = loadSimulationConfigString(
         "tissue:\n  generator: dome\n  dome: {shape: paraboloid, base_radius: 4, height: 6, count: 30}\n");
-    const auto& d = std::get<DomeSpec>(s.tissue);
-    CHECK(d.dome.shape == tessella::Dome::Shape::Paraboloid);
-    CHECK(d.dome.base_radius == 4.0);
-    CHECK(d.dome.height == 6.0);
-    CHECK(d.seeds.count == 30);
+    const auto& d = std::get<GeneratorSpec>(s.tissue);
+    REQUIRE(d.name == "dome");
+    const std::optional<tessella::Dome> dome = tissueDome(s.tissue);
+    REQUIRE(dome);
+    CHECK(dome->shape == tessella::Dome::Shape::Paraboloid);
+    CHECK(dome->base_radius == 4.0);
+    CHECK(dome->height == 6.0);
+    CHECK(d.params.getInt("count") == 30);
   }
 }
 

@@ -49,6 +49,13 @@ double Dome::heightAt(double r) const {
   return height - r * r / (std::sqrt((sphere_radius - r) * (sphere_radius + r)) + sphere_radius);
 }
 
+const EnumTable<Dome::Shape>& domeShapes() {
+  static const EnumTable<Dome::Shape> shapes(
+      "dome shape", {{"spherical_cap", Dome::Shape::SphericalCap, "A spherical cap (height <= base radius)."},
+                     {"paraboloid", Dome::Shape::Paraboloid, "A paraboloid of revolution."}});
+  return shapes;
+}
+
 Vec3 Dome::lift(const Vec3& p) const {
   const double r = std::hypot(p.x() - base_center.x(), p.y() - base_center.y());
   return Vec3(p.x(), p.y(), base_center.z() + heightAt(r));

@@ -86,6 +86,8 @@ KeySpec& Schema::key(const std::string& section, const ParamSpec& param) {
   k.max_exclusive = param.range.max_exclusive;
   k.choices = param.choices;
   if (!param.unless_set.empty()) k.unless_set = joinPath(section, param.unless_set);
+  // What completeParams() requires, the schema requires too.
+  k.required = !param.default_value && param.absent_doc.empty() && param.unless_set.empty();
   return k;
 }
 

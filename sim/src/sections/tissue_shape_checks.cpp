@@ -29,15 +29,14 @@ struct TissueShape {
 };
 
 TissueShape shapeOf(const Config& c, const TissueSpec& spec) {
-  const std::string generator = "tissue.generator: " + c.getString("tissue.generator");
-  if (std::holds_alternative<RectangularGridSpec>(spec) ||
-      std::holds_alternative<HexagonalGridSpec>(spec))
-    return {2, Embedding::Planar, generator};
-  if (std::holds_alternative<BoxGridSpec>(spec)) return {3, Embedding::Volume, generator};
-  if (const auto* v = std::get_if<VoronoiSpec>(&spec))
-    return {v->dim(), v->dim() == 2 ? Embedding::Planar : Embedding::Volume,
-            "tissue.voronoi.domain: " + c.getString("tissue.voronoi.domain")};
-  if (std::holds_alternative<DomeSpec>(spec)) return {2, Embedding::Surface, generator};
+  if (const auto* g = std::get_if<GeneratorSpec>(&spec)) {
+    const GeneratedShape shape = g->shape();
+    const std::string source = shape.decided_by.empty()
+                                   ? "tissue.generator: " + g->name
+                                   : "tissue." + g->name + "." + shape.decided_by + ": " +
+                                         formatValue(g->params.get(shape.decided_by));
+    return {shape.dim, shape.embedding, source};
+  }
   if (const auto* import = std::get_if<ImportSpec>(&spec))
     return {import->tissue->dim(), import->tissue->embedding(), "the import of " + c.getString("tissue.import.file")};
   const auto& snap = std::get<SnapshotSpec>(spec);
@@ -61,14 +60,16 @@ void checkSnapshotAgainstGenerators(const Config& c, const TissueShape& shape) {
     int dim;
   };
   std::vector<Described> described;
-  for (const char* grid : {"rectangular_grid", "hexagonal_grid", "dome"})
-    if (sectionGiven(c, std::string("tissue.") + grid))
-      described.push_back({std::string("tissue.") + grid, 2});
-  if (sectionGiven(c, "tissue.box_grid")) described.push_back({"tissue.box_grid", 3});
-  if (sectionGiven(c, "tissue.voronoi")) {
-    const std::string domain = c.getString("tissue.voronoi.domain");
-    described.push_back(
-        {"tissue.voronoi (domain: " + domain + ")", domain == "box" || domain == "ball" ? 3 : 2});
+  for (const auto& g : generators().entries()) {
+    const std::string section = "tissue." + g.name;
+    if (!sectionGiven(c, section)) continue;
+    // The shape its keys describe (defaults for the keys not given).
+    const GeneratorSpec spec = describedGenerator(c, g.name);
+    const GeneratedShape shape = spec.shape();
+    described.push_back({shape.decided_by.empty() ? section
+                                                  : section + " (" + shape.decided_by + ": " +
+                                                        formatValue(spec.params.get(shape.decided_by)) + ")",
+                         shape.dim});
   }
   std::set<int> dims;
   for (const Described& d : described) dims.insert(d.dim);

@@ -4,6 +4,7 @@
 // a sheet's vertices on it, generators/dome.hpp) and growth (which keeps them
 // there, growth::domeProjection), so neither has to know the other.
 
+#include "tessella/tissue/enum_table.hpp"
 #include "tessella/tissue/vec3.hpp"
 
 namespace tessella {
@@ -30,5 +31,9 @@ struct Dome {
 /// radius or height not positive, or a spherical cap is taller than a
 /// hemisphere (no longer a height field over its footprint).
 void checkDome(const Dome& dome);
+
+/// The shapes' names in configurations, scripts and saved run states:
+/// spherical_cap, paraboloid.
+const EnumTable<Dome::Shape>& domeShapes();
 
 }  // namespace tessella

@@ -97,6 +97,10 @@ struct SplitOptions {
   double min_fraction = 1e-6;
 };
 
+// The plans splitCell makes and applies (cell_split_plan.hpp).
+struct CellSplitPlan2D;
+struct CellSplitPlan3D;
+
 class Tissue {
  public:
   Tissue(int dim, Embedding embedding);
@@ -248,8 +252,9 @@ class Tissue {
   void newCell(Index cell);
   void dividedCell(Index mother, Index daughter, double fraction);
   void paranoidCheck(const char* where) const;
-  CellSplit splitCell2D(CellId c, const Plane& plane, const SplitOptions& options);
-  CellSplit splitCell3D(CellId c, const Plane& plane, const SplitOptions& options);
+  // splitCell's edits: apply a plan made for this tissue as it is.
+  CellSplit applyCellSplit(CellId c, const CellSplitPlan2D& plan);
+  CellSplit applyCellSplit(CellId c, const CellSplitPlan3D& plan);
   double measureFraction(int degree, Index kept, Index part) const;
 
   CellComplex complex_;

@@ -111,7 +111,8 @@ class Schema {
   KeySpec& key(std::string path, ValueType type, std::string doc);
   /// Declares the key `<section>.<param.name>` from a registry entry's
   /// parameter (tessella/tissue/registry.hpp): type, doc, default, range,
-  /// choices; `unless_set` names a sibling key.
+  /// choices; `unless_set` names a sibling key; a parameter with neither a
+  /// default nor a meaning when absent is required.
   KeySpec& key(const std::string& section, const ParamSpec& param);
 
   /// Lookups take concrete paths (entry names in place of the placeholder).

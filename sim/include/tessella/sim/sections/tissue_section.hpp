@@ -1,70 +1,38 @@
 #pragma once
 // The `tissue:` section: which generator builds the initial tissue, and its
 // parameters. `tissue.generator` picks one of the subsections; only that one
-// is read (and written to run.yaml).
+// is read (and written to run.yaml). The choices are the generators of
+// tessella::generators() (generators/generator_registry.hpp: grids, Voronoi,
+// dome), whose parameter tables are the subsections' keys, and two sources
+// read through io, listed in tissueFileSources():
 //
-//   rectangular_grid  nx x ny rectangles                     (2D)
-//   hexagonal_grid    nx x ny regular hexagons               (2D)
-//   box_grid          nx x ny x nz boxes                     (3D)
-//   voronoi           Voronoi cells of seed points clipped to a rectangle or
-//                     disk (2D) or to a box or ball (3D)
-//   dome              Voronoi cells of a disk lifted onto a dome (curved 2D
-//                     sheet, the L1 layer of a shoot apical meristem)
 //   snapshot          a .vtu written by Tessella: a run restarts from it
 //   import            a segmented tissue from another tool (io::importFormats())
 
-#include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
 #include <variant>
 
-#include "tessella/generators/dome.hpp"
-#include "tessella/generators/voronoi.hpp"
+#include "tessella/generators/generator_registry.hpp"
 #include "tessella/io/import.hpp"
 #include "tessella/io/vtu.hpp"
 #include "tessella/sim/config/config.hpp"
 #include "tessella/sim/config/schema.hpp"
+#include "tessella/tissue/dome_surface.hpp"
 #include "tessella/tissue/tissue.hpp"
 
 namespace tessella::sim {
 
-struct RectangularGridSpec {
-  std::size_t nx = 10, ny = 10;
-  double dx = 1.0, dy = 1.0;
-  Vec3 origin = Vec3::Zero();
-};
-
-struct HexagonalGridSpec {
-  std::size_t nx = 10, ny = 10;
-  double radius = 1.0;
-  Vec3 origin = Vec3::Zero();
-};
-
-struct BoxGridSpec {
-  std::size_t nx = 4, ny = 4, nz = 4;
-  double dx = 1.0, dy = 1.0, dz = 1.0;
-  Vec3 origin = Vec3::Zero();
-};
-
-/// Where the seed points of a Voronoi or dome tissue come from: `count`
-/// uniform random points (drawn with the run's RNG seed), or a CSV file.
-struct SeedSpec {
-  std::size_t count = 0;
-  std::string file;  ///< absolute path; empty for random seeds
-  VoronoiOptions options;
-};
-
-struct VoronoiSpec {
-  std::variant<Rectangle, Disk, Box, Ball> domain;
-  SeedSpec seeds;
-  int dim() const { return domain.index() < 2 ? 2 : 3; }
-};
-
-struct DomeSpec {
-  Dome dome;
-  SeedSpec seeds;
+/// A generator of tessella::generators() and its parameters, as read from
+/// tissue.<name> (completed with the defaults and checked).
+struct GeneratorSpec {
+  std::string name;
+  ParamValues params;
+  /// What it will make (the generator's shape() of these parameters).
+  GeneratedShape shape() const;
 };
 
 /// A saved snapshot to restart from. It is read while the configuration is
@@ -89,11 +57,17 @@ struct ImportSpec {
   std::shared_ptr<const Tissue> tissue;
 };
 
-using TissueSpec = std::variant<RectangularGridSpec, HexagonalGridSpec, BoxGridSpec, VoronoiSpec, DomeSpec,
-                                SnapshotSpec, ImportSpec>;
+using TissueSpec = std::variant<GeneratorSpec, SnapshotSpec, ImportSpec>;
 
-/// The dome a tissue spec puts its sheet on: a dome generator's, or the one
-/// saved in a snapshot of a run on a dome (domeRunState); none otherwise.
+/// The sources of tissue.generator sim adds to the generators' table: they
+/// read a file through io (snapshot, import). Each reads its completed
+/// parameters into its spec; an InputError is located at tissue.<name>.file.
+using FileSourceReader = std::function<TissueSpec(const ParamValues&)>;
+const Registry<FileSourceReader>& tissueFileSources();
+
+/// The dome a tissue spec puts its sheet on: a generator's (its dome() hook,
+/// the dome generator), or the one saved in a snapshot of a run on a dome
+/// (domeRunState); none otherwise.
 std::optional<Dome> tissueDome(const TissueSpec& spec);
 /// A dome as run-state entries (dome.*), exact to the bit.
 io::RunState domeRunState(const Dome& dome);
@@ -101,13 +75,18 @@ io::RunState domeRunState(const Dome& dome);
 /// Declares tissue.* in the schema.
 void declareTissueSection(Schema& schema);
 
+/// The generator `name` with the values tissue.<name> gives (defaults for the
+/// rest), without the checks across keys: also for a section that is given
+/// but not chosen.
+GeneratorSpec describedGenerator(const Config& config, const std::string& name);
+
 /// Reads tissue.* from a validated config, with the checks that involve
 /// several keys (min < max, count vs seed_file, ...), as ConfigErrors.
 TissueSpec readTissueSection(const Config& config);
 
 /// Builds the tissue a spec describes; `rng_seed` draws random seed points.
 /// Generator errors (a malformed seed file, a seed outside the domain) are
-/// InputErrors from tissue/.
+/// InputErrors from generators/.
 Tissue buildTissue(const TissueSpec& spec, std::uint64_t rng_seed);
 
 /// buildTissue() for a spec read from `config`: generator InputErrors are

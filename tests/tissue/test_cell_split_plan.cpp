@@ -1,0 +1,171 @@
+// Division plans on their own: what planCellSplit2D/3D decide (crossed edges
+// and walls, new vertex positions, sides) for cells whose cut is known by
+// hand, that planning never changes the tissue, and that splitCell does what
+// the plan says.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+#include "fixtures.hpp"
+#include "tessella/tissue/cell_split_plan.hpp"
+#include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/geometry.hpp"
+
+using namespace tessella;
+using namespace tessella::fixtures;
+
+namespace {
+
+// Everything planning could have changed.
+struct Snapshot {
+  std::uint64_t topology, geometry;
+  std::vector<Vec3> positions;
+  explicit Snapshot(const Tissue& t)
+      : topology(t.topologyVersion()),
+        geometry(t.geometryVersion()),
+        positions(t.positions().begin(), t.positions().end()) {}
+  bool operator==(const Snapshot&) const = default;
+};
+
+// The edge of `t` between the vertices at these positions.
+EdgeId edgeBetween(const Tissue& t, const Vec3& p, const Vec3& q) {
+  for (EdgeId e : t.edges()) {
+    const Vec3 &a = t.position(t.topology().edgeFrom(e)), &b = t.position(t.topology().edgeTo(e));
+    if (((a - p).norm() < 1e-12 && (b - q).norm() < 1e-12) || ((a - q).norm() < 1e-12 && (b - p).norm() < 1e-12))
+      return e;
+  }
+  return {};
+}
+
+VertexId vertexAt(const Tissue& t, const Vec3& p) {
+  for (VertexId v : t.vertices())
+    if ((t.position(v) - p).norm() < 1e-12) return v;
+  return {};
+}
+
+}  // namespace
+
+TEST_CASE("a 2D plan: a square cut across two edges, and through two corners", "[tissue][editing][plan]") {
+  Tissue t = singlePolygon({Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 1, 0), Vec3(0, 1, 0)});
+  const CellId c(0);
+  const Snapshot before(t);
+
+  SECTION("a vertical plane at x = 0.5 crosses the bottom and top edges") {
+    const CellSplitPlan2D plan = planCellSplit2D(t, c, Plane{Vec3(0.5, 0.3, 0), Vec3(1, 0, 0)});
+    CHECK(Snapshot(t) == before);
+    REQUIRE(plan.a.isNew());
+    REQUIRE(plan.b.isNew());
+    // In loop order: the bottom edge (0 -> 1) first, then the top edge (2 -> 3).
+    CHECK(plan.a.edge == edgeBetween(t, Vec3(0, 0, 0), Vec3(2, 0, 0)));
+    CHECK(plan.b.edge == edgeBetween(t, Vec3(2, 1, 0), Vec3(0, 1, 0)));
+    CHECK((plan.a.point - Vec3(0.5, 0, 0)).norm() < 1e-15);
+    CHECK((plan.b.point - Vec3(0.5, 1, 0)).norm() < 1e-15);
+    // The loop part from a to b runs through (2, 0) and (2, 1): x > 0.5, the daughter's side.
+    CHECK(plan.daughter_from_a_to_b);
+    CHECK(plan.mother_fraction == Approx(0.25).epsilon(1e-14));
+
+    // splitCell does what the plan says.
+    const CellSplit s = t.splitCell(c, Plane{Vec3(0.5, 0.3, 0), Vec3(1, 0, 0)});
+    REQUIRE(s.new_vertices.size() == 2);
+    CHECK(t.position(s.new_vertices[0]) == plan.a.point);
+    CHECK(t.position(s.new_vertices[1]) == plan.b.point);
+    CHECK(cellMeasure(t, c) == Approx(0.5));
+    CHECK(cellCentroid(t, s.daughter).x() > 0.5);
+  }
+
+  SECTION("the plane flipped: the same chord, the other part goes to the daughter") {
+    const CellSplitPlan2D plan = planCellSplit2D(t, c, Plane{Vec3(0.5, 0.3, 0), Vec3(-1, 0, 0)});
+    CHECK_FALSE(plan.daughter_from_a_to_b);
+    CHECK(plan.mother_fraction == Approx(0.75).epsilon(1e-14));
+  }
+
+  SECTION("a diagonal through two corners reuses them") {
+    const CellSplitPlan2D plan = planCellSplit2D(t, c, Plane{Vec3(1, 0.5, 0), Vec3(1, -2, 0)});
+    CHECK_FALSE(plan.a.isNew());
+    CHECK_FALSE(plan.b.isNew());
+    CHECK(plan.a.vertex == vertexAt(t, Vec3(0, 0, 0)));
+    CHECK(plan.b.vertex == vertexAt(t, Vec3(2, 1, 0)));
+    CHECK(plan.mother_fraction == Approx(0.5).epsilon(1e-14));
+    const CellSplit s = t.splitCell(c, Plane{Vec3(1, 0.5, 0), Vec3(1, -2, 0)});
+    CHECK(s.new_vertices.empty());
+  }
+
+  SECTION("a refused plan throws and changes nothing") {
+    CHECK_THROWS_AS(planCellSplit2D(t, c, Plane{Vec3(5, 0, 0), Vec3(1, 0, 0)}), GeometryError);       // misses
+    CHECK_THROWS_AS(planCellSplit2D(t, c, Plane{Vec3(0, 0, 0), Vec3(0, 1, 0)}), GeometryError);       // along a wall
+    CHECK_THROWS_AS(planCellSplit2D(t, c, Plane{Vec3(1e-7, 0, 0), Vec3(1, 0, 0)}), GeometryError);    // sliver
+    CHECK_THROWS_AS(planCellSplit2D(t, c, Plane{Vec3(1, 0, 0), Vec3(1, 0, 0)}, {.snap_tolerance = 1}), InputError);
+    CHECK_THROWS_AS(planCellSplit3D(t, c, Plane{Vec3(1, 0, 0), Vec3(1, 0, 0)}), InputError);  // a 2D tissue
+    CHECK(Snapshot(t) == before);
+  }
+}
+
+TEST_CASE("a 3D plan: a box cut across four edges, and through a diagonal", "[tissue][editing][plan]") {
+  Tissue t = box(2, 1, 1);
+  const CellId c(0);
+  const Snapshot before(t);
+
+  SECTION("a plane at x = 0.5 splits the four x edges and the four walls along x") {
+    const Plane plane{Vec3(0.5, 0.5, 0.5), Vec3(1, 0, 0)};
+    const CellSplitPlan3D plan = planCellSplit3D(t, c, plane);
+    CHECK(Snapshot(t) == before);
+    REQUIRE(plan.ring.size() == 4);
+    Vec3 area = Vec3::Zero();
+    for (std::size_t i = 0; i < 4; ++i) {
+      const CutNode& n = plan.ring[i];
+      REQUIRE(n.isNew());
+      CHECK(n.point.x() == 0.5);
+      // Each new vertex lies on an edge along x.
+      const Vec3 &a = t.position(t.topology().edgeFrom(n.edge)), &b = t.position(t.topology().edgeTo(n.edge));
+      CHECK(a.y() == b.y());
+      CHECK(a.z() == b.z());
+      CHECK(n.point.y() == a.y());
+      CHECK(n.point.z() == a.z());
+      area += n.point.cross(plan.ring[(i + 1) % 4].point);
+    }
+    CHECK(area.dot(plane.normal) > 0);  // counter-clockwise seen from the daughter's side
+    REQUIRE(plan.wall_cuts.size() == 4);
+    for (const auto& cut : plan.wall_cuts) {
+      CHECK(cut.from < 4);
+      CHECK(cut.to < 4);
+      CHECK(cut.from != cut.to);
+    }
+    REQUIRE(plan.distances.size() == 8);
+    for (const auto& [v, d] : plan.distances) CHECK(d == t.position(v).x() - 0.5);
+
+    const CellSplit s = t.splitCell(c, plane);
+    REQUIRE(s.new_vertices.size() == 4);
+    for (std::size_t i = 0; i < 4; ++i) CHECK(t.position(s.new_vertices[i]) == plan.ring[i].point);
+    CHECK(cellMeasure(t, c) == Approx(0.5));
+    CHECK(cellMeasure(t, s.daughter) == Approx(1.5));
+  }
+
+  SECTION("a plane through four corners of a cube reuses them and splits two walls diagonally") {
+    t = box(1, 1, 1);
+    const Plane plane{Vec3(0.5, 0.5, 0.5), Vec3(1, -1, 0)};  // x = y: corners (0,0,*) and (1,1,*)
+    const CellSplitPlan3D plan = planCellSplit3D(t, c, plane);
+    REQUIRE(plan.ring.size() == 4);
+    for (const CutNode& n : plan.ring) {
+      CHECK_FALSE(n.isNew());
+      CHECK(n.point == t.position(n.vertex));
+      CHECK(n.point.x() == n.point.y());
+    }
+    CHECK(plan.wall_cuts.size() == 2);  // the walls z = 0 and z = 1
+    const auto zeros = std::count_if(plan.distances.begin(), plan.distances.end(),
+                                     [](const auto& vd) { return vd.second == 0; });
+    CHECK(zeros == 4);
+    const CellSplit s = t.splitCell(c, plane);
+    CHECK(s.new_vertices.empty());
+    CHECK(cellMeasure(t, c) == Approx(0.5));
+    CHECK(cellMeasure(t, s.daughter) == Approx(0.5));
+  }
+
+  SECTION("a refused plan throws and changes nothing") {
+    CHECK_THROWS_AS(planCellSplit3D(t, c, Plane{Vec3(3, 0, 0), Vec3(1, 0, 0)}), GeometryError);     // misses
+    CHECK_THROWS_AS(planCellSplit3D(t, c, Plane{Vec3(0, 0, 0), Vec3(1, 0, 0)}), GeometryError);     // a wall's plane
+    CHECK_THROWS_AS(planCellSplit3D(t, c, Plane{Vec3(1e-7, 0, 0), Vec3(1, 0, 0)}), GeometryError);  // sliver
+    CHECK_THROWS_AS(planCellSplit3D(t, CellId(7), Plane{Vec3(1, 0, 0), Vec3(1, 0, 0)}), TopologyError);
+    CHECK(Snapshot(t) == before);
+  }
+}

@@ -1,0 +1,66 @@
+#pragma once
+// What dividing a cell by a plane will do, decided without changing anything:
+// Tissue::splitCell plans with these functions, then applies the plan. A plan
+// names the crossed edges and walls, where the new vertices go and which side
+// each part of the cell goes to; every check (a plane missing the cell,
+// running along a wall, leaving a sliver, ...) is made while planning, so a
+// refused division throws before the tissue is touched.
+
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+#include "tessella/tissue/tissue.hpp"
+
+namespace tessella {
+
+/// A corner of the cut: an existing vertex on the plane, or a new vertex at
+/// `point` on the crossed edge `edge`.
+struct CutNode {
+  VertexId vertex;  ///< the existing vertex; invalid for a new one
+  EdgeId edge;      ///< the edge a new vertex splits; invalid for an existing vertex
+  Vec3 point;       ///< where the new vertex goes (the existing vertex's position otherwise)
+  bool isNew() const { return !vertex; }
+};
+
+/// Dividing a 2D cell: a chord between two points of its boundary.
+struct CellSplitPlan2D {
+  /// The chord's ends, in the order of the cell's loop (new vertices are made
+  /// in this order).
+  CutNode a, b;
+  /// The part of the loop from `a` to `b` lies on the plane normal's positive
+  /// side: it becomes the daughter; otherwise the part from `b` to `a` does.
+  bool daughter_from_a_to_b = false;
+  /// The mother's share of the cell's area.
+  double mother_fraction = 0.5;
+};
+
+/// Dividing a 3D cell: a polygon across it whose corners split its edges or
+/// reuse vertices on the plane, and whose sides split its walls.
+struct CellSplitPlan3D {
+  /// The cut polygon, counter-clockwise seen from the positive side.
+  std::vector<CutNode> ring;
+  /// A crossed wall is split between two corners of the ring (indices).
+  struct WallCut {
+    FaceId wall;
+    std::size_t from, to;
+  };
+  /// In the order of the cell's walls.
+  std::vector<WallCut> wall_cuts;
+  /// Signed distance to the plane of each of the cell's vertices, 0 within
+  /// the snap tolerance: the walls with a positive vertex go to the daughter.
+  std::vector<std::pair<VertexId, double>> distances;
+};
+
+/// The plan of Tissue::splitCell for a cell of a 2D (planar or surface)
+/// tissue, with splitCell's checks: InputError for options out of range,
+/// TopologyError for a dead cell, GeometryError for a plane that cannot
+/// divide the cell (docs/ARCHITECTURE.md, "Editing primitives").
+CellSplitPlan2D planCellSplit2D(const Tissue& tissue, CellId c, const Plane& plane,
+                                const SplitOptions& options = {});
+
+/// The plan of Tissue::splitCell for a cell of a 3D tissue, with its checks.
+CellSplitPlan3D planCellSplit3D(const Tissue& tissue, CellId c, const Plane& plane,
+                                const SplitOptions& options = {});
+
+}  // namespace tessella
