@@ -19,7 +19,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 #include <omp.h>
 
-#include "tessella/tissue/voronoi.hpp"
+#include "tessella/generators/voronoi.hpp"
 #include "bench_args.hpp"
 
 using namespace tessella;

@@ -25,8 +25,8 @@
 #include "tessella/growth/linear_field.hpp"
 #include "tessella/growth/registries.hpp"
 #include "tessella/tissue/geometry.hpp"
-#include "tessella/tissue/grids.hpp"
-#include "tessella/tissue/voronoi.hpp"
+#include "tessella/generators/grids.hpp"
+#include "tessella/generators/voronoi.hpp"
 #include "bench_args.hpp"
 
 using namespace tessella;

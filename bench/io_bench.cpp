@@ -17,7 +17,7 @@
 
 #include "bench_args.hpp"
 #include "tessella/io/vtu.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 
 namespace {
 

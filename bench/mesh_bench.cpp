@@ -40,10 +40,10 @@
 #include "bench_args.hpp"
 #include "tessella/mesh/mesh_measures.hpp"
 #include "tessella/mesh/mesh_tissue.hpp"
-#include "tessella/tissue/dome.hpp"
+#include "tessella/generators/dome.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
-#include "tessella/tissue/voronoi.hpp"
+#include "tessella/generators/voronoi.hpp"
 
 using namespace tessella;
 

@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "tessella/tissue/geometry.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 #include "tessella/tissue/tissue.hpp"
 #include "bench_args.hpp"
 

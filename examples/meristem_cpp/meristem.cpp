@@ -13,6 +13,7 @@
 #include <memory>
 #include <string>
 
+#include <tessella/generators.hpp>
 #include <tessella/growth/growth.hpp>
 #include <tessella/io/series.hpp>
 #include <tessella/tissue.hpp>

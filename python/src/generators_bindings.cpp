@@ -1,9 +1,9 @@
 // Generators: grids, Voronoi tissues of random or given seeds, dome sheets.
 // Seeds travel as (n, 3) float64 arrays (z = 0 for 2D domains).
 #include "bindings.hpp"
-#include "tessella/tissue/dome.hpp"
-#include "tessella/tissue/grids.hpp"
-#include "tessella/tissue/voronoi.hpp"
+#include "tessella/generators/dome.hpp"
+#include "tessella/generators/grids.hpp"
+#include "tessella/generators/voronoi.hpp"
 
 namespace tessella::python {
 

@@ -13,7 +13,7 @@
 #include "tessella/growth/radial_field.hpp"
 #include "tessella/growth/registries.hpp"
 #include "tessella/growth/surface_projection.hpp"
-#include "tessella/tissue/dome.hpp"
+#include "tessella/tissue/dome_surface.hpp"
 
 namespace tessella::python {
 

@@ -14,7 +14,7 @@
 #include "tessella/growth/shortest_wall_rule.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 #include "tessella/tissue/validate.hpp"
 
 using namespace tessella;

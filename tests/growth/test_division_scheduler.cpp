@@ -8,7 +8,7 @@
 #include "tessella/growth/division_walls.hpp"
 #include "tessella/growth/registries.hpp"
 #include "tessella/tissue/errors.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 #include "tessella/tissue/validate.hpp"
 
 using namespace tessella;

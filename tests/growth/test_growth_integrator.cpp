@@ -15,7 +15,7 @@
 #include "tessella/growth/meristem_field.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 #include "tessella/tissue/validate.hpp"
 
 using namespace tessella;

@@ -5,7 +5,7 @@
 #include "tessella/growth/harmonic_interpolation.hpp"
 #include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/errors.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 
 using namespace tessella;
 using namespace tessella::growth;

@@ -10,9 +10,9 @@
 #include "tessella/growth/linear_field.hpp"
 #include "tessella/growth/registries.hpp"
 #include "tessella/tissue/geometry.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 #include "tessella/tissue/validate.hpp"
-#include "tessella/tissue/voronoi.hpp"
+#include "tessella/generators/voronoi.hpp"
 
 using namespace tessella;
 using namespace tessella::growth;

@@ -8,7 +8,7 @@
 #include "tessella/growth/new_wall_measure.hpp"
 #include "tessella/growth/shortest_wall_search.hpp"
 #include "tessella/tissue/builders.hpp"
-#include "tessella/tissue/voronoi.hpp"
+#include "tessella/generators/voronoi.hpp"
 
 using namespace tessella;
 using namespace tessella::growth;

@@ -14,7 +14,7 @@
 #include "tessella/io/pvd.hpp"
 #include "tessella/io/text_file.hpp"
 #include "tessella/io/vtu.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 
 using namespace tessella;
 using namespace tessella::io;

@@ -32,7 +32,7 @@
 #include "file_edits.hpp"
 #include "io_test_support.hpp"
 #include "tessella/io/vtu.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 
 using namespace tessella;
 using namespace tessella::io;

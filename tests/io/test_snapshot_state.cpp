@@ -10,7 +10,7 @@
 #include "io_test_support.hpp"
 #include "tessella/io/vtu.hpp"
 #include "tessella/tissue/errors.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 
 using namespace tessella;
 using tessella::io::testing::TempDir;

@@ -13,7 +13,7 @@
 #include "io_test_support.hpp"
 #include "tessella/io/vtu.hpp"
 #include "tessella/tissue/geometry.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 #include "tessella/tissue/validate.hpp"
 
 using namespace tessella;

@@ -5,7 +5,7 @@
 
 #include "mesh_test_support.hpp"
 #include "tessella/mesh/mesh_tissue.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 
 using namespace tessella;
 

@@ -7,10 +7,10 @@
 #include <cmath>
 
 #include "tessella/mesh/mesh_tissue.hpp"
-#include "tessella/tissue/dome.hpp"
+#include "tessella/generators/dome.hpp"
 #include "tessella/tissue/errors.hpp"
-#include "tessella/tissue/grids.hpp"
-#include "tessella/tissue/voronoi.hpp"
+#include "tessella/generators/grids.hpp"
+#include "tessella/generators/voronoi.hpp"
 
 using namespace tessella;
 using Catch::Matchers::Contains;

@@ -11,9 +11,9 @@
 #include "mesh_test_support.hpp"
 #include "tessella/mesh/geometry_check.hpp"
 #include "tessella/mesh/mesh_tissue.hpp"
-#include "tessella/tissue/dome.hpp"
+#include "tessella/generators/dome.hpp"
 #include "tessella/tissue/errors.hpp"
-#include "tessella/tissue/voronoi.hpp"
+#include "tessella/generators/voronoi.hpp"
 
 using namespace tessella;
 using namespace tessella::test;

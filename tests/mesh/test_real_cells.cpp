@@ -21,7 +21,7 @@
 #include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 #include "tessella/tissue/validate.hpp"
 
 using namespace tessella;

@@ -10,7 +10,7 @@
 #include "tessella/mesh/mesh_tissue.hpp"
 #include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/errors.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 
 using namespace tessella;
 using namespace tessella::test;

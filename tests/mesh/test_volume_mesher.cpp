@@ -11,8 +11,8 @@
 #include "tessella/mesh/mesh_tissue.hpp"
 #include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/errors.hpp"
-#include "tessella/tissue/grids.hpp"
-#include "tessella/tissue/voronoi.hpp"
+#include "tessella/generators/grids.hpp"
+#include "tessella/generators/voronoi.hpp"
 
 using namespace tessella;
 using namespace tessella::test;

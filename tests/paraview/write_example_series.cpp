@@ -12,7 +12,7 @@
 
 #include "tessella/io/series.hpp"
 #include "tessella/tissue/geometry.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 
 int main(int argc, char** argv) {
   if (argc != 3) {

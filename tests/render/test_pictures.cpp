@@ -12,7 +12,7 @@
 #include "tessella/render/picture.hpp"
 #include "tessella/render/series_pictures.hpp"
 #include "tessella/tissue/geometry.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 
 using namespace tessella;
 using namespace tessella::render;

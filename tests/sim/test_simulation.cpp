@@ -5,7 +5,7 @@
 
 #include "tessella/sim/simulation.hpp"
 #include "tessella/tissue/geometry.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 
 using namespace tessella;
 using namespace tessella::sim;

@@ -10,7 +10,7 @@
 
 #include "tessella/sim/run/run.hpp"
 #include "tessella/sim/simulation.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;

@@ -11,7 +11,7 @@
 #include "tessella/io/vtu.hpp"
 #include "tessella/sim/run/run.hpp"
 #include "tessella/sim/simulation.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 #include "test_support.hpp"
 
 namespace fs = std::filesystem;

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
+#include "tessella/generators/grids.hpp"
 #include "tessella/sim/run/tissue_summary.hpp"
-#include "tessella/tissue/grids.hpp"
 
 using namespace tessella;
 using namespace tessella::sim;

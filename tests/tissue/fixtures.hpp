@@ -7,7 +7,7 @@
 #include <Eigen/Geometry>
 
 #include "tessella/tissue/builders.hpp"
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 #include "tessella/tissue/tissue.hpp"
 
 namespace tessella::fixtures {

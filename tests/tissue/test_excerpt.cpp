@@ -6,7 +6,7 @@
 
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/excerpt.hpp"
-#include "tessella/tissue/voronoi.hpp"
+#include "tessella/generators/voronoi.hpp"
 
 using namespace tessella;
 

@@ -4,10 +4,10 @@
 #include <string>
 
 #include "../config/exact_text.hpp"
+#include "tessella/generators/grids.hpp"
 #include "tessella/io/vtu.hpp"
 #include "tessella/sim/config/config_error.hpp"
 #include "tessella/tissue/format.hpp"
-#include "tessella/tissue/grids.hpp"
 
 namespace tessella::sim {
 

@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <vector>
 
+#include <tessella/generators.hpp>
 #include <tessella/tissue.hpp>
 #ifdef CONSUMER_WITH_GROWTH
 #include <tessella/growth/growth.hpp>

@@ -1,14 +1,13 @@
 #pragma once
-// Umbrella header of the tissue module.
+// Umbrella header of the tissue module. The generators (grids, Voronoi,
+// dome) are their own module: tessella/generators.hpp.
 #include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/cell_complex.hpp"
+#include "tessella/tissue/dome_surface.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"
-#include "tessella/tissue/grids.hpp"
 #include "tessella/tissue/handles.hpp"
 #include "tessella/tissue/properties.hpp"
 #include "tessella/tissue/tissue.hpp"
 #include "tessella/tissue/validate.hpp"
-#include "tessella/tissue/voronoi.hpp"
-#include "tessella/tissue/dome.hpp"

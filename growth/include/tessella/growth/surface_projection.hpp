@@ -6,7 +6,7 @@
 
 #include <functional>
 
-#include "tessella/tissue/dome.hpp"
+#include "tessella/tissue/dome_surface.hpp"
 #include "tessella/tissue/vec3.hpp"
 
 namespace tessella::growth {
@@ -23,7 +23,7 @@ SurfaceProjection sphereProjection(const Vec3& center, double radius);
 /// Throws InputError for a non-positive curvature.
 SurfaceProjection paraboloidProjection(const Vec3& apex, double curvature);
 
-/// Nearest-point projection onto the surface of a tissue-module Dome (the
+/// Nearest-point projection onto a dome surface (tissue/dome_surface.hpp; the
 /// one the dome generator puts the vertices on), extended past the dome's
 /// base so cells can flow down the flanks: the whole sphere of a spherical
 /// cap, the whole paraboloid of a paraboloid dome.

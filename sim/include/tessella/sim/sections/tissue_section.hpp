@@ -20,13 +20,13 @@
 #include <string>
 #include <variant>
 
+#include "tessella/generators/dome.hpp"
+#include "tessella/generators/voronoi.hpp"
 #include "tessella/io/import.hpp"
 #include "tessella/io/vtu.hpp"
 #include "tessella/sim/config/config.hpp"
 #include "tessella/sim/config/schema.hpp"
-#include "tessella/tissue/dome.hpp"
 #include "tessella/tissue/tissue.hpp"
-#include "tessella/tissue/voronoi.hpp"
 
 namespace tessella::sim {
 

@@ -11,7 +11,7 @@
 #include <string>
 
 #include "tessella/tissue/errors.hpp"
-#include "tessella/tissue/voronoi.hpp"
+#include "tessella/generators/voronoi.hpp"
 
 using namespace tessella;
 

@@ -16,7 +16,7 @@
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/validate.hpp"
-#include "tessella/tissue/voronoi.hpp"
+#include "tessella/generators/voronoi.hpp"
 
 using namespace tessella;
 

@@ -7,7 +7,7 @@
 #include <numbers>
 #include <string>
 
-#include "tessella/tissue/dome.hpp"
+#include "tessella/generators/dome.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/validate.hpp"

@@ -1,4 +1,4 @@
-#include "tessella/tissue/grids.hpp"
+#include "tessella/generators/grids.hpp"
 
 #include <cmath>
 #include <string>

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "tessella/tissue/vec3.hpp"
-#include "tessella/tissue/voronoi.hpp"
+#include "tessella/generators/voronoi.hpp"
 #include "voronoi_domain.hpp"
 
 namespace tessella::detail {

@@ -10,7 +10,7 @@
 
 #include <Eigen/Core>
 
-#include "tessella/tissue/voronoi.hpp"
+#include "tessella/generators/voronoi.hpp"
 
 namespace tessella::detail {
 

@@ -1,14 +1,16 @@
 #pragma once
-// Dome tissues: the usual starting shape of shoot apical meristem models.
+// The dome surface: a spherical cap or a paraboloid of revolution over a
+// footprint disk. Tissue vocabulary shared by the dome generator (which puts
+// a sheet's vertices on it, generators/dome.hpp) and growth (which keeps them
+// there, growth::domeProjection), so neither has to know the other.
 
-#include "tessella/tissue/voronoi.hpp"
+#include "tessella/tissue/vec3.hpp"
 
 namespace tessella {
 
-/// A curved-surface tissue for shoot apical meristem models: a 2D Voronoi
-/// tissue of the dome's footprint disk, lifted onto the dome surface (every
-/// vertex lies on the surface, Embedding::Surface). Only vertices are lifted:
-/// walls are straight chords and cells slightly non-planar polygons.
+/// The surface a dome tissue lies on. Only vertices lie on it: a dome
+/// tissue's walls are straight chords and its cells slightly non-planar
+/// polygons.
 struct Dome {
   enum class Shape { SphericalCap, Paraboloid };
   Shape shape = Shape::SphericalCap;
@@ -23,9 +25,10 @@ struct Dome {
   /// Projects a point vertically onto the surface.
   Vec3 lift(const Vec3& p) const;
 };
-/// footprint_seeds: positions in the footprint disk (their z is ignored);
-/// the footprint is a 256-segment polygon as for Disk.
-Tissue domeTissue(std::span<const Vec3> footprint_seeds, const Dome& dome,
-                  const VoronoiOptions& options = {});
+
+/// InputError naming the field when a dome's fields are not finite, its
+/// radius or height not positive, or a spherical cap is taller than a
+/// hemisphere (no longer a height field over its footprint).
+void checkDome(const Dome& dome);
 
 }  // namespace tessella

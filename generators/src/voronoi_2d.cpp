@@ -41,7 +41,7 @@
 
 #include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/errors.hpp"
-#include "tessella/tissue/voronoi.hpp"
+#include "tessella/generators/voronoi.hpp"
 #include "voronoi_cells.hpp"
 #include "spatial_order.hpp"
 #include "voronoi_domain.hpp"

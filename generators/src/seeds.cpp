@@ -20,7 +20,7 @@
 
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/excerpt.hpp"
-#include "tessella/tissue/voronoi.hpp"
+#include "tessella/generators/voronoi.hpp"
 #include "voronoi_domain.hpp"
 
 namespace tessella {
