@@ -10,7 +10,8 @@ namespace tessella {
 namespace {
 
 void require(bool ok, const char* field, double value, const char* range) {
-  if (!ok) throw InputError(std::string("mesh option ") + field + " = " + formatNumber(value) + " is out of range: " + range);
+  if (!ok)
+    throw InputError(std::string("mesh option ") + field + " = " + formatNumber(value) + " is out of range: " + range);
 }
 
 }  // namespace

@@ -88,7 +88,8 @@ stage, step and time, followed by the cause's message.
       .def(py::init([](const Tissue& t, double start, double end, double dt, std::uint64_t seed) {
              if (!(dt > 0.0)) throw InputError("Simulation: dt must be > 0, got " + formatNumber(dt));
              if (!(end >= start))
-               throw InputError("Simulation: end (" + formatNumber(end) + ") must be >= start (" + formatNumber(start) + ")");
+               throw InputError("Simulation: end (" + formatNumber(end) + ") must be >= start (" + formatNumber(start) +
+                                ")");
              return Simulation(t, sim::SimulationParameters{.time = {start, end, dt}, .rng_seed = seed, .rng_state = {}, .carried = {}});
            }),
            py::arg("tissue"), py::arg("start") = 0.0, py::arg("end") = 10.0, py::arg("dt") = 1.0, py::arg("rng_seed") = 0)

@@ -120,7 +120,8 @@ Eigen::VectorXd cellToElement(const FeMesh& mesh, const Eigen::VectorXd& per_cel
     const double v = per_cell[c];
     if (!std::isfinite(v) || (nonnegative && v < 0.0)) {
       std::ostringstream msg;
-      msg << what << " of cell " << c << " is " << formatNumber(v) << (nonnegative ? "; it must be finite and >= 0" : "; it must be finite");
+      msg << what << " of cell " << c << " is " << formatNumber(v)
+          << (nonnegative ? "; it must be finite and >= 0" : "; it must be finite");
       throw InvalidProblemError(msg.str());
     }
   }

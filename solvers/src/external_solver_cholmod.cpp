@@ -40,8 +40,8 @@ class CholmodSolver final : public ExternalSolver {
     const double tol = std::max(options_.pivot_tolerance, 64.0 * n * std::numeric_limits<double>::epsilon());
     if (!(rc > tol)) {
       std::ostringstream msg;
-      msg << "LinearSolver (CHOLMOD): matrix is singular (reciprocal condition estimate " << formatNumber(rc, 6) << ", n = " << A.rows()
-          << ")";
+      msg << "LinearSolver (CHOLMOD): matrix is singular (reciprocal condition estimate " << formatNumber(rc, 6)
+          << ", n = " << A.rows() << ")";
       throw FactorizationError(msg.str());
     }
   }

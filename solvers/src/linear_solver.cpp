@@ -90,7 +90,8 @@ void LinearSolver::compute(const SparseMatrix& A) {
     if (dmin <= tol * dmax) {
       std::ostringstream msg;
       msg << "LinearSolver: matrix is " << (dmin < -tol * dmax ? "not positive definite" : "singular")
-          << " (smallest LDL^T pivot " << formatNumber(dmin, 6) << ", largest " << formatNumber(dmax, 6) << ", n = " << n << ")";
+          << " (smallest LDL^T pivot " << formatNumber(dmin, 6) << ", largest " << formatNumber(dmax, 6)
+          << ", n = " << n << ")";
       throw FactorizationError(msg.str());
     }
   } else {

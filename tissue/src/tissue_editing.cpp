@@ -5,12 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <string>
 #include <stdexcept>
 
 #include "polygon_kernels.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/tissue.hpp"
 
@@ -18,27 +18,17 @@ namespace tessella {
 
 namespace {
 
-std::string fmt(const Vec3& p) {
-  std::ostringstream s;
-  s.precision(12);
-  s << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
-  return s.str();
-}
+// Plane points and split points are computed: twelve digits tell them apart.
+std::string fmt(const Vec3& p) { return formatPoint(p, 12); }
 
 // SplitOptions out of range would snap whole cells onto the plane or let
 // slivers (or nothing) through: refused before anything changes.
 void checkSplitOptions(const SplitOptions& o) {
-  const auto text = [](double v) {
-    std::ostringstream s;
-    s.precision(12);
-    s << v;
-    return s.str();
-  };
   if (!(o.snap_tolerance >= 0.0 && o.snap_tolerance <= kMaxSnapTolerance))
-    throw InputError("splitCell: option snap_tolerance = " + text(o.snap_tolerance) + " is out of range; expected [0, " +
-                     text(kMaxSnapTolerance) + "] (a fraction of the cell size)");
+    throw InputError("splitCell: option snap_tolerance = " + formatNumber(o.snap_tolerance) +
+                     " is out of range; expected [0, " + formatNumber(kMaxSnapTolerance) + "] (a fraction of the cell size)");
   if (!(o.min_fraction >= 0.0 && o.min_fraction < 0.5))
-    throw InputError("splitCell: option min_fraction = " + text(o.min_fraction) +
+    throw InputError("splitCell: option min_fraction = " + formatNumber(o.min_fraction) +
                      " is out of range; expected [0, 0.5) (a fraction of the cell's measure)");
 }
 
@@ -233,7 +223,7 @@ CellSplit Tissue::splitCell2D(CellId c, const Plane& plane, const SplitOptions& 
   for (OrientedEdge oe : complex_.faceEdges(f)) edges.push_back(oe.handle());
   const int n = static_cast<int>(verts.size());
   const PolygonMeasures m = polygonMeasures(*this, f);
-  if (!(m.area > 0)) throw GeometryError(who + " has non-positive area " + std::to_string(m.area), {2, f.index()});
+  if (!(m.area > 0)) throw GeometryError(who + " has non-positive area " + formatNumber(m.area, 6), {2, f.index()});
   const Vec3 normal = plane.normal.normalized();
   const Vec3 u = normal.cross(m.normal);
   if (u.norm() < 1e-9) throw GeometryError("division plane is parallel to " + who, {2, f.index()});
@@ -315,8 +305,8 @@ CellSplit Tissue::splitCell2D(CellId c, const Plane& plane, const SplitOptions& 
   const double total = lab.area + lba.area;
   if (std::min(lab.area, lba.area) < options.min_fraction * total)
     throw GeometryError("division of " + who + " would leave a sliver of " +
-                            std::to_string(std::min(lab.area, lba.area) / total) + " of its area (minimum " +
-                            std::to_string(options.min_fraction) + ")",
+                            formatNumber(std::min(lab.area, lba.area) / total, 6) + " of its area (minimum " +
+                            formatNumber(options.min_fraction) + ")",
                         {2, f.index()});
 
   CellSplit result;
@@ -471,8 +461,8 @@ CellSplit Tissue::splitCell3D(CellId c, const Plane& plane, const SplitOptions& 
     }
     const double positive = v6 / 6.0, smaller = std::min(positive, volume - positive);
     if (smaller < options.min_fraction * volume)
-      throw GeometryError("division of " + who + " would leave a sliver of " + std::to_string(smaller / volume) +
-                              " of its volume (minimum " + std::to_string(options.min_fraction) + ")",
+      throw GeometryError("division of " + who + " would leave a sliver of " + formatNumber(smaller / volume, 6) +
+                              " of its volume (minimum " + formatNumber(options.min_fraction) + ")",
                           {3, c.index()});
   }
 
