@@ -6,7 +6,7 @@
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
 
-namespace tessella {
+namespace tessella::mesh {
 namespace {
 
 void require(bool ok, const char* field, double value, const char* range) {
@@ -32,4 +32,4 @@ void validateMeshOptions(const MeshOptions& o) {
           "(0, 1e-3)");
 }
 
-}  // namespace tessella
+}  // namespace tessella::mesh

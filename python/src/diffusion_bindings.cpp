@@ -11,6 +11,10 @@
 
 namespace tessella::python {
 
+// The API bound in this file, by its own names.
+using namespace tessella::mesh;
+using namespace tessella::solvers;
+
 namespace {
 
 using OptFunction = std::optional<SpatialFunction>;

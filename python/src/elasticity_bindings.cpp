@@ -8,6 +8,10 @@
 
 namespace tessella::python {
 
+// The API bound in this file, by its own names.
+using namespace tessella::mesh;
+using namespace tessella::solvers;
+
 void bindElasticity(py::module_& m) {
   bindEnum<ElasticModel>(m, "ElasticModel", "Kinematics of the elastic problem.",
                          {{"plane_stress", {"PlaneStress", ElasticModel::PlaneStress}},

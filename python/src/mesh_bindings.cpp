@@ -10,6 +10,9 @@
 
 namespace tessella::python {
 
+// The API bound in this file, by its own names.
+using namespace tessella::mesh;
+
 namespace {
 
 std::vector<double> perItem(int n, const auto& f) {

@@ -10,7 +10,7 @@
 #include <memory>
 #include <sstream>
 
-namespace tessella {
+namespace tessella::solvers {
 
 // Everything of one species that does not change between time steps, plus the
 // factorised system of the last step length (refactorised when dt changes).
@@ -35,7 +35,7 @@ DiffusionReaction& DiffusionReaction::operator=(DiffusionReaction&&) noexcept = 
 
 namespace {
 
-void checkFacetList(const FeMesh& mesh, const std::vector<int>& facets, const std::string& where) {
+void checkFacetList(const mesh::FeMesh& mesh, const std::vector<int>& facets, const std::string& where) {
   for (int f : facets)
     if (f < 0 || f >= mesh.numWallFacets()) {
       std::ostringstream msg;
@@ -44,7 +44,7 @@ void checkFacetList(const FeMesh& mesh, const std::vector<int>& facets, const st
     }
 }
 
-Eigen::VectorXd interpolate(const FeMesh& mesh, const SpatialFunction& f, double t) {
+Eigen::VectorXd interpolate(const mesh::FeMesh& mesh, const SpatialFunction& f, double t) {
   Eigen::VectorXd v(mesh.numNodes());
   for (int i = 0; i < mesh.numNodes(); ++i) v[i] = f(mesh.nodes.row(i).transpose(), t);
   return v;
@@ -52,7 +52,7 @@ Eigen::VectorXd interpolate(const FeMesh& mesh, const SpatialFunction& f, double
 
 }  // namespace
 
-DiffusionReaction::DiffusionReaction(const FeMesh& mesh, std::vector<Species> species, DiffusionOptions options)
+DiffusionReaction::DiffusionReaction(const mesh::FeMesh& mesh, std::vector<Species> species, DiffusionOptions options)
     : mesh_(&mesh), options_(options) {
   checkMesh(mesh);
   if (species.empty()) throw InvalidProblemError("DiffusionReaction: no species given");
@@ -265,4 +265,4 @@ double DiffusionReaction::totalAmount(int species) const {
   return (mass_ * u_.col(species)).sum();
 }
 
-}  // namespace tessella
+}  // namespace tessella::solvers

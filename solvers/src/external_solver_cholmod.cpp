@@ -13,7 +13,7 @@
 #include <Eigen/CholmodSupport>
 #endif
 
-namespace tessella::detail {
+namespace tessella::solvers::detail {
 
 #if TESSELLA_HAVE_CHOLMOD
 namespace {
@@ -73,4 +73,4 @@ std::unique_ptr<ExternalSolver> makeCholmodSolver(const LinearSolverOptions&) {
 }
 #endif
 
-}  // namespace tessella::detail
+}  // namespace tessella::solvers::detail

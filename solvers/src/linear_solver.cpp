@@ -9,7 +9,7 @@
 #include <limits>
 #include <sstream>
 
-namespace tessella {
+namespace tessella::solvers {
 
 std::string toString(SolverMethod method) {
   switch (method) {
@@ -189,4 +189,4 @@ Eigen::VectorXd solveLinear(const SparseMatrix& A, const Eigen::VectorXd& b, con
   return x;
 }
 
-}  // namespace tessella
+}  // namespace tessella::solvers

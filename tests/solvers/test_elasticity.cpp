@@ -11,6 +11,8 @@
 #include <cmath>
 
 using namespace tessella;
+using namespace tessella::mesh;
+using namespace tessella::solvers;
 using tessella::test::boxMesh;
 using tessella::test::rectangleMesh;
 

@@ -95,7 +95,7 @@ CompartmentSpec readCompartmentSection(const Config& c) {
     return std::isalnum(ch) || ch == '_';
   });
   if (!plain) throw c.errorAt("compartments.field", "must be a name of letters, digits and '_', got '" + d.field + "'");
-  if (c.getString("compartments.scheme") == "crank_nicolson") d.scheme = TimeScheme::CrankNicolson;
+  if (c.getString("compartments.scheme") == "crank_nicolson") d.scheme = solvers::TimeScheme::CrankNicolson;
   d.every = static_cast<std::size_t>(c.getInt("compartments.every"));
   if (c.has("compartments.dt")) d.dt = c.getFloat("compartments.dt");
   d.initial = c.getFloat("compartments.initial");

@@ -146,8 +146,8 @@ DiffusionSpec readDiffusionSection(const Config& c) {
   const std::string mode = c.getString("diffusion.mode");
   if (mode == "none") return d;
   d.steady = mode == "steady";
-  if (!d.steady && c.getString("diffusion.scheme") == "crank_nicolson") d.scheme = TimeScheme::CrankNicolson;
-  d.mass = c.getString("diffusion.mass") == "lumped" ? MassType::Lumped : MassType::Consistent;
+  if (!d.steady && c.getString("diffusion.scheme") == "crank_nicolson") d.scheme = solvers::TimeScheme::CrankNicolson;
+  d.mass = c.getString("diffusion.mass") == "lumped" ? solvers::MassType::Lumped : solvers::MassType::Consistent;
   d.every = static_cast<std::size_t>(c.getInt("diffusion.every"));
   if (c.has("diffusion.dt")) d.dt = c.getFloat("diffusion.dt");
   if (c.has("diffusion.by_property")) d.type_property = c.getString("diffusion.by_property");

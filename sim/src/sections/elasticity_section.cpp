@@ -70,9 +70,9 @@ ElasticitySpec readElasticitySection(const Config& c) {
   const std::string model = c.getString("elasticity.model");
   if (model == "none") return e;
   e.enabled = true;
-  e.model = model == "plane_stress" ? ElasticModel::PlaneStress
-            : model == "plane_strain" ? ElasticModel::PlaneStrain
-                                      : ElasticModel::Solid;
+  e.model = model == "plane_stress" ? solvers::ElasticModel::PlaneStress
+            : model == "plane_strain" ? solvers::ElasticModel::PlaneStrain
+                                      : solvers::ElasticModel::Solid;
   e.every = static_cast<std::size_t>(c.getInt("elasticity.every"));
   if (c.has("elasticity.by_property")) e.type_property = c.getString("elasticity.by_property");
   e.young = detail::readCoefficient(c, "elasticity", "young");
@@ -81,7 +81,7 @@ ElasticitySpec readElasticitySection(const Config& c) {
     if (!(nu < 0.5)) throw c.errorAt("elasticity.poisson_by", "Poisson's ratio must be < 0.5, got " + formatValue(nu));
   if (!(e.poisson.uniform < 0.5))
     throw c.errorAt("elasticity.poisson", "must be < 0.5, got " + formatValue(e.poisson.uniform));
-  if (e.model != ElasticModel::Solid) e.thickness = c.getFloat("elasticity.thickness");
+  if (e.model != solvers::ElasticModel::Solid) e.thickness = c.getFloat("elasticity.thickness");
   for (const auto& [name, comps] : detail::parseNamedItems(c, "elasticity.fixed")) {
     std::array<bool, 3> fixed{false, false, false};
     for (char ch : comps) {

@@ -59,7 +59,7 @@ void declareMeshSection(Schema& s) {
         "Refuse, before meshing, a mesh the size bounds (max_edge_length; max_volume in 3D) would make larger "
         "than this many elements, estimated from the tissue's total area or volume (a lower bound: "
         "area / (sqrt(3)/4 max_edge_length^2) triangles, volume / max_volume tetrahedra). 0 = no limit.")
-      .byDefault(static_cast<std::int64_t>(kDefaultMaxElements))
+      .byDefault(static_cast<std::int64_t>(mesh::kDefaultMaxElements))
       .atLeast(0);
   s.key("mesh.output", ValueType::Bool,
         "Write the mesh as a ParaView series DIR/mesh.pvd listing DIR/mesh_000000.vtu, ... beside the "
@@ -71,8 +71,8 @@ void declareMeshSection(Schema& s) {
       .whenAbsent("output.every");
 }
 
-MeshOptions meshOptionsFromConfig(const Config& c) {
-  MeshOptions o;
+mesh::MeshOptions meshOptionsFromConfig(const Config& c) {
+  mesh::MeshOptions o;
   o.max_edge_length = c.getFloat("mesh.max_edge_length");
   o.min_angle_degrees = c.getFloat("mesh.min_angle");
   o.max_volume = c.getFloat("mesh.max_volume");
@@ -81,14 +81,14 @@ MeshOptions meshOptionsFromConfig(const Config& c) {
   o.tolerance = c.getFloat("mesh.tolerance");
   o.volume_method = volumeMethodNamed(c.getString("mesh.volume_method"));
   o.max_elements = static_cast<std::size_t>(c.getInt("mesh.max_elements"));
-  validateMeshOptions(o);  // the schema's ranges are the same; this keeps them in step
+  mesh::validateMeshOptions(o);  // the schema's ranges are the same; this keeps them in step
   return o;
 }
 
 namespace {
 
-const std::pair<VolumeMethod, std::string> kVolumeMethods[] = {{VolumeMethod::CellByCell, "cell_by_cell"},
-                                                                {VolumeMethod::WholeTissue, "whole_tissue"}};
+const std::pair<mesh::VolumeMethod, std::string> kVolumeMethods[] = {{mesh::VolumeMethod::CellByCell, "cell_by_cell"},
+                                                                {mesh::VolumeMethod::WholeTissue, "whole_tissue"}};
 
 }  // namespace
 
@@ -101,13 +101,13 @@ const std::vector<std::string>& volumeMethodNames() {
   return names;
 }
 
-VolumeMethod volumeMethodNamed(const std::string& name) {
+mesh::VolumeMethod volumeMethodNamed(const std::string& name) {
   for (const auto& [method, known] : kVolumeMethods)
     if (known == name) return method;
   throw InputError("unknown volume method '" + name + "' (cell_by_cell or whole_tissue)");
 }
 
-const std::string& volumeMethodName(VolumeMethod method) {
+const std::string& volumeMethodName(mesh::VolumeMethod method) {
   for (const auto& [known, name] : kVolumeMethods)
     if (known == method) return name;
   throw InputError("unknown volume method " + std::to_string(static_cast<int>(method)));

@@ -16,7 +16,7 @@
 namespace tessella::sim {
 
 struct MeshSpec {
-  MeshOptions options;
+  mesh::MeshOptions options;
   /// Write the mesh series DIR/<name>.pvd + DIR/<name>_NNNNNN.vtu during a run.
   bool output = false;
   /// Series name of the mesh output.
@@ -30,13 +30,13 @@ void declareMeshSection(Schema& schema);
 /// Reads mesh.*; out-of-range options are ConfigErrors naming the key.
 MeshSpec readMeshSection(const Config& config);
 /// The MeshOptions part of the section (for stages that mesh the tissue).
-MeshOptions meshOptionsFromConfig(const Config& config);
+mesh::MeshOptions meshOptionsFromConfig(const Config& config);
 
 /// The names of the volume methods in configs and on the command line:
 /// "cell_by_cell", "whole_tissue".
 const std::vector<std::string>& volumeMethodNames();
 /// The method of a name from volumeMethodNames() (InputError otherwise).
-VolumeMethod volumeMethodNamed(const std::string& name);
-const std::string& volumeMethodName(VolumeMethod method);
+mesh::VolumeMethod volumeMethodNamed(const std::string& name);
+const std::string& volumeMethodName(mesh::VolumeMethod method);
 
 }  // namespace tessella::sim
