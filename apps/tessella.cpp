@@ -176,25 +176,25 @@ int meshCommand(const MeshArgs& a) {
   using namespace tessella;
   const auto t0 = Clock::now();
   // Options: MeshOptions defaults < the config's mesh: section < flags.
-  MeshOptions options;
+  mesh::MeshOptions options;
   if (!a.config.empty())
     options = sim::meshOptionsFromConfig(sim::loadConfigFile(a.config, {}, sim::tessellaSchema()));
   if (a.size) options.max_edge_length = *a.size;
   if (a.min_angle) options.min_angle_degrees = *a.min_angle;
   if (a.max_volume) options.max_volume = *a.max_volume;
-  if (a.volume_method) options.volume_method = tessella::volumeMethods().parse(*a.volume_method);
+  if (a.volume_method) options.volume_method = tessella::mesh::volumeMethods().parse(*a.volume_method);
   if (a.max_elements) options.max_elements = *a.max_elements;
-  validateMeshOptions(options);  // before reading: a bad flag fails fast
+  mesh::validateMeshOptions(options);  // before reading: a bad flag fails fast
   io::checkOutputFile(a.out, "--out");  // every output, before meshing or writing any of them
   if (!a.walls_out.empty()) io::checkOutputFile(a.walls_out, "--walls");
 
   const Tissue tissue = io::readTissueVtu(a.snapshot);
   const double t_read = secondsSince(t0);
   const auto t1 = Clock::now();
-  const FeMesh mesh = meshTissue(tissue, options);
+  const mesh::FeMesh mesh = mesh::meshTissue(tissue, options);
   const double t_mesh = secondsSince(t1);
 
-  const MeshAgreement agreement = meshAgreement(tissue, mesh);
+  const mesh::MeshAgreement agreement = mesh::meshAgreement(tissue, mesh);
 
   io::writeFeMeshVtu(mesh, a.out);  // atomic: no partial file on failure
   if (!a.walls_out.empty()) io::writeWallFacetsVtu(mesh, a.walls_out);
@@ -204,7 +204,7 @@ int meshCommand(const MeshArgs& a) {
              embeddingName(tissue.embedding()), a.snapshot, t_read);
   fmt::print("options      min_angle {} deg, max_edge_length {}, max_volume {}, radius_edge_ratio {}{}\n",
              options.min_angle_degrees, options.max_edge_length, options.max_volume, options.radius_edge_ratio,
-             tissue.dim() != 3 ? "" : ", " + tessella::volumeMethods().name(options.volume_method));
+             tissue.dim() != 3 ? "" : ", " + tessella::mesh::volumeMethods().name(options.volume_method));
   fmt::print("mesh         {} nodes, {} {}, {} wall facets\n", mesh.numNodes(), mesh.numElements(), elements,
              mesh.numWallFacets());
   fmt::print("time         {:.3f} s ({:.0f} elements/s)\n", t_mesh, mesh.numElements() / std::max(t_mesh, 1e-9));
@@ -320,9 +320,9 @@ int main(int argc, char** argv) {
   mesh->add_option("--max-volume", mesh_args.max_volume, "Largest tetrahedron volume (mesh.max_volume; 0 = none)");
   mesh->add_option("--max-elements", mesh_args.max_elements,
                    "Refuse a mesh estimated above this many elements (mesh.max_elements; default " +
-                       std::to_string(tessella::kDefaultMaxElements) + ", 0 = no limit)");
+                       std::to_string(tessella::mesh::kDefaultMaxElements) + ", 0 = no limit)");
   mesh->add_option("--volume-method", mesh_args.volume_method, "3D: cell_by_cell or whole_tissue (mesh.volume_method)")
-      ->check(CLI::IsMember(tessella::volumeMethods().names()));
+      ->check(CLI::IsMember(tessella::mesh::volumeMethods().names()));
 
   auto* import = app.add_subcommand(
       "import", "Import a segmented tissue (MorphoGraphX PLY, ...), summarise it, write a snapshot (.vtu)");

@@ -46,6 +46,7 @@
 #include "tessella/generators/voronoi.hpp"
 
 using namespace tessella;
+using namespace tessella::mesh;
 
 namespace {
 
@@ -90,9 +91,9 @@ std::size_t tetgenAlone(const Tissue& t, const MeshOptions& o) {
   for (WallId w : t.walls()) {
     std::vector<int> corners;
     for (VertexId v : t.topology().faceVertices(handle_cast<FaceId>(w))) corners.push_back(id[v.index()]);
-    mesh_detail::setPolygon(in.facetlist[f++], corners);
+    mesh::detail::setPolygon(in.facetlist[f++], corners);
   }
-  std::string sw = mesh_detail::tetgenSwitches("pzQ", o);
+  std::string sw = mesh::detail::tetgenSwitches("pzQ", o);
   tetrahedralize(sw.data(), &in, &out);
   return static_cast<std::size_t>(out.numberoftetrahedra);
 }
@@ -103,7 +104,7 @@ std::size_t tetgenPerCellAlone(const Tissue& t, const FeMesh& mesh, const MeshOp
   std::vector<std::vector<int>> cell_facets(t.cellSlots());
   for (int f = 0; f < mesh.numWallFacets(); ++f)
     for (CellId c : t.wallCells(WallId(static_cast<Index>(mesh.facet_wall(f))))) cell_facets[c.index()].push_back(f);
-  std::string sw = mesh_detail::tetgenSwitches("pYzQT1e-7", o);  // the mesher's first try
+  std::string sw = mesh::detail::tetgenSwitches("pYzQT1e-7", o);  // the mesher's first try
   std::size_t tets = 0;
   std::vector<int> local(static_cast<std::size_t>(mesh.numNodes()), -1);
   for (CellId c : t.cells()) {
@@ -125,7 +126,7 @@ std::size_t tetgenPerCellAlone(const Tissue& t, const FeMesh& mesh, const MeshOp
     in.facetlist = new tetgenio::facet[cell_facets[c.index()].size()];
     for (std::size_t i = 0; i < cell_facets[c.index()].size(); ++i) {
       const int f = cell_facets[c.index()][i];
-      mesh_detail::setPolygon(in.facetlist[i], {local[static_cast<std::size_t>(mesh.wall_facets(f, 0))],
+      mesh::detail::setPolygon(in.facetlist[i], {local[static_cast<std::size_t>(mesh.wall_facets(f, 0))],
                                                 local[static_cast<std::size_t>(mesh.wall_facets(f, 1))],
                                                 local[static_cast<std::size_t>(mesh.wall_facets(f, 2))]});
     }

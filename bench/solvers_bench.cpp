@@ -38,6 +38,8 @@
 #include "bench_args.hpp"
 
 using namespace tessella;
+using namespace tessella::mesh;
+using namespace tessella::solvers;
 
 namespace {
 

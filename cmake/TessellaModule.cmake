@@ -81,3 +81,23 @@ function(tessella_add_header_part name)
     endforeach()
   endif()
 endfunction()
+
+# tessella_link_items(target out_var): everything `target` links directly, as
+# written (aliases, generator expressions and all): its own link libraries
+# (a real library's) and its interface ones. The package export and the
+# dependency check (tests/architecture) both read a target's links this way.
+function(tessella_link_items target out_var)
+  get_target_property(type ${target} TYPE)
+  set(items "")
+  if(NOT type STREQUAL "INTERFACE_LIBRARY")
+    get_target_property(direct ${target} LINK_LIBRARIES)
+    if(direct)
+      list(APPEND items ${direct})
+    endif()
+  endif()
+  get_target_property(interface ${target} INTERFACE_LINK_LIBRARIES)
+  if(interface)
+    list(APPEND items ${interface})
+  endif()
+  set(${out_var} "${items}" PARENT_SCOPE)
+endfunction()

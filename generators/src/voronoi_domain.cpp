@@ -8,31 +8,24 @@
 #include <string>
 #include <map>
 #include <numbers>
-#include <sstream>
 #include <utility>
 
 #include <Eigen/Geometry>
 
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::detail {
 namespace {
 
-std::string fmt3(const Vec3& p) {
-  std::ostringstream s;
-  s.precision(17);
-  s << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
-  return s.str();
-}
-
 void requireFinite(const Vec3& p, const char* what) {
-  if (!p.allFinite()) throw InputError(std::string(what) + " must be finite, got " + fmt3(p));
+  if (!p.allFinite()) throw InputError(std::string(what) + " must be finite, got " + formatPoint(p));
 }
 
 void requirePositiveRadius(double r, const char* what) {
   if (!std::isfinite(r) || !(r > 0))
     throw InputError(std::string(what) + ".radius must be a positive finite number, got " +
-                     std::to_string(r));
+                     formatNumber(r));
 }
 
 ConvexDomain2 polygonDomain(std::vector<Vec2> corners) {
@@ -99,7 +92,7 @@ ConvexDomain2 makeDomain(const Rectangle& r) {
   requireFinite(r.min, "rectangle.min");
   requireFinite(r.max, "rectangle.max");
   if (!(r.max.x() > r.min.x()) || !(r.max.y() > r.min.y()))
-    throw InputError("rectangle.max " + fmt3(r.max) + " must exceed rectangle.min " + fmt3(r.min) +
+    throw InputError("rectangle.max " + formatPoint(r.max) + " must exceed rectangle.min " + formatPoint(r.min) +
                      " in x and y");
   ConvexDomain2 d = polygonDomain({{r.min.x(), r.min.y()},
                                    {r.max.x(), r.min.y()},
@@ -135,7 +128,7 @@ ConvexDomain3 makeDomain(const Box& b) {
   requireFinite(b.min, "box.min");
   requireFinite(b.max, "box.max");
   if (!(b.max.array() > b.min.array()).all())
-    throw InputError("box.max " + fmt3(b.max) + " must exceed box.min " + fmt3(b.min) +
+    throw InputError("box.max " + formatPoint(b.max) + " must exceed box.min " + formatPoint(b.min) +
                      " in x, y and z");
   return boxDomain(b.min, b.max);
 }

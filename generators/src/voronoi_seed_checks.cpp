@@ -3,19 +3,12 @@
 #include "voronoi_seed_checks.hpp"
 
 #include <cmath>
-#include <sstream>
 
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::detail {
 namespace {
-
-std::string number(double x) {
-  std::ostringstream s;
-  s.precision(17);
-  s << x;
-  return s.str();
-}
 
 void checkCountAndFinite(std::span<const Vec3> seeds, std::size_t minimum, const char* dim_name) {
   if (seeds.size() < minimum)
@@ -31,8 +24,7 @@ void checkCountAndFinite(std::span<const Vec3> seeds, std::size_t minimum, const
 }  // namespace
 
 std::string describeSeed(std::size_t index, const Vec3& p) {
-  return "seed " + std::to_string(index) + " at (" + number(p.x()) + ", " + number(p.y()) + ", " +
-         number(p.z()) + ")";
+  return "seed " + std::to_string(index) + " at " + formatPoint(p);
 }
 
 void checkOptions(const VoronoiOptions& options) {
@@ -41,9 +33,9 @@ void checkOptions(const VoronoiOptions& options) {
                      std::to_string(options.lloyd_iterations));
   if (!std::isfinite(options.duplicate_tolerance) ||
       options.duplicate_tolerance < kMinDuplicateTolerance || options.duplicate_tolerance > 0.1)
-    throw InputError("duplicate_tolerance must be in [" + number(kMinDuplicateTolerance) +
+    throw InputError("duplicate_tolerance must be in [" + formatNumber(kMinDuplicateTolerance) +
                      ", 0.1] (relative to the domain size), got " +
-                     number(options.duplicate_tolerance));
+                     formatNumber(options.duplicate_tolerance));
 }
 
 void checkSeeds2(std::span<const Vec3> seeds, const ConvexDomain2& domain) {
@@ -76,7 +68,7 @@ void checkSeeds3(std::span<const Vec3> seeds, const ConvexDomain3& domain) {
 void throwDuplicate(std::span<const Vec3> seeds, std::size_t a, std::size_t b) {
   if (a > b) std::swap(a, b);
   throw InputError("duplicate seeds: " + describeSeed(a, seeds[a]) + " and " +
-                   describeSeed(b, seeds[b]) + " are " + number((seeds[a] - seeds[b]).norm()) +
+                   describeSeed(b, seeds[b]) + " are " + formatNumber((seeds[a] - seeds[b]).norm()) +
                    " apart (below duplicate_tolerance)");
 }
 

@@ -81,12 +81,12 @@ struct ExpressionField::Workspace {
 std::unique_ptr<ExpressionField::Workspace> ExpressionField::makeWorkspace() const {
   auto ws = std::make_unique<Workspace>();
   ws->define(1);
-  const std::array<const std::string*, 3> exprs = {&spec_.vx, &spec_.vy, &spec_.vz};
+  const std::array<const std::string*, 3> exprs = {&params_.vx, &params_.vy, &params_.vz};
   // One component after the other, so an error names the first bad one.
   for (int c = 0; c < 3; ++c) {
     mu::Parser& p = ws->parsers[c];
     try {
-      for (const auto& [name, value] : spec_.parameters) p.DefineConst(name, value);
+      for (const auto& [name, value] : params_.parameters) p.DefineConst(name, value);
       p.SetExpr(*exprs[c]);
     } catch (const mu::Parser::exception_type& e) {
       throw ParamError(kComponent[c], std::string("velocity expression ") + kComponent[c] + " = \"" + *exprs[c] +
@@ -104,8 +104,8 @@ std::unique_ptr<ExpressionField::Workspace> ExpressionField::makeWorkspace() con
   return ws;
 }
 
-ExpressionField::ExpressionField(ExpressionFieldSpec spec) : spec_(std::move(spec)) {
-  for (const auto& [name, value] : spec_.parameters) {
+ExpressionField::ExpressionField(ExpressionFieldParams params) : params_(std::move(params)) {
+  for (const auto& [name, value] : params_.parameters) {
     if (reservedName(name))
       throw ParamError("parameters", "velocity expression parameter '" + name +
                                          "' clashes with a variable (x, y, z and t are reserved)");
@@ -158,12 +158,12 @@ void ExpressionField::velocities(std::span<const Vec3> x, double t, std::span<Ve
 }
 
 std::string ExpressionField::describe() const {
-  return "expression field (" + spec_.vx + ", " + spec_.vy + ", " + spec_.vz + ")";
+  return "expression field (" + params_.vx + ", " + params_.vy + ", " + params_.vz + ")";
 }
 
 std::string ExpressionField::describeComponent(int c) const {
   if (c < 0 || c > 2) return {};
-  const std::array<const std::string*, 3> exprs = {&spec_.vx, &spec_.vy, &spec_.vz};
+  const std::array<const std::string*, 3> exprs = {&params_.vx, &params_.vy, &params_.vz};
   return std::string(kComponent[c]) + " = \"" + *exprs[c] + "\"";
 }
 
@@ -176,9 +176,9 @@ VelocityFieldEntry expressionFieldEntry() {
                      "Named constants for the expressions, as \"name=value, name=value\".")
                .whenAbsent("no parameters")},
           [](const ParamValues& p) {
-            ExpressionFieldSpec spec{.vx = p.getString("vx"), .vy = p.getString("vy"), .vz = p.getString("vz")};
-            if (p.has("parameters")) spec.parameters = parseExpressionParameters(p.getString("parameters"));
-            return std::make_shared<const ExpressionField>(std::move(spec));
+            ExpressionFieldParams params{.vx = p.getString("vx"), .vy = p.getString("vy"), .vz = p.getString("vz")};
+            if (p.has("parameters")) params.parameters = parseExpressionParameters(p.getString("parameters"));
+            return std::make_shared<const ExpressionField>(std::move(params));
           }};
 }
 

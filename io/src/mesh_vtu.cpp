@@ -26,7 +26,7 @@ std::string sizes(Eigen::Index got, Eigen::Index expected) {
   return "has " + std::to_string(got) + " entries, expected " + std::to_string(expected);
 }
 
-void checkConnectivity(const RowMatrix<int>& rows, int width, int num_nodes, const char* what) {
+void checkConnectivity(const mesh::RowMatrix<int>& rows, int width, int num_nodes, const char* what) {
   if (rows.rows() > 0 && rows.cols() != width)
     throw InputError(std::string("FeMesh::") + what + " has rows of " + std::to_string(rows.cols()) +
                      " node indices, expected " + std::to_string(width));
@@ -45,7 +45,7 @@ void checkFields(const std::map<std::string, Eigen::VectorXd>& fields, Eigen::In
   }
 }
 
-vtkSmartPointer<vtkPoints> nodesOf(const FeMesh& mesh) {
+vtkSmartPointer<vtkPoints> nodesOf(const mesh::FeMesh& mesh) {
   auto coords = vtkSmartPointer<vtkDoubleArray>::New();
   coords->SetNumberOfComponents(3);
   if (mesh.numNodes() > 0)  // RowMatrix: xyz of each node back to back
@@ -73,7 +73,7 @@ void addFields(vtkDataSetAttributes* data, const std::map<std::string, Eigen::Ve
 }
 
 // Fixed-size cells straight from a row-major index matrix.
-void setUniformCells(vtkUnstructuredGrid* grid, const RowMatrix<int>& rows, int width, unsigned char type) {
+void setUniformCells(vtkUnstructuredGrid* grid, const mesh::RowMatrix<int>& rows, int width, unsigned char type) {
   auto connectivity = vtkSmartPointer<vtkTypeInt32Array>::New();
   if (rows.rows() > 0) connectivity->SetArray(const_cast<int*>(rows.data()), rows.size(), 1);
   auto cells = vtkSmartPointer<vtkCellArray>::New();
@@ -84,7 +84,7 @@ void setUniformCells(vtkUnstructuredGrid* grid, const RowMatrix<int>& rows, int 
   grid->SetCells(types, cells);
 }
 
-vtkSmartPointer<vtkUnstructuredGrid> gridWithNodes(const FeMesh& mesh, const MeshFields& fields) {
+vtkSmartPointer<vtkUnstructuredGrid> gridWithNodes(const mesh::FeMesh& mesh, const MeshFields& fields) {
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   grid->SetPoints(nodesOf(mesh));
   if (mesh.node_vertex.size() > 0) grid->GetPointData()->AddArray(int32View("vertex_id", mesh.node_vertex));
@@ -94,7 +94,7 @@ vtkSmartPointer<vtkUnstructuredGrid> gridWithNodes(const FeMesh& mesh, const Mes
 
 }  // namespace
 
-void checkFeMesh(const FeMesh& mesh, const MeshFields& fields) {
+void checkFeMesh(const mesh::FeMesh& mesh, const MeshFields& fields) {
   if (mesh.dim != 2 && mesh.dim != 3) throw InputError("FeMesh::dim = " + std::to_string(mesh.dim) + " (expected 2 or 3)");
   if (mesh.nodes.rows() > 0 && mesh.nodes.cols() != 3)
     throw InputError("FeMesh::nodes has " + std::to_string(mesh.nodes.cols()) + " columns, expected 3");
@@ -113,7 +113,7 @@ void checkFeMesh(const FeMesh& mesh, const MeshFields& fields) {
   checkFields(fields.facet, mesh.wall_facets.rows(), "facet");
 }
 
-void writeFeMeshVtu(const FeMesh& mesh, const std::string& path, const MeshFields& fields, const VtuOptions& options) {
+void writeFeMeshVtu(const mesh::FeMesh& mesh, const std::string& path, const MeshFields& fields, const VtuOptions& options) {
   checkFeMesh(mesh, fields);
   auto grid = gridWithNodes(mesh, fields);
   setUniformCells(grid, mesh.elements, mesh.dim + 1, mesh.dim == 2 ? VTK_TRIANGLE : VTK_TETRA);
@@ -122,7 +122,7 @@ void writeFeMeshVtu(const FeMesh& mesh, const std::string& path, const MeshField
   detail::writeGridFile(grid, path, options);
 }
 
-void writeWallFacetsVtu(const FeMesh& mesh, const std::string& path, const MeshFields& fields,
+void writeWallFacetsVtu(const mesh::FeMesh& mesh, const std::string& path, const MeshFields& fields,
                         const VtuOptions& options) {
   checkFeMesh(mesh, fields);
   auto grid = gridWithNodes(mesh, fields);

@@ -15,7 +15,7 @@ MeshSeriesWriter::MeshSeriesWriter(std::string directory, std::string name, VtuO
   walls_pvd_path_ = (std::filesystem::path(directory_) / (name_ + "_walls.pvd")).string();
 }
 
-std::string MeshSeriesWriter::write(const FeMesh& mesh, double time, const MeshFields& fields) {
+std::string MeshSeriesWriter::write(const mesh::FeMesh& mesh, double time, const MeshFields& fields) {
   detail::checkNextTime(pvd_path_, times_.empty() ? nullptr : &times_.back(), time);
   const std::size_t step = times_.size();
   const std::string file = detail::stepFileName(name_, step);

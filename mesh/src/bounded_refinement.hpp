@@ -14,7 +14,7 @@
 #include <functional>
 #include <string>
 
-namespace tessella::mesh_detail {
+namespace tessella::mesh::detail {
 
 /// Vertex budget for refining a region of `area` with `boundary_points`
 /// input points, extent `extent`, closest input points `min_spacing` apart,
@@ -41,4 +41,4 @@ void refineWithinBudget(Mesher& mesher, const Cdt& cdt, std::size_t budget,
   }
 }
 
-}  // namespace tessella::mesh_detail
+}  // namespace tessella::mesh::detail

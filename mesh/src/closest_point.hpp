@@ -4,7 +4,7 @@
 
 #include "tessella/tissue/vec3.hpp"
 
-namespace tessella::mesh_detail {
+namespace tessella::mesh::detail {
 
 /// Closest point on triangle abc to p (Ericson, Real-Time Collision Detection 5.1.5).
 inline Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -27,4 +27,4 @@ inline Vec3 closestPointOnTriangle(const Vec3& p, const Vec3& a, const Vec3& b, 
   return a + ab * (vb * denom) + ac * (vc * denom);
 }
 
-}  // namespace tessella::mesh_detail
+}  // namespace tessella::mesh::detail

@@ -13,7 +13,7 @@
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
 
-namespace tessella {
+namespace tessella::mesh {
 namespace {
 
 
@@ -48,13 +48,13 @@ double locate(const FeMesh& m, int e, const Vec3& p, Eigen::Vector4d& lambda) {
     Vec3 best_q;
     for (int skip = 0; skip < 4; ++skip) {
       const int i = (skip + 1) % 4, j = (skip + 2) % 4, k = (skip + 3) % 4;
-      const Vec3 q = mesh_detail::closestPointOnTriangle(p, corner(i), corner(j), corner(k));
+      const Vec3 q = detail::closestPointOnTriangle(p, corner(i), corner(j), corner(k));
       if ((q - p).norm() < best) best = (q - p).norm(), best_q = q;
     }
     lambda = barycentric(m, e, best_q);
     return best;
   }
-  const Vec3 q = mesh_detail::closestPointOnTriangle(p, corner(0), corner(1), corner(2));
+  const Vec3 q = detail::closestPointOnTriangle(p, corner(0), corner(1), corner(2));
   lambda = barycentric(m, e, q);
   return (q - p).norm();
 }
@@ -171,4 +171,4 @@ Eigen::VectorXd transferConcentration(const Tissue& old_tissue, const FeMesh& ol
   return out;
 }
 
-}  // namespace tessella
+}  // namespace tessella::mesh

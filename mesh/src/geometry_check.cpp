@@ -17,8 +17,8 @@
 #include "tessella/tissue/geometry.hpp"
 #include "wall_triangulation.hpp"
 
-namespace tessella {
-namespace mesh_detail {
+namespace tessella::mesh {
+namespace detail {
 
 double edgeLengthOf(const Tissue& t, EdgeId e);
 
@@ -360,10 +360,10 @@ MeshabilityReport checkVolumeGeometry(const Tissue& t, const MeshOptions& option
   return report;
 }
 
-}  // namespace mesh_detail
+}  // namespace detail
 
 MeshabilityReport findGeometryDefects(const Tissue& tissue, const MeshOptions& options) {
-  using namespace mesh_detail;
+  using namespace detail;
   const double scale = tissueScale(tissue);
   const double tol = options.tolerance * scale;
   if (tissue.numCells() == 0) return defect("the tissue has no cells to mesh", {});
@@ -381,4 +381,4 @@ void checkMeshable(const Tissue& tissue, const MeshOptions& options) {
   if (!report) throw GeometryError("cannot mesh the tissue: " + report.message, report.element);
 }
 
-}  // namespace tessella
+}  // namespace tessella::mesh

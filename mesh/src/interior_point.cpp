@@ -7,7 +7,7 @@
 
 #include "closest_point.hpp"
 
-namespace tessella::mesh_detail {
+namespace tessella::mesh::detail {
 
 double windingNumber(const std::vector<Triangle>& outward, const Vec3& p) {
   double total = 0.0;
@@ -52,4 +52,4 @@ std::optional<Vec3> interiorPoint(const std::vector<Triangle>& outward, const Ve
   return best;
 }
 
-}  // namespace tessella::mesh_detail
+}  // namespace tessella::mesh::detail

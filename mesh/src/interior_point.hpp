@@ -11,7 +11,7 @@
 
 #include "tessella/tissue/vec3.hpp"
 
-namespace tessella::mesh_detail {
+namespace tessella::mesh::detail {
 
 using Triangle = std::array<Vec3, 3>;
 
@@ -28,4 +28,4 @@ double distanceToSurface(const std::vector<Triangle>& triangles, const Vec3& p);
 /// few fractions of its inradius). nullopt if none qualifies.
 std::optional<Vec3> interiorPoint(const std::vector<Triangle>& outward, const Vec3& guess, double min_clearance);
 
-}  // namespace tessella::mesh_detail
+}  // namespace tessella::mesh::detail

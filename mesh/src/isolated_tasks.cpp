@@ -14,7 +14,7 @@
 
 #include "tessella/tissue/errors.hpp"
 
-namespace tessella::mesh_detail {
+namespace tessella::mesh::detail {
 namespace {
 
 /// State shared by the caller and its workers (an anonymous shared mapping).
@@ -157,4 +157,4 @@ std::vector<IsolatedResult> runIsolated(const std::vector<std::size_t>& tasks, i
   return results;
 }
 
-}  // namespace tessella::mesh_detail
+}  // namespace tessella::mesh::detail

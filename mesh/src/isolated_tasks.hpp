@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace tessella::mesh_detail {
+namespace tessella::mesh::detail {
 
 struct IsolatedResult {
   bool ok = false;
@@ -29,4 +29,4 @@ struct IsolatedResult {
 std::vector<IsolatedResult> runIsolated(const std::vector<std::size_t>& tasks, int workers, double timeout_seconds,
                                         const std::function<std::string(std::size_t)>& task);
 
-}  // namespace tessella::mesh_detail
+}  // namespace tessella::mesh::detail

@@ -6,7 +6,7 @@
 #include "tessella/mesh/mesh_measures.hpp"
 #include "tessella/tissue/geometry.hpp"
 
-namespace tessella {
+namespace tessella::mesh {
 
 MeshAgreement meshAgreement(const Tissue& tissue, const FeMesh& mesh) {
   MeshAgreement agreement;
@@ -26,4 +26,4 @@ MeshAgreement meshAgreement(const Tissue& tissue, const FeMesh& mesh) {
   return agreement;
 }
 
-}  // namespace tessella
+}  // namespace tessella::mesh

@@ -8,7 +8,7 @@
 #include "tessella/mesh/mesh_measures.hpp"
 #include "tessella/tissue/format.hpp"
 
-namespace tessella {
+namespace tessella::mesh {
 namespace {
 
 using FacetKey = std::array<int, 3>;  // sorted node ids (third = -1 for segments)
@@ -106,4 +106,4 @@ ConformityReport checkConformity(const FeMesh& m) {
   return r;
 }
 
-}  // namespace tessella
+}  // namespace tessella::mesh

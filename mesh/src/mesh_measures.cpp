@@ -6,7 +6,7 @@
 
 #include <Eigen/Dense>
 
-namespace tessella {
+namespace tessella::mesh {
 namespace {
 
 Eigen::Vector3d node(const FeMesh& m, int i) { return m.nodes.row(i).transpose(); }
@@ -72,4 +72,4 @@ double wallFacetMeasure(const FeMesh& m, int f) {
   return 0.5 * (node(m, m.wall_facets(f, 1)) - a).cross(node(m, m.wall_facets(f, 2)) - a).norm();
 }
 
-}  // namespace tessella
+}  // namespace tessella::mesh

@@ -6,11 +6,12 @@
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
 
-namespace tessella {
+namespace tessella::mesh {
 namespace {
 
 void require(bool ok, const char* field, double value, const char* range) {
-  if (!ok) throw InputError(std::string("mesh option ") + field + " = " + formatNumber(value) + " is out of range: " + range);
+  if (!ok)
+    throw InputError(std::string("mesh option ") + field + " = " + formatNumber(value) + " is out of range: " + range);
 }
 
 }  // namespace
@@ -38,4 +39,4 @@ void validateMeshOptions(const MeshOptions& o) {
           "(0, 1e-3)");
 }
 
-}  // namespace tessella
+}  // namespace tessella::mesh

@@ -8,7 +8,7 @@
 #include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"
 
-namespace tessella {
+namespace tessella::mesh {
 
 namespace {
 
@@ -58,4 +58,4 @@ FeMesh meshTissue(const Tissue& tissue, const MeshOptions& options) {
   return meshVolumeTissue(tissue, options);  // unreachable: every embedding is handled above
 }
 
-}  // namespace tessella
+}  // namespace tessella::mesh

@@ -34,7 +34,7 @@
 #include "triangle_criteria.hpp"
 #include "wall_segments.hpp"
 
-namespace tessella {
+namespace tessella::mesh {
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -137,17 +137,17 @@ FeMesh meshPlanarTissue(const Tissue& t, const MeshOptions& options) {
 
   tagCells(cdt, t, constraint);
   for (auto f = cdt.all_faces_begin(); f != cdt.all_faces_end(); ++f) f->set_in_domain(f->info() >= 0);
-  const double angle_bound = mesh_detail::shapeBound(options.min_angle_degrees);
+  const double angle_bound = detail::shapeBound(options.min_angle_degrees);
   if (angle_bound > 0.0 || options.max_edge_length > 0.0) {
     double shortest = std::numeric_limits<double>::infinity();
     for (EdgeId e : t.edges()) shortest = std::min(shortest, (t.position(topo.edgeTo(e)) - t.position(topo.edgeFrom(e))).norm());
     Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
     for (VertexId v : t.vertices()) lo = lo.cwiseMin(t.position(v)), hi = hi.cwiseMax(t.position(v));
     const std::size_t budget =
-        mesh_detail::refinementBudget(t.numVertices(), totalMeasure(t), (hi - lo).norm(), shortest, options.max_edge_length);
+        detail::refinementBudget(t.numVertices(), totalMeasure(t), (hi - lo).norm(), shortest, options.max_edge_length);
     Mesher mesher(cdt, Criteria(angle_bound, options.max_edge_length));
     // The domain is the tagged faces.
-    mesh_detail::refineWithinBudget(
+    detail::refineWithinBudget(
         mesher, cdt, budget,
         [&](std::size_t vertices) {
           throw GeometryError("planar mesher: refinement did not finish within " + std::to_string(vertices) +
@@ -192,8 +192,8 @@ FeMesh meshPlanarTissue(const Tissue& t, const MeshOptions& options) {
       boundary.push_back(on_boundary);
     }
   }
-  mesh_detail::storeWallSegments(mesh, facets, boundary);
+  detail::storeWallSegments(mesh, facets, boundary);
   return mesh;
 }
 
-}  // namespace tessella
+}  // namespace tessella::mesh

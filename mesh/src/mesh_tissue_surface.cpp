@@ -35,7 +35,7 @@
 #include "tessella/tissue/geometry.hpp"
 #include "wall_segments.hpp"
 
-namespace tessella {
+namespace tessella::mesh {
 
 FeMesh meshSurfaceTissue(const Tissue& t, const MeshOptions& options) {
   validateMeshOptions(options);
@@ -55,11 +55,11 @@ FeMesh meshSurfaceTissue(const Tissue& t, const MeshOptions& options) {
     int loop_position;
     double min_angle_degrees;
   };
-  std::vector<mesh_detail::PlanarPiece> pieces;
+  std::vector<detail::PlanarPiece> pieces;
   std::vector<FanTriangle> fans;
   for (CellId c : t.cells()) {
     const auto verts = topo.faceVertices(t.cellFace(c));
-    const auto loop = mesh_detail::loopPositions(t, t.cellFace(c));
+    const auto loop = detail::loopPositions(t, t.cellFace(c));
     const int centre = static_cast<int>(centres + c.index());
     // The surface the tissue measures the cell on: its fan from the vertex
     // mean, or where that folds the triangles of its own outline.
@@ -84,7 +84,7 @@ FeMesh meshSurfaceTissue(const Tissue& t, const MeshOptions& options) {
                                 (surface.fan() ? "fan triangle at loop position " : "outline triangle ") +
                                 std::to_string(i),
                             ElementId{2, c.index()});
-      const double angle = mesh_detail::smallestAngleDegrees(corners);
+      const double angle = detail::smallestAngleDegrees(corners);
       pieces.push_back({{tri[0], tri[1], tri[2]}, normal, options.min_angle_degrees > 0.0 && angle < options.min_angle_degrees});
       fans.push_back({static_cast<int>(c.index()), static_cast<int>(i), angle});
     }
@@ -95,8 +95,8 @@ FeMesh meshSurfaceTissue(const Tissue& t, const MeshOptions& options) {
            " degrees)";
   };
   const auto element = [&](std::size_t i) { return ElementId{2, static_cast<Index>(fans[i].cell)}; };
-  const mesh_detail::PlanarPiecesMesh pm =
-      mesh_detail::meshPlanarPieces(points, pieces, options.max_edge_length, options.min_angle_degrees, owner, element);
+  const detail::PlanarPiecesMesh pm =
+      detail::meshPlanarPieces(points, pieces, options.max_edge_length, options.min_angle_degrees, owner, element);
 
   FeMesh mesh;
   mesh.dim = 2;
@@ -124,8 +124,8 @@ FeMesh meshSurfaceTissue(const Tissue& t, const MeshOptions& options) {
       boundary.push_back(on_boundary);
     }
   }
-  mesh_detail::storeWallSegments(mesh, facets, boundary);
+  detail::storeWallSegments(mesh, facets, boundary);
   return mesh;
 }
 
-}  // namespace tessella
+}  // namespace tessella::mesh

@@ -8,18 +8,18 @@
 #include "tessella/tissue/errors.hpp"
 #include "volume_methods.hpp"
 
-namespace tessella {
+namespace tessella::mesh {
 
 FeMesh meshVolumeTissue(const Tissue& t, const MeshOptions& options) {
   validateMeshOptions(options);
   if (t.dim() != 3)
     throw InputError("meshVolumeTissue needs a 3D tissue, got one of dimension " + std::to_string(t.dim()));
-  mesh_detail::WallTriangulation walls;
-  if (const auto report = mesh_detail::checkVolumeGeometry(t, options, walls); !report)
+  detail::WallTriangulation walls;
+  if (const auto report = detail::checkVolumeGeometry(t, options, walls); !report)
     throw GeometryError("cannot mesh the tissue: " + report.message, report.element);
   checkElementLimit(t, options);
-  return options.volume_method == VolumeMethod::WholeTissue ? mesh_detail::meshWholeTissue(t, options, walls)
-                                                            : mesh_detail::meshCellByCell(t, options, walls);
+  return options.volume_method == VolumeMethod::WholeTissue ? detail::meshWholeTissue(t, options, walls)
+                                                            : detail::meshCellByCell(t, options, walls);
 }
 
-}  // namespace tessella
+}  // namespace tessella::mesh

@@ -17,7 +17,7 @@
 #include "tessella/tissue/errors.hpp"
 #include "triangle_criteria.hpp"
 
-namespace tessella::mesh_detail {
+namespace tessella::mesh::detail {
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
@@ -303,4 +303,4 @@ PlanarPiecesMesh meshPlanarPieces(const std::vector<Vec3>& points, const std::ve
   return mesh;
 }
 
-}  // namespace tessella::mesh_detail
+}  // namespace tessella::mesh::detail

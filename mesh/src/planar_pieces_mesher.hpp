@@ -32,7 +32,7 @@
 #include "tessella/tissue/handles.hpp"
 #include "tessella/tissue/vec3.hpp"
 
-namespace tessella::mesh_detail {
+namespace tessella::mesh::detail {
 
 struct PlanarPiece {
   std::vector<int> corners;  ///< point ids, counter-clockwise about `normal`
@@ -63,4 +63,4 @@ PlanarPiecesMesh meshPlanarPieces(const std::vector<Vec3>& points, const std::ve
                                   const std::function<std::string(std::size_t)>& owner,
                                   const std::function<ElementId(std::size_t)>& element);
 
-}  // namespace tessella::mesh_detail
+}  // namespace tessella::mesh::detail

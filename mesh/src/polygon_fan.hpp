@@ -18,7 +18,7 @@
 
 #include "tessella/tissue/vec3.hpp"
 
-namespace tessella::mesh_detail {
+namespace tessella::mesh::detail {
 
 inline std::vector<Vec3> loopPositions(const Tissue& t, FaceId f) {
   std::vector<Vec3> out;
@@ -85,4 +85,4 @@ inline double smallestAngleDegrees(const std::array<Vec3, 3>& c) {
   return smallest;
 }
 
-}  // namespace tessella::mesh_detail
+}  // namespace tessella::mesh::detail

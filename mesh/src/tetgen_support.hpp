@@ -13,7 +13,7 @@
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
 
-namespace tessella::mesh_detail {
+namespace tessella::mesh::detail {
 
 /// What TetGen's integer exit codes mean (tetgen.h, terminatetetgen()).
 inline std::string tetgenErrorMeaning(int code) {
@@ -68,4 +68,4 @@ inline void setPolygon(tetgenio::facet& f, const std::vector<int>& corners) {
   std::copy(corners.begin(), corners.end(), f.polygonlist[0].vertexlist);
 }
 
-}  // namespace tessella::mesh_detail
+}  // namespace tessella::mesh::detail

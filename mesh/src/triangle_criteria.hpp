@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-namespace tessella::mesh_detail {
+namespace tessella::mesh::detail {
 
 /// CGAL bounds B = sin^2(smallest angle): a triangle is bad when the sine of
 /// its smallest angle, squared, is below B.
@@ -13,4 +13,4 @@ inline double shapeBound(double min_angle_degrees) {
   return s * s;
 }
 
-}  // namespace tessella::mesh_detail
+}  // namespace tessella::mesh::detail

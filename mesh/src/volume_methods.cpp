@@ -10,7 +10,7 @@
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
 
-namespace tessella::mesh_detail {
+namespace tessella::mesh::detail {
 
 Vec3 cellSeed(const Tissue& t, const WallTriangulation& walls, CellId c) {
   std::vector<Triangle> outward;
@@ -29,4 +29,4 @@ Vec3 cellSeed(const Tissue& t, const WallTriangulation& walls, CellId c) {
   return *seed;
 }
 
-}  // namespace tessella::mesh_detail
+}  // namespace tessella::mesh::detail

@@ -8,7 +8,7 @@
 #include "tessella/tissue/tissue.hpp"
 #include "wall_triangulation.hpp"
 
-namespace tessella::mesh_detail {
+namespace tessella::mesh::detail {
 
 /// One TetGen run on the piecewise-linear complex of all walls, one region
 /// per cell; TetGen refines the walls itself (volume_methods_whole_tissue.cpp).
@@ -24,4 +24,4 @@ FeMesh meshCellByCell(const Tissue& t, const MeshOptions& options, const WallTri
 /// Throws GeometryError naming the cell when there is none.
 Vec3 cellSeed(const Tissue& t, const WallTriangulation& walls, CellId c);
 
-}  // namespace tessella::mesh_detail
+}  // namespace tessella::mesh::detail

@@ -38,7 +38,7 @@
 #include "tetgen_support.hpp"
 #include "wall_surface_mesh.hpp"
 
-namespace tessella::mesh_detail {
+namespace tessella::mesh::detail {
 namespace {
 
 /// One cell's tetrahedra. Corners >= 0 are wall-mesh nodes; < 0 are
@@ -253,4 +253,4 @@ FeMesh meshCellByCell(const Tissue& t, const MeshOptions& options, const WallTri
   return mesh;
 }
 
-}  // namespace tessella::mesh_detail
+}  // namespace tessella::mesh::detail

@@ -31,7 +31,7 @@
 #include "tessella/tissue/geometry.hpp"
 #include "tetgen_support.hpp"
 
-namespace tessella::mesh_detail {
+namespace tessella::mesh::detail {
 namespace {
 
 /// The FeMesh of TetGen's output: region attribute - 1 is the cell (0, an
@@ -214,4 +214,4 @@ FeMesh meshWholeTissue(const Tissue& t, const MeshOptions& options, const WallTr
   return fromBytes(result[0].bytes);
 }
 
-}  // namespace tessella::mesh_detail
+}  // namespace tessella::mesh::detail

@@ -7,7 +7,7 @@
 
 #include "tessella/mesh/fe_mesh.hpp"
 
-namespace tessella::mesh_detail {
+namespace tessella::mesh::detail {
 
 /// segments: (node a, node b, wall id); on_boundary: one flag per segment.
 inline void storeWallSegments(FeMesh& mesh, const std::vector<std::array<int, 3>>& segments,
@@ -24,4 +24,4 @@ inline void storeWallSegments(FeMesh& mesh, const std::vector<std::array<int, 3>
   }
 }
 
-}  // namespace tessella::mesh_detail
+}  // namespace tessella::mesh::detail

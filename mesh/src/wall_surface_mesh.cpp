@@ -5,7 +5,7 @@
 #include "planar_pieces_mesher.hpp"
 #include "polygon_fan.hpp"
 
-namespace tessella::mesh_detail {
+namespace tessella::mesh::detail {
 
 WallSurfaceMesh meshWallSurfaces(const Tissue& t, const WallTriangulation& walls, double max_edge,
                                  double min_angle_degrees) {
@@ -54,4 +54,4 @@ WallSurfaceMesh meshWallSurfaces(const Tissue& t, const WallTriangulation& walls
   return mesh;
 }
 
-}  // namespace tessella::mesh_detail
+}  // namespace tessella::mesh::detail

@@ -18,7 +18,7 @@
 #include "tessella/tissue/tissue.hpp"
 #include "wall_triangulation.hpp"
 
-namespace tessella::mesh_detail {
+namespace tessella::mesh::detail {
 
 struct WallSurfaceMesh {
   /// Tissue vertices (live, in t.vertices() order), fan centres of non-planar
@@ -36,4 +36,4 @@ struct WallSurfaceMesh {
 WallSurfaceMesh meshWallSurfaces(const Tissue& t, const WallTriangulation& walls, double max_edge,
                                  double min_angle_degrees);
 
-}  // namespace tessella::mesh_detail
+}  // namespace tessella::mesh::detail

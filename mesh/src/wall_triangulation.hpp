@@ -14,7 +14,7 @@
 #include "tessella/mesh/geometry_check.hpp"
 #include "tessella/tissue/tissue.hpp"
 
-namespace tessella::mesh_detail {
+namespace tessella::mesh::detail {
 
 struct WallTriangulation {
   std::vector<Vec3> points;  ///< vertex slots, then wall slots (fan centres)
@@ -38,4 +38,4 @@ std::string wallCellsText(const Tissue& t, WallId w);
 /// Bounding-box diagonal of the live vertices (the length scale of tolerances).
 double tissueScale(const Tissue& t);
 
-}  // namespace tessella::mesh_detail
+}  // namespace tessella::mesh::detail

@@ -6,6 +6,9 @@
 
 namespace tessella::python {
 
+// The API bound in this file, by its own names.
+using namespace tessella::solvers;
+
 namespace {
 
 Eigen::VectorXd checkedConcentrations(const CompartmentTransport& ct, Eigen::VectorXd c) {

@@ -11,6 +11,10 @@
 
 namespace tessella::python {
 
+// The API bound in this file, by its own names.
+using namespace tessella::mesh;
+using namespace tessella::solvers;
+
 namespace {
 
 using OptFunction = std::optional<SpatialFunction>;
@@ -27,8 +31,8 @@ Eigen::VectorXd orEmpty(const std::optional<Eigen::VectorXd>& v) { return v.valu
 }  // namespace
 
 void bindDiffusion(py::module_& m) {
-  bindEnum(m, "TimeScheme", "Time stepping of the implicit (linear) part.", timeSchemes());
-  bindEnum(m, "MassType", "Consistent (exact) or lumped (row-sum, keeps positivity) mass matrix.", massTypes());
+  bindEnum(m, "TimeScheme", "Time stepping of the implicit (linear) part.", solvers::timeSchemes());
+  bindEnum(m, "MassType", "Consistent (exact) or lumped (row-sum, keeps positivity) mass matrix.", solvers::massTypes());
 
   py::class_<DirichletCondition>(m, "DirichletCondition", "u = value (or function(x, t)) on the nodes of the facets.")
       .def(py::init([](std::vector<int> facets, double value, OptFunction function) {
@@ -93,7 +97,7 @@ element_cell; one value = uniform; decay/production None = zero).
                                      .picard_max_iterations = picard_max_iterations,
                                      .picard_tolerance = picard_tolerance};
            }),
-           py::arg("scheme") = TimeScheme::ImplicitEuler, py::arg("mass") = MassType::Consistent,
+           py::arg("scheme") = solvers::TimeScheme::ImplicitEuler, py::arg("mass") = solvers::MassType::Consistent,
            py::arg("linear") = LinearSolverOptions{}, py::arg("picard_max_iterations") = 200,
            py::arg("picard_tolerance") = 1e-10)
       .def_readwrite("scheme", &DiffusionOptions::scheme)

@@ -8,8 +8,12 @@
 
 namespace tessella::python {
 
+// The API bound in this file, by its own names.
+using namespace tessella::mesh;
+using namespace tessella::solvers;
+
 void bindElasticity(py::module_& m) {
-  bindEnum(m, "ElasticModel", "Kinematics of the elastic problem.", elasticModels());
+  bindEnum(m, "ElasticModel", "Kinematics of the elastic problem.", solvers::elasticModels());
 
   py::class_<DisplacementCondition>(m, "DisplacementCondition",
                                     "Fixes the selected components (fixed = (x, y, z)) to value on facets and nodes.")
@@ -48,7 +52,7 @@ linear-solver options.
                                       .pressure = std::move(pressure), .membrane_pressure = membrane_pressure,
                                       .linear = linear};
            }),
-           py::arg("model") = ElasticModel::Solid, py::arg("young") = Eigen::VectorXd::Ones(1).eval(),
+           py::arg("model") = solvers::ElasticModel::Solid, py::arg("young") = Eigen::VectorXd::Ones(1).eval(),
            py::arg("poisson") = Eigen::VectorXd::Constant(1, 0.3).eval(), py::arg("thickness") = 1.0,
            py::arg("body_force") = Eigen::Vector3d::Zero().eval(),
            py::arg("displacement") = std::vector<DisplacementCondition>{},

@@ -53,7 +53,7 @@ void bindErrors(py::module_& m) {
       PyErr_SetString(geometry.ptr(), e.what());
     } catch (const TopologyError& e) {
       PyErr_SetString(topology.ptr(), e.what());
-    } catch (const InvalidProblemError& e) {
+    } catch (const solvers::InvalidProblemError& e) {
       PyErr_SetString(input.ptr(), e.what());
     } catch (const Error& e) {  // SolverError and its other kinds too
       PyErr_SetString(error.ptr(), e.what());

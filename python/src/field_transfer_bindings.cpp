@@ -6,6 +6,9 @@
 
 namespace tessella::python {
 
+// The API bound in this file, by its own names.
+using namespace tessella::mesh;
+
 void bindFieldTransfer(py::module_& m) {
   m.def("ancestor_cells", &ancestorCells, py::arg("old_tissue"), py::arg("new_tissue"),
         "Per cell slot of new_tissue: the old cell it comes from (lineage, then parent), -1 for dead slots.");

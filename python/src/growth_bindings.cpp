@@ -109,7 +109,7 @@ void bindGrowth(py::module_& m) {
       m, "ExpressionField", "Three muparser expressions of x, y, z, t and named parameters.")
       .def(py::init([](std::string vx, std::string vy, std::string vz, std::map<std::string, double> parameters) {
              return std::make_shared<growth::ExpressionField>(
-                 growth::ExpressionFieldSpec{std::move(vx), std::move(vy), std::move(vz), std::move(parameters)});
+                 growth::ExpressionFieldParams{std::move(vx), std::move(vy), std::move(vz), std::move(parameters)});
            }),
            py::arg("vx") = "0", py::arg("vy") = "0", py::arg("vz") = "0",
            py::arg("parameters") = std::map<std::string, double>{});

@@ -7,6 +7,9 @@
 
 namespace tessella::python {
 
+// The API bound in this file, by its own names.
+using namespace tessella::solvers;
+
 void bindLinearSolver(py::module_& m) {
   bindEnum<SolverMethod>(m, "SolverMethod",
                          "Linear solver back-end; cholmod and amg_cg exist only in builds with "

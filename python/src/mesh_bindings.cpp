@@ -12,6 +12,9 @@
 
 namespace tessella::python {
 
+// The API bound in this file, by its own names.
+using namespace tessella::mesh;
+
 namespace {
 
 std::vector<double> perItem(int n, const auto& f) {
@@ -27,7 +30,7 @@ py::array_t<double> asArray(const std::vector<double>& v) { return py::array_t<d
 void bindMesh(py::module_& m) {
   py::enum_<VolumeMethod> volume_method(m, "VolumeMethod",
                                         "How a 3D tissue is filled with tetrahedra (docs/meshing.md).");
-  for (const auto& e : volumeMethods().entries()) {
+  for (const auto& e : mesh::volumeMethods().entries()) {
     std::string upper = e.name;  // cell_by_cell -> CELL_BY_CELL
     for (char& ch : upper) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
     volume_method.value(upper.c_str(), e.value);
@@ -46,7 +49,7 @@ void bindMesh(py::module_& m) {
            }),
            py::arg("min_angle_degrees") = 20.0, py::arg("max_edge_length") = 0.0, py::arg("max_volume") = 0.0,
            py::arg("radius_edge_ratio") = 1.5, py::arg("min_dihedral_degrees") = 0.0, py::arg("tolerance") = 1e-10,
-           py::arg("volume_method") = VolumeMethod::CellByCell, py::arg("max_elements") = kDefaultMaxElements)
+           py::arg("volume_method") = mesh::VolumeMethod::CellByCell, py::arg("max_elements") = kDefaultMaxElements)
       .def_readwrite("min_angle_degrees", &MeshOptions::min_angle_degrees, "2D/surface: lower bound on triangle angles.")
       .def_readwrite("max_edge_length", &MeshOptions::max_edge_length, "2D/surface: edge length bound (0 = none).")
       .def_readwrite("max_volume", &MeshOptions::max_volume, "3D: tetrahedron volume bound (0 = none).")

@@ -88,8 +88,9 @@ stage, step and time, followed by the cause's message.
       .def(py::init([](const Tissue& t, double start, double end, double dt, std::uint64_t seed) {
              if (!(dt > 0.0)) throw InputError("Simulation: dt must be > 0, got " + formatNumber(dt));
              if (!(end >= start))
-               throw InputError("Simulation: end (" + formatNumber(end) + ") must be >= start (" + formatNumber(start) + ")");
-             return Simulation(t, sim::SimulationParameters{.time = {start, end, dt}, .rng_seed = seed, .rng_state = {}, .carried = {}});
+               throw InputError("Simulation: end (" + formatNumber(end) + ") must be >= start (" + formatNumber(start) +
+                                ")");
+             return Simulation(t, sim::SimulationOptions{.time = {start, end, dt}, .rng_seed = seed, .rng_state = {}, .carried = {}});
            }),
            py::arg("tissue"), py::arg("start") = 0.0, py::arg("end") = 10.0, py::arg("dt") = 1.0, py::arg("rng_seed") = 0)
       .def_static("from_file", &Simulation::fromFile, py::arg("path"), py::arg("overrides") = std::vector<std::string>{},
@@ -102,7 +103,7 @@ stage, step and time, followed by the cause's message.
       .def_property_readonly("steps_done", &Simulation::stepsDone)
       .def_property_readonly("num_steps", &Simulation::numSteps)
       .def_property_readonly("finished", &Simulation::finished)
-      .def_property_readonly("dt", [](const Simulation& s) { return s.parameters().time.dt; })
+      .def_property_readonly("dt", [](const Simulation& s) { return s.options().time.dt; })
       .def_property_readonly("stage_names",
                              [](const Simulation& s) {
                                std::vector<std::string> names;
@@ -141,7 +142,7 @@ stage, step and time, followed by the cause's message.
       .def(
           "run_until",
           [](Simulation& s, double t) {
-            const double slack = 1e-6 * s.parameters().time.dt;  // as Simulation::runUntil
+            const double slack = 1e-6 * s.options().time.dt;  // as Simulation::runUntil
             while (!s.finished() && s.time() < t - slack) {
               s.step();
               raiseDeferredError();

@@ -26,11 +26,11 @@ using detail::parseExact;
 io::RunState Simulation::runState() const {
   std::ostringstream stream;
   stream << rng_;
-  io::RunState state = parameters_.carried;
-  state["clock.start"] = formatNumber(parameters_.time.clockOrigin());
-  state["clock.dt"] = formatNumber(parameters_.time.dt);
-  state["clock.step"] = std::to_string(parameters_.time.origin_steps + step_);
-  state["rng_seed"] = std::to_string(parameters_.rng_seed);
+  io::RunState state = options_.carried;
+  state["clock.start"] = formatNumber(options_.time.clockOrigin());
+  state["clock.dt"] = formatNumber(options_.time.dt);
+  state["clock.step"] = std::to_string(options_.time.origin_steps + step_);
+  state["rng_seed"] = std::to_string(options_.rng_seed);
   state["rng.stream"] = stream.str();
   return state;
 }
@@ -62,9 +62,9 @@ std::string continueRunState(const io::RunState& state, double snapshot_time, st
   return *stream;
 }
 
-Simulation::Simulation(Tissue tissue, SimulationParameters parameters)
-    : tissue_(std::move(tissue)), parameters_(parameters), rng_(stageStream(parameters.rng_seed)) {
-  const TimeSpan& t = parameters_.time;
+Simulation::Simulation(Tissue tissue, SimulationOptions options)
+    : tissue_(std::move(tissue)), options_(options), rng_(stageStream(options.rng_seed)) {
+  const TimeSpan& t = options_.time;
   if (!std::isfinite(t.start) || !std::isfinite(t.end) || !(t.end >= t.start))
     throw InputError("Simulation: time span [" + number(t.start) + ", " + number(t.end) +
                      "] is not a finite interval with end >= start");
@@ -72,8 +72,8 @@ Simulation::Simulation(Tissue tissue, SimulationParameters parameters)
   if ((t.end - t.start) / t.dt > kMaxSteps)
     throw InputError("Simulation: " + number((t.end - t.start) / t.dt) + " steps is more than the limit of " +
                      number(kMaxSteps));
-  if (!parameters_.rng_state.empty()) {
-    std::istringstream saved(parameters_.rng_state);
+  if (!options_.rng_state.empty()) {
+    std::istringstream saved(options_.rng_state);
     saved >> rng_;
     if (saved.fail()) throw InputError("Simulation: the saved random stream (rng.stream) is not a valid state");
   }
@@ -98,7 +98,7 @@ void Simulation::onStep(StepCallback callback) {
 void Simulation::step() {
   if (finished()) throw std::logic_error("Simulation::step: the time span is already over");
   const double t0 = time();
-  const double t1 = parameters_.time.timeAt(step_ + 1);
+  const double t1 = options_.time.timeAt(step_ + 1);
   const StepContext context{step_, t0, t1 - t0, &rng_, t1, &geometry_};
   for (auto& stage : stages_) {
     try {
@@ -114,7 +114,7 @@ void Simulation::step() {
 }
 
 void Simulation::runUntil(double t) {
-  const double slack = 1e-6 * parameters_.time.dt;
+  const double slack = 1e-6 * options_.time.dt;
   while (!finished() && !stopRequested() && time() < t - slack) step();
 }
 

@@ -14,7 +14,7 @@
 #include <limits>
 #include <vector>
 
-namespace tessella::detail {
+namespace tessella::solvers::detail {
 
 /// Element matrix storage: up to 12 x 12 (a tetrahedron with 3 displacement components).
 using LocalMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, 0, 12, 12>;
@@ -72,4 +72,4 @@ void parallelFor(int num_items, F&& f) {
   if (error) std::rethrow_exception(error);
 }
 
-}  // namespace tessella::detail
+}  // namespace tessella::solvers::detail

@@ -8,7 +8,7 @@
 #include <sstream>
 #include <string>
 
-namespace tessella {
+namespace tessella::solvers {
 
 const EnumTable<MassType>& massTypes() {
   static const EnumTable<MassType> table(
@@ -27,7 +27,7 @@ void checkCoefficient(const Eigen::VectorXd& c, int expected, const char* what) 
   }
 }
 
-void checkFacets(const FeMesh& mesh, const std::vector<int>& facets) {
+void checkFacets(const mesh::FeMesh& mesh, const std::vector<int>& facets) {
   for (int f : facets)
     if (f < 0 || f >= mesh.numWallFacets())
       throw InvalidProblemError("facet index " + std::to_string(f) + " out of range [0, " +
@@ -47,26 +47,26 @@ void simplexMass(double measure, int n, Mat& m) {
 // One-off assemblies build the pattern for the call: less memory than n^2
 // triplets per element. Repeated assemblies on one mesh should keep an
 // AssemblyPattern instead.
-SparseMatrix assembleMass(const FeMesh& mesh, MassType type, const Eigen::VectorXd& element_coefficient) {
+SparseMatrix assembleMass(const mesh::FeMesh& mesh, MassType type, const Eigen::VectorXd& element_coefficient) {
   checkMesh(mesh);
   checkCoefficient(element_coefficient, mesh.numElements(), "assembleMass");
   return AssemblyPattern(mesh).mass(mesh, type, element_coefficient);
 }
 
-SparseMatrix assembleStiffness(const FeMesh& mesh, const Eigen::VectorXd& element_coefficient) {
+SparseMatrix assembleStiffness(const mesh::FeMesh& mesh, const Eigen::VectorXd& element_coefficient) {
   checkMesh(mesh);
   checkCoefficient(element_coefficient, mesh.numElements(), "assembleStiffness");
   return AssemblyPattern(mesh).stiffness(mesh, element_coefficient);
 }
 
-Eigen::VectorXd elementMeasures(const FeMesh& mesh) {
+Eigen::VectorXd elementMeasures(const mesh::FeMesh& mesh) {
   checkMesh(mesh);
   Eigen::VectorXd measure(mesh.numElements());
   detail::parallelFor(mesh.numElements(), [&](int e) { measure[e] = elementGeometry(mesh, e).measure; });
   return measure;
 }
 
-Eigen::VectorXd assembleLoad(const FeMesh& mesh, const Eigen::VectorXd& element_density) {
+Eigen::VectorXd assembleLoad(const mesh::FeMesh& mesh, const Eigen::VectorXd& element_density) {
   checkCoefficient(element_density, mesh.numElements(), "assembleLoad");
   const Eigen::VectorXd measure = elementMeasures(mesh);
   const int n = mesh.dim + 1;
@@ -79,7 +79,7 @@ Eigen::VectorXd assembleLoad(const FeMesh& mesh, const Eigen::VectorXd& element_
   return F;
 }
 
-SparseMatrix assembleFacetMass(const FeMesh& mesh, const std::vector<int>& facets,
+SparseMatrix assembleFacetMass(const mesh::FeMesh& mesh, const std::vector<int>& facets,
                                const Eigen::VectorXd& facet_coefficient) {
   checkMesh(mesh);
   checkFacets(mesh, facets);
@@ -94,7 +94,7 @@ SparseMatrix assembleFacetMass(const FeMesh& mesh, const std::vector<int>& facet
       });
 }
 
-Eigen::VectorXd assembleFacetLoad(const FeMesh& mesh, const std::vector<int>& facets,
+Eigen::VectorXd assembleFacetLoad(const mesh::FeMesh& mesh, const std::vector<int>& facets,
                                   const Eigen::VectorXd& facet_density) {
   checkMesh(mesh);
   checkFacets(mesh, facets);
@@ -111,4 +111,4 @@ Eigen::VectorXd assembleFacetLoad(const FeMesh& mesh, const std::vector<int>& fa
   return G;
 }
 
-}  // namespace tessella
+}  // namespace tessella::solvers

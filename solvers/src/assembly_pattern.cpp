@@ -13,7 +13,7 @@
 #include <sstream>
 #include <string>
 
-namespace tessella {
+namespace tessella::solvers {
 
 namespace {
 
@@ -21,7 +21,7 @@ namespace {
 // by cofactors (grad lambda_k = (e_{k+1} x e_{k+2}) / det); triangles (flat or
 // curved, in R^3) through elementGeometry. Same degeneracy test as
 // elementGeometry, which is called to raise its error.
-inline double geometry(const FeMesh& mesh, int e, double g[4][3]) {
+inline double geometry(const mesh::FeMesh& mesh, int e, double g[4][3]) {
   if (mesh.dim == 3) {
     const double* x0 = &mesh.nodes(mesh.elements(e, 0), 0);
     double v[3][3];
@@ -61,7 +61,7 @@ inline double geometry(const FeMesh& mesh, int e, double g[4][3]) {
 
 }  // namespace
 
-AssemblyPattern::AssemblyPattern(const FeMesh& mesh) : dim_(mesh.dim), num_elements_(mesh.numElements()) {
+AssemblyPattern::AssemblyPattern(const mesh::FeMesh& mesh) : dim_(mesh.dim), num_elements_(mesh.numElements()) {
   checkMesh(mesh);
   const int n = mesh.numNodes();
   const int ne = num_elements_;
@@ -204,7 +204,7 @@ AssemblyPattern::AssemblyPattern(const FeMesh& mesh) : dim_(mesh.dim), num_eleme
   }
 }
 
-void AssemblyPattern::prepare(const FeMesh& mesh, const Eigen::VectorXd& c, const char* what, SparseMatrix& out) const {
+void AssemblyPattern::prepare(const mesh::FeMesh& mesh, const Eigen::VectorXd& c, const char* what, SparseMatrix& out) const {
   if (mesh.dim != dim_ || mesh.numNodes() != numNodes() || mesh.numElements() != num_elements_) {
     std::ostringstream msg;
     msg << what << ": mesh (dim " << mesh.dim << ", " << mesh.numNodes() << " nodes, " << mesh.numElements()
@@ -229,7 +229,7 @@ void AssemblyPattern::prepare(const FeMesh& mesh, const Eigen::VectorXd& c, cons
     out = structure_;
 }
 
-void AssemblyPattern::assemble(const FeMesh& mesh, Kind kind, const Eigen::VectorXd& c, SparseMatrix& out) const {
+void AssemblyPattern::assemble(const mesh::FeMesh& mesh, Kind kind, const Eigen::VectorXd& c, SparseMatrix& out) const {
   const int nn = dim_ + 1;
   const std::size_t block = static_cast<std::size_t>(nn) * static_cast<std::size_t>(nn);
   double* values = out.valuePtr();
@@ -280,26 +280,26 @@ void AssemblyPattern::assemble(const FeMesh& mesh, Kind kind, const Eigen::Vecto
   }
 }
 
-void AssemblyPattern::stiffness(const FeMesh& mesh, const Eigen::VectorXd& c, SparseMatrix& out) const {
+void AssemblyPattern::stiffness(const mesh::FeMesh& mesh, const Eigen::VectorXd& c, SparseMatrix& out) const {
   prepare(mesh, c, "AssemblyPattern::stiffness", out);
   assemble(mesh, Kind::Stiffness, c, out);
 }
 
-void AssemblyPattern::mass(const FeMesh& mesh, MassType type, const Eigen::VectorXd& c, SparseMatrix& out) const {
+void AssemblyPattern::mass(const mesh::FeMesh& mesh, MassType type, const Eigen::VectorXd& c, SparseMatrix& out) const {
   prepare(mesh, c, "AssemblyPattern::mass", out);
   assemble(mesh, type == MassType::Consistent ? Kind::ConsistentMass : Kind::LumpedMass, c, out);
 }
 
-SparseMatrix AssemblyPattern::stiffness(const FeMesh& mesh, const Eigen::VectorXd& c) const {
+SparseMatrix AssemblyPattern::stiffness(const mesh::FeMesh& mesh, const Eigen::VectorXd& c) const {
   SparseMatrix out;
   stiffness(mesh, c, out);
   return out;
 }
 
-SparseMatrix AssemblyPattern::mass(const FeMesh& mesh, MassType type, const Eigen::VectorXd& c) const {
+SparseMatrix AssemblyPattern::mass(const mesh::FeMesh& mesh, MassType type, const Eigen::VectorXd& c) const {
   SparseMatrix out;
   mass(mesh, type, c, out);
   return out;
 }
 
-}  // namespace tessella
+}  // namespace tessella::solvers

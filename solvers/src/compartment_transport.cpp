@@ -6,7 +6,7 @@
 #include <cmath>
 #include <sstream>
 
-namespace tessella {
+namespace tessella::solvers {
 
 namespace {
 
@@ -97,4 +97,4 @@ double CompartmentTransport::totalAmount(const Eigen::VectorXd& c) const {
   return network_.volume.dot(c);
 }
 
-}  // namespace tessella
+}  // namespace tessella::solvers

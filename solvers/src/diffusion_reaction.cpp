@@ -10,7 +10,7 @@
 #include <memory>
 #include <sstream>
 
-namespace tessella {
+namespace tessella::solvers {
 
 const EnumTable<TimeScheme>& timeSchemes() {
   static const EnumTable<TimeScheme> table(
@@ -42,7 +42,7 @@ DiffusionReaction& DiffusionReaction::operator=(DiffusionReaction&&) noexcept = 
 
 namespace {
 
-void checkFacetList(const FeMesh& mesh, const std::vector<int>& facets, const std::string& where) {
+void checkFacetList(const mesh::FeMesh& mesh, const std::vector<int>& facets, const std::string& where) {
   for (int f : facets)
     if (f < 0 || f >= mesh.numWallFacets()) {
       std::ostringstream msg;
@@ -51,7 +51,7 @@ void checkFacetList(const FeMesh& mesh, const std::vector<int>& facets, const st
     }
 }
 
-Eigen::VectorXd interpolate(const FeMesh& mesh, const SpatialFunction& f, double t) {
+Eigen::VectorXd interpolate(const mesh::FeMesh& mesh, const SpatialFunction& f, double t) {
   Eigen::VectorXd v(mesh.numNodes());
   for (int i = 0; i < mesh.numNodes(); ++i) v[i] = f(mesh.nodes.row(i).transpose(), t);
   return v;
@@ -59,7 +59,7 @@ Eigen::VectorXd interpolate(const FeMesh& mesh, const SpatialFunction& f, double
 
 }  // namespace
 
-DiffusionReaction::DiffusionReaction(const FeMesh& mesh, std::vector<Species> species, DiffusionOptions options)
+DiffusionReaction::DiffusionReaction(const mesh::FeMesh& mesh, std::vector<Species> species, DiffusionOptions options)
     : mesh_(&mesh), options_(options) {
   checkMesh(mesh);
   if (species.empty()) throw InvalidProblemError("DiffusionReaction: no species given");
@@ -272,4 +272,4 @@ double DiffusionReaction::totalAmount(int species) const {
   return (mass_ * u_.col(species)).sum();
 }
 
-}  // namespace tessella
+}  // namespace tessella::solvers

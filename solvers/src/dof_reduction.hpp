@@ -10,7 +10,7 @@
 
 #include <vector>
 
-namespace tessella::detail {
+namespace tessella::solvers::detail {
 
 class DofReduction {
  public:
@@ -70,4 +70,4 @@ class DofReduction {
   std::vector<char> is_fixed_;
 };
 
-}  // namespace tessella::detail
+}  // namespace tessella::solvers::detail

@@ -13,7 +13,7 @@
 #include <cmath>
 #include <sstream>
 
-namespace tessella {
+namespace tessella::solvers {
 
 const EnumTable<ElasticModel>& elasticModels() {
   static const EnumTable<ElasticModel> table(
@@ -81,7 +81,7 @@ struct MembraneFrame {
   Eigen::Vector3d normal;
 };
 
-MembraneFrame membraneFrame(const FeMesh& mesh, int e) {
+MembraneFrame membraneFrame(const mesh::FeMesh& mesh, int e) {
   const Eigen::Vector3d x0 = mesh.nodes.row(mesh.elements(e, 0)).transpose();
   const Eigen::Vector3d a = mesh.nodes.row(mesh.elements(e, 1)).transpose() - x0;
   const Eigen::Vector3d b = mesh.nodes.row(mesh.elements(e, 2)).transpose() - x0;
@@ -122,7 +122,7 @@ Eigen::Matrix<double, 1, 6> tensorToVoigt(const Eigen::Matrix3d& t, bool strain)
 
 // Rigid-body modes evaluated on the fixed dofs must have full rank (3 in 2D,
 // 6 in 3D); otherwise some translation/rotation is left free and K_FF is singular.
-void checkRigidModes(const FeMesh& mesh, int nc, const std::vector<int>& fixed_dofs) {
+void checkRigidModes(const mesh::FeMesh& mesh, int nc, const std::vector<int>& fixed_dofs) {
   const int modes = nc == 3 ? 6 : 3;
   if (fixed_dofs.empty())
     bad("no displacement constraints: a pure traction/pressure problem has rigid-body modes and no unique solution; "
@@ -165,7 +165,7 @@ Eigen::Matrix3d voigtToTensor(const Eigen::Matrix<double, 1, 6>& v) {
   return t;
 }
 
-ElasticityResult solveElasticity(const FeMesh& mesh, const ElasticityProblem& problem) {
+ElasticityResult solveElasticity(const mesh::FeMesh& mesh, const ElasticityProblem& problem) {
   checkMesh(mesh);
   const ElasticModel model = problem.model;
   const bool membrane = model == ElasticModel::Membrane;
@@ -348,4 +348,4 @@ ElasticityResult solveElasticity(const FeMesh& mesh, const ElasticityProblem& pr
   return out;
 }
 
-}  // namespace tessella
+}  // namespace tessella::solvers

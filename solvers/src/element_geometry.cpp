@@ -10,11 +10,11 @@
 #include <sstream>
 #include <string>
 
-namespace tessella {
+namespace tessella::solvers {
 
 namespace {
 
-Eigen::Vector3d node(const FeMesh& mesh, int i) { return mesh.nodes.row(i).transpose(); }
+Eigen::Vector3d node(const mesh::FeMesh& mesh, int i) { return mesh.nodes.row(i).transpose(); }
 
 [[noreturn]] void degenerate(int e, double measure) {
   std::ostringstream msg;
@@ -24,7 +24,7 @@ Eigen::Vector3d node(const FeMesh& mesh, int i) { return mesh.nodes.row(i).trans
 
 }  // namespace
 
-ElementGeometry elementGeometry(const FeMesh& mesh, int e) {
+ElementGeometry elementGeometry(const mesh::FeMesh& mesh, int e) {
   ElementGeometry g;
   const int d = mesh.dim;
   const Eigen::Vector3d x0 = node(mesh, mesh.elements(e, 0));
@@ -60,7 +60,7 @@ ElementGeometry elementGeometry(const FeMesh& mesh, int e) {
   return g;
 }
 
-double simplexMeasure(const FeMesh& mesh, const int* nodes, int count) {
+double simplexMeasure(const mesh::FeMesh& mesh, const int* nodes, int count) {
   const Eigen::Vector3d x0 = node(mesh, nodes[0]);
   if (count == 2) return (node(mesh, nodes[1]) - x0).norm();
   if (count == 3) return 0.5 * (node(mesh, nodes[1]) - x0).cross(node(mesh, nodes[2]) - x0).norm();
@@ -72,7 +72,7 @@ double simplexMeasure(const FeMesh& mesh, const int* nodes, int count) {
   throw InvalidProblemError("simplexMeasure: a simplex has 2, 3 or 4 nodes here, got " + std::to_string(count));
 }
 
-void checkMesh(const FeMesh& mesh) {
+void checkMesh(const mesh::FeMesh& mesh) {
   std::ostringstream msg;
   msg << "FE mesh: ";
   const int n = mesh.numNodes();
@@ -105,9 +105,9 @@ void checkMesh(const FeMesh& mesh) {
   throw InvalidProblemError(msg.str());
 }
 
-int numCells(const FeMesh& mesh) { return mesh.numElements() > 0 ? mesh.element_cell.maxCoeff() + 1 : 0; }
+int numCells(const mesh::FeMesh& mesh) { return mesh.numElements() > 0 ? mesh.element_cell.maxCoeff() + 1 : 0; }
 
-Eigen::VectorXd cellToElement(const FeMesh& mesh, const Eigen::VectorXd& per_cell, std::string_view what,
+Eigen::VectorXd cellToElement(const mesh::FeMesh& mesh, const Eigen::VectorXd& per_cell, std::string_view what,
                               bool nonnegative) {
   const int cells = numCells(mesh);
   if (per_cell.size() != 1 && per_cell.size() < cells) {
@@ -120,7 +120,8 @@ Eigen::VectorXd cellToElement(const FeMesh& mesh, const Eigen::VectorXd& per_cel
     const double v = per_cell[c];
     if (!std::isfinite(v) || (nonnegative && v < 0.0)) {
       std::ostringstream msg;
-      msg << what << " of cell " << c << " is " << formatNumber(v) << (nonnegative ? "; it must be finite and >= 0" : "; it must be finite");
+      msg << what << " of cell " << c << " is " << formatNumber(v)
+          << (nonnegative ? "; it must be finite and >= 0" : "; it must be finite");
       throw InvalidProblemError(msg.str());
     }
   }
@@ -129,4 +130,4 @@ Eigen::VectorXd cellToElement(const FeMesh& mesh, const Eigen::VectorXd& per_cel
   return out;
 }
 
-}  // namespace tessella
+}  // namespace tessella::solvers

@@ -8,7 +8,7 @@
 
 #include <memory>
 
-namespace tessella::detail {
+namespace tessella::solvers::detail {
 
 class ExternalSolver {
  public:
@@ -25,4 +25,4 @@ bool hypreBuilt();
 std::unique_ptr<ExternalSolver> makeCholmodSolver(const LinearSolverOptions& options);
 std::unique_ptr<ExternalSolver> makeHypreSolver(const LinearSolverOptions& options);
 
-}  // namespace tessella::detail
+}  // namespace tessella::solvers::detail

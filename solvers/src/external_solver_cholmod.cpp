@@ -13,7 +13,7 @@
 #include <Eigen/CholmodSupport>
 #endif
 
-namespace tessella::detail {
+namespace tessella::solvers::detail {
 
 #if TESSELLA_HAVE_CHOLMOD
 namespace {
@@ -40,8 +40,8 @@ class CholmodSolver final : public ExternalSolver {
     const double tol = std::max(options_.pivot_tolerance, 64.0 * n * std::numeric_limits<double>::epsilon());
     if (!(rc > tol)) {
       std::ostringstream msg;
-      msg << "LinearSolver (CHOLMOD): matrix is singular (reciprocal condition estimate " << formatNumber(rc, 6) << ", n = " << A.rows()
-          << ")";
+      msg << "LinearSolver (CHOLMOD): matrix is singular (reciprocal condition estimate " << formatNumber(rc, 6)
+          << ", n = " << A.rows() << ")";
       throw FactorizationError(msg.str());
     }
   }
@@ -73,4 +73,4 @@ std::unique_ptr<ExternalSolver> makeCholmodSolver(const LinearSolverOptions&) {
 }
 #endif
 
-}  // namespace tessella::detail
+}  // namespace tessella::solvers::detail

@@ -20,7 +20,7 @@
 #include <mutex>
 #endif
 
-namespace tessella::detail {
+namespace tessella::solvers::detail {
 
 #if TESSELLA_HAVE_HYPRE
 namespace {
@@ -172,4 +172,4 @@ std::unique_ptr<ExternalSolver> makeHypreSolver(const LinearSolverOptions&) {
 }
 #endif
 
-}  // namespace tessella::detail
+}  // namespace tessella::solvers::detail

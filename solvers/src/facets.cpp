@@ -12,9 +12,9 @@
 #include <string>
 #include <utility>
 
-namespace tessella {
+namespace tessella::solvers {
 
-std::vector<int> boundaryFacets(const FeMesh& mesh) {
+std::vector<int> boundaryFacets(const mesh::FeMesh& mesh) {
   checkMesh(mesh);
   std::vector<int> out;
   for (int f = 0; f < mesh.numWallFacets(); ++f)
@@ -22,7 +22,7 @@ std::vector<int> boundaryFacets(const FeMesh& mesh) {
   return out;
 }
 
-std::vector<int> facetsOfWalls(const FeMesh& mesh, const std::vector<int>& walls, bool boundary_only) {
+std::vector<int> facetsOfWalls(const mesh::FeMesh& mesh, const std::vector<int>& walls, bool boundary_only) {
   checkMesh(mesh);
   const std::set<int> wanted(walls.begin(), walls.end());
   std::vector<int> out;
@@ -31,7 +31,7 @@ std::vector<int> facetsOfWalls(const FeMesh& mesh, const std::vector<int>& walls
   return out;
 }
 
-std::vector<int> facetNodes(const FeMesh& mesh, const std::vector<int>& facets) {
+std::vector<int> facetNodes(const mesh::FeMesh& mesh, const std::vector<int>& facets) {
   std::vector<int> nodes;
   for (int f : facets) {
     if (f < 0 || f >= mesh.numWallFacets())
@@ -43,7 +43,7 @@ std::vector<int> facetNodes(const FeMesh& mesh, const std::vector<int>& facets) 
   return nodes;
 }
 
-std::vector<FacetSide> facetSides(const FeMesh& mesh, const std::vector<int>& facets) {
+std::vector<FacetSide> facetSides(const mesh::FeMesh& mesh, const std::vector<int>& facets) {
   checkMesh(mesh);
   const int d = mesh.dim;
   using Key = std::array<int, 3>;
@@ -83,7 +83,7 @@ std::vector<FacetSide> facetSides(const FeMesh& mesh, const std::vector<int>& fa
   return sides;
 }
 
-Eigen::Vector3d outwardNormal(const FeMesh& mesh, int facet, const FacetSide& side) {
+Eigen::Vector3d outwardNormal(const mesh::FeMesh& mesh, int facet, const FacetSide& side) {
   const int d = mesh.dim;
   const Eigen::Vector3d opposite = mesh.nodes.row(mesh.elements(side.element, side.opposite)).transpose();
   const Eigen::Vector3d p0 = mesh.nodes.row(mesh.wall_facets(facet, 0)).transpose();
@@ -101,4 +101,4 @@ Eigen::Vector3d outwardNormal(const FeMesh& mesh, int facet, const FacetSide& si
   return v / len;
 }
 
-}  // namespace tessella
+}  // namespace tessella::solvers

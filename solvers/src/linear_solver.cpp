@@ -9,7 +9,7 @@
 #include <limits>
 #include <sstream>
 
-namespace tessella {
+namespace tessella::solvers {
 
 std::string toString(SolverMethod method) {
   switch (method) {
@@ -90,7 +90,8 @@ void LinearSolver::compute(const SparseMatrix& A) {
     if (dmin <= tol * dmax) {
       std::ostringstream msg;
       msg << "LinearSolver: matrix is " << (dmin < -tol * dmax ? "not positive definite" : "singular")
-          << " (smallest LDL^T pivot " << formatNumber(dmin, 6) << ", largest " << formatNumber(dmax, 6) << ", n = " << n << ")";
+          << " (smallest LDL^T pivot " << formatNumber(dmin, 6) << ", largest " << formatNumber(dmax, 6)
+          << ", n = " << n << ")";
       throw FactorizationError(msg.str());
     }
   } else {
@@ -188,4 +189,4 @@ Eigen::VectorXd solveLinear(const SparseMatrix& A, const Eigen::VectorXd& b, con
   return x;
 }
 
-}  // namespace tessella
+}  // namespace tessella::solvers

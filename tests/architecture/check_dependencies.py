@@ -28,6 +28,22 @@ SOURCE_SUFFIXES = (".hpp", ".cpp", ".ipp", ".h")
 INCLUDE = re.compile(r'^\s*#\s*include\s*([<"])([^>"]+)[>"]')
 
 
+def logical_lines(text):
+    """(first line number, line) pairs, a line ending in a backslash joined with the next."""
+    pending, start = "", 0
+    for number, line in enumerate(text.splitlines(), 1):
+        if not pending:
+            start = number
+        stripped = line.split("#", 1)[0].rstrip()
+        if stripped.endswith("\\"):
+            pending += stripped[:-1] + " "
+            continue
+        yield start, pending + line
+        pending = ""
+    if pending:
+        yield start, pending
+
+
 class Table:
     """The parsed dependency table: modules in order, with target, file prefixes and allowed uses."""
 
@@ -38,7 +54,7 @@ class Table:
         self.uses = {}
         self.internal = {}
         self.errors = []
-        for number, line in enumerate(text.splitlines(), 1):
+        for number, line in logical_lines(text):
             words = line.split("#", 1)[0].split()
             if not words:
                 continue
@@ -314,6 +330,12 @@ class SelfTest(unittest.TestCase):
         problems = self.run_check(self.clean_files(), dict(self.LINKS, top_lib={"mid_lib"}))
         self.assertEqual(len(problems), 1)
         self.assertIn("top includes low (top/src/c.cpp:2) but top_lib does not link low_lib", problems[0])
+
+    def test_a_line_ending_in_a_backslash_goes_on(self):
+        table = Table("top top_lib top/ low \\\n    mid  # more uses\nlow low_lib low/ -\nmid mid_lib mid/ low\n")
+        self.assertEqual(table.errors, [])
+        self.assertEqual(table.uses["top"], {"low", "mid"})
+        self.assertEqual(table.order, ["top", "low", "mid"])
 
     def test_a_cycle_in_the_table_fails(self):
         table = Table(self.TABLE.replace("low    low_lib    low/    -", "low    low_lib    low/    top"))

@@ -26,7 +26,7 @@ std::vector<Vec3> randomPoints(std::size_t n, unsigned seed) {
 }  // namespace
 
 TEST_CASE("an expression field equals the built-in field it spells out", "[growth][expression]") {
-  const ExpressionField e(ExpressionFieldSpec{
+  const ExpressionField e(ExpressionFieldParams{
       .vx = "0",
       .vy = "a*(1 + b*t*x^2/(h + b*t)^2)*exp(-x^2/(h + b*t))",
       .vz = "0",
@@ -45,7 +45,7 @@ TEST_CASE("an expression field equals the built-in field it spells out", "[growt
 }
 
 TEST_CASE("bulk evaluation is the same with one and two threads", "[growth][expression]") {
-  const ExpressionField e(ExpressionFieldSpec{
+  const ExpressionField e(ExpressionFieldParams{
       .vx = "r*x + s*y*z", .vy = "r*y - sin(t*x)", .vz = "t", .parameters = {{"r", 0.2}, {"s", -1}}});
   const LinearField lin = uniformExpansion(0.2);
   const auto x = randomPoints(10007, 2);  // not a multiple of the thread count
@@ -68,7 +68,7 @@ TEST_CASE("bad expressions are InputErrors quoting the expression and position",
           "[growth][expression]") {
   SECTION("syntax error") {
     try {
-      ExpressionField e(ExpressionFieldSpec{.vx = "x +* 2"});
+      ExpressionField e(ExpressionFieldParams{.vx = "x +* 2"});
       FAIL("no error");
     } catch (const InputError& err) {
       CHECK_THAT(err.what(), Contains("vx") && Contains("x +* 2") && Contains("position"));
@@ -76,17 +76,17 @@ TEST_CASE("bad expressions are InputErrors quoting the expression and position",
   }
   SECTION("unknown name") {
     try {
-      ExpressionField e(ExpressionFieldSpec{.vy = "k*y"});
+      ExpressionField e(ExpressionFieldParams{.vy = "k*y"});
       FAIL("no error");
     } catch (const InputError& err) {
       CHECK_THAT(err.what(), Contains("vy") && Contains("k*y") && Contains("k"));
     }
   }
   SECTION("unbalanced parenthesis") {
-    CHECK_THROWS_WITH(ExpressionField(ExpressionFieldSpec{.vz = "(x+1"}), Contains("(x+1"));
+    CHECK_THROWS_WITH(ExpressionField(ExpressionFieldParams{.vz = "(x+1"}), Contains("(x+1"));
   }
   SECTION("a parameter may not shadow a variable") {
-    CHECK_THROWS_WITH(ExpressionField(ExpressionFieldSpec{.parameters = {{"t", 1.0}}}),
+    CHECK_THROWS_WITH(ExpressionField(ExpressionFieldParams{.parameters = {{"t", 1.0}}}),
                       Contains("'t'"));
   }
 }

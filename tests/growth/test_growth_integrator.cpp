@@ -84,7 +84,7 @@ TEST_CASE("vertices follow the bump field's exact trajectories", "[growth][integ
 
 TEST_CASE("planar tissues stay at z = 0", "[growth][integrator]") {
   Tissue t = rectangularGrid(3, 3);
-  auto field = std::make_shared<ExpressionField>(ExpressionFieldSpec{.vx = "0.1*x", .vy = "0", .vz = "1"});
+  auto field = std::make_shared<ExpressionField>(ExpressionFieldParams{.vx = "0.1*x", .vy = "0", .vz = "1"});
   GrowthIntegrator g(field);
   const std::uint64_t before = t.geometryVersion();
   g.step(t, 0.5);
@@ -214,7 +214,7 @@ TEST_CASE("a non-finite velocity is an error naming the field, the expression, t
       Tissue t = rectangularGrid(2, 2);
       t.setTime(0.5);
       const std::vector<Vec3> before(t.positions().begin(), t.positions().end());
-      GrowthIntegrator g(std::make_shared<ExpressionField>(ExpressionFieldSpec{.vx = "x / (t - 0.5)", .vy = "y"}),
+      GrowthIntegrator g(std::make_shared<ExpressionField>(ExpressionFieldParams{.vx = "x / (t - 0.5)", .vy = "y"}),
                          GrowthOptions{.scheme = scheme, .check_inversion = check_inversion});
       try {
         g.step(t, 0.1);
@@ -237,7 +237,7 @@ TEST_CASE("a velocity that overflows in Heun's second stage is refused and undon
     Tissue t = rectangularGrid(2, 2);
     const std::vector<Vec3> before(t.positions().begin(), t.positions().end());
     // v(1) = 1e300 is finite; at the predictor, x ~ 1e299, v = inf.
-    GrowthIntegrator g(std::make_shared<ExpressionField>(ExpressionFieldSpec{.vx = "1e300*x*x"}),
+    GrowthIntegrator g(std::make_shared<ExpressionField>(ExpressionFieldParams{.vx = "1e300*x*x"}),
                        GrowthOptions{.scheme = IntegrationScheme::Heun, .check_inversion = check_inversion});
     try {
       g.step(t, 0.1);
@@ -295,7 +295,7 @@ TEST_CASE("a step that moves a vertex to a non-finite position is refused and un
 
 TEST_CASE("a non-finite velocity at a control vertex is reported at that vertex", "[growth][integrator][finite]") {
   Tissue t = rectangularGrid(3, 3);
-  GrowthIntegrator g(std::make_shared<ExpressionField>(ExpressionFieldSpec{.vy = "1/(x-3)"}),
+  GrowthIntegrator g(std::make_shared<ExpressionField>(ExpressionFieldParams{.vy = "1/(x-3)"}),
                      GrowthOptions{.source = VelocitySource::HarmonicFromControl, .check_inversion = false});
   try {
     g.step(t, 0.1);

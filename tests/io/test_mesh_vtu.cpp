@@ -33,8 +33,8 @@ vtkSmartPointer<vtkUnstructuredGrid> readWithVtk(const std::string& path) {
 
 // The unit square as two cells (triangles below and above the diagonal 0-2):
 // walls 0..3 are the sides, wall 4 the diagonal.
-FeMesh twoTriangles() {
-  FeMesh m;
+mesh::FeMesh twoTriangles() {
+  mesh::FeMesh m;
   m.dim = 2;
   m.nodes.resize(4, 3);
   m.nodes << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
@@ -53,7 +53,7 @@ FeMesh twoTriangles() {
   return m;
 }
 
-void requireCells(vtkUnstructuredGrid* g, const RowMatrix<int>& rows, int type) {
+void requireCells(vtkUnstructuredGrid* g, const mesh::RowMatrix<int>& rows, int type) {
   REQUIRE(g->GetNumberOfCells() == rows.rows());
   vtkNew<vtkIdList> ids;
   for (vtkIdType c = 0; c < g->GetNumberOfCells(); ++c) {
@@ -68,7 +68,7 @@ void requireCells(vtkUnstructuredGrid* g, const RowMatrix<int>& rows, int type) 
 
 TEST_CASE("a triangle mesh and its wall facets, with fields", "[io][mesh]") {
   TempDir dir;
-  const FeMesh m = twoTriangles();
+  const mesh::FeMesh m = twoTriangles();
   MeshFields fields;
   fields.point["u"] = Eigen::VectorXd(4);
   fields.point["u"] << 0.0, 1.0, 2.0, 1.0;  // u = x + y at the nodes
@@ -106,7 +106,7 @@ TEST_CASE("a triangle mesh and its wall facets, with fields", "[io][mesh]") {
 
 TEST_CASE("a tetrahedral mesh writes tetrahedra and triangle facets", "[io][mesh]") {
   TempDir dir;
-  FeMesh m;
+  mesh::FeMesh m;
   m.dim = 3;
   m.nodes.resize(5, 3);
   m.nodes << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 1, 1, 1;
@@ -127,7 +127,7 @@ TEST_CASE("a tetrahedral mesh writes tetrahedra and triangle facets", "[io][mesh
 
 TEST_CASE("mesh errors name the array or field", "[io][mesh][errors]") {
   TempDir dir;
-  FeMesh m = twoTriangles();
+  mesh::FeMesh m = twoTriangles();
   MeshFields fields;
   fields.point["u"] = Eigen::VectorXd::Zero(3);
   REQUIRE_THROWS_WITH(writeFeMeshVtu(m, dir.file("a.vtu"), fields),
@@ -146,7 +146,7 @@ TEST_CASE("mesh errors name the array or field", "[io][mesh][errors]") {
 TEST_CASE("a mesh series keeps elements and walls side by side", "[io][mesh][series]") {
   TempDir dir;
   MeshSeriesWriter series(dir.path().string(), "fem");
-  FeMesh m = twoTriangles();
+  mesh::FeMesh m = twoTriangles();
   series.write(m, 0.0);
   m.nodes *= 2.0;
   const std::string second = series.write(m, 0.5);

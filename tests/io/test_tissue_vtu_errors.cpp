@@ -66,7 +66,7 @@ TEST_CASE("a truncated snapshot is refused, not half read", "[io][vtu][errors]")
 
 TEST_CASE("a .vtu that is not a Tessella snapshot is refused by name", "[io][vtu][errors]") {
   TempDir dir;
-  FeMesh mesh;
+  mesh::FeMesh mesh;
   mesh.nodes.resize(3, 3);
   mesh.nodes << 0, 0, 0, 1, 0, 0, 0, 1, 0;
   mesh.elements.resize(1, 3);

@@ -23,7 +23,7 @@ inline bool relativelyClose(double a, double b, double rel = 1e-9) {
 
 /// Every element tagged with a live cell; per-cell and total measures equal
 /// the tissue's to 1e-9 relative; every live cell has elements.
-inline void requireMeasuresMatch(const Tissue& t, const FeMesh& mesh) {
+inline void requireMeasuresMatch(const Tissue& t, const mesh::FeMesh& mesh) {
   REQUIRE(mesh.numElements() > 0);
   for (int e = 0; e < mesh.numElements(); ++e) {
     const int c = mesh.element_cell(e);
@@ -31,30 +31,30 @@ inline void requireMeasuresMatch(const Tissue& t, const FeMesh& mesh) {
     REQUIRE(static_cast<std::size_t>(c) < t.cellSlots());
     REQUIRE(t.alive(CellId(static_cast<Index>(c))));
   }
-  const auto sums = cellMeasuresOfMesh(mesh, t.cellSlots());
+  const auto sums = mesh::cellMeasuresOfMesh(mesh, t.cellSlots());
   for (CellId c : t.cells()) {
     INFO("cell " << c.index() << ": mesh " << sums[c.index()] << " tissue " << cellMeasure(t, c));
     CHECK(relativelyClose(sums[c.index()], cellMeasure(t, c)));
   }
-  CHECK(relativelyClose(totalMeasureOfMesh(mesh), totalMeasure(t)));
+  CHECK(relativelyClose(mesh::totalMeasureOfMesh(mesh), totalMeasure(t)));
 }
 
 /// No hanging nodes; walls are unions of element facets shared by their cells.
-inline void requireConforming(const FeMesh& mesh) {
-  const ConformityReport r = checkConformity(mesh);
+inline void requireConforming(const mesh::FeMesh& mesh) {
+  const mesh::ConformityReport r = mesh::checkConformity(mesh);
   INFO(r.message);
   REQUIRE(r.ok);
 }
 
 /// The wall facets of each wall add up to the wall's length or area, carry
 /// the wall's boundary flag, and each tissue vertex is a node at its place.
-inline void requireWallsMatch(const Tissue& t, const FeMesh& mesh) {
+inline void requireWallsMatch(const Tissue& t, const mesh::FeMesh& mesh) {
   std::vector<double> sums(t.slots(t.wallDegree()), 0.0);
   for (int f = 0; f < mesh.numWallFacets(); ++f) {
     const WallId w(static_cast<Index>(mesh.facet_wall(f)));
     REQUIRE(t.alive(w));
     CHECK(mesh.facet_on_boundary(f) == t.isBoundaryWall(w));
-    sums[w.index()] += wallFacetMeasure(mesh, f);
+    sums[w.index()] += mesh::wallFacetMeasure(mesh, f);
   }
   for (WallId w : t.walls()) {
     INFO("wall " << w.index());
@@ -71,7 +71,7 @@ inline void requireWallsMatch(const Tissue& t, const FeMesh& mesh) {
 }
 
 /// Measures, conformity and walls: what every mesh of a tissue must satisfy.
-inline void requireGoodMesh(const Tissue& t, const FeMesh& mesh) {
+inline void requireGoodMesh(const Tissue& t, const mesh::FeMesh& mesh) {
   requireMeasuresMatch(t, mesh);
   requireConforming(mesh);
   requireWallsMatch(t, mesh);

@@ -39,7 +39,7 @@ TEST_CASE("refinement within budget gives CGAL's own mesh", "[mesh][budget]") {
   CGAL::refine_Delaunay_mesh_2(reference, Criteria(0.125, 0.1));
   Mesher mesher(bounded, Criteria(0.125, 0.1));
   bool exceeded = false;
-  tessella::mesh_detail::refineWithinBudget(mesher, bounded, 100000, [&](std::size_t) { exceeded = true; });
+  tessella::mesh::detail::refineWithinBudget(mesher, bounded, 100000, [&](std::size_t) { exceeded = true; });
   CHECK_FALSE(exceeded);
   CHECK(bounded.number_of_vertices() == reference.number_of_vertices());
   CHECK(bounded.number_of_faces() == reference.number_of_faces());
@@ -49,7 +49,7 @@ TEST_CASE("a refinement past its budget stops with the caller's error", "[mesh][
   Cdt cdt = unitSquare();
   Mesher mesher(cdt, Criteria(0.125, 0.001));  // about 10^6 vertices
   std::size_t seen = 0;
-  CHECK_THROWS_AS(tessella::mesh_detail::refineWithinBudget(mesher, cdt, 500,
+  CHECK_THROWS_AS(tessella::mesh::detail::refineWithinBudget(mesher, cdt, 500,
                                                              [&](std::size_t vertices) {
                                                                seen = vertices;
                                                                throw std::runtime_error("budget");
@@ -59,7 +59,7 @@ TEST_CASE("a refinement past its budget stops with the caller's error", "[mesh][
 }
 
 TEST_CASE("the budget grows with the input and the size bound", "[mesh][budget]") {
-  using tessella::mesh_detail::refinementBudget;
+  using tessella::mesh::detail::refinementBudget;
   const std::size_t base = refinementBudget(4, 1.0, 1.0, 1.0, 0.0);
   CHECK(base >= 10000);
   CHECK(refinementBudget(400, 1.0, 1.0, 1.0, 0.0) > base);

@@ -8,6 +8,7 @@
 #include "tessella/generators/grids.hpp"
 
 using namespace tessella;
+using namespace tessella::mesh;
 
 TEST_CASE("checkConformity detects hanging nodes, holes and untagged walls", "[mesh][conformity]") {
   const Tissue t = rectangularGrid(2, 2);

@@ -13,6 +13,7 @@
 #include "tessella/generators/voronoi.hpp"
 
 using namespace tessella;
+using namespace tessella::mesh;
 using Catch::Matchers::Contains;
 
 TEST_CASE("estimatedElementCount: area / equilateral triangle, volume / regular tetrahedron",

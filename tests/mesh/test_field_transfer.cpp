@@ -12,6 +12,7 @@
 #include "tessella/generators/grids.hpp"
 
 using namespace tessella;
+using namespace tessella::mesh;
 using namespace tessella::test;
 
 namespace {

@@ -16,6 +16,7 @@
 #include "tessella/generators/voronoi.hpp"
 
 using namespace tessella;
+using namespace tessella::mesh;
 using namespace tessella::test;
 
 TEST_CASE("2D Voronoi tissues in a rectangle and a disk", "[mesh][planar][voronoi]") {

@@ -11,7 +11,7 @@
 
 #include "../../mesh/src/isolated_tasks.hpp"
 
-using tessella::mesh_detail::runIsolated;
+using tessella::mesh::detail::runIsolated;
 
 TEST_CASE("isolated tasks: results in order, failures reported, the caller survives", "[mesh][isolated]") {
   const std::vector<std::size_t> tasks = {0, 1, 2, 3, 4, 5, 6, 7};

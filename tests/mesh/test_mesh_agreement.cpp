@@ -13,6 +13,7 @@
 #include "tessella/tissue/builders.hpp"
 
 using namespace tessella;
+using namespace tessella::mesh;
 
 namespace {
 

@@ -25,6 +25,7 @@
 #include "tessella/tissue/validate.hpp"
 
 using namespace tessella;
+using namespace tessella::mesh;
 using namespace tessella::test;
 
 namespace {

@@ -15,6 +15,7 @@
 #include "tessella/generators/voronoi.hpp"
 
 using namespace tessella;
+using namespace tessella::mesh;
 using namespace tessella::test;
 
 namespace {

@@ -55,7 +55,7 @@ TEST_CASE("steady_diffusion_3d.yaml: the linear slab profile in Voronoi cells", 
   // P1 reproduces the exact solution u = 1 - x/3 at every node ...
   const FieldMesh& fm = fieldMeshOf(sim);
   const Eigen::VectorXd& u = fm.field("u");
-  const FeMesh& mesh = fm.mesh();
+  const mesh::FeMesh& mesh = fm.mesh();
   double worst = 0;
   for (int n = 0; n < mesh.numNodes(); ++n) worst = std::max(worst, std::abs(u[n] - (1.0 - mesh.nodes(n, 0) / 3.0)));
   CHECK(worst < 1e-8);
@@ -89,7 +89,7 @@ TEST_CASE("stretched_block_3d.yaml: uniaxial tension gives sigma_xx = E strain i
   CHECK(mean / volume == Approx(E * strain).epsilon(1e-10));
   // Nodal displacements: u_x = strain x, u_y = -nu strain y (free lateral faces).
   const FieldMesh& fm = fieldMeshOf(sim);
-  const FeMesh& mesh = fm.mesh();
+  const mesh::FeMesh& mesh = fm.mesh();
   double worst = 0;
   for (int n = 0; n < mesh.numNodes(); ++n) {
     worst = std::max(worst, std::abs(fm.field("displacement_x")[n] - strain * mesh.nodes(n, 0)));
@@ -219,7 +219,7 @@ TEST_CASE("per-cell-type coefficients come from an integer cell property", "[sim
   // Exact: slope s0 on [0, 2], s1 = s0 / 3 on [2, 3]; 2 s0 + s0 / 3 = 1 ->
   // s0 = 3/7, u(2) = 6/7.
   const FieldMesh& fm = fieldMeshOf(sim);
-  const FeMesh& mesh = fm.mesh();
+  const mesh::FeMesh& mesh = fm.mesh();
   for (int n = 0; n < mesh.numNodes(); ++n) {
     const double x = mesh.nodes(n, 0);
     const double exact = x <= 2.0 ? 3.0 / 7.0 * x : 6.0 / 7.0 + (x - 2.0) / 7.0;
@@ -395,13 +395,13 @@ TEST_CASE("2D elasticity from YAML: a stretch gives uniaxial stress, a traction 
   stretched.run();
   // Stretch: every node has u_x = eps x, so sigma_xx = E eps in every cell,
   // eps = 0.05 / width.
-  const FeMesh& mesh = fieldMeshOf(stretched).mesh();
+  const mesh::FeMesh& mesh = fieldMeshOf(stretched).mesh();
   const double width = mesh.nodes.col(0).maxCoeff() - mesh.nodes.col(0).minCoeff();
   for (double s : stressXX(stretched)) CHECK(s == Approx(3 * 0.05 / width).epsilon(1e-8));
   // Traction on part of a jagged boundary is not uniaxial everywhere, but with
   // v = (x, 0) in the discrete equilibrium (no body force; x reactions only on
   // x = x_min): integral of sigma_xx = T * L * (x_max - x_min), L the loaded length.
-  const FeMesh& pm = fieldMeshOf(pulled).mesh();
+  const mesh::FeMesh& pm = fieldMeshOf(pulled).mesh();
   const double x_min = pm.nodes.col(0).minCoeff(), x_max = pm.nodes.col(0).maxCoeff();
   double loaded = 0;
   for (int f = 0; f < pm.numWallFacets(); ++f) {

@@ -22,7 +22,7 @@ Config load(const std::string& yaml, const std::vector<std::string>& overrides =
 TEST_CASE("mesh: defaults are MeshOptions' defaults, no mesh output", "[sim][config][mesh]") {
   const Config c = load("tissue: {generator: hexagonal_grid}\n");
   const MeshSpec m = readMeshSection(c);
-  const tessella::MeshOptions defaults;
+  const tessella::mesh::MeshOptions defaults;
   CHECK(m.options.min_angle_degrees == defaults.min_angle_degrees);
   CHECK(m.options.max_edge_length == defaults.max_edge_length);
   CHECK(m.options.max_volume == defaults.max_volume);
@@ -114,7 +114,7 @@ TEST_CASE("mesh.max_elements: a mesh the sizes make too large is refused before 
           "[sim][config][mesh]") {
   namespace fs = std::filesystem;
   CHECK(readMeshSection(load("tissue: {generator: hexagonal_grid}\n")).options.max_elements ==
-        tessella::kDefaultMaxElements);
+        tessella::mesh::kDefaultMaxElements);
   CHECK(readMeshSection(load("tissue: {generator: hexagonal_grid}\nmesh: {max_elements: 0}\n")).options.max_elements ==
         0);
   tessella::sim::test::ScratchDir scratch;

@@ -151,8 +151,8 @@ TEST_CASE("real meristem: the imported tissue meshes with cell areas kept", "[si
   for (const char* time : kTimes) {
     INFO(time);
     const Imported m = importAt(time);
-    const FeMesh mesh = meshTissue(m.tissue);
-    const std::vector<double> sums = cellMeasuresOfMesh(mesh, m.tissue.slots(m.tissue.dim()));
+    const mesh::FeMesh mesh = mesh::meshTissue(m.tissue);
+    const std::vector<double> sums = mesh::cellMeasuresOfMesh(mesh, m.tissue.slots(m.tissue.dim()));
     for (const auto& [l, c] : m.cell) {
       INFO("cell label " << l);
       CHECK(sums[c.index()] == Approx(cellMeasure(m.tissue, c)).epsilon(1e-9));

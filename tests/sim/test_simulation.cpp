@@ -42,7 +42,7 @@ class FailsAtTime : public Stage {
 }  // namespace
 
 TEST_CASE("stages run every step and the clock follows the time span", "[sim][simulation]") {
-  Simulation sim(rectangularGrid(2, 2), SimulationParameters{TimeSpan{0, 1, 0.25}, 1});
+  Simulation sim(rectangularGrid(2, 2), SimulationOptions{TimeSpan{0, 1, 0.25}, 1});
   sim.addStage(std::make_unique<UniformExpansion>(0.4));
   std::vector<double> seen;
   sim.onStep([&](const Simulation& s) {
@@ -60,7 +60,7 @@ TEST_CASE("stages run every step and the clock follows the time span", "[sim][si
 }
 
 TEST_CASE("the shortened last step has the remaining length", "[sim][simulation]") {
-  Simulation sim(rectangularGrid(1, 1), SimulationParameters{TimeSpan{0, 1, 0.4}, 1});
+  Simulation sim(rectangularGrid(1, 1), SimulationOptions{TimeSpan{0, 1, 0.4}, 1});
   sim.addStage(std::make_unique<UniformExpansion>(1.0));
   sim.run();
   REQUIRE(sim.stepsDone() == 3);
@@ -69,7 +69,7 @@ TEST_CASE("the shortened last step has the remaining length", "[sim][simulation]
 }
 
 TEST_CASE("runUntil stops at the requested time or at the end", "[sim][simulation]") {
-  Simulation sim(hexagonalGrid(2, 2), SimulationParameters{TimeSpan{1, 3, 0.5}, 1});
+  Simulation sim(hexagonalGrid(2, 2), SimulationOptions{TimeSpan{1, 3, 0.5}, 1});
   sim.runUntil(2.0);
   CHECK(sim.stepsDone() == 2);
   CHECK(sim.time() == 2.0);
@@ -81,7 +81,7 @@ TEST_CASE("runUntil stops at the requested time or at the end", "[sim][simulatio
 }
 
 TEST_CASE("a failing stage is reported with its name, step and time", "[sim][simulation]") {
-  Simulation sim(rectangularGrid(2, 1), SimulationParameters{TimeSpan{0, 5, 1}, 1});
+  Simulation sim(rectangularGrid(2, 1), SimulationOptions{TimeSpan{0, 5, 1}, 1});
   sim.addStage(std::make_unique<FailsAtTime>(2.0));
   sim.runUntil(2.0);
   try {
@@ -94,17 +94,17 @@ TEST_CASE("a failing stage is reported with its name, step and time", "[sim][sim
 }
 
 TEST_CASE("the stage random stream is reproducible from the seed", "[sim][simulation]") {
-  Simulation a(rectangularGrid(1, 1), SimulationParameters{TimeSpan{}, 42});
-  Simulation b(rectangularGrid(1, 1), SimulationParameters{TimeSpan{}, 42});
-  Simulation c(rectangularGrid(1, 1), SimulationParameters{TimeSpan{}, 43});
+  Simulation a(rectangularGrid(1, 1), SimulationOptions{TimeSpan{}, 42});
+  Simulation b(rectangularGrid(1, 1), SimulationOptions{TimeSpan{}, 42});
+  Simulation c(rectangularGrid(1, 1), SimulationOptions{TimeSpan{}, 43});
   const auto x = a.rng()();
   CHECK(x == b.rng()());
   CHECK(x != c.rng()());
 }
 
 TEST_CASE("a Simulation rejects a bad time span from code", "[sim][simulation]") {
-  CHECK_THROWS_AS(Simulation(rectangularGrid(1, 1), SimulationParameters{TimeSpan{0, 1, 0}, 1}), InputError);
-  CHECK_THROWS_AS(Simulation(rectangularGrid(1, 1), SimulationParameters{TimeSpan{2, 1, 1}, 1}), InputError);
+  CHECK_THROWS_AS(Simulation(rectangularGrid(1, 1), SimulationOptions{TimeSpan{0, 1, 0}, 1}), InputError);
+  CHECK_THROWS_AS(Simulation(rectangularGrid(1, 1), SimulationOptions{TimeSpan{2, 1, 1}, 1}), InputError);
 }
 
 TEST_CASE("a Simulation from YAML builds the generator's tissue", "[sim][simulation]") {
@@ -115,6 +115,6 @@ TEST_CASE("a Simulation from YAML builds the generator's tissue", "[sim][simulat
   CHECK(totalMeasure(sim.tissue()) == Approx(12 * 1.5 * std::sqrt(3.0) * 4));
   CHECK(sim.time() == 1.0);
   CHECK(sim.numSteps() == 2);
-  CHECK(sim.parameters().rng_seed == 5);
+  CHECK(sim.options().rng_seed == 5);
   CHECK(sim.numStages() == 0);  // the config turns on no growth, division or solver section
 }

@@ -23,7 +23,7 @@ struct WallCollector {
   std::set<std::vector<int>> seen;
 };
 
-void collectPlane(const FeMesh& m, WallCollector& wc, int axis, double value, int wall_id, bool on_boundary) {
+void collectPlane(const mesh::FeMesh& m, WallCollector& wc, int axis, double value, int wall_id, bool on_boundary) {
   const int d = m.dim;
   const double tol = 1e-9;
   for (int e = 0; e < m.numElements(); ++e)
@@ -43,7 +43,7 @@ void collectPlane(const FeMesh& m, WallCollector& wc, int axis, double value, in
     }
 }
 
-void storeWalls(FeMesh& m, const WallCollector& wc) {
+void storeWalls(mesh::FeMesh& m, const WallCollector& wc) {
   const int nf = static_cast<int>(wc.facets.size());
   m.wall_facets.resize(nf, m.dim);
   m.facet_wall.resize(nf);
@@ -55,7 +55,7 @@ void storeWalls(FeMesh& m, const WallCollector& wc) {
   }
 }
 
-void assignCells(FeMesh& m, double lx, bool two_cells) {
+void assignCells(mesh::FeMesh& m, double lx, bool two_cells) {
   m.element_cell = Eigen::VectorXi::Zero(m.numElements());
   if (!two_cells) return;
   for (int e = 0; e < m.numElements(); ++e) {
@@ -67,9 +67,9 @@ void assignCells(FeMesh& m, double lx, bool two_cells) {
 
 }  // namespace
 
-FeMesh rectangleMesh(int nx, int ny, double lx, double ly, bool two_cells) {
+mesh::FeMesh rectangleMesh(int nx, int ny, double lx, double ly, bool two_cells) {
   if (two_cells && nx % 2) throw std::invalid_argument("rectangleMesh: two_cells needs an even nx");
-  FeMesh m;
+  mesh::FeMesh m;
   m.dim = 2;
   m.nodes.resize((nx + 1) * (ny + 1), 3);
   auto id = [nx](int i, int j) { return j * (nx + 1) + i; };
@@ -94,9 +94,9 @@ FeMesh rectangleMesh(int nx, int ny, double lx, double ly, bool two_cells) {
   return m;
 }
 
-FeMesh boxMesh(int nx, int ny, int nz, double lx, double ly, double lz, bool two_cells) {
+mesh::FeMesh boxMesh(int nx, int ny, int nz, double lx, double ly, double lz, bool two_cells) {
   if (two_cells && nx % 2) throw std::invalid_argument("boxMesh: two_cells needs an even nx");
-  FeMesh m;
+  mesh::FeMesh m;
   m.dim = 3;
   m.nodes.resize((nx + 1) * (ny + 1) * (nz + 1), 3);
   auto id = [nx, ny](int i, int j, int k) { return (k * (ny + 1) + j) * (nx + 1) + i; };
@@ -139,8 +139,8 @@ FeMesh boxMesh(int nx, int ny, int nz, double lx, double ly, double lz, bool two
   return m;
 }
 
-FeMesh cylinderStrip(int n_theta, int n_z, double radius, double angle, double height) {
-  FeMesh m;
+mesh::FeMesh cylinderStrip(int n_theta, int n_z, double radius, double angle, double height) {
+  mesh::FeMesh m;
   m.dim = 2;
   m.nodes.resize((n_theta + 1) * (n_z + 1), 3);
   auto id = [n_theta](int i, int j) { return j * (n_theta + 1) + i; };
@@ -181,7 +181,7 @@ FeMesh cylinderStrip(int n_theta, int n_z, double radius, double angle, double h
   return m;
 }
 
-void perturbInterior(FeMesh& mesh, double h, double fraction, unsigned seed) {
+void perturbInterior(mesh::FeMesh& mesh, double h, double fraction, unsigned seed) {
   const Eigen::RowVector3d lo = mesh.nodes.colwise().minCoeff(), hi = mesh.nodes.colwise().maxCoeff();
   unsigned state = seed;
   auto uniform = [&state]() {  // small LCG: reproducible on every platform
@@ -197,7 +197,7 @@ void perturbInterior(FeMesh& mesh, double h, double fraction, unsigned seed) {
   }
 }
 
-std::vector<int> nodesOfWalls(const FeMesh& mesh, const std::vector<int>& walls) {
+std::vector<int> nodesOfWalls(const mesh::FeMesh& mesh, const std::vector<int>& walls) {
   std::set<int> nodes;
   for (int f = 0; f < mesh.numWallFacets(); ++f)
     if (std::find(walls.begin(), walls.end(), mesh.facet_wall[f]) != walls.end())

@@ -16,16 +16,16 @@
 
 namespace tessella::test {
 
-FeMesh rectangleMesh(int nx, int ny, double lx = 1.0, double ly = 1.0, bool two_cells = false);
-FeMesh boxMesh(int nx, int ny, int nz, double lx = 1.0, double ly = 1.0, double lz = 1.0, bool two_cells = false);
-FeMesh cylinderStrip(int n_theta, int n_z, double radius, double angle, double height);
+mesh::FeMesh rectangleMesh(int nx, int ny, double lx = 1.0, double ly = 1.0, bool two_cells = false);
+mesh::FeMesh boxMesh(int nx, int ny, int nz, double lx = 1.0, double ly = 1.0, double lz = 1.0, bool two_cells = false);
+mesh::FeMesh cylinderStrip(int n_theta, int n_z, double radius, double angle, double height);
 
 /// Moves interior nodes (not on the box/rectangle boundary) by up to
 /// `fraction` of the spacing h, pseudo-randomly but reproducibly.
-void perturbInterior(FeMesh& mesh, double h, double fraction, unsigned seed = 12345);
+void perturbInterior(mesh::FeMesh& mesh, double h, double fraction, unsigned seed = 12345);
 
 /// Nodes of the given wall ids (from wall_facets).
-std::vector<int> nodesOfWalls(const FeMesh& mesh, const std::vector<int>& walls);
+std::vector<int> nodesOfWalls(const mesh::FeMesh& mesh, const std::vector<int>& walls);
 
 /// Squared L2 error and squared H1-seminorm error of the P1 field uh against
 /// u / grad u, with a collapsed Gauss rule exact to degree 5 on each simplex.
@@ -34,7 +34,7 @@ struct ErrorNorms {
   double h1 = 0.0;
 };
 template <typename U, typename GradU>
-ErrorNorms errorNorms(const FeMesh& mesh, const Eigen::VectorXd& uh, U&& u, GradU&& grad_u);
+ErrorNorms errorNorms(const mesh::FeMesh& mesh, const Eigen::VectorXd& uh, U&& u, GradU&& grad_u);
 
 /// Quadrature on the reference simplex of dimension d: points (barycentric
 /// coordinates of nodes 1..d) and weights summing to 1 (normalised volume).

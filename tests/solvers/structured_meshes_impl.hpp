@@ -6,12 +6,12 @@
 namespace tessella::test {
 
 template <typename U, typename GradU>
-ErrorNorms errorNorms(const FeMesh& mesh, const Eigen::VectorXd& uh, U&& u, GradU&& grad_u) {
+ErrorNorms errorNorms(const mesh::FeMesh& mesh, const Eigen::VectorXd& uh, U&& u, GradU&& grad_u) {
   const Quadrature q = simplexQuadrature(mesh.dim);
   ErrorNorms err;
   const int n = mesh.dim + 1;
   for (int e = 0; e < mesh.numElements(); ++e) {
-    const ElementGeometry g = elementGeometry(mesh, e);
+    const solvers::ElementGeometry g = solvers::elementGeometry(mesh, e);
     Eigen::Vector3d grad_h = Eigen::Vector3d::Zero();
     for (int a = 0; a < n; ++a) grad_h += uh[mesh.elements(e, a)] * g.gradients.row(a).transpose();
     for (std::size_t k = 0; k < q.points.size(); ++k) {

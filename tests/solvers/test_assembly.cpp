@@ -17,6 +17,8 @@
 #include <cstring>
 
 using namespace tessella;
+using namespace tessella::mesh;
+using namespace tessella::solvers;
 using tessella::test::boxMesh;
 using tessella::test::cylinderStrip;
 using tessella::test::rectangleMesh;

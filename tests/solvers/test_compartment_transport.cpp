@@ -8,6 +8,8 @@
 #include <cmath>
 
 using namespace tessella;
+using namespace tessella::mesh;
+using namespace tessella::solvers;
 
 namespace {
 

@@ -14,6 +14,8 @@
 #include <cmath>
 
 using namespace tessella;
+using namespace tessella::mesh;
+using namespace tessella::solvers;
 using tessella::test::boxMesh;
 using tessella::test::cylinderStrip;
 using tessella::test::rectangleMesh;

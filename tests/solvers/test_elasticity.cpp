@@ -11,6 +11,8 @@
 #include <cmath>
 
 using namespace tessella;
+using namespace tessella::mesh;
+using namespace tessella::solvers;
 using tessella::test::boxMesh;
 using tessella::test::rectangleMesh;
 
@@ -227,5 +229,5 @@ TEST_CASE("Elasticity input validation", "[solvers][elasticity][errors]") {
   ElasticityProblem curved;
   curved.model = ElasticModel::PlaneStress;
   curved.displacement.push_back({facetsOfWalls(sheet, {0}), {}, {true, true, true}, Eigen::Vector3d::Zero()});
-  CHECK_THROWS_AS(solveElasticity(sheet, curved), InvalidProblemError);  // plane stress on a curved sheet (Membrane fits)
+  CHECK_THROWS_AS(solveElasticity(sheet, curved), InvalidProblemError);  // plane stress on a curved sheet
 }

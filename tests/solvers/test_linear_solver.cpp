@@ -8,6 +8,7 @@
 #include <vector>
 
 using namespace tessella;
+using namespace tessella::solvers;
 
 namespace {
 

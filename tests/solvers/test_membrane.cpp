@@ -15,6 +15,8 @@
 #include <utility>
 
 using namespace tessella;
+using namespace tessella::mesh;
+using namespace tessella::solvers;
 using tessella::test::rectangleMesh;
 
 namespace {

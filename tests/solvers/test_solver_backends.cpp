@@ -15,6 +15,8 @@
 #include <vector>
 
 using namespace tessella;
+using namespace tessella::mesh;
+using namespace tessella::solvers;
 using tessella::test::boxMesh;
 using tessella::test::rectangleMesh;
 

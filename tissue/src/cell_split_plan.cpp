@@ -7,12 +7,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <sstream>
 #include <string>
 #include <tuple>
 
 #include "editing_helpers.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"
 
 namespace tessella {
@@ -27,17 +27,11 @@ using detail::SmallMap;
 // SplitOptions out of range would snap whole cells onto the plane or let
 // slivers (or nothing) through: refused before anything changes.
 void checkSplitOptions(const SplitOptions& o) {
-  const auto text = [](double v) {
-    std::ostringstream s;
-    s.precision(12);
-    s << v;
-    return s.str();
-  };
   if (!(o.snap_tolerance >= 0.0 && o.snap_tolerance <= kMaxSnapTolerance))
-    throw InputError("splitCell: option snap_tolerance = " + text(o.snap_tolerance) +
-                     " is out of range; expected [0, " + text(kMaxSnapTolerance) + "] (a fraction of the cell size)");
+    throw InputError("splitCell: option snap_tolerance = " + formatNumber(o.snap_tolerance) +
+                     " is out of range; expected [0, " + formatNumber(kMaxSnapTolerance) + "] (a fraction of the cell size)");
   if (!(o.min_fraction >= 0.0 && o.min_fraction < 0.5))
-    throw InputError("splitCell: option min_fraction = " + text(o.min_fraction) +
+    throw InputError("splitCell: option min_fraction = " + formatNumber(o.min_fraction) +
                      " is out of range; expected [0, 0.5) (a fraction of the cell's measure)");
 }
 
@@ -166,7 +160,7 @@ CellSplitPlan2D planCellSplit2D(const Tissue& t, CellId c, const Plane& plane, c
   const FaceId f(c.index());
   const std::string who = cellName(t, c);
   const PolygonMeasures m = polygonMeasures(t, f);
-  if (!(m.area > 0)) throw GeometryError(who + " has non-positive area " + std::to_string(m.area), {2, f.index()});
+  if (!(m.area > 0)) throw GeometryError(who + " has non-positive area " + formatNumber(m.area, 6), {2, f.index()});
   const Vec3 normal = plane.normal.normalized();
   const Vec3 u = normal.cross(m.normal);
   if (u.norm() < 1e-9) throw GeometryError("division plane is parallel to " + who, {2, f.index()});
@@ -189,8 +183,8 @@ CellSplitPlan2D planCellSplit2D(const Tissue& t, CellId c, const Plane& plane, c
   const double total = lab.area + lba.area;
   if (std::min(lab.area, lba.area) < options.min_fraction * total)
     throw GeometryError("division of " + who + " would leave a sliver of " +
-                            std::to_string(std::min(lab.area, lba.area) / total) + " of its area (minimum " +
-                            std::to_string(options.min_fraction) + ")",
+                            formatNumber(std::min(lab.area, lba.area) / total, 6) + " of its area (minimum " +
+                            formatNumber(options.min_fraction) + ")",
                         {2, f.index()});
 
   CellSplitPlan2D plan;
@@ -351,7 +345,7 @@ CellSplitPlan3D planCellSplit3D(const Tissue& t, CellId c, const Plane& plane, c
   const VolumeId vol(c.index());
   const std::string who = cellName(t, c);
   const double volume = cellMeasure(t, c);
-  if (!(volume > 0)) throw GeometryError(who + " has non-positive volume " + std::to_string(volume), {3, c.index()});
+  if (!(volume > 0)) throw GeometryError(who + " has non-positive volume " + formatNumber(volume, 6), {3, c.index()});
   const Vec3 normal = plane.normal.normalized();
   const double tol = options.snap_tolerance * std::cbrt(volume);
 
@@ -362,8 +356,8 @@ CellSplitPlan3D planCellSplit3D(const Tissue& t, CellId c, const Plane& plane, c
   const std::vector<Key> ring = cutRing(w, normal, who, c);
   const double positive = positiveVolume(t, faces, normal, plane), smaller = std::min(positive, volume - positive);
   if (smaller < options.min_fraction * volume)
-    throw GeometryError("division of " + who + " would leave a sliver of " + std::to_string(smaller / volume) +
-                            " of its volume (minimum " + std::to_string(options.min_fraction) + ")",
+    throw GeometryError("division of " + who + " would leave a sliver of " + formatNumber(smaller / volume, 6) +
+                            " of its volume (minimum " + formatNumber(options.min_fraction) + ")",
                         {3, c.index()});
 
   CellSplitPlan3D plan;

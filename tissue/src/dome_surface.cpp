@@ -5,32 +5,22 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 #include <string>
 
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella {
-namespace {
-
-std::string number(double x) {
-  std::ostringstream s;
-  s.precision(17);
-  s << x;
-  return s.str();
-}
-
-}  // namespace
 
 void checkDome(const Dome& d) {
   if (!d.base_center.allFinite()) throw InputError("dome.base_center must be finite");
   if (!std::isfinite(d.base_radius) || !(d.base_radius > 0))
-    throw InputError("dome.base_radius must be a positive finite number, got " + number(d.base_radius));
+    throw InputError("dome.base_radius must be a positive finite number, got " + formatNumber(d.base_radius));
   if (!std::isfinite(d.height) || !(d.height > 0))
-    throw InputError("dome.height must be a positive finite number, got " + number(d.height));
+    throw InputError("dome.height must be a positive finite number, got " + formatNumber(d.height));
   if (d.shape == Dome::Shape::SphericalCap && d.height > d.base_radius)
-    throw InputError("dome.height " + number(d.height) + " exceeds dome.base_radius " +
-                     number(d.base_radius) +
+    throw InputError("dome.height " + formatNumber(d.height) + " exceeds dome.base_radius " +
+                     formatNumber(d.base_radius) +
                      ": a spherical cap taller than a hemisphere is not a height field over its "
                      "footprint");
 }
@@ -38,8 +28,8 @@ void checkDome(const Dome& d) {
 double Dome::heightAt(double r) const {
   checkDome(*this);
   if (!(r >= 0) || r > base_radius * (1 + 1e-12))
-    throw InputError("Dome::heightAt: footprint radius " + number(r) + " is outside [0, " +
-                     number(base_radius) + "]");
+    throw InputError("Dome::heightAt: footprint radius " + formatNumber(r) + " is outside [0, " +
+                     formatNumber(base_radius) + "]");
   r = std::min(r, base_radius);
   if (shape == Shape::Paraboloid) return height * (1 - (r / base_radius) * (r / base_radius));
   // Sphere through the base circle and the summit: R = (a^2 + h^2) / (2h),

@@ -2,24 +2,19 @@
 // Private helpers of the editing primitives (tissue_editing.cpp) and of the
 // division planner (cell_split_plan.cpp). Internal to the tissue module.
 
-#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "polygon_kernels.hpp"
+#include "tessella/tissue/format.hpp"
 #include "tessella/tissue/vec3.hpp"
 
 namespace tessella::detail {
 
 /// A point for messages: "(x, y, z)" with 12 digits.
-inline std::string pointText(const Vec3& p) {
-  std::ostringstream s;
-  s.precision(12);
-  s << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
-  return s.str();
-}
+inline std::string pointText(const Vec3& p) { return formatPoint(p, 12); }
 
 /// Area and normal of a loop of points, with the tissue's kernel.
 struct LoopArea {

@@ -234,6 +234,29 @@ void fanKernel(std::size_t n, At at, const Vec3& apex, const Vec3& normal, bool 
   if (moments && second_moment) *second_moment = second - a * g * g.transpose();
 }
 
+/// Where the general (non-planar) paths start: the loop's vertex mean and its
+/// vector area (twice the area times the unit normal) summed over the fan
+/// from that mean.
+struct MeanFan {
+  Vec3 mean;
+  Vec3 vector_area;
+};
+
+template <typename At>
+MeanFan meanFan(std::size_t n, At at) {
+  Vec3 c0 = Vec3::Zero();
+  for (std::size_t i = 0; i < n; ++i) c0 += at(i);
+  c0 /= static_cast<double>(n);
+  Vec3 vec_area = Vec3::Zero();
+  Vec3 p = at(n - 1) - c0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 q = at(i) - c0;
+    vec_area += p.cross(q);
+    p = q;
+  }
+  return {c0, vec_area};
+}
+
 /// The surface a non-planar (or 3D-wall) loop is measured on. `folded` false:
 /// the fan from the vertex mean `apex`, which does not fold (every fan
 /// triangle has a signed area above kFoldTolerance times the fan's area, or
@@ -252,31 +275,16 @@ struct FoldedSurface {
 template <typename At>
 FoldedSurface foldedSurface(std::size_t n, At at) {
   FoldedSurface out;
-  Vec3 c0 = Vec3::Zero();
-  for (std::size_t i = 0; i < n; ++i) c0 += at(i);
-  c0 /= static_cast<double>(n);
+  const MeanFan fan = meanFan(n, at);
+  const Vec3& c0 = fan.mean;
+  const Vec3& vec_area = fan.vector_area;
   out.apex = c0;
-  Vec3 vec_area = Vec3::Zero();
-  Vec3 p = at(n - 1) - c0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 q = at(i) - c0;
-    vec_area += p.cross(q);
-    p = q;
-  }
   const double len = vec_area.norm();
   if (!(len > 0)) return out;
   const Vec3 normal = vec_area / len;
-  double a = 0, min_ti = std::numeric_limits<double>::infinity();
-  p = at(n - 1) - c0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 q = at(i) - c0;
-    const Vec3 t = p.cross(q);
-    const double tn = t.norm();
-    const double ti = 0.5 * (t.dot(normal) < 0 ? -tn : tn);
-    a += ti;
-    min_ti = std::min(min_ti, ti);
-    p = q;
-  }
+  double a, min_ti;
+  Vec3 fan_centroid;
+  fanKernel(n, at, c0, normal, false, a, fan_centroid, nullptr, min_ti);
   if (min_ti > kFoldTolerance * a) return out;
   out.folded = true;
   Vec3 apex;
@@ -333,17 +341,10 @@ inline void polygonKernel(std::size_t n, At at, bool planar, bool moments, doubl
     }
     return;
   }
-  Vec3 c0 = Vec3::Zero();
-  for (std::size_t i = 0; i < n; ++i) c0 += at(i);
-  c0 /= static_cast<double>(n);
   // General (surface or 3D wall): signed fan from the vertex mean.
-  Vec3 vec_area = Vec3::Zero();
-  Vec3 p = at(n - 1) - c0;
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 q = at(i) - c0;
-    vec_area += p.cross(q);
-    p = q;
-  }
+  const MeanFan fan = meanFan(n, at);
+  const Vec3& c0 = fan.mean;
+  const Vec3& vec_area = fan.vector_area;
   const double len = vec_area.norm();
   normal = len > 0 ? Vec3(vec_area / len) : Vec3::Zero();
   double min_ti = 0;

@@ -10,6 +10,7 @@
 #include "editing_helpers.hpp"
 #include "tessella/tissue/cell_split_plan.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/tissue.hpp"
 

@@ -16,22 +16,22 @@ namespace {
 // not at the first solve (after output began); named at the size key.
 void checkMeshSize(const Config& c, const Tissue& tissue, bool meshed_by_stages) {
   if (!meshed_by_stages && !c.getBool("mesh.output")) return;
-  const MeshOptions o = meshOptionsFromConfig(c);
+  const mesh::MeshOptions o = meshOptionsFromConfig(c);
   try {
-    checkElementLimit(tissue, o);
+    mesh::checkElementLimit(tissue, o);
   } catch (const InputError& e) {
     const bool by_volume = tissue.dim() == 3 && o.max_volume > 0 &&
-                           (o.max_edge_length == 0 || o.volume_method == VolumeMethod::WholeTissue);
+                           (o.max_edge_length == 0 || o.volume_method == mesh::VolumeMethod::WholeTissue);
     throw c.errorAt(by_volume ? "mesh.max_volume" : "mesh.max_edge_length", e.what());
   }
 }
 }  // namespace
 
 Simulation Simulation::fromConfig(const SimulationConfig& config) {
-  SimulationParameters parameters{.time = config.time, .rng_seed = config.rng_seed, .rng_state = {}, .carried = {}};
-  if (const auto* snapshot = std::get_if<SnapshotSpec>(&config.tissue)) parameters.rng_state = snapshot->rng_state;
-  if (const std::optional<Dome> dome = tissueDome(config.tissue)) parameters.carried = domeRunState(*dome);
-  Simulation sim(buildTissue(config.tissue, config.rng_seed, config.config), parameters);
+  SimulationOptions options{.time = config.time, .rng_seed = config.rng_seed, .rng_state = {}, .carried = {}};
+  if (const auto* snapshot = std::get_if<SnapshotSpec>(&config.tissue)) options.rng_state = snapshot->rng_state;
+  if (const std::optional<Dome> dome = tissueDome(config.tissue)) options.carried = domeRunState(*dome);
+  Simulation sim(buildTissue(config.tissue, config.rng_seed, config.config), options);
   StageList stages = makeStageList(config);
   checkMeshSize(config.config, sim.tissue(), stages.hasFieldMesh());
   for (auto& stage : stages.release()) sim.addStage(std::move(stage));

@@ -17,7 +17,7 @@ void MeshOutput::write(const Simulation& simulation) {
   const Tissue& tissue = simulation.tissue();
   // Meshing is the expensive part: only when the tissue moved or changed shape.
   if (!mesh_ || tissue.topologyVersion() != topology_ || tissue.geometryVersion() != geometry_) {
-    mesh_ = meshTissue(tissue, options_);
+    mesh_ = mesh::meshTissue(tissue, options_);
     topology_ = tissue.topologyVersion();
     geometry_ = tissue.geometryVersion();
     ++meshes_;

@@ -54,7 +54,7 @@ void declareCompartmentSection(Schema& s) {
       .byDefault(std::string("c"))
       .activeWhen(on.key, on.values);
   s.key("compartments.scheme", ValueType::Enum, "Time scheme.")
-      .oneOf(timeSchemes().names())
+      .oneOf(solvers::timeSchemes().names())
       .byDefault(std::string("implicit_euler"))
       .activeWhen(on.key, on.values);
   detail::declareEveryAndStep(s, "compartments", on);
@@ -95,7 +95,7 @@ CompartmentSpec readCompartmentSection(const Config& c) {
     return std::isalnum(ch) || ch == '_';
   });
   if (!plain) throw c.errorAt("compartments.field", "must be a name of letters, digits and '_', got '" + d.field + "'");
-  d.scheme = parseFromConfig(c, timeSchemes(), "compartments.scheme");
+  d.scheme = parseFromConfig(c, solvers::timeSchemes(), "compartments.scheme");
   d.every = static_cast<std::size_t>(c.getInt("compartments.every"));
   if (c.has("compartments.dt")) d.dt = c.getFloat("compartments.dt");
   d.initial = c.getFloat("compartments.initial");

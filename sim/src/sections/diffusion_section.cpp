@@ -120,12 +120,12 @@ void declareDiffusionSection(Schema& s) {
       .activeWhen(on.key, on.values)
       .unlessSet(kMap);
   s.key("diffusion.scheme", ValueType::Enum, "Time scheme: implicit Euler (order 1) or Crank-Nicolson (order 2).")
-      .oneOf(timeSchemes().names())
+      .oneOf(solvers::timeSchemes().names())
       .byDefault(std::string("implicit_euler"))
       .activeWhen("diffusion.mode", {"transient"});
   s.key("diffusion.mass", ValueType::Enum,
         "Mass matrix: consistent (accurate) or lumped (keeps a positive solution positive on acute meshes).")
-      .oneOf(massTypes().names())
+      .oneOf(solvers::massTypes().names())
       .byDefault(std::string("consistent"))
       .activeWhen(on.key, on.values);
   detail::declareEveryAndStep(s, "diffusion", on);
@@ -146,8 +146,8 @@ DiffusionSpec readDiffusionSection(const Config& c) {
   const std::string mode = c.getString("diffusion.mode");
   if (mode == "none") return d;
   d.steady = mode == "steady";
-  if (!d.steady) d.scheme = parseFromConfig(c, timeSchemes(), "diffusion.scheme");
-  d.mass = parseFromConfig(c, massTypes(), "diffusion.mass");
+  if (!d.steady) d.scheme = parseFromConfig(c, solvers::timeSchemes(), "diffusion.scheme");
+  d.mass = parseFromConfig(c, solvers::massTypes(), "diffusion.mass");
   d.every = static_cast<std::size_t>(c.getInt("diffusion.every"));
   if (c.has("diffusion.dt")) d.dt = c.getFloat("diffusion.dt");
   if (c.has("diffusion.by_property")) d.type_property = c.getString("diffusion.by_property");

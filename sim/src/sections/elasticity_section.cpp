@@ -8,8 +8,8 @@ namespace {
 // bending stiffness) needs loads the section does not offer.
 std::vector<std::string> tissueModels() {
   std::vector<std::string> names;
-  for (const auto& e : elasticModels().entries())
-    if (e.value != ElasticModel::Membrane) names.push_back(e.name);
+  for (const auto& e : solvers::elasticModels().entries())
+    if (e.value != solvers::ElasticModel::Membrane) names.push_back(e.name);
   return names;
 }
 
@@ -49,8 +49,8 @@ void declareElasticitySection(Schema& s) {
   s.key("elasticity.thickness", ValueType::Float, "Thickness of a 2D tissue (scales stiffness and loads).")
       .byDefault(1.0)
       .above(0)
-      .activeWhen("elasticity.model", {elasticModels().name(ElasticModel::PlaneStress),
-                                       elasticModels().name(ElasticModel::PlaneStrain)});
+      .activeWhen("elasticity.model", {solvers::elasticModels().name(solvers::ElasticModel::PlaneStress),
+                                       solvers::elasticModels().name(solvers::ElasticModel::PlaneStrain)});
   s.key("elasticity.fixed", ValueType::String,
         "Displacement components held at zero per boundary region, e.g. \"x_min=x, y_min=y, z_min=z\" "
         "(symmetry planes) or \"x_min=xyz\" (clamped). The body must be held against every rigid motion.")
@@ -78,7 +78,7 @@ ElasticitySpec readElasticitySection(const Config& c) {
   const std::string model = c.getString("elasticity.model");
   if (model == "none") return e;
   e.enabled = true;
-  e.model = parseFromConfig(c, elasticModels(), "elasticity.model");
+  e.model = parseFromConfig(c, solvers::elasticModels(), "elasticity.model");
   e.every = static_cast<std::size_t>(c.getInt("elasticity.every"));
   if (c.has("elasticity.by_property")) e.type_property = c.getString("elasticity.by_property");
   e.young = detail::readCoefficient(c, "elasticity", "young");
@@ -87,7 +87,7 @@ ElasticitySpec readElasticitySection(const Config& c) {
     if (!(nu < 0.5)) throw c.errorAt("elasticity.poisson_by", "Poisson's ratio must be < 0.5, got " + formatValue(nu));
   if (!(e.poisson.uniform < 0.5))
     throw c.errorAt("elasticity.poisson", "must be < 0.5, got " + formatValue(e.poisson.uniform));
-  if (e.model != ElasticModel::Solid) e.thickness = c.getFloat("elasticity.thickness");
+  if (e.model != solvers::ElasticModel::Solid) e.thickness = c.getFloat("elasticity.thickness");
   for (const auto& [name, comps] : detail::parseNamedItems(c, "elasticity.fixed")) {
     std::array<bool, 3> fixed{false, false, false};
     for (char ch : comps) {

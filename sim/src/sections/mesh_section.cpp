@@ -47,7 +47,7 @@ void declareMeshSection(Schema& s) {
         "those wall triangles; time grows linearly with the cell count. `whole_tissue` gives TetGen all "
         "walls at once and lets it refine them, which grades tetrahedra along walls better but grows "
         "quadratically (TetGen 1.5): for tissues of up to a few hundred cells.")
-      .oneOf(volumeMethods().names())
+      .oneOf(mesh::volumeMethods().names())
       .byDefault(std::string("cell_by_cell"));
   s.key("mesh.tolerance", ValueType::Float,
         "Relative to the tissue's bounding-box diagonal: below it a wall counts as planar, and the "
@@ -60,7 +60,7 @@ void declareMeshSection(Schema& s) {
         "Refuse, before meshing, a mesh the size bounds (max_edge_length; max_volume in 3D) would make larger "
         "than this many elements, estimated from the tissue's total area or volume (a lower bound: "
         "area / (sqrt(3)/4 max_edge_length^2) triangles, volume / max_volume tetrahedra). 0 = no limit.")
-      .byDefault(static_cast<std::int64_t>(kDefaultMaxElements))
+      .byDefault(static_cast<std::int64_t>(mesh::kDefaultMaxElements))
       .atLeast(0);
   s.key("mesh.output", ValueType::Bool,
         "Write the mesh as a ParaView series DIR/mesh.pvd listing DIR/mesh_000000.vtu, ... beside the "
@@ -72,17 +72,17 @@ void declareMeshSection(Schema& s) {
       .whenAbsent("output.every");
 }
 
-MeshOptions meshOptionsFromConfig(const Config& c) {
-  MeshOptions o;
+mesh::MeshOptions meshOptionsFromConfig(const Config& c) {
+  mesh::MeshOptions o;
   o.max_edge_length = c.getFloat("mesh.max_edge_length");
   o.min_angle_degrees = c.getFloat("mesh.min_angle");
   o.max_volume = c.getFloat("mesh.max_volume");
   o.radius_edge_ratio = c.getFloat("mesh.radius_edge_ratio");
   o.min_dihedral_degrees = c.getFloat("mesh.min_dihedral_angle");
   o.tolerance = c.getFloat("mesh.tolerance");
-  o.volume_method = parseFromConfig(c, volumeMethods(), "mesh.volume_method");
+  o.volume_method = parseFromConfig(c, mesh::volumeMethods(), "mesh.volume_method");
   o.max_elements = static_cast<std::size_t>(c.getInt("mesh.max_elements"));
-  validateMeshOptions(o);  // the schema's ranges are the same; this keeps them in step
+  mesh::validateMeshOptions(o);  // the schema's ranges are the same; this keeps them in step
   return o;
 }
 

@@ -155,16 +155,16 @@ void checkTissueShape(const SimulationConfig& s) {
   const ElasticitySpec& e = s.elasticity;
   if (e.enabled) {
     const std::string model = c.getString("elasticity.model");
-    if (e.model == ElasticModel::Solid && shape.dim != 3)
+    if (e.model == solvers::ElasticModel::Solid && shape.dim != 3)
       throw c.errorAt("elasticity.model",
                       "'solid' needs a 3D tissue; the tissue is " + shape.str() +
                           " (use plane_stress or plane_strain for a flat 2D tissue)");
-    if (e.model != ElasticModel::Solid && !(shape.dim == 2 && shape.planar()))
+    if (e.model != solvers::ElasticModel::Solid && !(shape.dim == 2 && shape.planar()))
       throw c.errorAt("elasticity.model", "'" + model + "' needs a flat 2D tissue; the tissue is " +
                                               shape.str() + (shape.dim == 3 ? " (use solid)" : ""));
     for (const auto& [region, fixed] : e.fixed) {
       checkRegion(c, "elasticity.fixed", region, shape);
-      if (fixed[2] && e.model != ElasticModel::Solid)
+      if (fixed[2] && e.model != solvers::ElasticModel::Solid)
         throw c.errorAt("elasticity.fixed",
                         std::string("component z (on '") + boundaryRegionName(region) +
                             "') does not exist in the 2D model '" + model +
@@ -173,7 +173,7 @@ void checkTissueShape(const SimulationConfig& s) {
     if (e.stretch_region) checkRegion(c, "elasticity.stretch_region", *e.stretch_region, shape);
     if (e.traction_region) {
       checkRegion(c, "elasticity.traction_region", *e.traction_region, shape);
-      if (e.model != ElasticModel::Solid && e.traction.z() != 0)
+      if (e.model != solvers::ElasticModel::Solid && e.traction.z() != 0)
         throw c.errorAt("elasticity.traction",
                         formatValue(c.entry("elasticity.traction").value) +
                             " has a z component, which the 2D model '" + model +

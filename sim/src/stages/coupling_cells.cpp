@@ -58,10 +58,10 @@ std::vector<bool> marked(const Tissue& tissue, const std::string& name) {
   return out;
 }
 
-std::vector<int> regionFacets(const FeMesh& mesh, BoundaryRegion region, const std::string& what) {
+std::vector<int> regionFacets(const mesh::FeMesh& mesh, BoundaryRegion region, const std::string& what) {
   std::vector<int> facets;
   if (region == BoundaryRegion::All) {
-    facets = boundaryFacets(mesh);
+    facets = solvers::boundaryFacets(mesh);
   } else {
     const int r = static_cast<int>(region) - 1;  // x_min, x_max, y_min, ...
     const int axis = r / 2;

@@ -31,7 +31,7 @@ void markCells(Tissue& tissue, const std::string& name, const std::vector<std::i
 std::vector<bool> marked(const Tissue& tissue, const std::string& name);
 
 /// Wall facets of a boundary region; InputError naming `what` when it holds none.
-std::vector<int> regionFacets(const FeMesh& mesh, BoundaryRegion region, const std::string& what);
+std::vector<int> regionFacets(const mesh::FeMesh& mesh, BoundaryRegion region, const std::string& what);
 
 /// The double cell property `name` (created with `policy` when absent).
 PropertyColumn<double>& doubleColumn(Tissue& tissue, const std::string& name, DivisionPolicy policy);

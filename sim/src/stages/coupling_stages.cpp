@@ -88,16 +88,16 @@ void DiffusionStage::apply(Tissue& tissue, const StepContext& context) {
   if (!schedule_.due(context)) return;
   const double elapsed = schedule_.elapsed(context);
   mesh_->update(tissue);
-  const FeMesh& mesh = mesh_->mesh();
+  const mesh::FeMesh& mesh = mesh_->mesh();
   for (const SpeciesSpec& sp : spec_.species)
     if (!mesh_->hasField(sp.name))
       mesh_->setField(sp.name, Eigen::VectorXd::Constant(mesh.numNodes(), sp.initial), true);
 
   if (!solver_ || solver_mesh_version_ != mesh_->version()) {
-    std::vector<Species> all;
+    std::vector<solvers::Species> all;
     for (const SpeciesSpec& sp : spec_.species) {
       const std::string& p = sp.key_prefix;
-      Species s;
+      solvers::Species s;
       s.name = sp.name;
       s.diffusivity = detail::perCell(tissue, sp.diffusivity, spec_.type_property, "diffusion");
       s.decay = detail::perCell(tissue, sp.decay, spec_.type_property, "diffusion");
@@ -113,7 +113,7 @@ void DiffusionStage::apply(Tissue& tissue, const StepContext& context) {
         s.robin.push_back({detail::regionFacets(mesh, r.region, p + ".robin"), r.value, sp.robin_exterior});
       all.push_back(std::move(s));
     }
-    DiffusionOptions options;
+    solvers::DiffusionOptions options;
     options.scheme = spec_.scheme;
     options.mass = spec_.mass;
     solver_.emplace(mesh, std::move(all), options);
@@ -190,7 +190,7 @@ void CompartmentStage::apply(Tissue& tissue, const StepContext& context) {
   const std::vector<bool> source = detail::marked(tissue, f + "_source");
   const std::vector<bool> pumps = spec_.polar_all ? std::vector<bool>(tissue.cellSlots(), true)
                                                   : detail::marked(tissue, f + "_polar");
-  CompartmentNetwork net;
+  solvers::CompartmentNetwork net;
   net.volume.resize(n);
   net.decay.resize(n);
   net.production.resize(n);
@@ -209,7 +209,7 @@ void CompartmentStage::apply(Tissue& tissue, const StepContext& context) {
     const std::vector<CellId> two = tissue.wallCells(w);
     if (two.size() != 2) continue;
     const CellId a = two[0], b = two[1];
-    CompartmentWall wall;
+    solvers::CompartmentWall wall;
     wall.cell_i = index[a.index()];
     wall.cell_j = index[b.index()];
     wall.area = tissue.dim() == 2 ? geometry.edge_length[w.index()] : geometry.face_area[w.index()];
@@ -222,7 +222,7 @@ void CompartmentStage::apply(Tissue& tissue, const StepContext& context) {
     net.walls.push_back(wall);
   }
   const Eigen::VectorXd volume = net.volume;
-  CompartmentTransport transport(std::move(net), spec_.scheme);
+  solvers::CompartmentTransport transport(std::move(net), spec_.scheme);
   if (elapsed > 0) transport.advance(c, elapsed, stepLength(spec_.dt, elapsed));
   for (Eigen::Index k = 0; k < n; ++k) {
     const CellId cell = cells[static_cast<std::size_t>(k)];
@@ -246,12 +246,12 @@ const std::vector<std::string>& ElasticityStage::stressPropertyNames() {
 void ElasticityStage::apply(Tissue& tissue, const StepContext& context) {
   if (!schedule_.due(context)) return;
   mesh_->update(tissue);
-  const FeMesh& mesh = mesh_->mesh();
-  if (spec_.model == ElasticModel::Solid && mesh.dim != 3)
+  const mesh::FeMesh& mesh = mesh_->mesh();
+  if (spec_.model == solvers::ElasticModel::Solid && mesh.dim != 3)
     throw InputError("elasticity.model: solid needs a 3D tissue; use plane_stress or plane_strain for 2D");
-  if (spec_.model != ElasticModel::Solid && mesh.dim != 2)
+  if (spec_.model != solvers::ElasticModel::Solid && mesh.dim != 2)
     throw InputError("elasticity.model: plane models need a 2D tissue; use solid for 3D");
-  ElasticityProblem p;
+  solvers::ElasticityProblem p;
   p.model = spec_.model;
   p.young = detail::perCell(tissue, spec_.young, spec_.type_property, "elasticity");
   p.poisson = detail::perCell(tissue, spec_.poisson, spec_.type_property, "elasticity");
@@ -260,7 +260,7 @@ void ElasticityStage::apply(Tissue& tissue, const StepContext& context) {
     p.displacement.push_back({detail::regionFacets(mesh, region, "elasticity.fixed"), {}, fixed, Eigen::Vector3d::Zero()});
   if (spec_.stretch_region) {
     const int axis = (static_cast<int>(*spec_.stretch_region) - 1) / 2;
-    DisplacementCondition d{detail::regionFacets(mesh, *spec_.stretch_region, "elasticity.stretch_region"), {},
+    solvers::DisplacementCondition d{detail::regionFacets(mesh, *spec_.stretch_region, "elasticity.stretch_region"), {},
                             {false, false, false}, Eigen::Vector3d::Zero()};
     d.fixed[static_cast<std::size_t>(axis)] = true;
     d.value[axis] = spec_.stretch;
@@ -269,7 +269,7 @@ void ElasticityStage::apply(Tissue& tissue, const StepContext& context) {
   if (spec_.traction_region)
     p.traction.push_back({detail::regionFacets(mesh, *spec_.traction_region, "elasticity.traction_region"),
                           spec_.traction});
-  const ElasticityResult r = solveElasticity(mesh, p);
+  const solvers::ElasticityResult r = solvers::solveElasticity(mesh, p);
   const char* axes[] = {"displacement_x", "displacement_y", "displacement_z"};
   for (int a = 0; a < 3; ++a) mesh_->setField(axes[a], r.displacement.col(a), false);
   const std::vector<std::string>& names = stressPropertyNames();

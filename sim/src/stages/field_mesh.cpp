@@ -8,17 +8,17 @@
 
 namespace tessella::sim {
 
-FieldMesh::FieldMesh(MeshOptions options) : options_(options) { validateMeshOptions(options_); }
+FieldMesh::FieldMesh(mesh::MeshOptions options) : options_(options) { mesh::validateMeshOptions(options_); }
 
 bool FieldMesh::update(const Tissue& tissue) {
   if (tissue_ && topology_ == tissue.topologyVersion() && geometry_ == tissue.geometryVersion()) return false;
-  FeMesh fresh = meshTissue(tissue, options_);
+  mesh::FeMesh fresh = mesh::meshTissue(tissue, options_);
   std::map<std::string, Eigen::VectorXd> carried;
   for (const std::string& name : carried_) {
     const auto it = fields_.find(name);
     if (it == fields_.end()) continue;
     try {
-      carried[name] = transferConcentration(*tissue_, mesh_, it->second, tissue, fresh);
+      carried[name] = mesh::transferConcentration(*tissue_, mesh_, it->second, tissue, fresh);
     } catch (const InputError& e) {
       // Cells more than one division away from the last mesh: solve more often.
       throw InputError("cannot carry field '" + name + "' to the new mesh: " + e.what() +
@@ -31,11 +31,11 @@ bool FieldMesh::update(const Tissue& tissue) {
   topology_ = tissue.topologyVersion();
   geometry_ = tissue.geometryVersion();
   ++version_;
-  cell_measures_ = tessella::cellIntegrals(mesh_, Eigen::VectorXd::Ones(mesh_.numNodes()), tissue.cellSlots());
+  cell_measures_ = tessella::mesh::cellIntegrals(mesh_, Eigen::VectorXd::Ones(mesh_.numNodes()), tissue.cellSlots());
   return true;
 }
 
-const FeMesh& FieldMesh::mesh() const {
+const mesh::FeMesh& FieldMesh::mesh() const {
   if (!tissue_) throw std::logic_error("FieldMesh::mesh: no mesh yet (call update first)");
   return mesh_;
 }
@@ -58,7 +58,7 @@ const Eigen::VectorXd& FieldMesh::field(const std::string& name) const {
 }
 
 std::vector<double> FieldMesh::cellIntegrals(const Eigen::VectorXd& field) const {
-  return tessella::cellIntegrals(mesh(), field, tissue_->cellSlots());
+  return tessella::mesh::cellIntegrals(mesh(), field, tissue_->cellSlots());
 }
 
 }  // namespace tessella::sim

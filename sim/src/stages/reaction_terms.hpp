@@ -45,7 +45,7 @@ class ReactionTerms {
   ReactionTerms& operator=(const ReactionTerms&) = delete;
 
   /// The rates at one node from the values of all species there (the
-  /// signature of tessella::ReactionFunction). A rate that is not finite
+  /// signature of tessella::solvers::ReactionFunction). A rate that is not finite
   /// (1/h at h = 0) is an InputError naming the key and the values.
   void evaluate(std::span<const double> u, std::span<double> rate);
 

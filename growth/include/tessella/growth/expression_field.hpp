@@ -16,7 +16,7 @@
 
 namespace tessella::growth {
 
-struct ExpressionFieldSpec {
+struct ExpressionFieldParams {
   std::string vx = "0";
   std::string vy = "0";
   std::string vz = "0";
@@ -31,7 +31,7 @@ std::map<std::string, double> parseExpressionParameters(const std::string& text)
 
 class ExpressionField final : public VelocityField {
  public:
-  explicit ExpressionField(ExpressionFieldSpec spec);
+  explicit ExpressionField(ExpressionFieldParams params);
   ~ExpressionField() override;
   ExpressionField(const ExpressionField&) = delete;
   ExpressionField& operator=(const ExpressionField&) = delete;
@@ -41,13 +41,13 @@ class ExpressionField final : public VelocityField {
   std::string describe() const override;
   /// `vx = "..."` (c = 0), `vy = "..."`, `vz = "..."`.
   std::string describeComponent(int c) const override;
-  const ExpressionFieldSpec& spec() const { return spec_; }
+  const ExpressionFieldParams& params() const { return params_; }
 
  private:
   struct Workspace;  // three parsers and their variable buffers
   std::unique_ptr<Workspace> makeWorkspace() const;
 
-  ExpressionFieldSpec spec_;
+  ExpressionFieldParams params_;
   // One workspace per OpenMP thread, grown before each parallel region; the
   // mutex makes concurrent calls from outside OpenMP safe (they serialise).
   mutable std::mutex mutex_;

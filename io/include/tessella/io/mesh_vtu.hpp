@@ -1,5 +1,5 @@
 #pragma once
-// Finite-element meshes (tessella::FeMesh) as .vtu files, for looking at the
+// Finite-element meshes (tessella::mesh::FeMesh) as .vtu files, for looking at the
 // fields a solver computed: the elements (triangles or tetrahedra) with the
 // tissue cell of each element, and, as a second file, the wall facets
 // (segments or triangles) with the tissue wall of each facet.
@@ -34,11 +34,11 @@ struct MeshFields {
 /// Checks the mesh's arrays agree (row widths, sizes, node indices in range)
 /// and the fields' sizes; InputError naming the array or field, its size and
 /// the expected one. Called by both writers before anything is written.
-void checkFeMesh(const FeMesh& mesh, const MeshFields& fields = {});
+void checkFeMesh(const mesh::FeMesh& mesh, const MeshFields& fields = {});
 
-void writeFeMeshVtu(const FeMesh& mesh, const std::string& path, const MeshFields& fields = {},
+void writeFeMeshVtu(const mesh::FeMesh& mesh, const std::string& path, const MeshFields& fields = {},
                     const VtuOptions& options = {});
-void writeWallFacetsVtu(const FeMesh& mesh, const std::string& path, const MeshFields& fields = {},
+void writeWallFacetsVtu(const mesh::FeMesh& mesh, const std::string& path, const MeshFields& fields = {},
                         const VtuOptions& options = {});
 
 /// Time series of meshes with the conventions of SeriesWriter: DIR/<name>.pvd
@@ -50,7 +50,7 @@ class MeshSeriesWriter {
   MeshSeriesWriter(std::string directory, std::string name = "mesh", VtuOptions options = {});
 
   /// Writes both files of one step; returns the elements file's path.
-  std::string write(const FeMesh& mesh, double time, const MeshFields& fields = {});
+  std::string write(const mesh::FeMesh& mesh, double time, const MeshFields& fields = {});
 
   const std::string& pvdPath() const { return pvd_path_; }
   const std::string& wallsPvdPath() const { return walls_pvd_path_; }

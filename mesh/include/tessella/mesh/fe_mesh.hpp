@@ -6,7 +6,7 @@
 
 #include <Eigen/Core>
 
-namespace tessella {
+namespace tessella::mesh {
 
 template <typename T>
 using RowMatrix = Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
@@ -38,4 +38,4 @@ struct FeMesh {
   int numWallFacets() const { return static_cast<int>(wall_facets.rows()); }
 };
 
-}  // namespace tessella
+}  // namespace tessella::mesh

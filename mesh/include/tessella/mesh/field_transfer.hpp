@@ -15,7 +15,7 @@
 #include "tessella/mesh/fe_mesh.hpp"
 #include "tessella/tissue/tissue.hpp"
 
-namespace tessella {
+namespace tessella::mesh {
 
 /// For every cell slot of new_tissue: the slot of the old cell it comes from
 /// (by lineage id, then parent id), or -1 for dead slots.
@@ -56,4 +56,4 @@ Eigen::VectorXd transferConcentration(const Tissue& old_tissue, const FeMesh& ol
                                       const Eigen::VectorXd& old_field, const Tissue& new_tissue,
                                       const FeMesh& new_mesh);
 
-}  // namespace tessella
+}  // namespace tessella::mesh

@@ -16,7 +16,7 @@
 #include "tessella/tissue/handles.hpp"
 #include "tessella/tissue/tissue.hpp"
 
-namespace tessella {
+namespace tessella::mesh {
 
 struct MeshabilityReport {
   bool ok = true;
@@ -30,4 +30,4 @@ MeshabilityReport findGeometryDefects(const Tissue& tissue, const MeshOptions& o
 /// findGeometryDefects() that throws GeometryError with the report's message.
 void checkMeshable(const Tissue& tissue, const MeshOptions& options = {});
 
-}  // namespace tessella
+}  // namespace tessella::mesh

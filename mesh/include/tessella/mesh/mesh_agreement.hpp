@@ -6,7 +6,7 @@
 #include "tessella/mesh/fe_mesh.hpp"
 #include "tessella/tissue/tissue.hpp"
 
-namespace tessella {
+namespace tessella::mesh {
 
 struct MeshAgreement {
   /// Largest |mesh sum - cell measure| / |cell measure| over the tissue's
@@ -23,4 +23,4 @@ struct MeshAgreement {
 /// tagged with cell indices) with the tissue's cell measures.
 MeshAgreement meshAgreement(const Tissue& tissue, const FeMesh& mesh);
 
-}  // namespace tessella
+}  // namespace tessella::mesh

@@ -14,7 +14,7 @@
 
 #include "tessella/mesh/fe_mesh.hpp"
 
-namespace tessella {
+namespace tessella::mesh {
 
 struct ConformityReport {
   bool ok = true;
@@ -26,4 +26,4 @@ struct ConformityReport {
 
 ConformityReport checkConformity(const FeMesh& mesh);
 
-}  // namespace tessella
+}  // namespace tessella::mesh

@@ -7,7 +7,7 @@
 
 #include "tessella/mesh/fe_mesh.hpp"
 
-namespace tessella {
+namespace tessella::mesh {
 
 /// Area of a triangle or volume of a tetrahedron (unsigned).
 double elementMeasure(const FeMesh& mesh, int element);
@@ -27,4 +27,4 @@ double tetRadiusEdgeRatio(const FeMesh& mesh, int element);
 /// Length (2D) or area (3D) of a wall facet.
 double wallFacetMeasure(const FeMesh& mesh, int facet);
 
-}  // namespace tessella
+}  // namespace tessella::mesh

@@ -6,7 +6,7 @@
 
 #include "tessella/tissue/enum_table.hpp"
 
-namespace tessella {
+namespace tessella::mesh {
 
 /// Default MeshOptions::max_elements: a mesh of more elements takes minutes
 /// and gigabytes (a typo such as a size of 1e-6 must not exhaust memory).
@@ -67,4 +67,4 @@ struct MeshOptions {
 /// Throws InputError naming the field and value when an option is out of range.
 void validateMeshOptions(const MeshOptions& options);
 
-}  // namespace tessella
+}  // namespace tessella::mesh

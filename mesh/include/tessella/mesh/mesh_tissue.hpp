@@ -17,7 +17,7 @@
 #include "tessella/mesh/mesh_options.hpp"
 #include "tessella/tissue/tissue.hpp"
 
-namespace tessella {
+namespace tessella::mesh {
 
 /// Meshes any tissue (dispatches on its embedding).
 FeMesh meshTissue(const Tissue& tissue, const MeshOptions& options = {});
@@ -41,4 +41,4 @@ FeMesh meshPlanarTissue(const Tissue& tissue, const MeshOptions& options = {});
 FeMesh meshSurfaceTissue(const Tissue& tissue, const MeshOptions& options = {});
 FeMesh meshVolumeTissue(const Tissue& tissue, const MeshOptions& options = {});
 
-}  // namespace tessella
+}  // namespace tessella::mesh

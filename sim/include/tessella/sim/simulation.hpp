@@ -41,7 +41,7 @@ class SimulationError : public Error {
   using Error::Error;
 };
 
-struct SimulationParameters {
+struct SimulationOptions {
   TimeSpan time;
   std::uint64_t rng_seed = 0;
   /// The stage stream's saved state (runState()["rng.stream"]) to continue
@@ -57,7 +57,7 @@ class Simulation {
   using StepCallback = std::function<void(const Simulation&)>;
 
   /// From code: the tissue's clock is set to time.start.
-  Simulation(Tissue tissue, SimulationParameters parameters);
+  Simulation(Tissue tissue, SimulationOptions options);
 
   /// From a validated config: builds the tissue its generator describes and
   /// the stages its sections ask for (makeStages). Defined with the config
@@ -75,11 +75,11 @@ class Simulation {
   const Tissue& tissue() const { return tissue_; }
   /// Mutable access for models that edit the tissue between steps.
   Tissue& tissue() { return tissue_; }
-  const SimulationParameters& parameters() const { return parameters_; }
-  double time() const { return parameters_.time.timeAt(step_); }
+  const SimulationOptions& options() const { return options_; }
+  double time() const { return options_.time.timeAt(step_); }
   /// Steps taken so far.
   std::size_t stepsDone() const { return step_; }
-  std::size_t numSteps() const { return parameters_.time.numSteps(); }
+  std::size_t numSteps() const { return options_.time.numSteps(); }
   bool finished() const { return step_ >= numSteps(); }
   std::mt19937_64& rng() { return rng_; }
   /// The tissue's geometry shared by the stages (StepContext::geometry) and
@@ -89,7 +89,7 @@ class Simulation {
   GeometryCache& geometry() const { return geometry_; }
   /// What a restart needs besides the tissue to continue this run exactly:
   /// the clock (clock.start, clock.dt, clock.step) and the random stream
-  /// (rng_seed, rng.stream), with the parameters' carried entries. Written
+  /// (rng_seed, rng.stream), with the options' carried entries. Written
   /// into every snapshot by SeriesOutput;
   /// continueRunState() reads it back.
   io::RunState runState() const;
@@ -122,7 +122,7 @@ class Simulation {
 
  private:
   Tissue tissue_;
-  SimulationParameters parameters_;
+  SimulationOptions options_;
   std::mt19937_64 rng_;
   mutable GeometryCache geometry_;
   std::size_t step_ = 0;

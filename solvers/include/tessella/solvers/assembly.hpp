@@ -15,7 +15,7 @@
 
 #include <vector>
 
-namespace tessella {
+namespace tessella::solvers {
 
 enum class MassType {
   Consistent,  ///< exact integral of phi_i phi_j
@@ -25,24 +25,24 @@ enum class MassType {
 const EnumTable<MassType>& massTypes();
 
 /// M_ij = sum_e c_e * int_e phi_i phi_j. Empty coefficient means c = 1.
-SparseMatrix assembleMass(const FeMesh& mesh, MassType type, const Eigen::VectorXd& element_coefficient = {});
+SparseMatrix assembleMass(const mesh::FeMesh& mesh, MassType type, const Eigen::VectorXd& element_coefficient = {});
 
 /// K_ij = sum_e c_e * int_e grad phi_i . grad phi_j. Empty coefficient means c = 1.
-SparseMatrix assembleStiffness(const FeMesh& mesh, const Eigen::VectorXd& element_coefficient = {});
+SparseMatrix assembleStiffness(const mesh::FeMesh& mesh, const Eigen::VectorXd& element_coefficient = {});
 
 /// F_i = sum_e p_e * int_e phi_i (exact for a per-element constant density p).
-Eigen::VectorXd assembleLoad(const FeMesh& mesh, const Eigen::VectorXd& element_density);
+Eigen::VectorXd assembleLoad(const mesh::FeMesh& mesh, const Eigen::VectorXd& element_density);
 
 /// Boundary mass on wall facets: B_ij = sum_f c_f * int_f phi_i phi_j (segments
 /// in 2D, triangles in 3D). Empty coefficient means c = 1. Sized numNodes.
-SparseMatrix assembleFacetMass(const FeMesh& mesh, const std::vector<int>& facets,
+SparseMatrix assembleFacetMass(const mesh::FeMesh& mesh, const std::vector<int>& facets,
                                const Eigen::VectorXd& facet_coefficient = {});
 
 /// G_i = sum_f g_f * int_f phi_i for per-facet constant densities g (size = facets.size()).
-Eigen::VectorXd assembleFacetLoad(const FeMesh& mesh, const std::vector<int>& facets,
+Eigen::VectorXd assembleFacetLoad(const mesh::FeMesh& mesh, const std::vector<int>& facets,
                                   const Eigen::VectorXd& facet_density);
 
 /// Measure of every element (area or volume), in parallel.
-Eigen::VectorXd elementMeasures(const FeMesh& mesh);
+Eigen::VectorXd elementMeasures(const mesh::FeMesh& mesh);
 
-}  // namespace tessella
+}  // namespace tessella::solvers

@@ -21,25 +21,25 @@
 
 #include <vector>
 
-namespace tessella {
+namespace tessella::solvers {
 
 class AssemblyPattern {
  public:
   /// Builds the pattern of `mesh`'s elements (checks the mesh first).
-  explicit AssemblyPattern(const FeMesh& mesh);
+  explicit AssemblyPattern(const mesh::FeMesh& mesh);
 
   /// K_ij = sum_e c_e * int_e grad phi_i . grad phi_j. Empty c means c = 1.
   /// `mesh` must have the connectivity the pattern was built from (node
   /// coordinates may differ); its sizes are checked.
-  SparseMatrix stiffness(const FeMesh& mesh, const Eigen::VectorXd& element_coefficient = {}) const;
+  SparseMatrix stiffness(const mesh::FeMesh& mesh, const Eigen::VectorXd& element_coefficient = {}) const;
   /// M_ij = sum_e c_e * int_e phi_i phi_j (or its lumped diagonal; the
   /// off-diagonal entries are then stored zeros of the same pattern).
-  SparseMatrix mass(const FeMesh& mesh, MassType type, const Eigen::VectorXd& element_coefficient = {}) const;
+  SparseMatrix mass(const mesh::FeMesh& mesh, MassType type, const Eigen::VectorXd& element_coefficient = {}) const;
 
   /// Same, writing into `out`: when `out` already has this pattern's structure
   /// (e.g. from an earlier call) only its values are overwritten, no allocation.
-  void stiffness(const FeMesh& mesh, const Eigen::VectorXd& element_coefficient, SparseMatrix& out) const;
-  void mass(const FeMesh& mesh, MassType type, const Eigen::VectorXd& element_coefficient, SparseMatrix& out) const;
+  void stiffness(const mesh::FeMesh& mesh, const Eigen::VectorXd& element_coefficient, SparseMatrix& out) const;
+  void mass(const mesh::FeMesh& mesh, MassType type, const Eigen::VectorXd& element_coefficient, SparseMatrix& out) const;
 
   int numNodes() const { return static_cast<int>(structure_.rows()); }
   int numElements() const { return num_elements_; }
@@ -52,8 +52,8 @@ class AssemblyPattern {
 
  private:
   enum class Kind { Stiffness, ConsistentMass, LumpedMass };
-  void assemble(const FeMesh& mesh, Kind kind, const Eigen::VectorXd& c, SparseMatrix& out) const;
-  void prepare(const FeMesh& mesh, const Eigen::VectorXd& c, const char* what, SparseMatrix& out) const;
+  void assemble(const mesh::FeMesh& mesh, Kind kind, const Eigen::VectorXd& c, SparseMatrix& out) const;
+  void prepare(const mesh::FeMesh& mesh, const Eigen::VectorXd& c, const char* what, SparseMatrix& out) const;
 
   int dim_ = 0;
   int num_elements_ = 0;
@@ -64,4 +64,4 @@ class AssemblyPattern {
   std::vector<int> slots_;         // (d+1)^2 value slots per position in order_, row-major (a, b)
 };
 
-}  // namespace tessella
+}  // namespace tessella::solvers

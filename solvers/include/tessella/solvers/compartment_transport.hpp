@@ -16,7 +16,7 @@
 
 #include <vector>
 
-namespace tessella {
+namespace tessella::solvers {
 
 struct CompartmentWall {
   int cell_i = -1;
@@ -58,4 +58,4 @@ class CompartmentTransport {
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu_;
 };
 
-}  // namespace tessella
+}  // namespace tessella::solvers

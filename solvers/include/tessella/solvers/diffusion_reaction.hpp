@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-namespace tessella {
+namespace tessella::solvers {
 
 /// A function of position and time (boundary values, sources, initial data).
 using SpatialFunction = std::function<double(const Eigen::Vector3d& x, double t)>;
@@ -85,7 +85,7 @@ class DiffusionReaction {
  public:
   /// The mesh must outlive the solver. Throws InvalidProblemError on bad input
   /// (negative diffusivity, wrong sizes, bad facet indices, negative transfer).
-  DiffusionReaction(const FeMesh& mesh, std::vector<Species> species, DiffusionOptions options = {});
+  DiffusionReaction(const mesh::FeMesh& mesh, std::vector<Species> species, DiffusionOptions options = {});
   ~DiffusionReaction();
   DiffusionReaction(DiffusionReaction&&) noexcept;
   DiffusionReaction& operator=(DiffusionReaction&&) noexcept;
@@ -123,7 +123,7 @@ class DiffusionReaction {
   Eigen::VectorXd solveSpecies(int s, const std::function<SparseMatrix()>& make_lhs, double lhs_key,
                                const Eigen::VectorXd& rhs_full, double t, const Eigen::VectorXd& guess);
 
-  const FeMesh* mesh_;
+  const mesh::FeMesh* mesh_;
   DiffusionOptions options_;
   std::vector<SpeciesData> data_;
   ReactionFunction reaction_;
@@ -134,4 +134,4 @@ class DiffusionReaction {
   SolveReport report_;
 };
 
-}  // namespace tessella
+}  // namespace tessella::solvers

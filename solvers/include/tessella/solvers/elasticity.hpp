@@ -17,7 +17,7 @@
 #include <array>
 #include <vector>
 
-namespace tessella {
+namespace tessella::solvers {
 
 enum class ElasticModel { PlaneStress, PlaneStrain, Solid, Membrane };
 /// "plane_stress", "plane_strain", "solid", "membrane".
@@ -86,9 +86,9 @@ struct ElasticityResult {
 /// under-constrained body (rigid-body modes left free by the displacement
 /// conditions, checked before solving), FactorizationError / ConvergenceError
 /// from the linear solver.
-ElasticityResult solveElasticity(const FeMesh& mesh, const ElasticityProblem& problem);
+ElasticityResult solveElasticity(const mesh::FeMesh& mesh, const ElasticityProblem& problem);
 
 /// 3x3 symmetric tensor from a Voigt stress row [xx, yy, zz, yz, xz, xy].
 Eigen::Matrix3d voigtToTensor(const Eigen::Matrix<double, 1, 6>& v);
 
-}  // namespace tessella
+}  // namespace tessella::solvers

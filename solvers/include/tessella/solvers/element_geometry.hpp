@@ -12,7 +12,7 @@
 #include <string_view>
 #include <vector>
 
-namespace tessella {
+namespace tessella::solvers {
 
 struct ElementGeometry {
   double measure = 0.0;  ///< area (triangle) or volume (tetrahedron), > 0
@@ -21,23 +21,23 @@ struct ElementGeometry {
 };
 
 /// Geometry of element e. Throws InvalidProblemError for a degenerate element.
-ElementGeometry elementGeometry(const FeMesh& mesh, int e);
+ElementGeometry elementGeometry(const mesh::FeMesh& mesh, int e);
 
 /// Measure (length / area / volume) of the simplex spanned by `count` node
 /// indices (2, 3 or 4) of the mesh.
-double simplexMeasure(const FeMesh& mesh, const int* nodes, int count);
+double simplexMeasure(const mesh::FeMesh& mesh, const int* nodes, int count);
 
 /// Checks the FeMesh invariants solvers rely on (shapes, index ranges) and
 /// throws InvalidProblemError naming the first violation.
-void checkMesh(const FeMesh& mesh);
+void checkMesh(const mesh::FeMesh& mesh);
 
 /// Number of tissue cells the mesh refers to: max(element_cell) + 1.
-int numCells(const FeMesh& mesh);
+int numCells(const mesh::FeMesh& mesh);
 
 /// Expands a per-cell vector (indexed by cell id; size 1 means uniform) to one
 /// value per element via element_cell. `what` names the quantity in errors.
 /// With nonnegative = true a negative value is an InvalidProblemError.
-Eigen::VectorXd cellToElement(const FeMesh& mesh, const Eigen::VectorXd& per_cell, std::string_view what,
+Eigen::VectorXd cellToElement(const mesh::FeMesh& mesh, const Eigen::VectorXd& per_cell, std::string_view what,
                               bool nonnegative = false);
 
-}  // namespace tessella
+}  // namespace tessella::solvers

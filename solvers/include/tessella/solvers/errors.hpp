@@ -5,7 +5,7 @@
 
 #include "tessella/tissue/errors.hpp"
 
-namespace tessella {
+namespace tessella::solvers {
 
 /// Base of every error thrown by solvers/.
 class SolverError : public Error {
@@ -32,4 +32,4 @@ class ConvergenceError : public SolverError {
   using SolverError::SolverError;
 };
 
-}  // namespace tessella
+}  // namespace tessella::solvers

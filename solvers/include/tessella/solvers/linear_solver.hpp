@@ -14,7 +14,7 @@
 #include <memory>
 #include <string>
 
-namespace tessella {
+namespace tessella::solvers {
 
 using SparseMatrix = Eigen::SparseMatrix<double>;
 
@@ -101,4 +101,4 @@ class LinearSolver {
 Eigen::VectorXd solveLinear(const SparseMatrix& A, const Eigen::VectorXd& b,
                             const LinearSolverOptions& options = {}, SolveReport* report = nullptr);
 
-}  // namespace tessella
+}  // namespace tessella::solvers

@@ -37,9 +37,9 @@ class MeshOutput {
 
  private:
   io::MeshSeriesWriter writer_;
-  MeshOptions options_;
+  mesh::MeshOptions options_;
   std::size_t every_;
-  std::optional<FeMesh> mesh_;
+  std::optional<mesh::FeMesh> mesh_;
   std::uint64_t topology_ = 0, geometry_ = 0;
   std::size_t meshes_ = 0;
   std::size_t last_written_step_ = static_cast<std::size_t>(-1);

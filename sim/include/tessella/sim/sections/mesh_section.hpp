@@ -16,7 +16,7 @@
 namespace tessella::sim {
 
 struct MeshSpec {
-  MeshOptions options;
+  mesh::MeshOptions options;
   /// Write the mesh series DIR/<name>.pvd + DIR/<name>_NNNNNN.vtu during a run.
   bool output = false;
   /// Series name of the mesh output.
@@ -30,6 +30,6 @@ void declareMeshSection(Schema& schema);
 /// Reads mesh.*; out-of-range options are ConfigErrors naming the key.
 MeshSpec readMeshSection(const Config& config);
 /// The MeshOptions part of the section (for stages that mesh the tissue).
-MeshOptions meshOptionsFromConfig(const Config& config);
+mesh::MeshOptions meshOptionsFromConfig(const Config& config);
 
 }  // namespace tessella::sim

@@ -90,8 +90,8 @@ struct DiffusionSpec {
   /// (one DiffusionReaction) and the keys below.
   std::vector<SpeciesSpec> species;
   bool steady = false;
-  TimeScheme scheme = TimeScheme::ImplicitEuler;
-  MassType mass = MassType::Consistent;
+  solvers::TimeScheme scheme = solvers::TimeScheme::ImplicitEuler;
+  solvers::MassType mass = solvers::MassType::Consistent;
   std::size_t every = 1;
   /// Solver step; unset: one step over the whole time since the last solve.
   std::optional<double> dt;
@@ -108,7 +108,7 @@ struct DiffusionSpec {
 struct CompartmentSpec {
   /// Empty: no compartment stage.
   std::string field;
-  TimeScheme scheme = TimeScheme::ImplicitEuler;
+  solvers::TimeScheme scheme = solvers::TimeScheme::ImplicitEuler;
   std::size_t every = 1;
   std::optional<double> dt;
   double initial = 0.0;
@@ -128,7 +128,7 @@ struct CompartmentSpec {
 
 struct ElasticitySpec {
   bool enabled = false;
-  ElasticModel model = ElasticModel::Solid;
+  solvers::ElasticModel model = solvers::ElasticModel::Solid;
   std::size_t every = 1;
   std::string type_property;
   CellCoefficient young{1.0, {}}, poisson{0.3, {}};
@@ -195,7 +195,7 @@ class DiffusionStage final : public MeshFieldStage {
   void storeCellValues(Tissue& tissue);
 
   SolveSchedule schedule_;
-  std::optional<DiffusionReaction> solver_;
+  std::optional<solvers::DiffusionReaction> solver_;
   std::shared_ptr<detail::ReactionTerms> reaction_;  // the compiled reaction expressions, if any
   std::uint64_t solver_mesh_version_ = 0;
   std::vector<double> total_;

@@ -26,14 +26,14 @@ namespace tessella::sim {
 
 class FieldMesh {
  public:
-  explicit FieldMesh(MeshOptions options = {});
+  explicit FieldMesh(mesh::MeshOptions options = {});
 
   /// Meshes the tissue if it changed since the last mesh (or was never
   /// meshed) and transfers the carried fields. Returns true when it remeshed.
   bool update(const Tissue& tissue);
   bool hasMesh() const { return tissue_.has_value(); }
   /// The current mesh; std::logic_error before the first update().
-  const FeMesh& mesh() const;
+  const mesh::FeMesh& mesh() const;
   /// Incremented at every remesh (solvers rebuild their systems when it moves).
   std::uint64_t version() const { return version_; }
   std::size_t remeshes() const { return static_cast<std::size_t>(version_); }
@@ -50,10 +50,10 @@ class FieldMesh {
   std::vector<double> cellIntegrals(const Eigen::VectorXd& field) const;
 
  private:
-  MeshOptions options_;
+  mesh::MeshOptions options_;
   std::optional<Tissue> tissue_;  // the tissue as it was meshed (for the transfer)
   std::uint64_t topology_ = 0, geometry_ = 0;
-  FeMesh mesh_;
+  mesh::FeMesh mesh_;
   std::uint64_t version_ = 0;
   std::map<std::string, Eigen::VectorXd> fields_;
   std::set<std::string> carried_;
