@@ -88,6 +88,24 @@ ImportResult importMorphoGraphX(const std::string& path, const ImportOptions& op
 /// and face `label` properties).
 bool isMorphoGraphXMesh(const std::string& path);
 
+// --- cell-complex PLY ----------------------------------------------------------
+
+/// A cell-complex PLY file, the "property topomesh" layout of the OpenAlea
+/// cellcomplex tools: element `vertex` (x y z), `face` (a vertex loop,
+/// `vertex_index` or `vertex_indices`, or an edge list `edge_index`),
+/// optional `edge` (source target), `volume` (`face_index`: its faces,
+/// 0-based, or signed 1-based +-(face + 1) as OpenAlea's oriented writer puts
+/// them; optional `label`, else the volume index). When every volume is a
+/// closed surface: a 3D tissue whose walls are the file's faces (each shared
+/// by the one or two volumes listing it), oriented so that every cell is
+/// closed and outward. When every volume is an open patch (a disk) of one
+/// surface: a curved-sheet tissue of the patches' outlines, as for
+/// MorphoGraphX. Cell property `label` (int64). The report's notes say which.
+ImportResult importCellComplex(const std::string& path, const ImportOptions& options = {});
+/// Whether a PLY file has the cell-complex layout (vertex, face and volume
+/// elements, volume `face_index`).
+bool isCellComplexPly(const std::string& path);
+
 /// A MorphoGraphX cell graph (cellGraph_*.ply): one vertex per cell with its
 /// label and `Geometry/Area`, one edge per neighbour pair listing the two
 /// cells' labels (MorphoGraphX 2.0 writes labels, not vertex indices).
