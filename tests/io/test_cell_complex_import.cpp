@@ -206,6 +206,22 @@ TEST_CASE("cell complex: closed volumes become a 3D tissue, oriented outwards", 
   }
 }
 
+TEST_CASE("cell complex: a cell with triangulated walls divides like any cell", "[io][import][cell_complex]") {
+  TempDir dir;
+  const std::string path = dir.file("boxes.ply");
+  twoBoxes(true).write(path);
+  Tissue t = importTissue(path).tissue;
+  const auto cells = cellsByLabel(t);
+  // y = 0.3 crosses the cube's side triangles and both triangles of the wall it shares.
+  const CellSplit split = t.splitCell(cells.at(7), Plane{Vec3(0.5, 0.3, 0.5), Vec3(0, 1, 0)});
+  CHECK(validate(t).ok);
+  CHECK(cellMeasure(t, cells.at(7)) == Approx(0.3).epsilon(1e-13));
+  CHECK(cellMeasure(t, split.daughter) == Approx(0.7).epsilon(1e-13));
+  CHECK(cellMeasure(t, cells.at(3)) == Approx(2.0).epsilon(1e-13));
+  const auto& label = t.cellProperties().get<std::int64_t>("label");
+  CHECK(label[split.daughter] == 7);  // daughters copy the label
+}
+
 TEST_CASE("cell complex: faces given by edges, volumes as signed 1-based, no label", "[io][import][cell_complex]") {
   TempDir dir;
   Complex m = twoBoxes(true);
