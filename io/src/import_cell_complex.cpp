@@ -18,6 +18,7 @@
 #include <map>
 #include <unordered_map>
 
+#include "cell_complex_core.hpp"
 #include "labelled_surface.hpp"
 #include "tessella/io/import.hpp"
 #include "tessella/io/ply.hpp"
@@ -33,32 +34,7 @@ using detail::edgeKey;
 using detail::fmtPoint;
 using detail::Label;
 using detail::UnionFind;
-
-// The file, read into plain arrays with every index checked.
-struct ComplexFile {
-  std::string path;
-  std::vector<Vec3> positions;
-  std::vector<std::size_t> face_offsets;  // vertex loops
-  std::vector<Index> face_vertices;
-  std::vector<std::size_t> volume_offsets;
-  std::vector<Index> volume_faces;
-  std::vector<Label> volume_label;
-  bool signed_one_based = false;  // volume face_index written as +-(face + 1)
-  bool faces_from_edges = false;  // faces listed edges (edge_index)
-
-  std::size_t numFaces() const { return face_offsets.size() - 1; }
-  std::size_t numVolumes() const { return volume_label.size(); }
-  std::span<const Index> face(std::size_t f) const {
-    return {face_vertices.data() + face_offsets[f], face_offsets[f + 1] - face_offsets[f]};
-  }
-  std::span<const Index> volume(std::size_t v) const {
-    return {volume_faces.data() + volume_offsets[v], volume_offsets[v + 1] - volume_offsets[v]};
-  }
-  std::string volumeRef(std::size_t v) const {
-    return "volume " + std::to_string(v) + " (label " + std::to_string(volume_label[v]) + ")";
-  }
-  std::string volumeName(std::size_t v) const { return "'" + path + "' " + volumeRef(v); }
-};
+using detail::ComplexFile;
 
 std::string range(std::size_t n, const char* what) {
   return "(the file has " + std::to_string(n) + " " + what + (n == 0 ? "" : ", 0.." + std::to_string(n - 1)) + ")";
@@ -222,6 +198,10 @@ ComplexFile readComplex(const std::string& path) {
   return m;
 }
 
+}  // namespace
+
+namespace detail {
+
 // Two faces on the same vertices: one wall listed twice instead of shared.
 void checkDuplicateFaces(const ComplexFile& m) {
   std::map<std::vector<Index>, std::size_t> seen;
@@ -235,14 +215,7 @@ void checkDuplicateFaces(const ComplexFile& m) {
   }
 }
 
-enum class Shape { Closed, Patch };
-
-// A volume's faces as one surface: its shape, and for a closed surface the
-// orientation of each face (+1: the loop as written points out of the cell).
-struct VolumeSurface {
-  Shape shape = Shape::Closed;
-  std::vector<int> orientation;  // per face of the volume, in its listing order (closed only)
-};
+namespace {
 
 // One edge of one face of a volume: its vertices in loop order and where.
 struct FaceEdge {
@@ -252,6 +225,8 @@ struct FaceEdge {
   Index tail_corner;   // position of the tail in the volume's corner list
   Index head_corner;
 };
+
+}  // namespace
 
 VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
   const auto faces = m.volume(v);
@@ -280,7 +255,7 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
     ++num_edges;
     if (j - i > 2) {
       std::string listed;
-      for (std::size_t k = i; k < j; ++k) listed += (k > i ? ", " : "") + std::to_string(faces[edges[k].face]);
+      for (std::size_t k = i; k < j; ++k) listed += (k > i ? ", " : "") + m.faceName(faces[edges[k].face]);
       throw InputError(name + ": edge " + std::to_string(edges[i].tail) + "-" + std::to_string(edges[i].head) +
                        " is in " + std::to_string(j - i) + " of its faces (" + listed +
                        "): the cell is not a manifold surface");
@@ -301,8 +276,8 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
     if (pieces.find(q) == q) piece_first.push_back(q);
   if (piece_first.size() > 1)
     throw InputError(name + ": its faces form " + std::to_string(piece_first.size()) +
-                     " disconnected pieces (face " + std::to_string(faces[0]) + " is in one, face " +
-                     std::to_string(faces[piece_first[0] == pieces.find(0) ? piece_first[1] : piece_first[0]]) +
+                     " disconnected pieces (" + m.faceName(faces[0]) + " is in one, " +
+                     m.faceName(faces[piece_first[0] == pieces.find(0) ? piece_first[1] : piece_first[0]]) +
                      " in another): a cell is one piece");
   std::vector<Index> verts = corner_vertex;
   std::sort(verts.begin(), verts.end());
@@ -366,8 +341,8 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
         out.orientation[b.face] = wanted;
         stack.push_back(b.face);
       } else if (out.orientation[b.face] != wanted) {
-        throw InputError(name + ": its faces cannot be oriented consistently (faces " + std::to_string(faces[q]) +
-                         " and " + std::to_string(faces[b.face]) + " along edge " + std::to_string(a.tail) + "-" +
+        throw InputError(name + ": its faces cannot be oriented consistently (" + m.faceName(faces[q]) + " and " +
+                         m.faceName(faces[b.face]) + " along edge " + std::to_string(a.tail) + "-" +
                          std::to_string(a.head) + "): a non-orientable surface");
       }
     }
@@ -393,8 +368,29 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
   return out;
 }
 
-ImportResult buildVolumeTissue(const ComplexFile& m, const std::vector<VolumeSurface>& surfaces,
-                               const ImportOptions& options, ImportReport& report) {
+ImportResult importClosedVolumes(const ComplexFile& m, const std::vector<VolumeSurface>& surfaces,
+                                 const ImportOptions& options, ImportReport& report) {
+  if (options.simplify > 0)
+    throw InputError("'" + m.path + "': simplify applies to the wall polylines of a curved sheet; this file is a "
+                     "3D tissue (closed cells)");
+  {  // welded: reuse the surface check, each face labelled by a volume listing it
+    LabelledSurface s;
+    s.path = m.path;
+    s.positions = m.positions;
+    s.face_offsets = {0};
+    std::vector<Label> label_of(m.numFaces(), 0);
+    std::vector<char> listed(m.numFaces(), 0);
+    for (std::size_t v = 0; v < m.numVolumes(); ++v)
+      for (Index f : m.volume(v)) label_of[f] = m.volume_label[v], listed[f] = 1;
+    for (std::size_t f = 0; f < m.numFaces(); ++f) {
+      if (!listed[f]) continue;
+      s.face_vertices.insert(s.face_vertices.end(), m.face(f).begin(), m.face(f).end());
+      s.face_offsets.push_back(s.face_vertices.size());
+      s.face_label.push_back(label_of[f]);
+      s.file_face.push_back(static_cast<Index>(f));
+    }
+    checkDuplicateVertices(s);
+  }
   // Which volumes list each face, with the face's outward orientation in each.
   std::vector<std::vector<std::pair<Index, int>>> listed(m.numFaces());
   for (std::size_t v = 0; v < m.numVolumes(); ++v) {
@@ -414,11 +410,11 @@ ImportResult buildVolumeTissue(const ComplexFile& m, const std::vector<VolumeSur
     if (by.size() > 2) {
       std::string labels;
       for (auto [v, o] : by) labels += (labels.empty() ? "" : ", ") + std::to_string(m.volume_label[v]);
-      throw InputError("'" + m.path + "' face " + std::to_string(f) + ": listed by " + std::to_string(by.size()) +
+      throw InputError("'" + m.path + "' " + m.faceName(f) + ": listed by " + std::to_string(by.size()) +
                        " volumes (labels " + labels + "), a wall separates at most two cells");
     }
     if (by.size() == 2 && by[0].second == by[1].second)
-      throw InputError("'" + m.path + "' face " + std::to_string(f) + ": volumes " + std::to_string(by[0].first) +
+      throw InputError("'" + m.path + "' " + m.faceName(f) + ": volumes " + std::to_string(by[0].first) +
                        " and " + std::to_string(by[1].first) + " (labels " +
                        std::to_string(m.volume_label[by[0].first]) + " and " +
                        std::to_string(m.volume_label[by[1].first]) +
@@ -458,8 +454,8 @@ ImportResult buildVolumeTissue(const ComplexFile& m, const std::vector<VolumeSur
   }
   auto& label = result.tissue.cellProperties().add<std::int64_t>("label", 0);
   for (std::size_t c = 0; c < order.size(); ++c) label[CellId(static_cast<Index>(c))] = m.volume_label[order[c]];
-  report.notes.push_back("layout: closed volumes, a 3D tissue (" + std::to_string(walls.size()) + " walls, each a " +
-                         "face of the file: " + std::to_string(shared) + " between two cells, " +
+  report.notes.push_back("layout: closed " + m.volume_noun + "s, a 3D tissue (" + std::to_string(walls.size()) +
+                         " walls, each a face of the file: " + std::to_string(shared) + " between two cells, " +
                          std::to_string(walls.size() - shared) + " on the boundary)");
   if (unlisted > 0)
     report.notes.push_back(std::to_string(unlisted) + " faces of the file are in no volume: ignored");
@@ -467,6 +463,13 @@ ImportResult buildVolumeTissue(const ComplexFile& m, const std::vector<VolumeSur
     report.notes.push_back(std::to_string(unused) + " vertices of the file are in no wall: ignored");
   return result;
 }
+
+}  // namespace detail
+
+namespace {
+
+using detail::Shape;
+using detail::VolumeSurface;
 
 // The patches as a labelled surface, every face oriented the way most faces
 // of its connected part of the surface already run.
@@ -582,7 +585,7 @@ ImportResult importCellComplex(const std::string& path, const ImportOptions& opt
   if (m.numVolumes() == 0) throw InputError("'" + path + "' has no volumes: no cell to import");
   checkDuplicateFaces(m);
   std::vector<VolumeSurface> surfaces(m.numVolumes());
-  for (std::size_t v = 0; v < m.numVolumes(); ++v) surfaces[v] = analyseVolume(m, v);
+  for (std::size_t v = 0; v < m.numVolumes(); ++v) surfaces[v] = detail::analyseVolume(m, v);
   for (std::size_t v = 1; v < m.numVolumes(); ++v)
     if (surfaces[v].shape != surfaces[0].shape) {
       const std::size_t closed = surfaces[0].shape == Shape::Closed ? 0 : v, open = closed == 0 ? v : 0;
@@ -595,28 +598,7 @@ ImportResult importCellComplex(const std::string& path, const ImportOptions& opt
   if (m.signed_one_based) conventions += "volume face_index read as signed 1-based (+-(face + 1)); ";
   ImportResult result{Tissue(2, Embedding::Surface), {}};
   if (surfaces[0].shape == Shape::Closed) {
-    if (options.simplify > 0)
-      throw InputError("'" + path + "': simplify applies to the wall polylines of a curved sheet; this file is a "
-                       "3D tissue (closed volumes)");
-    {  // welded: reuse the surface check, each face labelled by a volume listing it
-      detail::LabelledSurface s;
-      s.path = path;
-      s.positions = m.positions;
-      s.face_offsets = {0};
-      std::vector<Label> label_of(m.numFaces(), 0);
-      std::vector<char> listed(m.numFaces(), 0);
-      for (std::size_t v = 0; v < m.numVolumes(); ++v)
-        for (Index f : m.volume(v)) label_of[f] = m.volume_label[v], listed[f] = 1;
-      for (std::size_t f = 0; f < m.numFaces(); ++f) {
-        if (!listed[f]) continue;
-        s.face_vertices.insert(s.face_vertices.end(), m.face(f).begin(), m.face(f).end());
-        s.face_offsets.push_back(s.face_vertices.size());
-        s.face_label.push_back(label_of[f]);
-        s.file_face.push_back(static_cast<Index>(f));
-      }
-      detail::checkDuplicateVertices(s);
-    }
-    result = buildVolumeTissue(m, surfaces, options, report);
+    result = detail::importClosedVolumes(m, surfaces, options, report);
   } else {
     detail::LabelledSurface s = orientedPatches(m, report);
     detail::LabelledSheet sheet = detail::buildLabelledSheet(s, options, report);
