@@ -37,15 +37,16 @@ struct ComplexFile {
   /// What the format calls a cell and, per face, the file element it comes
   /// from (empty: face f is the file's face f), for messages.
   std::string volume_noun = "volume";
-  std::vector<Index> face_element;
-  std::string face_element_noun;  ///< "element": face f is a side of element face_element[f]
+  std::string face_noun = "face";
+  std::vector<Index> face_element;  ///< when set, face f is a side of element face_element[f]
   std::string volumeRef(std::size_t v) const {
     return volume_noun + " " + std::to_string(v) + " (label " + std::to_string(volume_label[v]) + ")";
   }
   std::string faceName(std::size_t f) const {
-    if (face_element.empty()) return "face " + std::to_string(f);
-    return "face " + std::to_string(f) + " (a side of " + face_element_noun + " " + std::to_string(face_element[f]) +
-           ")";
+    if (face_element.empty()) return face_noun + " " + std::to_string(f);
+    std::string vertices;
+    for (Index u : face(f)) vertices += (vertices.empty() ? "" : " ") + std::to_string(u);
+    return "the side (vertices " + vertices + ") of element " + std::to_string(face_element[f]);
   }
   std::string volumeName(std::size_t v) const { return "'" + path + "' " + volumeRef(v); }
 };
@@ -72,5 +73,10 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v);
 /// Adds the layout note (and notes on dropped faces and vertices) to `report`.
 ImportResult importClosedVolumes(const ComplexFile& m, const std::vector<VolumeSurface>& surfaces,
                                  const ImportOptions& options, ImportReport& report);
+
+/// Everything after reading: the closed cells of a 3D tissue or the patches
+/// of a sheet (detected, then the matching note first in the report), or an
+/// InputError for a mix. `report` comes with path, format and file counts.
+ImportResult importComplex(const ComplexFile& m, const ImportOptions& options, ImportReport report);
 
 }  // namespace tessella::io::detail

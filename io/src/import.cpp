@@ -24,6 +24,12 @@ const std::vector<ImportFormat>& importFormats() {
        "3D tissue, open patches of one surface a curved sheet",
        &importCellComplex,
        &isCellComplexPly},
+      {"labelled_vtu",
+       {".vtu"},
+       "VTK mesh with a per-element cell label (label, cell_label or cell_id): tetrahedra give a 3D tissue "
+       "(walls: the triangles between labels), triangles a curved sheet",
+       &importLabelledVtu,
+       &isLabelledVtu},
   };
   return formats;
 }

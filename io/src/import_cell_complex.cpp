@@ -455,7 +455,8 @@ ImportResult importClosedVolumes(const ComplexFile& m, const std::vector<VolumeS
   auto& label = result.tissue.cellProperties().add<std::int64_t>("label", 0);
   for (std::size_t c = 0; c < order.size(); ++c) label[CellId(static_cast<Index>(c))] = m.volume_label[order[c]];
   report.notes.push_back("layout: closed " + m.volume_noun + "s, a 3D tissue (" + std::to_string(walls.size()) +
-                         " walls, each a face of the file: " + std::to_string(shared) + " between two cells, " +
+                         " walls, each " + (m.face_element.empty() ? "a face of the file" : "a side of a tetrahedron") +
+                         ": " + std::to_string(shared) + " between two cells, " +
                          std::to_string(walls.size() - shared) + " on the boundary)");
   if (unlisted > 0)
     report.notes.push_back(std::to_string(unlisted) + " faces of the file are in no volume: ignored");
@@ -481,7 +482,7 @@ detail::LabelledSurface orientedPatches(const ComplexFile& m, ImportReport& repo
   for (std::size_t v = 0; v < m.numVolumes(); ++v)
     for (Index f : m.volume(v)) {
       if (volume_of[f] != kInvalidIndex)
-        throw InputError("'" + m.path + "' face " + std::to_string(f) + ": listed by volumes " +
+        throw InputError("'" + m.path + "' " + m.faceName(f) + ": listed by volumes " +
                          std::to_string(volume_of[f]) + " and " + std::to_string(v) + " (labels " +
                          std::to_string(m.volume_label[volume_of[f]]) + " and " + std::to_string(m.volume_label[v]) +
                          "), but the volumes are patches of one surface, which share no face");
@@ -505,7 +506,7 @@ detail::LabelledSurface orientedPatches(const ComplexFile& m, ImportReport& repo
     std::size_t j = i;
     while (j < edges.size() && std::get<0>(edges[j]) == std::get<0>(edges[i])) ++j;
     if (j - i > 2)
-      throw InputError("'" + m.path + "' face " + std::to_string(kept[std::get<2>(edges[i])]) + " (cell label " +
+      throw InputError("'" + m.path + "' " + m.faceName(kept[std::get<2>(edges[i])]) + " (cell label " +
                        std::to_string(m.volume_label[volume_of[kept[std::get<2>(edges[i])]]]) + "): " +
                        std::to_string(j - i) + " faces meet at one edge: the surface is not a manifold");
     if (j - i == 2) {
@@ -532,7 +533,7 @@ detail::LabelledSurface orientedPatches(const ComplexFile& m, ImportReport& repo
           part.push_back(r);
           stack.push_back(r);
         } else if (flip[r] != wanted) {
-          throw InputError("'" + m.path + "' faces " + std::to_string(kept[q]) + " and " + std::to_string(kept[r]) +
+          throw InputError("'" + m.path + "' " + m.faceName(kept[q]) + " and " + m.faceName(kept[r]) +
                            ": the surface of the patches cannot be oriented consistently (a non-orientable surface)");
         }
       }
@@ -574,6 +575,36 @@ bool isCellComplexPly(const std::string& path) {
   return v && f && vol && vol->property("face_index");
 }
 
+namespace detail {
+
+ImportResult importComplex(const ComplexFile& m, const ImportOptions& options, ImportReport report) {
+  if (m.numVolumes() == 0) throw InputError("'" + m.path + "' has no " + m.volume_noun + "s: no cell to import");
+  checkDuplicateFaces(m);
+  std::vector<VolumeSurface> surfaces(m.numVolumes());
+  for (std::size_t v = 0; v < m.numVolumes(); ++v) surfaces[v] = analyseVolume(m, v);
+  for (std::size_t v = 1; v < m.numVolumes(); ++v)
+    if (surfaces[v].shape != surfaces[0].shape) {
+      const std::size_t closed = surfaces[0].shape == Shape::Closed ? 0 : v, open = closed == 0 ? v : 0;
+      throw InputError(m.volumeName(open) + ": an open patch, but " + m.volumeRef(closed) +
+                       " is a closed surface: a file holds either closed cells (a 3D tissue) or patches of one "
+                       "surface (a sheet); a 3D cell must be closed");
+    }
+  ImportResult result{Tissue(2, Embedding::Surface), {}};
+  if (surfaces[0].shape == Shape::Closed) {
+    result = importClosedVolumes(m, surfaces, options, report);
+  } else {
+    LabelledSurface s = orientedPatches(m, report);
+    LabelledSheet sheet = buildLabelledSheet(s, options, report);
+    result.tissue = std::move(sheet.tissue);
+    if (const std::size_t unused = unusedVertices(s); unused > 0)
+      report.notes.push_back(std::to_string(unused) + " vertices of the file are in no face: ignored");
+  }
+  result.report = std::move(report);
+  return result;
+}
+
+}  // namespace detail
+
 ImportResult importCellComplex(const std::string& path, const ImportOptions& options) {
   detail::checkImportOptions(options);
   const ComplexFile m = readComplex(path);
@@ -582,33 +613,12 @@ ImportResult importCellComplex(const std::string& path, const ImportOptions& opt
   report.format = "cell_complex";
   report.file_vertices = m.positions.size();
   report.file_faces = m.numFaces();
-  if (m.numVolumes() == 0) throw InputError("'" + path + "' has no volumes: no cell to import");
-  checkDuplicateFaces(m);
-  std::vector<VolumeSurface> surfaces(m.numVolumes());
-  for (std::size_t v = 0; v < m.numVolumes(); ++v) surfaces[v] = detail::analyseVolume(m, v);
-  for (std::size_t v = 1; v < m.numVolumes(); ++v)
-    if (surfaces[v].shape != surfaces[0].shape) {
-      const std::size_t closed = surfaces[0].shape == Shape::Closed ? 0 : v, open = closed == 0 ? v : 0;
-      throw InputError(m.volumeName(open) + ": an open patch, but " + m.volumeRef(closed) +
-                       " is a closed surface: a file holds either closed cells (a 3D tissue) or patches of one "
-                       "surface (a sheet); a 3D cell must be closed");
-    }
+  ImportResult result = detail::importComplex(m, options, std::move(report));
   std::string conventions;
   if (m.faces_from_edges) conventions += "faces read from their edges (edge_index); ";
   if (m.signed_one_based) conventions += "volume face_index read as signed 1-based (+-(face + 1)); ";
-  ImportResult result{Tissue(2, Embedding::Surface), {}};
-  if (surfaces[0].shape == Shape::Closed) {
-    result = detail::importClosedVolumes(m, surfaces, options, report);
-  } else {
-    detail::LabelledSurface s = orientedPatches(m, report);
-    detail::LabelledSheet sheet = detail::buildLabelledSheet(s, options, report);
-    result.tissue = std::move(sheet.tissue);
-    if (const std::size_t unused = detail::unusedVertices(s); unused > 0)
-      report.notes.push_back(std::to_string(unused) + " vertices of the file are in no face: ignored");
-  }
-  if (!conventions.empty()) report.notes.push_back(conventions.substr(0, conventions.size() - 2));
-  report.notes.push_back("cell properties: label (the volume's label, or its index without a label property)");
-  result.report = std::move(report);
+  if (!conventions.empty()) result.report.notes.push_back(conventions.substr(0, conventions.size() - 2));
+  result.report.notes.push_back("cell properties: label (the volume's label, or its index without a label property)");
   return result;
 }
 

@@ -427,6 +427,24 @@ case "$case_name" in
       "$tmp/stderr" || fail "unclear error: $(cat "$tmp/stderr")"
     [ ! -e "$tmp/open.vtu" ] || fail "an output file was left"
     ;;
+  import_labelled_mesh)
+    # tessella mesh's tetrahedra (cell_id per element) back into a 3D tissue: same cells, same volumes.
+    "$tessella" run "$src/configs/voronoi_box_3d.yaml" --out "$tmp/box" -q --set time.end=0 \
+      --set tissue.voronoi.count=12 || fail "run failed"
+    "$tessella" mesh "$tmp/box/tissue_000000.vtu" --out "$tmp/mesh.vtu" >/dev/null || fail "mesh failed"
+    "$tessella" import "$tmp/mesh.vtu" --out "$tmp/back.vtu" >"$tmp/import" 2>"$tmp/stderr" \
+      || fail "import failed: $(cat "$tmp/stderr")"
+    cat "$tmp/import"
+    grep -Eq '^format +labelled_vtu \([0-9]+ vertices, [0-9]+ tetrahedra in the file\)$' "$tmp/import" \
+      || fail "no format line"
+    grep -Eq '^note +layout: closed cells, a 3D tissue' "$tmp/import" || fail "the summary does not say 3D"
+    grep -Eq '^cells +12$' "$tmp/import" || fail "expected 12 cells"
+    grep -Eq '^validate +ok$' "$tmp/import" || fail "expected validate ok"
+    "$tessella" info "$tmp/box/tissue_000000.vtu" >"$tmp/info"
+    for key in 'total volume' 'cell volume'; do
+      [ "$(grep "^$key" "$tmp/info")" = "$(grep "^$key" "$tmp/import")" ] || fail "$key changed"
+    done
+    ;;
   render_run)
     "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/hex" -q || fail "run failed"
     "$tessella" render "$tmp/hex" --property size --size 320x240 --no-movie >"$tmp/stdout" 2>"$tmp/stderr" \

@@ -36,6 +36,8 @@ struct ImportReport {
   std::string format;  ///< the importFormats() row used
   /// Counts in the file.
   std::size_t file_vertices = 0, file_faces = 0;
+  /// What file_faces counts: "faces", or "elements" for a VTK mesh.
+  std::string file_faces_noun = "faces";
   /// Vertices removed by `simplify` (0 without).
   std::size_t simplified_vertices = 0;
   /// One line per repair made (empty without `repair`).
@@ -105,6 +107,21 @@ ImportResult importCellComplex(const std::string& path, const ImportOptions& opt
 /// Whether a PLY file has the cell-complex layout (vertex, face and volume
 /// elements, volume `face_index`).
 bool isCellComplexPly(const std::string& path);
+
+// --- labelled VTK meshes ----------------------------------------------------------
+
+/// A VTK unstructured grid (.vtu) whose elements carry an integer cell-data
+/// array naming the cell they lie in (`label`, `cell_label` or `cell_id`,
+/// the first present; `tessella mesh` writes `cell_id`). Tetrahedra: a 3D
+/// tissue whose walls are the triangles between elements of different
+/// labels and on the mesh's boundary, each triangle one wall (the closed-cell
+/// core of importCellComplex). Triangles or polygons: a curved-sheet tissue
+/// of each label's outline (the core of importMorphoGraphX). Cell property
+/// `label` (int64).
+ImportResult importLabelledVtu(const std::string& path, const ImportOptions& options = {});
+/// Whether a .vtu file declares a cell-data array named label, cell_label or
+/// cell_id and is not a Tessella snapshot (reads the XML header only).
+bool isLabelledVtu(const std::string& path);
 
 /// A MorphoGraphX cell graph (cellGraph_*.ply): one vertex per cell with its
 /// label and `Geometry/Area`, one edge per neighbour pair listing the two
