@@ -14,8 +14,11 @@
 // file, the element and its index, and the volume's label.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
+#include <numeric>
+#include <tuple>
 #include <unordered_map>
 
 #include "cell_complex_core.hpp"
@@ -324,7 +327,6 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
                      ", expected 2 (a sphere; a cell with a handle or a tunnel is refused)");
   // Orient the faces consistently: across a shared edge, two faces run opposite ways.
   out.orientation.assign(faces.size(), 0);
-  std::unordered_map<std::uint64_t, std::pair<Index, Index>> by_key;  // key -> the two FaceEdge indices
   std::vector<std::vector<Index>> face_edges(faces.size());
   for (Index i = 0; i < edges.size(); ++i) face_edges[edges[i].face].push_back(i);
   std::vector<Index> stack{0};

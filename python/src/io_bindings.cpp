@@ -35,6 +35,7 @@ void bindIo(py::module_& m) {
           report["format"] = r.report.format;
           report["file_vertices"] = r.report.file_vertices;
           report["file_faces"] = r.report.file_faces;
+          report["file_faces_noun"] = r.report.file_faces_noun;
           report["simplified_vertices"] = r.report.simplified_vertices;
           report["repairs"] = r.report.repairs;
           report["notes"] = r.report.notes;
@@ -43,8 +44,8 @@ void bindIo(py::module_& m) {
         py::arg("path"), py::arg("format") = "auto", py::arg("scale") = 1.0, py::arg("simplify") = 0.0,
         py::arg("repair") = false, R"doc(
 Imports a segmented tissue (docs/import.md) and returns (tissue, report): the
-report is a dict with path, format, file_vertices, file_faces,
-simplified_vertices, repairs (one line per repair) and notes.
+report is a dict with path, format, file_vertices, file_faces (file_faces_noun:
+what they count), simplified_vertices, repairs (one line per repair) and notes.
 )doc");
   m.def("import_tissue",
         [](const std::string& path, const std::string& format, double scale, double simplify, bool repair) {

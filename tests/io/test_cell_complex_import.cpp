@@ -427,6 +427,22 @@ TEST_CASE("cell complex: bad cells name the volume and its label", "[io][import]
     CHECK_THAT(importError(m, dir), Contains(path) && Contains("volume 0 (label 7): edge") &&
                                         Contains("is in 3 of its faces") && Contains("not a manifold"));
   }
+  SECTION("a closed cell with a handle: a ring of eight cubes") {
+    Complex m;
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        if (i != 1 || j != 1) m.box(Vec3(i, j, 0), Vec3(i + 1, j + 1, 1), 10 * i + j, false);
+    std::map<int, int> uses;
+    for (const auto& v : m.volumes)
+      for (int f : v) ++uses[f];
+    std::vector<int> outside;
+    for (auto [f, n] : uses)
+      if (n == 1) outside.push_back(f);
+    m.volumes = {outside};
+    m.labels = {4};
+    CHECK_THAT(importError(m, dir), Contains(path) && Contains("volume 0 (label 4): its closed surface has Euler "
+                                                               "characteristic V-E+F = 0, expected 2"));
+  }
   SECTION("a cell in two disconnected pieces") {
     Complex m = twoBoxes(false);
     m.box(Vec3(5, 5, 5), Vec3(6, 6, 6), 9, false);

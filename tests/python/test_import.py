@@ -66,7 +66,7 @@ def test_cell_complex_round_trip_3d_and_sheet(tmp_path):
     info = tessella.export_cell_complex(box, str(tmp_path / "box.ply"))
     assert info["volumes"] == 12 and info["label_source"] == "lineage_id"
     back, report = tessella.import_tissue_with_report(str(tmp_path / "box.ply"))
-    assert report["format"] == "cell_complex"
+    assert report["format"] == "cell_complex" and report["file_faces_noun"] == "faces"
     assert report["notes"][0].startswith("layout: closed volumes, a 3D tissue")
     assert back.dim == 3 and back.num_cells == 12 and back.validate()[0]
     assert [back.cell_measure(c) for c in back.cells()] == [pytest.approx(1.0, rel=1e-12)] * 12
