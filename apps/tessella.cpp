@@ -6,6 +6,7 @@
 //   tessella mesh SNAPSHOT.vtu --out MESH.vtu [--walls WALLS.vtu] [--size H] [--min-angle A] [--max-volume V]
 //                 [--volume-method cell_by_cell|whole_tissue] [--max-elements N] [--config CFG.yaml]
 //   tessella import FILE --out TISSUE.vtu [--format F] [--scale S] [--simplify TOL] [--repair]
+//   tessella export SNAPSHOT.vtu --out FILE.ply [--binary]   (cell-complex PLY, docs/import.md)
 //   tessella render RUN_DIR|SERIES.pvd|SNAPSHOT.vtu [--property NAME] [--out DIR] [--size WxH] [--every N]
 //                   [--view X,Y,Z] [--range LOW,HIGH] [--no-movie]
 //   tessella sweep CONFIG.yaml --vary KEY=V1,V2,... [--vary ...] [--replicates N] [--set ...] --out DIR [--overwrite]
@@ -34,6 +35,7 @@
 #include <string>
 #include <vector>
 
+#include "tessella/io/cell_complex_ply.hpp"
 #include "tessella/io/import.hpp"
 #include "tessella/io/mesh_vtu.hpp"
 #include "tessella/io/output_file.hpp"
@@ -162,6 +164,25 @@ int importCommand(const ImportArgs& a) {
   }
   io::writeTissueVtu(r.tissue, a.out);  // atomic: no partial file on failure
   fmt::print("wrote        {}\n", a.out);
+  return 0;
+}
+
+struct ExportArgs {
+  std::string snapshot, out;
+  bool binary = false;
+};
+
+int exportCommand(const ExportArgs& a) {
+  using namespace tessella;
+  io::checkOutputFile(a.out, "--out");
+  const Tissue tissue = io::readTissueVtu(a.snapshot);
+  const io::CellComplexPlyInfo info = io::writeCellComplexPly(tissue, a.out, io::CellComplexPlyOptions{a.binary});
+  fmt::print("file         {}\ntissue       {}D, {}, {} cells\n", a.snapshot, tissue.dim(),
+             embeddingName(tissue.embedding()), tissue.numCells());
+  fmt::print("wrote        {} (cell-complex PLY, {}: {} vertices, {} edges, {} faces, {} volumes; volume labels "
+             "from {})\n",
+             a.out, a.binary ? "binary" : "ASCII", info.vertices, info.edges, info.faces, info.volumes,
+             info.label_source);
   return 0;
 }
 
@@ -336,6 +357,13 @@ int main(int argc, char** argv) {
                      "Simplify wall polylines between junctions to this tolerance (0 = keep every vertex)");
   import->add_flag("--repair", import_args.repair, "Repair harmless defects (a one-triangle sliver), each reported");
 
+  auto* export_ = app.add_subcommand(
+      "export", "Write a tissue snapshot (.vtu) as a cell-complex PLY file (OpenAlea property topomesh)");
+  ExportArgs export_args;
+  export_->add_option("snapshot", export_args.snapshot, "Tissue snapshot (.vtu) to convert")->required();
+  export_->add_option("--out,-o", export_args.out, "Cell-complex PLY file to write (see docs/import.md)")->required();
+  export_->add_flag("--binary", export_args.binary, "binary_little_endian instead of ASCII");
+
   auto* render = app.add_subcommand(
       "render", "Draw the snapshots of a run as PNG frames coloured by a cell property (and a movie with ffmpeg)");
   RenderArgs render_args;
@@ -384,6 +412,7 @@ int main(int argc, char** argv) {
     if (info->parsed()) return infoCommand(vtu_path);
     if (mesh->parsed()) return meshCommand(mesh_args);
     if (import->parsed()) return importCommand(import_args);
+    if (export_->parsed()) return exportCommand(export_args);
     if (render->parsed()) return renderCommand(render_args);
     if (sweep->parsed()) return sweepCommand(sweep_args);
     if (report->parsed()) return reportCommand(report_dir, report_property);

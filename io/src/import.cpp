@@ -18,6 +18,18 @@ const std::vector<ImportFormat>& importFormats() {
        "MorphoGraphX PLY cell mesh: triangles with a per-face cell `label` (a curved 2.5D sheet)",
        &importMorphoGraphX,
        &isMorphoGraphXMesh},
+      {"cell_complex",
+       {".ply"},
+       "cell-complex PLY (OpenAlea property topomesh): vertex, face, edge and volume elements; closed volumes give a "
+       "3D tissue, open patches of one surface a curved sheet",
+       &importCellComplex,
+       &isCellComplexPly},
+      {"labelled_vtu",
+       {".vtu"},
+       "VTK mesh with a per-element cell label (label, cell_label or cell_id): tetrahedra give a 3D tissue "
+       "(walls: the triangles between labels), triangles a curved sheet",
+       &importLabelledVtu,
+       &isLabelledVtu},
   };
   return formats;
 }

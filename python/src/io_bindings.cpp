@@ -1,5 +1,6 @@
 // Output from Python: single VTK snapshots and ParaView series.
 #include "bindings.hpp"
+#include "tessella/io/cell_complex_ply.hpp"
 #include "tessella/io/import.hpp"
 #include "tessella/io/series.hpp"
 #include "tessella/io/vtu.hpp"
@@ -34,6 +35,7 @@ void bindIo(py::module_& m) {
           report["format"] = r.report.format;
           report["file_vertices"] = r.report.file_vertices;
           report["file_faces"] = r.report.file_faces;
+          report["file_faces_noun"] = r.report.file_faces_noun;
           report["simplified_vertices"] = r.report.simplified_vertices;
           report["repairs"] = r.report.repairs;
           report["notes"] = r.report.notes;
@@ -42,8 +44,8 @@ void bindIo(py::module_& m) {
         py::arg("path"), py::arg("format") = "auto", py::arg("scale") = 1.0, py::arg("simplify") = 0.0,
         py::arg("repair") = false, R"doc(
 Imports a segmented tissue (docs/import.md) and returns (tissue, report): the
-report is a dict with path, format, file_vertices, file_faces,
-simplified_vertices, repairs (one line per repair) and notes.
+report is a dict with path, format, file_vertices, file_faces (file_faces_noun:
+what they count), simplified_vertices, repairs (one line per repair) and notes.
 )doc");
   m.def("import_tissue",
         [](const std::string& path, const std::string& format, double scale, double simplify, bool repair) {
@@ -59,6 +61,24 @@ junctions; repair fixes harmless defects (see import_tissue_with_report).
 Raises InputError naming the file, element and cell label on bad input.
 )doc");
   m.def("import_formats", &io::importFormatNames, "The names import_tissue accepts as format (auto first).");
+  m.def("export_cell_complex",
+        [](const Tissue& t, const std::string& path, bool binary) {
+          const io::CellComplexPlyInfo info = io::writeCellComplexPly(t, path, io::CellComplexPlyOptions{binary});
+          py::dict out;
+          out["vertices"] = info.vertices;
+          out["edges"] = info.edges;
+          out["faces"] = info.faces;
+          out["volumes"] = info.volumes;
+          out["label_source"] = info.label_source;
+          return out;
+        },
+        py::arg("tissue"), py::arg("path"), py::arg("binary") = false, R"doc(
+Writes the tissue as a cell-complex PLY file (OpenAlea property topomesh
+layout; import_tissue reads it back, docs/import.md): a 3D tissue as closed
+volumes sharing their walls, a 2D tissue as one single-polygon volume per cell.
+Volume labels are the int64 cell property "label" when every cell has its
+own, else the lineage ids. Returns the counts written and label_source.
+)doc");
 
   py::class_<io::SeriesWriter>(m, "SeriesWriter", R"doc(
 A ParaView time series: DIRECTORY/NAME.pvd listing NAME_000000.vtu, ... with

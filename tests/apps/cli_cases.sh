@@ -397,6 +397,54 @@ case "$case_name" in
     awk -v a="$a1" -v b="$a2" 'BEGIN { r = b / (4 * a); exit !(r > 0.98 && r < 1.02) }' \
       || fail "scale 2 did not multiply the area by about 4 ($a1 -> $a2)"
     ;;
+  export_cell_complex)
+    # A 3D snapshot out as cell-complex PLY and back in: the same cells and total volume.
+    "$tessella" run "$src/configs/voronoi_box_3d.yaml" --out "$tmp/box" -q --set time.end=0 \
+      --set tissue.voronoi.count=30 || fail "run failed"
+    "$tessella" export "$tmp/box/tissue_000000.vtu" --out "$tmp/box.ply" --binary >"$tmp/stdout" 2>"$tmp/stderr" \
+      || fail "export failed: $(cat "$tmp/stderr")"
+    cat "$tmp/stdout"
+    grep -Eq '^wrote +.*box.ply \(cell-complex PLY, binary: [0-9]+ vertices, [0-9]+ edges, [0-9]+ faces, 30 volumes; ' \
+      "$tmp/stdout" || fail "no export summary"
+    "$tessella" import "$tmp/box.ply" --out "$tmp/back.vtu" >"$tmp/import" 2>"$tmp/stderr" \
+      || fail "import failed: $(cat "$tmp/stderr")"
+    cat "$tmp/import"
+    grep -Eq '^format +cell_complex ' "$tmp/import" || fail "not read as cell_complex"
+    grep -Eq '^note +layout: closed volumes, a 3D tissue' "$tmp/import" || fail "the summary does not say 3D"
+    grep -Eq '^cells +30$' "$tmp/import" || fail "expected 30 cells"
+    "$tessella" info "$tmp/box/tissue_000000.vtu" >"$tmp/info"
+    [ "$(sed -n 's/^total volume *//p' "$tmp/info")" = "$(sed -n 's/^total volume *//p' "$tmp/import")" ] \
+      || fail "the total volume changed"
+    # A cell that is not closed: an error naming the volume, nothing written.
+    "$tessella" export "$tmp/box/tissue_000000.vtu" --out "$tmp/ascii.ply" >/dev/null || fail "ASCII export failed"
+    # Drop the first face of the last volume (its list length goes down by one).
+    awk '{ lines[NR] = $0 } END { n = split(lines[NR], f, " "); out = f[1] - 1;
+         for (i = 3; i <= n; ++i) out = out " " f[i]; lines[NR] = out;
+         for (i = 1; i <= NR; ++i) print lines[i] }' "$tmp/ascii.ply" >"$tmp/open.ply"
+    "$tessella" import "$tmp/open.ply" --out "$tmp/open.vtu" 2>"$tmp/stderr"
+    [ $? -eq 1 ] || fail "an open cell was not an error"
+    grep -Eq "open.ply' volume 29 \(label [0-9]+\): an open patch, but volume 0 \(label [0-9]+\) is a closed surface" \
+      "$tmp/stderr" || fail "unclear error: $(cat "$tmp/stderr")"
+    [ ! -e "$tmp/open.vtu" ] || fail "an output file was left"
+    ;;
+  import_labelled_mesh)
+    # tessella mesh's tetrahedra (cell_id per element) back into a 3D tissue: same cells, same volumes.
+    "$tessella" run "$src/configs/voronoi_box_3d.yaml" --out "$tmp/box" -q --set time.end=0 \
+      --set tissue.voronoi.count=12 || fail "run failed"
+    "$tessella" mesh "$tmp/box/tissue_000000.vtu" --out "$tmp/mesh.vtu" >/dev/null || fail "mesh failed"
+    "$tessella" import "$tmp/mesh.vtu" --out "$tmp/back.vtu" >"$tmp/import" 2>"$tmp/stderr" \
+      || fail "import failed: $(cat "$tmp/stderr")"
+    cat "$tmp/import"
+    grep -Eq '^format +labelled_vtu \([0-9]+ vertices, [0-9]+ tetrahedra in the file\)$' "$tmp/import" \
+      || fail "no format line"
+    grep -Eq '^note +layout: closed cells, a 3D tissue' "$tmp/import" || fail "the summary does not say 3D"
+    grep -Eq '^cells +12$' "$tmp/import" || fail "expected 12 cells"
+    grep -Eq '^validate +ok$' "$tmp/import" || fail "expected validate ok"
+    "$tessella" info "$tmp/box/tissue_000000.vtu" >"$tmp/info"
+    for key in 'total volume' 'cell volume'; do
+      [ "$(grep "^$key" "$tmp/info")" = "$(grep "^$key" "$tmp/import")" ] || fail "$key changed"
+    done
+    ;;
   render_run)
     "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/hex" -q || fail "run failed"
     "$tessella" render "$tmp/hex" --property size --size 320x240 --no-movie >"$tmp/stdout" 2>"$tmp/stderr" \

@@ -96,7 +96,7 @@ std::string formatTissueSummary(const TissueSummary& s, double time) {
 std::string formatImportSummary(const io::ImportReport& r, const TissueSummary& s, double time) {
   std::string out = "file         " + r.path + "\n";
   out += "format       " + r.format + " (" + std::to_string(r.file_vertices) + " vertices, " +
-         std::to_string(r.file_faces) + " faces in the file)\n";
+         std::to_string(r.file_faces) + " " + r.file_faces_noun + " in the file)\n";
   if (r.simplified_vertices > 0)
     out += "simplify     " + std::to_string(r.simplified_vertices) + " wall vertices removed\n";
   out += "repairs      " + std::to_string(r.repairs.size()) + "\n";

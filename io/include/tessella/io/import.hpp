@@ -36,6 +36,8 @@ struct ImportReport {
   std::string format;  ///< the importFormats() row used
   /// Counts in the file.
   std::size_t file_vertices = 0, file_faces = 0;
+  /// What file_faces counts: "faces", or "elements" for a VTK mesh.
+  std::string file_faces_noun = "faces";
   /// Vertices removed by `simplify` (0 without).
   std::size_t simplified_vertices = 0;
   /// One line per repair made (empty without `repair`).
@@ -87,6 +89,39 @@ ImportResult importMorphoGraphX(const std::string& path, const ImportOptions& op
 /// Whether a PLY file has the MorphoGraphX cell-mesh layout (vertex `label`
 /// and face `label` properties).
 bool isMorphoGraphXMesh(const std::string& path);
+
+// --- cell-complex PLY ----------------------------------------------------------
+
+/// A cell-complex PLY file, the "property topomesh" layout of the OpenAlea
+/// cellcomplex tools: element `vertex` (x y z), `face` (a vertex loop,
+/// `vertex_index` or `vertex_indices`, or an edge list `edge_index`),
+/// optional `edge` (source target), `volume` (`face_index`: its faces,
+/// 0-based, or signed 1-based +-(face + 1) as OpenAlea's oriented writer puts
+/// them; optional `label`, else the volume index). When every volume is a
+/// closed surface: a 3D tissue whose walls are the file's faces (each shared
+/// by the one or two volumes listing it), oriented so that every cell is
+/// closed and outward. When every volume is an open patch (a disk) of one
+/// surface: a curved-sheet tissue of the patches' outlines, as for
+/// MorphoGraphX. Cell property `label` (int64). The report's notes say which.
+ImportResult importCellComplex(const std::string& path, const ImportOptions& options = {});
+/// Whether a PLY file has the cell-complex layout (vertex, face and volume
+/// elements, volume `face_index`).
+bool isCellComplexPly(const std::string& path);
+
+// --- labelled VTK meshes ----------------------------------------------------------
+
+/// A VTK unstructured grid (.vtu) whose elements carry an integer cell-data
+/// array naming the cell they lie in (`label`, `cell_label` or `cell_id`,
+/// the first present; `tessella mesh` writes `cell_id`). Tetrahedra: a 3D
+/// tissue whose walls are the triangles between elements of different
+/// labels and on the mesh's boundary, each triangle one wall (the closed-cell
+/// core of importCellComplex). Triangles or polygons: a curved-sheet tissue
+/// of each label's outline (the core of importMorphoGraphX). Cell property
+/// `label` (int64).
+ImportResult importLabelledVtu(const std::string& path, const ImportOptions& options = {});
+/// Whether a .vtu file declares a cell-data array named label, cell_label or
+/// cell_id and is not a Tessella snapshot (reads the XML header only).
+bool isLabelledVtu(const std::string& path);
 
 /// A MorphoGraphX cell graph (cellGraph_*.ply): one vertex per cell with its
 /// label and `Geometry/Area`, one edge per neighbour pair listing the two
