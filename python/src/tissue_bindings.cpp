@@ -3,9 +3,11 @@
 // slots of removed elements are tombstones until compact() (generators and
 // divisions make none, so slot == live element for most models).
 #include <algorithm>
+#include <optional>
 
 #include "bindings.hpp"
 #include "deferred_error.hpp"
+#include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/validate.hpp"
@@ -43,6 +45,43 @@ WallId checkedWall(const Tissue& t, long long index) {
   return WallId(static_cast<Index>(index));
 }
 
+/// A Python index list as Index values; a negative or huge one is named like an out-of-range one.
+std::vector<Index> indexListFrom(const std::vector<long long>& list, const std::string& what, std::size_t bound,
+                                 const char* item, const char* items) {
+  std::vector<Index> out(list.size());
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    if (list[i] < 0 || static_cast<unsigned long long>(list[i]) >= bound)
+      throw InputError(what + ": " + item + " index " + std::to_string(list[i]) + " is out of range (there are " +
+                       std::to_string(bound) + " " + items + ")");
+    out[i] = static_cast<Index>(list[i]);
+  }
+  return out;
+}
+
+/// Tissue.from_polyhedra: checked (and oriented) in the caller's numbering, then built.
+Tissue polyhedraFromArrays(const py::handle& positions_in, const std::vector<std::vector<long long>>& faces_in,
+                           const std::vector<std::vector<long long>>& cells_in,
+                           const std::optional<std::vector<std::vector<bool>>>& reversed) {
+  const std::vector<Vec3> positions = vec3FromArray(positions_in, "from_polyhedra: positions");
+  std::vector<std::vector<Index>> faces(faces_in.size());
+  for (std::size_t f = 0; f < faces.size(); ++f)
+    faces[f] = indexListFrom(faces_in[f], "face " + std::to_string(f), positions.size(), "vertex", "vertices");
+  std::vector<std::vector<CellFace>> cells(cells_in.size());
+  if (reversed && reversed->size() != cells_in.size())
+    throw InputError("from_polyhedra: reversed has " + std::to_string(reversed->size()) + " lists for " +
+                     std::to_string(cells_in.size()) + " cells");
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    const std::vector<Index> list = indexListFrom(cells_in[k], "cell " + std::to_string(k), faces.size(), "face", "faces");
+    if (reversed && (*reversed)[k].size() != list.size())
+      throw InputError("from_polyhedra: reversed[" + std::to_string(k) + "] has " +
+                       std::to_string((*reversed)[k].size()) + " flags for the " + std::to_string(list.size()) +
+                       " faces of cell " + std::to_string(k));
+    for (std::size_t i = 0; i < list.size(); ++i) cells[k].push_back({list[i], reversed && (*reversed)[k][i]});
+  }
+  checkPolyhedra(positions, faces, cells, reversed ? FaceOrientation::Given : FaceOrientation::Outward);
+  return buildPolyhedralTissue(positions, faces, cells);
+}
+
 /// Per-cell-slot measures and centroids in one parallel sweep (dead slots hold zeros).
 GeometryCache geometryOf(const Tissue& t) {
   GeometryCache cache;
@@ -73,7 +112,27 @@ fetch a new view after every edit. Growth (moving vertices) keeps views valid.
             return Tissue(dim, parseEmbedding(embedding));
           }),
           py::arg("dim") = 2, py::arg("embedding") = "planar",
-          "An empty tissue; build it with add_vertex and add_polygon.")
+          "An empty tissue; build a 2D one with add_vertex and add_polygon (a 3D one: Tissue.from_polyhedra).")
+      .def_static("from_polyhedra", &polyhedraFromArrays, py::arg("positions"), py::arg("faces"), py::arg("cells"),
+                  py::arg("reversed") = py::none(), R"doc(
+A 3D tissue (embedding "volume") from arrays.
+
+positions: (n, 3) vertex positions. faces: the walls, each a loop of vertex
+indices; a wall between two cells is one face listed by both. cells: each a
+list of face indices. reversed (optional): per cell, one flag per listed face,
+True when that face's loop normal (right-hand rule) points into the cell;
+without it the faces of every cell are oriented automatically, consistently
+across their shared edges and pointing out of the cell.
+
+InputError naming the cell, face, edge (by its two vertex indices) or vertex
+for: an index out of range, a face with fewer than 3 vertices or a repeated
+vertex, two faces with the same vertices, a face listed by more than two
+cells or twice by one, a cell with fewer than 4 faces, an open cell (an edge
+in one of its faces only), an edge in three or more of its faces, a cell in
+separate pieces, a surface that cannot be (or, with reversed, is not)
+consistently oriented, a cell whose given faces point inward, a cell that
+encloses no volume.
+)doc")
       .def("copy", [](const Tissue& t) { return Tissue(t); }, "A deep copy.")
       .def("__copy__", [](const Tissue& t) { return Tissue(t); })
       .def("__deepcopy__", [](const Tissue& t, py::dict) { return Tissue(t); }, py::arg("memo"))
@@ -179,11 +238,18 @@ geometry_version: call mark_geometry_changed() after editing through an old view
       .def("add_vertex", [](Tissue& t, const Vec3& p) { return t.addVertex(p).index(); }, py::arg("position"))
       .def("add_polygon",
            [](Tissue& t, const std::vector<long long>& loop) {
+             // A face of a 3D tissue bounds no cell until a volume lists it, and Python cannot add volumes.
+             if (t.dim() == 3)
+               throw InputError("add_polygon builds the cells of a 2D tissue; a 3D tissue's faces are walls of "
+                                "its polyhedral cells: build it whole with Tissue.from_polyhedra(positions, faces, "
+                                "cells)");
              std::vector<VertexId> ids;
              for (long long v : loop) ids.push_back(checkedVertex(t, v));
              return t.addPolygon(std::span<const VertexId>(ids)).index();
            },
-           py::arg("loop"), "A face from a vertex loop (a cell in 2D), counter-clockwise seen from +z.")
+           py::arg("loop"),
+           "A cell of a 2D tissue from a vertex loop, counter-clockwise seen from +z. InputError for a 3D tissue "
+           "(use Tissue.from_polyhedra).")
       .def("split_cell",
            [](Tissue& t, long long c, const Vec3& point, const Vec3& normal, double snap, double min_fraction) {
              const CellSplit s = t.splitCell(checkedCell(t, c), Plane{point, normal},

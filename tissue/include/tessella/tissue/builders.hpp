@@ -45,4 +45,21 @@ Tissue buildPolyhedralTissue(std::vector<Vec3> positions, std::span<const Index>
                              std::span<const Index> face_vertices, std::span<const Index> cell_offsets,
                              std::span<const CellFace> cell_faces);
 
+/// How checkPolyhedra treats the `reversed` flags of the cells' faces.
+enum class FaceOrientation {
+  Given,    ///< as the caller set them: checked, never changed
+  Outward,  ///< set here: each cell's faces consistently oriented, normals pointing out of it
+};
+
+/// Checks the arrays of buildPolyhedralTissue before building, with messages in the caller's numbering (cell k,
+/// face f, edge u-v by its vertex indices), and with FaceOrientation::Outward first sets every `reversed` flag.
+/// InputError for: a face with fewer than 3 vertices, a vertex index out of range or repeated in a face, two faces
+/// with the same vertices (a wall shared by two cells is one face listed by both), a face listed by more than two
+/// cells; a cell with fewer than 4 faces, a face index out of range or listed twice, an open cell (an edge in only
+/// one of its faces), an edge in more than two of its faces, faces in several separate pieces, a surface that
+/// cannot be oriented consistently (Given: that is not), and (Given) faces pointing into the cell or (either) a
+/// cell that encloses no volume.
+void checkPolyhedra(std::span<const Vec3> positions, const std::vector<std::vector<Index>>& faces,
+                    std::vector<std::vector<CellFace>>& cells, FaceOrientation orientation);
+
 }  // namespace tessella
