@@ -213,3 +213,26 @@ TEST_CASE("a damaged random stream in a snapshot's run state is a located error"
     CHECK(what.find("rng.stream = 'not a state'") != std::string::npos);
   }
 }
+
+TEST_CASE("a restart between two solves keeps the solver's schedule", "[sim][restart]") {
+  // compartment_polar_2d solving every 5 steps; restarted after step 7, the
+  // next solve must still end step 10 and cover the time since step 5, as
+  // in the uninterrupted run (its state, the cell amounts, is in the snapshot).
+  ScratchDir dir;
+  const std::string path = sourcePath("configs/compartment_polar_2d.yaml");
+  const std::string every = "compartments.every=5";
+  Simulation whole = Simulation::fromFile(path, {every});
+  REQUIRE(whole.numSteps() > 12);
+  Simulation first = Simulation::fromFile(path, {every});
+  while (first.stepsDone() < 7) first.step();
+  const std::string snapshot = dir / "step7.vtu";
+  io::writeTissueVtu(first.tissue(), snapshot, {}, first.runState());
+  char start[64];
+  std::snprintf(start, sizeof start, "time.start=%.17g", first.time());
+  Simulation rest =
+      Simulation::fromFile(path, {every, "tissue.generator=snapshot", "tissue.snapshot.file=" + snapshot, start});
+  CHECK(rest.clockStep() == 7);
+  rest.run();
+  whole.run();
+  requireSameTissue(whole.tissue(), rest.tissue());
+}
