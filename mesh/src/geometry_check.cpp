@@ -291,7 +291,7 @@ MeshabilityReport checkVolumeGeometry(const Tissue& t, const MeshOptions& option
         surface += 0.5 * (b - a).cross(d - a).norm();
       }
     if (volume < 0.0)
-      return defect("cell " + std::to_string(c.index()) + " is inverted: its volume is negative (" +
+      return defect("cell " + std::to_string(c.index()) + " is inverted: its volume is negative (signed volume " +
                         num(volume) + ")",
                     ElementId{3, c.index()});
     // Mean thickness 2 * volume / surface, as for polygons: a flat cell fails, a small one passes.

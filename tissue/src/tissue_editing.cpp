@@ -11,6 +11,7 @@
 
 #include "polygon_kernels.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/tissue.hpp"
 
@@ -233,7 +234,7 @@ CellSplit Tissue::splitCell2D(CellId c, const Plane& plane, const SplitOptions& 
   for (OrientedEdge oe : complex_.faceEdges(f)) edges.push_back(oe.handle());
   const int n = static_cast<int>(verts.size());
   const PolygonMeasures m = polygonMeasures(*this, f);
-  if (!(m.area > 0)) throw GeometryError(who + " has non-positive area " + std::to_string(m.area), {2, f.index()});
+  if (!(m.area > 0)) throw GeometryError(who + " has non-positive area " + formatNumber(m.area), {2, f.index()});
   const Vec3 normal = plane.normal.normalized();
   const Vec3 u = normal.cross(m.normal);
   if (u.norm() < 1e-9) throw GeometryError("division plane is parallel to " + who, {2, f.index()});
@@ -315,8 +316,8 @@ CellSplit Tissue::splitCell2D(CellId c, const Plane& plane, const SplitOptions& 
   const double total = lab.area + lba.area;
   if (std::min(lab.area, lba.area) < options.min_fraction * total)
     throw GeometryError("division of " + who + " would leave a sliver of " +
-                            std::to_string(std::min(lab.area, lba.area) / total) + " of its area (minimum " +
-                            std::to_string(options.min_fraction) + ")",
+                            formatNumber(std::min(lab.area, lba.area) / total, 6) + " of its area (minimum " +
+                            formatNumber(options.min_fraction) + ")",
                         {2, f.index()});
 
   CellSplit result;
@@ -346,7 +347,7 @@ CellSplit Tissue::splitCell3D(CellId c, const Plane& plane, const SplitOptions& 
   const VolumeId vol(c.index());
   const std::string who = "cell " + std::to_string(c.index()) + " (lineage " + std::to_string(lineageId(c)) + ")";
   const double volume = cellMeasure(*this, c);
-  if (!(volume > 0)) throw GeometryError(who + " has non-positive volume " + std::to_string(volume), {3, c.index()});
+  if (!(volume > 0)) throw GeometryError(who + " has non-positive volume " + formatNumber(volume), {3, c.index()});
   const Vec3 normal = plane.normal.normalized();
   const double tol = options.snap_tolerance * std::cbrt(volume);
 
@@ -360,8 +361,16 @@ CellSplit Tissue::splitCell3D(CellId c, const Plane& plane, const SplitOptions& 
     any_pos |= dv > 0;
     any_neg |= dv < 0;
   }
-  if (!any_pos || !any_neg)
+  if (!any_pos || !any_neg) {
+    // A wall in the plane (the plane of a face of the cell): said as in 2D.
+    for (OrientedFace of : complex_.volumeFaces(vol)) {
+      const auto loop = complex_.faceVertices(of.handle());
+      if (std::all_of(loop.begin(), loop.end(), [&](VertexId v) { return dist.at(v.index()) == 0; }))
+        throw GeometryError("division plane runs along wall " + std::to_string(of.handle().index()) + " of " + who,
+                            {2, of.handle().index()});
+    }
     throw GeometryError("division plane through " + fmt(plane.point) + " misses " + who, {3, c.index()});
+  }
   auto D = [&](VertexId v) { return dist.at(v.index()); };
 
   // Nodes of the cut polygon: vertices on the plane (key v) and crossed edges (key -(e+1)).
@@ -399,7 +408,7 @@ CellSplit Tissue::splitCell3D(CellId c, const Plane& plane, const SplitOptions& 
       segments.emplace_back(nodes[0], nodes[1]);
       face_cuts.emplace_back(f, nodes[0], nodes[1]);
     } else if (!pos && !neg) {
-      throw GeometryError("division plane contains wall " + std::to_string(f.index()) + " of " + who,
+      throw GeometryError("division plane runs along wall " + std::to_string(f.index()) + " of " + who,
                           {2, f.index()});
     } else {
       face_side[f.index()] = pos ? 1 : -1;
@@ -471,8 +480,8 @@ CellSplit Tissue::splitCell3D(CellId c, const Plane& plane, const SplitOptions& 
     }
     const double positive = v6 / 6.0, smaller = std::min(positive, volume - positive);
     if (smaller < options.min_fraction * volume)
-      throw GeometryError("division of " + who + " would leave a sliver of " + std::to_string(smaller / volume) +
-                              " of its volume (minimum " + std::to_string(options.min_fraction) + ")",
+      throw GeometryError("division of " + who + " would leave a sliver of " + formatNumber(smaller / volume, 6) +
+                              " of its volume (minimum " + formatNumber(options.min_fraction) + ")",
                           {3, c.index()});
   }
 
