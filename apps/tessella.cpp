@@ -2,6 +2,7 @@
 // arguments, prints, and turns errors into messages and exit codes.
 //
 //   tessella run CONFIG.yaml [--out DIR] [--set key.path=value ...] [--overwrite] [--quiet]
+//   tessella run --resume RUN_DIR [--quiet]
 //   tessella info FILE.vtu
 //   tessella mesh SNAPSHOT.vtu --out MESH.vtu [--walls WALLS.vtu] [--size H] [--min-angle A] [--max-volume V]
 //                 [--volume-method cell_by_cell|whole_tissue] [--max-elements N] [--config CFG.yaml]
@@ -107,18 +108,29 @@ int reportInterrupted(const tessella::sim::PreparedRun& run) {
   return 128 + signal;
 }
 
-int runCommand(const std::string& config_path, const std::optional<std::string>& out,
-               const std::vector<std::string>& sets,
-               bool overwrite, bool quiet) {
+tessella::sim::PreparedRun prepareRun(const std::string& config_path, const std::optional<std::string>& out,
+                                      const std::vector<std::string>& sets, bool overwrite, bool quiet) {
   using namespace tessella::sim;
-  const auto t0 = Clock::now();
-  installStopHandlers();
   SimulationConfig config = loadSimulationConfigFile(config_path, sets);
   if (!quiet)
     for (const std::string& note : config.config.notes()) fmt::print(stderr, "note: {}\n", note);
   if (!quiet) fmt::print(stderr, "building the tissue ({})...\n", config.config.getString("tissue.generator"));
-  PreparedRun run = PreparedRun::prepare(std::move(config), RunOptions{out, overwrite});
+  return PreparedRun::prepare(std::move(config), RunOptions{out, overwrite});
+}
+
+// `resume` (RUN_DIR) continues an interrupted run in place instead of
+// starting the config's.
+int runCommand(const std::string& config_path, const std::string& resume, const std::optional<std::string>& out,
+               const std::vector<std::string>& sets, bool overwrite, bool quiet) {
+  using namespace tessella::sim;
+  const auto t0 = Clock::now();
+  installStopHandlers();
+  if (resume.empty() == config_path.empty())
+    throw tessella::InputError("tessella run takes a CONFIG.yaml or --resume RUN_DIR (one of the two)");
+  PreparedRun run = resume.empty() ? prepareRun(config_path, out, sets, overwrite, quiet) : PreparedRun::resume(resume);
   Simulation& sim = run.simulation();
+  if (!quiet && !resume.empty())
+    fmt::print(stderr, "resuming from {} (step {}, t = {})\n", run.resumedFrom(), sim.clockStep(), sim.time());
   sim.setStopFlag(&g_stop);
   if (!quiet) {
     fmt::print(stderr, "tissue: {} cells ({}D, {}) in {}\n", sim.tissue().numCells(), sim.tissue().dim(),
@@ -318,12 +330,23 @@ int main(int argc, char** argv) {
   std::optional<std::string> out;  // given but empty (--out '') is refused, not the default
   std::vector<std::string> sets;
   bool quiet = false, overwrite = false;
-  run->add_option("config", config_path, "YAML configuration (see docs/config.md)")->required();
-  run->add_option("--out,-o", out, "Output directory (default: output.directory, else runs/<config name>)");
-  run->add_option("--set,-s", sets, "Override a key: --set tissue.voronoi.count=50 (value parsed as YAML)")
-      ->take_all()
-      ->allow_extra_args(false);
-  run->add_flag("--overwrite", overwrite, "Replace a run already in the output directory");
+  std::string resume_dir;
+  auto* config_option = run->add_option("config", config_path, "YAML configuration (see docs/config.md)");
+  auto* resume_option = run->add_option(
+      "--resume", resume_dir,
+      "Continue the interrupted run in RUN_DIR in place, from its last complete snapshot (instead of a config)");
+  auto* out_option =
+      run->add_option("--out,-o", out, "Output directory (default: output.directory, else runs/<config name>)");
+  auto* set_option =
+      run->add_option("--set,-s", sets, "Override a key: --set tissue.voronoi.count=50 (value parsed as YAML)")
+          ->take_all()
+          ->allow_extra_args(false);
+  auto* overwrite_option = run->add_flag("--overwrite", overwrite, "Replace a run already in the output directory");
+  resume_option->excludes(config_option)->excludes(out_option)->excludes(set_option)->excludes(overwrite_option);
+  run->callback([&] {
+    if (config_path.empty() && resume_dir.empty())
+      throw CLI::RequiredError("config (or --resume RUN_DIR)");
+  });
   run->add_flag("--quiet,-q", quiet, "Print nothing but errors");
 
   auto* info = app.add_subcommand("info", "Summarise a tissue snapshot (.vtu): counts, sizes, validity");
@@ -408,7 +431,7 @@ int main(int argc, char** argv) {
 
   CLI11_PARSE(app, argc, argv);
   try {
-    if (run->parsed()) return runCommand(config_path, out, sets, overwrite, quiet);
+    if (run->parsed()) return runCommand(config_path, resume_dir, out, sets, overwrite, quiet);
     if (info->parsed()) return infoCommand(vtu_path);
     if (mesh->parsed()) return meshCommand(mesh_args);
     if (import->parsed()) return importCommand(import_args);

@@ -206,11 +206,18 @@ void GrowthIntegrator::checkCells(Tissue& t, const GeometryCache& geometry, doub
   std::string msg = "growth step from t = " + number(t0) + " to t = " + number(t1) + " (dt = " + number(t1 - t0) +
                     ") inverted or collapsed cell " + std::to_string(bad) + " (lineage id " +
                     std::to_string(t.lineageId(cell)) + "): ";
+  // One convention in both dimensions (docs/ARCHITECTURE.md): the signed
+  // measure, negative for an inverted cell. A polygon's area is signed
+  // against the reference normal (+z, or the cell's normal before the step).
   if (dim == 3) {
     msg += "signed volume " + number(geometry.volume[bad]);
   } else {
-    msg += "area " + number(geometry.face_area[bad]) + ", normal " + vec(geometry.face_normal[bad]) +
-           (emb == Embedding::Planar ? " instead of +z" : " turned against its previous normal");
+    const Vec3 ref = emb == Embedding::Planar ? Vec3::UnitZ() : normal_before_[bad];
+    const bool turned = !(geometry.face_normal[bad].dot(ref) > 0);
+    msg += "signed area " + number(turned ? -geometry.face_area[bad] : geometry.face_area[bad]);
+    if (turned)
+      msg += " (normal " + vec(geometry.face_normal[bad]) +
+             (emb == Embedding::Planar ? " instead of +z)" : " turned against its previous normal)");
   }
   msg += "; positions restored, try a smaller dt";  // by step()
   throw GeometryError(msg, ElementId{dim, static_cast<Index>(bad)});

@@ -38,4 +38,11 @@ std::string MeshSeriesWriter::write(const mesh::FeMesh& mesh, double time, const
   return (dir / file).string();
 }
 
+void MeshSeriesWriter::continueAfter(double last_time) {
+  detail::truncateSeries(walls_pvd_path_, name_ + "_walls", last_time, options_.durable);
+  times_.clear();
+  for (const PvdEntry& e : detail::truncateSeries(pvd_path_, name_, last_time, options_.durable))
+    times_.push_back(e.time);
+}
+
 }  // namespace tessella::io

@@ -32,6 +32,12 @@ std::string SeriesWriter::write(const Tissue& tissue, double time, const RunStat
   return path;
 }
 
+void SeriesWriter::continueAfter(double last_time) {
+  entries_.clear();
+  for (PvdEntry& e : detail::truncateSeries(pvd_path_, name_, last_time, options_.durable))
+    entries_.push_back({e.time, std::move(e.file)});
+}
+
 void SeriesWriter::writePvd() const {
   std::vector<PvdEntry> list;
   list.reserve(entries_.size());

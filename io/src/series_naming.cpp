@@ -37,4 +37,35 @@ void checkNextTime(const std::string& pvd_path, const double* previous, double t
                      formatNumber(*previous) + " (ParaView would merge the two steps)");
 }
 
+std::vector<PvdEntry> truncateSeries(const std::string& pvd_path, const std::string& name, double last_time,
+                                     bool durable) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::path(pvd_path).parent_path();
+  std::error_code ec;
+  auto removeFile = [&](const fs::path& file) {
+    fs::remove(file, ec);
+    if (ec) throw InputError("cannot remove '" + file.string() + "': " + ec.message());
+  };
+  // Temporaries of this series (<name>_NNNNNN.vtu.tmp-PID-N, <name>.pvd.tmp-PID-N).
+  const std::string step_prefix = name + "_", pvd_prefix = name + ".pvd.tmp-";
+  for (const auto& entry : fs::directory_iterator(dir.empty() ? fs::path(".") : dir, ec)) {
+    const std::string file = entry.path().filename().string();
+    const bool temporary = file.find(".vtu.tmp-") != std::string::npos || file.rfind(pvd_prefix, 0) == 0;
+    if (temporary && (file.rfind(step_prefix, 0) == 0 || file.rfind(pvd_prefix, 0) == 0)) removeFile(entry.path());
+  }
+  if (!fs::exists(pvd_path, ec)) return {};
+  std::vector<PvdEntry> kept;
+  bool dropped = false;
+  for (PvdEntry& entry : readPvdFile(pvd_path)) {
+    if (entry.time <= last_time) {
+      kept.push_back(std::move(entry));
+    } else {
+      removeFile(dir / entry.file);
+      dropped = true;
+    }
+  }
+  if (dropped) writePvdFile(pvd_path, kept, durable);
+  return kept;
+}
+
 }  // namespace tessella::io::detail

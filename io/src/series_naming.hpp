@@ -2,6 +2,9 @@
 // Conventions shared by the tissue and mesh series writers.
 
 #include <string>
+#include <vector>
+
+#include "tessella/io/pvd.hpp"
 
 namespace tessella::io::detail {
 
@@ -14,5 +17,13 @@ std::string stepFileName(const std::string& name, std::size_t step);
 /// Times must be finite and strictly increasing: ParaView would merge two
 /// steps with the same time into one. `previous` is null for the first step.
 void checkNextTime(const std::string& pvd_path, const double* previous, double time);
+
+/// Continues a series on disk at `last_time` (an interrupted run resumed):
+/// the entries of `pvd_path` up to that time stay, the files of later ones
+/// and the temporaries of `<name>_*` an interrupted write left are deleted,
+/// and the .pvd is rewritten. Returns the entries kept (none when there is
+/// no .pvd). InputError naming the file that cannot be read or removed.
+std::vector<PvdEntry> truncateSeries(const std::string& pvd_path, const std::string& name, double last_time,
+                                     bool durable);
 
 }  // namespace tessella::io::detail

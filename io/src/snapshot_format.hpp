@@ -38,6 +38,29 @@ inline constexpr const char* kVertexDefaultPrefix = "tessella_vertex_default:";
 /// The run's state beside the tissue (RunState), as "key=value" strings.
 inline constexpr const char* kRunStateArray = "tessella_run_state";
 
+/// A 3D tissue's CellComplex as a ComplexLayout (wall and edge numbering,
+/// orientations, list orders), so that a restart rebuilds the very complex
+/// the run had: one UInt32 field array per layout list, named
+/// "<prefix><list>". Absent in older files, which read back with walls
+/// matched by vertex set and edges numbered by first use.
+inline constexpr const char* kTopologyPrefix = "tessella_topology:";
+
+/// The layout's lists by name, in one place for the writer and the reader.
+template <typename Layout, typename Visit>
+void forEachLayoutList(Layout& layout, Visit visit) {
+  visit("edge_vertices", layout.edge_vertices);
+  visit("face_edge_offsets", layout.face_edge_offsets);
+  visit("face_edges", layout.face_edges);
+  visit("volume_face_offsets", layout.volume_face_offsets);
+  visit("volume_faces", layout.volume_faces);
+  visit("vertex_edge_offsets", layout.vertex_edge_offsets);
+  visit("vertex_edges", layout.vertex_edges);
+  visit("edge_face_offsets", layout.edge_face_offsets);
+  visit("edge_faces", layout.edge_faces);
+  visit("face_volume_offsets", layout.face_volume_offsets);
+  visit("face_volumes", layout.face_volumes);
+}
+
 /// Derived cell measures, written for ParaView and never read back.
 inline constexpr const char* kAreaArray = "area";
 inline constexpr const char* kVolumeArray = "volume";

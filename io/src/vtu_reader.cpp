@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -19,6 +20,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkStringArray.h>
+#include <vtkType.h>
 #include <vtkUnstructuredGrid.h>
 
 #include "finite_values.hpp"
@@ -240,6 +242,58 @@ void restoreLineage(Tissue& tissue, vtkCellData* data, vtkIdType num_cells, cons
   }
 }
 
+// The complex a 3D snapshot's topology arrays describe, or nothing for a file
+// without them (written before they existed).
+std::optional<CellComplex> storedComplex(vtkFieldData* field, std::size_t num_vertices, const Source& src) {
+  const std::string prefix = detail::kTopologyPrefix;
+  if (!field->GetAbstractArray((prefix + "edge_vertices").c_str())) return std::nullopt;
+  ComplexLayout layout;
+  layout.dim = 3;
+  layout.num_vertices = num_vertices;
+  detail::forEachLayoutList(layout, [&](const char* list, std::vector<Index>& items) {
+    const std::string name = prefix + list;
+    // VTK reads a UInt32 array back as its own unsigned int class.
+    vtkDataArray* array = field->GetArray(name.c_str());
+    if (!array || array->GetDataType() != VTK_UNSIGNED_INT || array->GetDataTypeSize() != 4 ||
+        array->GetNumberOfComponents() != 1)
+      src.fail("field data '" + name + "' is missing or not a one-component UInt32 array");
+    const auto* values = static_cast<const std::uint32_t*>(array->GetVoidPointer(0));
+    items.assign(values, values + array->GetNumberOfValues());
+  });
+  try {
+    return CellComplex::fromLayout(layout);
+  } catch (const TopologyError& e) {
+    src.fail(std::string("the arrays ") + detail::kTopologyPrefix + "* do not form a tissue: " + e.what());
+  }
+}
+
+// The polyhedra of the file must be the stored complex's volumes, face by
+// face and vertex by vertex (outward loops, as the writer lists them).
+void requireSameCells(vtkUnstructuredGrid* grid, const CellComplex& complex, const Source& src) {
+  const vtkIdType n = grid->GetNumberOfCells();
+  if (complex.count(3) != static_cast<std::size_t>(n))
+    src.fail("the topology arrays list " + std::to_string(complex.count(3)) + " cells, the file has " +
+             std::to_string(n));
+  vtkIdTypeArray* stream = grid->GetFaces();
+  vtkIdTypeArray* locations = grid->GetFaceLocations();
+  for (vtkIdType c = 0; c < n; ++c) {  // polyhedraOf checked the stream's bounds
+    vtkIdType k = locations->GetValue(c);
+    const auto faces = complex.volumeFaces(VolumeId(static_cast<Index>(c)));
+    bool same = stream->GetValue(k++) == static_cast<vtkIdType>(faces.size());
+    for (std::size_t f = 0; same && f < faces.size(); ++f) {
+      const auto loop = complex.faceVertices(faces[f].handle());
+      same = stream->GetValue(k++) == static_cast<vtkIdType>(loop.size());
+      for (std::size_t i = 0; same && i < loop.size(); ++i) {
+        const VertexId v = faces[f].reversed() ? loop[loop.size() - 1 - i] : loop[i];
+        same = stream->GetValue(k++) == static_cast<vtkIdType>(v.index());
+      }
+    }
+    if (!same)
+      src.fail("cell " + std::to_string(c) + " has other faces than the topology arrays " +
+               detail::kTopologyPrefix + "* give it");
+  }
+}
+
 RunState runStateOf(vtkFieldData* field, const Source& src) {
   RunState state;
   if (!field->GetAbstractArray(detail::kRunStateArray)) return state;
@@ -290,6 +344,10 @@ Snapshot readSnapshot(const std::string& path) {
       std::vector<std::vector<Index>> faces;
       std::vector<std::vector<CellFace>> cells;
       polyhedraOf(grid, src, faces, cells);
+      if (std::optional<CellComplex> complex = storedComplex(field, positions.size(), src)) {
+        requireSameCells(grid, *complex, src);
+        return Tissue(std::move(*complex), positions, Embedding::Volume);
+      }
       return buildPolyhedralTissue(positions, faces, cells);
     } catch (const InputError& e) {
       if (std::string(e.what()).rfind("'" + path + "'", 0) == 0) throw;

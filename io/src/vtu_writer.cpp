@@ -20,6 +20,7 @@
 #include <vtkSmartPointer.h>
 #include <vtkStringArray.h>
 #include <vtkTypeInt64Array.h>
+#include <vtkTypeUInt32Array.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 
@@ -207,6 +208,18 @@ vtkSmartPointer<vtkStringArray> runStateArray(const RunState& state, const std::
   return array;
 }
 
+// 3D: the complex's numbering and list orders, which the polyhedra alone do
+// not fix (snapshot_format.hpp).
+void addTopologyLayout(vtkFieldData* field, const CellComplex& topology) {
+  const ComplexLayout layout = topology.layout();
+  detail::forEachLayoutList(layout, [&](const char* list, const std::vector<Index>& items) {
+    auto array = vtkSmartPointer<vtkTypeUInt32Array>::New();
+    array->SetName((std::string(detail::kTopologyPrefix) + list).c_str());
+    std::copy(items.begin(), items.end(), array->WritePointer(0, static_cast<vtkIdType>(items.size())));
+    field->AddArray(array);
+  });
+}
+
 }  // namespace
 
 void writeTissueVtu(const Tissue& tissue, const std::string& path, const VtuOptions& options,
@@ -246,6 +259,7 @@ void writeTissueVtu(const Tissue& tissue, const std::string& path, const VtuOpti
   field->AddArray(singleValue<vtkTypeInt64Array>(detail::kNextLineageArray,
                                                  static_cast<vtkTypeInt64>(tissue.nextLineageId())));
   if (!state.empty()) field->AddArray(runStateArray(state, path));
+  if (tissue.dim() == 3) addTopologyLayout(field, topo);
 
   // Last: the checksums cover every array added above.
   detail::addChecksums(grid);

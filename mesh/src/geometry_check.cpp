@@ -115,6 +115,14 @@ MeshabilityReport checkOutline(const Tissue& t, CellId c, const std::vector<Vec3
 }
 
 MeshabilityReport checkEdges(const Tissue& t, double tol) {
+  // First: a non-finite position makes the tissue's scale, and with it every
+  // tolerance, infinite or NaN, and an unrelated edge would get the blame.
+  for (VertexId v : t.vertices()) {
+    const Vec3& p = t.position(v);
+    if (!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      return defect("vertex " + std::to_string(v.index()) + " has the non-finite position " + str(p),
+                    ElementId{0, v.index()});
+  }
   const auto& topo = t.topology();
   for (EdgeId e : t.edges()) {
     const double len = edgeLengthOf(t, e);
@@ -291,7 +299,7 @@ MeshabilityReport checkVolumeGeometry(const Tissue& t, const MeshOptions& option
         surface += 0.5 * (b - a).cross(d - a).norm();
       }
     if (volume < 0.0)
-      return defect("cell " + std::to_string(c.index()) + " is inverted: its volume is negative (" +
+      return defect("cell " + std::to_string(c.index()) + " is inverted: its volume is negative (signed volume " +
                         num(volume) + ")",
                     ElementId{3, c.index()});
     // Mean thickness 2 * volume / surface, as for polygons: a flat cell fails, a small one passes.

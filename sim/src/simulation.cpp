@@ -99,7 +99,16 @@ void Simulation::step() {
   if (finished()) throw std::logic_error("Simulation::step: the time span is already over");
   const double t0 = time();
   const double t1 = options_.time.timeAt(step_ + 1);
-  const StepContext context{step_, t0, t1 - t0, &rng_, t1, &geometry_};
+  const TimeSpan& span = options_.time;
+  const StepContext context{.step = step_,
+                            .clock_step = clockStep(),
+                            .clock_origin = span.clockOrigin(),
+                            .clock_dt = span.dt,
+                            .time = t0,
+                            .dt = t1 - t0,
+                            .rng = &rng_,
+                            .end_time = t1,
+                            .geometry = &geometry_};
   for (auto& stage : stages_) {
     try {
       stage->apply(tissue_, context);

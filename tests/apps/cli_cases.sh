@@ -252,6 +252,75 @@ case "$case_name" in
       "$tessella" info "$out/$f" >/dev/null 2>&1 || fail "$f, the last snapshot listed, does not read back"
     done
     ;;
+  resume_interrupted)
+    # A run stopped half way (killed outright in 2D, SIGTERM in 3D) and resumed with --resume ends with the
+    # directory of the uninterrupted run: the same .pvd, the same stats.csv rows, every snapshot byte for
+    # byte (positions, properties, random stream), and no temporary left.
+    set -m
+    for spec in "voronoi_growth.yaml KILL time.end=20" "box_growth_3d.yaml TERM time.end=8"; do
+      read -r config sig end <<<"$spec"
+      whole="$tmp/whole_$sig"; part="$tmp/part_$sig"
+      "$tessella" run "$src/configs/$config" --out "$whole" -q --set output.every=1 --set "$end" \
+        || fail "$config: the uninterrupted run failed"
+      total=$(grep -c '<DataSet' "$whole/tissue.pvd")
+      "$tessella" run "$src/configs/$config" --out "$part" -q --set output.every=1 --set "$end" \
+        >"$tmp/stdout" 2>"$tmp/stderr" &
+      pid=$!
+      for _ in $(seq 600); do
+        [ -f "$part/tissue.pvd" ] && [ "$(grep -c '<DataSet' "$part/tissue.pvd")" -ge $((total / 3)) ] && break
+        sleep 0.02
+      done
+      kill -s "$sig" "$pid"
+      wait "$pid"
+      rc=$?
+      [ "$rc" -ne 0 ] || fail "$config: the run finished before SIG$sig stopped it (make it longer)"
+      listed=$(grep -c '<DataSet' "$part/tissue.pvd")
+      [ "$listed" -lt "$total" ] || fail "$config: the stopped run lists all $total snapshots"
+      "$tessella" run --resume "$part" >"$tmp/stdout" 2>"$tmp/stderr" || fail "$config: --resume failed: $(cat "$tmp/stderr")"
+      cat "$tmp/stderr"
+      grep -Eq "^resuming from .*tissue_[0-9]+\.vtu \(step [0-9]+, t = " "$tmp/stderr" || fail "$config: no resume line"
+      cmp "$whole/tissue.pvd" "$part/tissue.pvd" || fail "$config: the .pvd differs"
+      cmp "$whole/stats.csv" "$part/stats.csv" || fail "$config: stats.csv differs"
+      diff <(grep -v 'directory:' "$whole/run.yaml") <(grep -v 'directory:' "$part/run.yaml") \
+        || fail "$config: run.yaml differs (beyond output.directory)"
+      n=0
+      for f in "$whole"/tissue_*.vtu; do
+        cmp "$f" "$part/$(basename "$f")" || fail "$config: $(basename "$f") differs"
+        n=$((n + 1))
+      done
+      [ "$n" -eq "$total" ] && [ "$(ls "$part"/tissue_*.vtu | wc -l)" -eq "$total" ] || fail "$config: snapshot counts"
+      left=$(find "$part" -name '*.tmp*')
+      [ -z "$left" ] || fail "$config: temporaries left: $left"
+      echo "$config: stopped by SIG$sig after $listed of $total snapshots, resumed: identical"
+    done
+    ;;
+  resume_errors)
+    # Clear errors, nothing written: not a directory, not a run, no complete snapshot, already finished.
+    expect_resume_error() {
+      local dir="$1" regex="$2"
+      "$tessella" run --resume "$dir" >"$tmp/stdout" 2>"$tmp/stderr"
+      local rc=$?
+      cat "$tmp/stderr"
+      [ "$rc" -eq 1 ] || fail "exit code $rc for --resume $dir, expected 1"
+      grep -Eq -- "$regex" "$tmp/stderr" || fail "stderr does not match: $regex"
+    }
+    expect_resume_error "$tmp/nowhere" "^error: cannot resume '.*nowhere': no such directory$"
+    mkdir "$tmp/empty"
+    expect_resume_error "$tmp/empty" "cannot resume '.*empty': it is not a run directory \(no run.yaml"
+    [ -z "$(ls "$tmp/empty")" ] || fail "something was written into a directory that is not a run"
+    "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/done" -q || fail "run failed"
+    cp -r "$tmp/done" "$tmp/done_copy"
+    expect_resume_error "$tmp/done" "cannot resume '.*done': the run is already finished \(its last snapshot, tissue_000003.vtu, is at t = 5"
+    diff -r "$tmp/done" "$tmp/done_copy" >/dev/null || fail "a finished run was changed"
+    mkdir "$tmp/record_only" && cp "$tmp/done/run.yaml" "$tmp/record_only/"
+    expect_resume_error "$tmp/record_only" "cannot resume '.*record_only': it has no complete snapshot \(no tissue.pvd\)"
+    cp -r "$tmp/done" "$tmp/broken"
+    for f in "$tmp/broken"/tissue_*.vtu; do printf 'damaged' >"$f"; done
+    expect_resume_error "$tmp/broken" "none of the 4 snapshots listed in tissue.pvd is complete"
+    "$tessella" run "$src/configs/hex_grid_2d.yaml" --resume "$tmp/done" >"$tmp/stdout" 2>"$tmp/stderr"
+    [ $? -ne 0 ] || fail "a config and --resume together were accepted"
+    grep -q 'excludes' "$tmp/stderr" || fail "unclear refusal of a config with --resume: $(cat "$tmp/stderr")"
+    ;;
   overwrite_removes_temporaries)
     # What an interrupted run of an older version left behind goes with --overwrite.
     "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/out" -q || fail "first run failed"

@@ -135,6 +135,8 @@ TEST_CASE("a step that inverts a cell is refused and undone", "[growth][integrat
     FAIL("no error");
   } catch (const GeometryError& e) {
     CHECK_THAT(e.what(), Contains("lineage id") && Contains("t = 4") && Contains("cell"));
+    // x -> -2x: each unit square becomes a 2 x 1 rectangle turned over, signed area -2 as in 3D below.
+    CHECK_THAT(e.what(), Contains("signed area -2 (normal (0, 0, -1) instead of +z)"));
     CHECK(e.element().degree == 2);
   }
   CHECK(t.time() == 4.0);
@@ -144,13 +146,14 @@ TEST_CASE("a step that inverts a cell is refused and undone", "[growth][integrat
     Tissue box = boxGrid(1, 1, 2);
     GrowthIntegrator g3(std::make_shared<LinearField>(anisotropicGrowth(Vec3(0, 0, -3))),
                         GrowthOptions{.scheme = IntegrationScheme::Euler});
-    CHECK_THROWS_AS(g3.step(box, 1.0), GeometryError);
+    // z -> -2z: each unit cube becomes a 1 x 1 x 2 box turned inside out, signed volume -2.
+    CHECK_THROWS_WITH(g3.step(box, 1.0), Contains("signed volume -2;"));
   }
   SECTION("a surface cell turned over") {
     Tissue cap = testing::sphericalCapGrid(3, 1.0, 3.0);
     GrowthIntegrator gs(std::make_shared<LinearField>(anisotropicGrowth(Vec3(-3, 0, 0))),
                         GrowthOptions{.scheme = IntegrationScheme::Euler});
-    CHECK_THROWS_AS(gs.step(cap, 1.0), GeometryError);
+    CHECK_THROWS_WITH(gs.step(cap, 1.0), Contains("signed area -") && Contains("turned against its previous normal"));
   }
 }
 

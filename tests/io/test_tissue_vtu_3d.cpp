@@ -5,11 +5,13 @@
 #include <catch2/catch.hpp>
 
 #include <vtkCellType.h>
+#include <vtkFieldData.h>
 #include <vtkIdTypeArray.h>
 #include <vtkNew.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include "file_edits.hpp"
 #include "io_test_support.hpp"
 #include "tessella/io/vtu.hpp"
 #include "tessella/tissue/geometry.hpp"
@@ -121,4 +123,87 @@ TEST_CASE("divided polyhedra keep their volumes and lineage", "[io][vtu][3d]") {
   REQUIRE(totalMeasure(r) == Approx(8.0).epsilon(1e-13));
   REQUIRE(cellMeasure(r, CellId(7)) == Approx(0.5).epsilon(1e-13));
   requireOutwardFaces(readWithVtk(path));
+}
+
+namespace {
+
+bool sameLayout(const ComplexLayout& x, const ComplexLayout& y) {
+  return x.dim == y.dim && x.num_vertices == y.num_vertices && x.edge_vertices == y.edge_vertices &&
+         x.face_edge_offsets == y.face_edge_offsets && x.face_edges == y.face_edges &&
+         x.volume_face_offsets == y.volume_face_offsets && x.volume_faces == y.volume_faces &&
+         x.vertex_edge_offsets == y.vertex_edge_offsets && x.vertex_edges == y.vertex_edges &&
+         x.edge_face_offsets == y.edge_face_offsets && x.edge_faces == y.edge_faces &&
+         x.face_volume_offsets == y.face_volume_offsets && x.face_volumes == y.face_volumes;
+}
+
+Tissue dividedGrid() {
+  Tissue t = boxGrid(2, 2, 2);
+  t.splitCell(CellId(0), Plane{cellCentroid(t, CellId(0)), Vec3(1, 0.4, 0.2)});
+  t.splitCell(CellId(7), Plane{cellCentroid(t, CellId(7)), Vec3(0, 0, 1)});
+  t.splitCell(CellId(8), Plane{cellCentroid(t, CellId(8)), Vec3(0.3, 1, 0.1)});
+  t.splitCell(CellId(3), Plane{cellCentroid(t, CellId(3)), Vec3(0.2, -0.5, 1)});
+  return t;
+}
+
+}  // namespace
+
+TEST_CASE("a 3D snapshot keeps the numbering and direction of walls and edges", "[io][vtu][3d][restart]") {
+  TempDir dir;
+  const Tissue t = dividedGrid();
+  const std::string path = dir.file("divided.vtu");
+  writeTissueVtu(t, path);
+  const Tissue r = readTissueVtu(path);
+  requireSameTissue(t, r);
+  CHECK(sameLayout(r.topology().layout(), t.topology().layout()));
+
+  // Without the arrays (a file written before they existed), the walls are
+  // matched by vertex set and the edges numbered by first use: the same
+  // cells, another numbering.
+  const std::string old = dir.file("old.vtu");
+  io::testing::tamper(path, old, [](vtkUnstructuredGrid* grid) {
+    vtkFieldData* field = grid->GetFieldData();
+    for (int i = field->GetNumberOfArrays() - 1; i >= 0; --i)
+      if (std::string(field->GetArrayName(i)).rfind("tessella_topology:", 0) == 0)
+        field->RemoveArray(field->GetArrayName(i));
+  });
+  const Tissue from_old = readTissueVtu(old);
+  requireSameTissue(t, from_old);
+  CHECK_FALSE(sameLayout(from_old.topology().layout(), t.topology().layout()));
+}
+
+TEST_CASE("damaged topology arrays of a 3D snapshot are refused, naming them", "[io][vtu][3d][restart]") {
+  TempDir dir;
+  const std::string path = dir.file("divided.vtu");
+  writeTissueVtu(dividedGrid(), path);
+  auto refused = [&](auto edit, const std::string& part) {
+    const std::string bad = dir.file("bad.vtu");
+    io::testing::tamper(path, bad, [&](vtkUnstructuredGrid* grid) {
+      edit([&](const char* array) {
+        vtkDataArray* values = grid->GetFieldData()->GetArray((std::string("tessella_topology:") + array).c_str());
+        REQUIRE(values != nullptr);
+        return values;
+      });
+    });
+    try {
+      readTissueVtu(bad);
+      FAIL("accepted");
+    } catch (const InputError& e) {
+      INFO(e.what());
+      CHECK(std::string(e.what()).find(part) != std::string::npos);
+      CHECK(std::string(e.what()).find(bad) != std::string::npos);
+    }
+  };
+  // The first face loop, started one edge later: a valid complex, but not
+  // the polyhedra of the file.
+  refused(
+      [](auto array) {
+        vtkDataArray* loops = array("face_edges");
+        const auto size = static_cast<vtkIdType>(array("face_edge_offsets")->GetComponent(1, 0));
+        const double first = loops->GetComponent(0, 0);
+        for (vtkIdType k = 0; k + 1 < size; ++k) loops->SetComponent(k, 0, loops->GetComponent(k + 1, 0));
+        loops->SetComponent(size - 1, 0, first);
+      },
+      "has other faces than the topology arrays");
+  refused([](auto array) { array("edge_vertices")->SetComponent(0, 0, 1e6); },
+          "tessella_topology:* do not form a tissue");
 }

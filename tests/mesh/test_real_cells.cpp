@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -275,4 +276,24 @@ TEST_CASE("the real MorphoGraphX meristem measures, validates, divides and meshe
   REQUIRE(divided.ok);
   const FeMesh mesh2 = meshTissue(t);
   requireGoodMesh(t, mesh2);
+}
+
+TEST_CASE("a non-finite vertex is named by the mesher's check, not an unrelated edge", "[mesh][check][finite]") {
+  for (const double bad : {std::numeric_limits<double>::infinity(), std::nan("")}) {
+    for (Tissue t : {hexagonalGrid(3, 3), boxGrid(2, 2, 1)}) {
+      const VertexId v(5);
+      Vec3 p = t.position(v);
+      p.x() = bad;
+      t.setPosition(v, p);
+      try {
+        meshTissue(t, MeshOptions{});
+        FAIL("meshed");
+      } catch (const GeometryError& e) {
+        INFO(e.what());
+        CHECK_THAT(e.what(), Catch::Contains("vertex 5 has the non-finite position"));
+        CHECK(e.element().degree == 0);
+        CHECK(e.element().index == 5);
+      }
+    }
+  }
 }

@@ -164,6 +164,44 @@ TEST_CASE("splitCell in 2D: degenerate planes snap or are refused", "[tissue][ed
   }
 }
 
+TEST_CASE("a division plane on a wall says so in 2D and 3D alike; a sliver prints significant digits",
+          "[tissue][editing]") {
+  // Cell 0 of each grid is the unit square / cube at the origin; x = 1 is its
+  // wall with cell 1, x = 0 its outer wall, x = 5 misses it.
+  for (Tissue t : {rectangularGrid(2, 1), boxGrid(2, 1, 1)}) {
+    INFO(t.dim() << "D");
+    const int wall_degree = t.dim() - 1;
+    for (const double x : {1.0, 0.0}) {
+      try {
+        t.splitCell(CellId(0), Plane{Vec3(x, 0.5, 0.5), Vec3(1, 0, 0)});
+        FAIL("accepted");
+      } catch (const GeometryError& e) {
+        INFO(e.what());
+        CHECK_THAT(e.what(), Catch::StartsWith("division plane runs along wall ") &&
+                                 Catch::EndsWith(" of cell 0 (lineage 0)"));
+        CHECK(e.element().degree == wall_degree);
+        // The wall named lies in the plane.
+        for (VertexId v : t.dim() == 2 ? std::vector<VertexId>{t.topology().edgeFrom(EdgeId(e.element().index)),
+                                                               t.topology().edgeTo(EdgeId(e.element().index))}
+                                       : std::vector<VertexId>(t.topology().faceVertices(FaceId(e.element().index)).begin(),
+                                                               t.topology().faceVertices(FaceId(e.element().index)).end()))
+          CHECK(t.position(v).x() == x);
+      }
+    }
+    CHECK_THROWS_WITH(t.splitCell(CellId(0), Plane{Vec3(5, 0.5, 0.5), Vec3(1, 0, 0)}),
+                      Catch::Contains("misses cell 0"));
+    // A cut 2.5e-7 from the wall: the sliver's fraction and the minimum as numbers, not "0.000000".
+    try {
+      t.splitCell(CellId(0), Plane{Vec3(1 - 2.5e-7, 0.5, 0.5), Vec3(1, 0, 0)});
+      FAIL("accepted");
+    } catch (const GeometryError& e) {
+      INFO(e.what());
+      CHECK_THAT(e.what(), Catch::Contains("would leave a sliver of 2.5e-07 of its") &&
+                               Catch::Contains("(minimum 1e-06)"));
+    }
+  }
+}
+
 TEST_CASE("splitCell refuses options out of range, naming the option and value", "[tissue][editing]") {
   const auto refused = [](SplitOptions options, const std::string& text) {
     for (Tissue t : {rectangularGrid(2, 1), box(2, 1, 1)}) {

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <span>
+#include <type_traits>
 #include <string>
 #include <utility>
 
@@ -556,6 +558,143 @@ std::pair<FaceId, VolumeId> CellComplex::splitVolume(VolumeId c, std::span<const
   face_volumes_.pushBack(cut.index(), c);
   face_volumes_.pushBack(cut.index(), c2);
   return {cut, c2};
+}
+
+ComplexLayout CellComplex::layout() const {
+  ComplexLayout out;
+  out.dim = dim_;
+  std::array<std::vector<Index>, 4> rank;
+  for (int d = 0; d <= dim_; ++d) {
+    rank[d].assign(alive_[d].size(), kInvalidIndex);
+    Index next = 0;
+    for (std::size_t i = 0; i < alive_[d].size(); ++i)
+      if (alive_[d][i]) rank[d][i] = next++;
+  }
+  out.num_vertices = live_count_[0];
+  auto packed = [&](int degree, auto oriented) {
+    return (rank[degree][oriented.handle().index()] << 1) | (oriented.reversed() ? 1u : 0u);
+  };
+  // Every live list of one degree, mapped item by item, as CSR.
+  auto lists = [&](int degree, const auto& ragged, std::vector<Index>& offsets, std::vector<Index>& items,
+                   auto item) {
+    offsets.assign(1, 0);
+    for (std::size_t i = 0; i < alive_[degree].size(); ++i) {
+      if (!alive_[degree][i]) continue;
+      for (const auto& x : ragged[i]) items.push_back(item(x));
+      offsets.push_back(static_cast<Index>(items.size()));
+    }
+  };
+  for (std::size_t e = 0; e < edge_vertices_.size(); ++e)
+    if (alive_[1][e])
+      for (VertexId v : edge_vertices_[e]) out.edge_vertices.push_back(rank[0][v.index()]);
+  lists(2, face_edges_, out.face_edge_offsets, out.face_edges, [&](OrientedEdge oe) { return packed(1, oe); });
+  lists(0, vertex_edges_, out.vertex_edge_offsets, out.vertex_edges, [&](EdgeId e) { return rank[1][e.index()]; });
+  lists(1, edge_faces_, out.edge_face_offsets, out.edge_faces, [&](FaceId f) { return rank[2][f.index()]; });
+  if (dim_ == 3) {
+    lists(3, volume_faces_, out.volume_face_offsets, out.volume_faces,
+          [&](OrientedFace of) { return packed(2, of); });
+    lists(2, face_volumes_, out.face_volume_offsets, out.face_volumes,
+          [&](VolumeId c) { return rank[3][c.index()]; });
+  } else {
+    out.volume_face_offsets.assign(1, 0);
+    out.face_volume_offsets.assign(1, 0);
+  }
+  return out;
+}
+
+namespace {
+
+// The CSR pair of a layout: `count` lists covering the items exactly.
+void checkLists(const char* name, std::span<const Index> offsets, std::size_t num_items, std::size_t count) {
+  if (offsets.size() != count + 1)
+    throw TopologyError(std::string("layout: ") + name + " has " +
+                        std::to_string(offsets.empty() ? 0 : offsets.size() - 1) + " lists, not " +
+                        std::to_string(count));
+  if (offsets[0] != 0 || offsets[count] != num_items)
+    throw TopologyError(std::string("layout: the offsets of ") + name + " do not cover its " +
+                        std::to_string(num_items) + " items");
+  for (std::size_t k = 0; k < count; ++k)
+    if (offsets[k + 1] < offsets[k])
+      throw TopologyError(std::string("layout: the offsets of ") + name + " decrease at list " + std::to_string(k));
+}
+
+template <typename H>
+std::vector<Oriented<H>> unpacked(std::span<const Index> items) {
+  std::vector<Oriented<H>> out;
+  out.reserve(items.size());
+  for (Index packed : items) out.emplace_back(H(packed >> 1), (packed & 1u) != 0);
+  return out;
+}
+
+}  // namespace
+
+CellComplex CellComplex::fromLayout(const ComplexLayout& layout) {
+  CellComplex c(layout.dim);
+  if (layout.edge_vertices.size() % 2 != 0)
+    throw TopologyError("layout: the edge list holds an odd number of vertices");
+  const std::size_t nv = layout.num_vertices, ne = layout.edge_vertices.size() / 2;
+  const std::size_t nf = layout.face_edge_offsets.empty() ? 0 : layout.face_edge_offsets.size() - 1;
+  const std::size_t nc = layout.volume_face_offsets.empty() ? 0 : layout.volume_face_offsets.size() - 1;
+  if (layout.dim == 2 && nc != 0) throw TopologyError("layout: a 2D complex has no volumes");
+  checkLists("face_edges", layout.face_edge_offsets, layout.face_edges.size(), nf);
+  checkLists("volume_faces", layout.volume_face_offsets, layout.volume_faces.size(), nc);
+  checkLists("vertex_edges", layout.vertex_edge_offsets, layout.vertex_edges.size(), nv);
+  checkLists("edge_faces", layout.edge_face_offsets, layout.edge_faces.size(), ne);
+  if (layout.dim == 3) checkLists("face_volumes", layout.face_volume_offsets, layout.face_volumes.size(), nf);
+  auto list = [](const std::vector<Index>& offsets, const std::vector<Index>& items, std::size_t k) {
+    return std::span<const Index>(items).subspan(offsets[k], offsets[k + 1] - offsets[k]);
+  };
+  // Borders element by element: the checked construction, in numbering order.
+  for (std::size_t v = 0; v < nv; ++v) c.addVertex();
+  for (std::size_t e = 0; e < ne; ++e) {
+    const Index from = layout.edge_vertices[2 * e], to = layout.edge_vertices[2 * e + 1];
+    try {
+      c.addEdge(VertexId(from), VertexId(to));
+    } catch (const TopologyError& error) {
+      throw TopologyError(id("edge", static_cast<Index>(e)) + ": " + error.what(), {1, static_cast<Index>(e)});
+    }
+  }
+  for (std::size_t f = 0; f < nf; ++f) {
+    const auto loop = unpacked<EdgeId>(list(layout.face_edge_offsets, layout.face_edges, f));
+    try {
+      c.addFace(loop);
+    } catch (const TopologyError& error) {
+      throw TopologyError(id("face", static_cast<Index>(f)) + ": " + error.what(), {2, static_cast<Index>(f)});
+    }
+  }
+  for (std::size_t k = 0; k < nc; ++k) {
+    const auto faces = unpacked<FaceId>(list(layout.volume_face_offsets, layout.volume_faces, k));
+    try {
+      c.addVolume(faces);
+    } catch (const TopologyError& error) {
+      throw TopologyError(id("volume", static_cast<Index>(k)) + ": " + error.what(), {3, static_cast<Index>(k)});
+    }
+  }
+  // Regions: the same elements the borders gave, in the listed order.
+  auto reorder = [&](int degree, auto& ragged, std::size_t count, const std::vector<Index>& offsets,
+                     const std::vector<Index>& items, const char* what) {
+    using Item = typename std::decay_t<decltype(ragged[0][0])>;
+    for (std::size_t i = 0; i < count; ++i) {
+      const auto stored = list(offsets, items, i);
+      std::vector<Index> built;
+      for (Item x : ragged[i]) built.push_back(x.index());
+      std::vector<Index> wanted(stored.begin(), stored.end());
+      std::sort(built.begin(), built.end());
+      std::sort(wanted.begin(), wanted.end());
+      if (built != wanted)
+        throw TopologyError(id(degreeName(degree), static_cast<Index>(i)) + ": its " + what +
+                                " list does not hold the elements its borders give",
+                            {degree, static_cast<Index>(i)});
+      std::vector<Item> ordered;
+      ordered.reserve(stored.size());
+      for (Index x : stored) ordered.emplace_back(x);
+      ragged.assign(i, std::span<const Item>(ordered));
+    }
+  };
+  reorder(0, c.vertex_edges_, nv, layout.vertex_edge_offsets, layout.vertex_edges, "edge");
+  reorder(1, c.edge_faces_, ne, layout.edge_face_offsets, layout.edge_faces, "face");
+  if (layout.dim == 3) reorder(2, c.face_volumes_, nf, layout.face_volume_offsets, layout.face_volumes, "volume");
+  return c;
 }
 
 Renumbering CellComplex::compact() {

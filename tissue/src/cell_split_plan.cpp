@@ -226,8 +226,16 @@ SmallMap<Index, double> signedDistances(const Tissue& t, CellId c, const Vec3& n
     any_pos |= dv > 0;
     any_neg |= dv < 0;
   }
-  if (!any_pos || !any_neg)
+  if (!any_pos || !any_neg) {
+    // A wall in the plane (the plane of a face of the cell): said as in 2D.
+    for (OrientedFace of : t.topology().volumeFaces(VolumeId(c.index()))) {
+      const auto loop = t.topology().faceVertices(of.handle());
+      if (std::all_of(loop.begin(), loop.end(), [&](VertexId v) { return dist.at(v.index()) == 0; }))
+        throw GeometryError("division plane runs along wall " + std::to_string(of.handle().index()) + " of " + who,
+                            {2, of.handle().index()});
+    }
     throw GeometryError("division plane through " + pointText(plane.point) + " misses " + who, {3, c.index()});
+  }
   return dist;
 }
 
@@ -259,7 +267,7 @@ void traceWalls(const Tissue& t, const std::vector<OrientedFace>& faces, WallTra
       w.segments.emplace_back(nodes[0], nodes[1]);
       w.face_cuts.emplace_back(f, nodes[0], nodes[1]);
     } else if (!pos && !neg) {
-      throw GeometryError("division plane contains wall " + std::to_string(f.index()) + " of " + who, {2, f.index()});
+      throw GeometryError("division plane runs along wall " + std::to_string(f.index()) + " of " + who, {2, f.index()});
     } else {
       w.face_side[f.index()] = pos ? 1 : -1;
     }

@@ -10,7 +10,7 @@ FieldSeriesOutput::FieldSeriesOutput(const std::string& directory, std::shared_p
     : writer_(directory, kFieldSeriesName, spec.vtu), mesh_(std::move(mesh)), every_(spec.every) {}
 
 void FieldSeriesOutput::writeIfDue(const Simulation& simulation) {
-  const std::size_t step = simulation.stepsDone();
+  const std::size_t step = simulation.clockStep();
   if (!mesh_->hasMesh() || !(step % every_ == 0 || simulation.finished())) return;
   io::MeshFields fields;
   fields.point = mesh_->fields();
@@ -24,14 +24,17 @@ std::shared_ptr<const FieldMesh> findFieldMesh(const Simulation& simulation) {
 }
 
 std::shared_ptr<FieldSeriesOutput> attachFieldOutput(Simulation& simulation, const std::string& directory,
-                                                     const OutputSpec& spec) {
+                                                     const OutputSpec& spec, std::optional<double> resume_after) {
   auto mesh = findFieldMesh(simulation);
   if (!mesh) return nullptr;
   if (spec.name == kFieldSeriesName)
     throw InputError(std::string("output.name '") + kFieldSeriesName +
                      "' is the solver fields' series name; choose another");
   auto output = std::make_shared<FieldSeriesOutput>(directory, std::move(mesh), spec);
-  output->writeIfDue(simulation);  // the initial state, when a stage set one up
+  if (resume_after)
+    output->continueAfter(*resume_after);
+  else
+    output->writeIfDue(simulation);  // the initial state, when a stage set one up
   simulation.onStep([output](const Simulation& s) { output->writeIfDue(s); });
   return output;
 }

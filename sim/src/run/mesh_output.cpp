@@ -9,7 +9,7 @@ MeshOutput::MeshOutput(const std::string& directory, const MeshSpec& spec, std::
     : writer_(directory, spec.name, vtu), options_(spec.options), every_(every) {}
 
 void MeshOutput::writeIfDue(const Simulation& simulation) {
-  if (simulation.stepsDone() % every_ == 0 || simulation.finished()) write(simulation);
+  if (simulation.clockStep() % every_ == 0 || simulation.finished()) write(simulation);
 }
 
 void MeshOutput::write(const Simulation& simulation) {
@@ -26,12 +26,21 @@ void MeshOutput::write(const Simulation& simulation) {
   last_written_step_ = simulation.stepsDone();
 }
 
+void MeshOutput::continueAfter(const Simulation& simulation, double time) {
+  writer_.continueAfter(time);
+  last_written_step_ = simulation.stepsDone();
+}
+
 std::shared_ptr<MeshOutput> attachMeshOutput(Simulation& simulation, const std::string& directory,
-                                             const MeshSpec& spec, const OutputSpec& output) {
+                                             const MeshSpec& spec, const OutputSpec& output,
+                                             std::optional<double> resume_after) {
   if (!spec.output) return nullptr;
   auto mesh_output =
       std::make_shared<MeshOutput>(directory, spec, spec.every > 0 ? spec.every : output.every, output.vtu);
-  mesh_output->write(simulation);
+  if (resume_after)
+    mesh_output->continueAfter(simulation, *resume_after);
+  else
+    mesh_output->write(simulation);
   simulation.onStep([mesh_output](const Simulation& s) { mesh_output->writeIfDue(s); });
   return mesh_output;
 }

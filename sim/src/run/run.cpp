@@ -1,11 +1,17 @@
 #include "tessella/sim/run/run.hpp"
 
+#include <algorithm>
 #include <filesystem>
 #include <functional>
+#include <cstdio>
 #include <regex>
+
+#include "tessella/io/pvd.hpp"
+#include "tessella/io/vtu.hpp"
 
 #include "tessella/sim/run/field_output.hpp"
 #include "tessella/sim/run/run_record.hpp"
+#include "tessella/tissue/format.hpp"
 #include "tessella/sim/run/statistics_output.hpp"
 
 namespace fs = std::filesystem;
@@ -85,6 +91,64 @@ PreparedRun PreparedRun::prepare(SimulationConfig config, const RunOptions& opti
   return PreparedRun(std::move(config), std::move(simulation), dir.string(), options.overwrite);
 }
 
+PreparedRun PreparedRun::resume(const std::string& run_directory) {
+  const fs::path dir = fs::absolute(run_directory).lexically_normal();
+  const std::string quoted = "'" + run_directory + "'";
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) throw InputError("cannot resume " + quoted + ": no such directory");
+  const fs::path record = dir / kRunRecordName;
+  if (!fs::exists(record, ec))
+    throw InputError("cannot resume " + quoted + ": it is not a run directory (no " + kRunRecordName +
+                     ", which tessella run writes first)");
+  const SimulationConfig original = loadSimulationConfigFile(record.string());
+  const fs::path pvd = dir / (original.output.name + ".pvd");
+  if (!fs::exists(pvd, ec))
+    throw InputError("cannot resume " + quoted + ": it has no complete snapshot (no " +
+                     pvd.filename().string() + ")");
+  const std::vector<io::PvdEntry> entries = io::readPvdFile(pvd.string());
+  const fs::path stats = dir / kStatisticsName;
+  const bool with_stats = fs::exists(stats, ec);
+  const std::vector<double> rows = with_stats ? statisticsRowTimes(stats.string()) : std::vector<double>{};
+  // The last snapshot that reads back with its run state and, when the run
+  // keeps statistics, has its row: a run killed between the two writes
+  // continues from the snapshot before.
+  std::string chosen;
+  double chosen_time = 0;
+  for (auto it = entries.rbegin(); it != entries.rend() && chosen.empty(); ++it) {
+    if (with_stats && std::find(rows.begin(), rows.end(), it->time) == rows.end()) continue;
+    const std::string file = (dir / it->file).string();
+    try {
+      const io::Snapshot snapshot = io::readSnapshot(file);
+      if (snapshot.state.count("clock.step") && snapshot.tissue.time() == it->time) {
+        chosen = file;
+        chosen_time = it->time;
+      }
+    } catch (const InputError&) {
+      // damaged or missing: try the one before
+    }
+  }
+  if (chosen.empty())
+    throw InputError("cannot resume " + quoted + ": none of the " + std::to_string(entries.size()) +
+                     " snapshots listed in " + pvd.filename().string() +
+                     " is complete (reads back with its run state" + (with_stats ? " and has its stats.csv row" : "") +
+                     ")");
+  char start[40];
+  std::snprintf(start, sizeof start, "%.17g", chosen_time);
+  SimulationConfig config = loadSimulationConfigFile(
+      record.string(), {"tissue.generator=snapshot", "tissue.snapshot.file=" + chosen, std::string("time.start=") + start,
+                        "output.directory=" + dir.string()});
+  Simulation simulation = Simulation::fromConfig(config);
+  if (simulation.finished())
+    throw InputError("cannot resume " + quoted + ": the run is already finished (its last snapshot, " +
+                     fs::path(chosen).filename().string() + ", is at t = " + formatNumber(chosen_time) +
+                     ", the end of its time span)");
+  readMeshSection(config.config);
+  PreparedRun run(std::move(config), std::move(simulation), dir.string(), false);
+  run.resume_after_ = chosen_time;
+  run.resumed_from_ = chosen;
+  return run;
+}
+
 std::string PreparedRun::runRecordPath() const { return (fs::path(directory_) / kRunRecordName).string(); }
 
 void PreparedRun::execute() {
@@ -104,11 +168,13 @@ void PreparedRun::execute() {
         fs::remove(file, ec);
         if (ec) throw InputError("cannot remove the previous run's " + file.string() + ": " + ec.message());
       }
-  writeRunRecord(config_.config, runRecordPath());
-  output_ = attachSeriesOutput(simulation_, directory_, config_.output);
-  mesh_output_ = attachMeshOutput(simulation_, directory_, readMeshSection(config_.config), config_.output);
-  field_output_ = attachFieldOutput(simulation_, directory_, config_.output);
-  statistics_ = attachStatisticsOutput(simulation_, directory_, solverFields(config_), config_.output.every);
+  if (!resume_after_) writeRunRecord(config_.config, runRecordPath());  // a resumed run keeps its record
+  output_ = attachSeriesOutput(simulation_, directory_, config_.output, resume_after_);
+  mesh_output_ =
+      attachMeshOutput(simulation_, directory_, readMeshSection(config_.config), config_.output, resume_after_);
+  field_output_ = attachFieldOutput(simulation_, directory_, config_.output, resume_after_);
+  statistics_ =
+      attachStatisticsOutput(simulation_, directory_, solverFields(config_), config_.output.every, resume_after_);
   simulation_.run();
 }
 

@@ -6,8 +6,7 @@ SeriesOutput::SeriesOutput(const std::string& directory, const OutputSpec& spec)
     : writer_(directory, spec.name, spec.vtu), every_(spec.every) {}
 
 void SeriesOutput::writeIfDue(const Simulation& simulation) {
-  const std::size_t step = simulation.stepsDone();
-  if (step % every_ == 0 || simulation.finished()) write(simulation);
+  if (simulation.clockStep() % every_ == 0 || simulation.finished()) write(simulation);
 }
 
 void SeriesOutput::write(const Simulation& simulation) {
@@ -16,10 +15,18 @@ void SeriesOutput::write(const Simulation& simulation) {
   last_written_step_ = simulation.stepsDone();
 }
 
+void SeriesOutput::continueAfter(const Simulation& simulation, double time) {
+  writer_.continueAfter(time);
+  last_written_step_ = simulation.stepsDone();
+}
+
 std::shared_ptr<SeriesOutput> attachSeriesOutput(Simulation& simulation, const std::string& directory,
-                                                 const OutputSpec& spec) {
+                                                 const OutputSpec& spec, std::optional<double> resume_after) {
   auto output = std::make_shared<SeriesOutput>(directory, spec);
-  output->write(simulation);
+  if (resume_after)
+    output->continueAfter(simulation, *resume_after);
+  else
+    output->write(simulation);
   simulation.onStep([output](const Simulation& s) { output->writeIfDue(s); });
   return output;
 }

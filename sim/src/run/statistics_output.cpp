@@ -4,6 +4,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <limits>
@@ -47,14 +48,30 @@ std::size_t divisionsSoFar(const Simulation& simulation) {
 
 }  // namespace
 
-StatisticsOutput::StatisticsOutput(std::string path, int dim, std::vector<std::string> fields, std::size_t every)
+StatisticsOutput::StatisticsOutput(std::string path, int dim, std::vector<std::string> fields, std::size_t every,
+                                   std::optional<double> resume_after)
     : path_(std::move(path)), fields_(std::move(fields)), every_(std::max<std::size_t>(every, 1)) {
-  file_.open(path_, std::ios::out | std::ios::trunc);
-  if (!file_) throw InputError("cannot write '" + path_ + "': " + std::strerror(errno));
   const std::string m = dim == 2 ? "area" : "volume";
   std::string header = "time,cells,divisions," + m + "_total," + m + "_mean," + m + "_min," + m + "_max," + m + "_std";
   for (const std::string& f : fields_) header += "," + f + "_total," + f + "_min," + f + "_max";
-  append(header);
+  std::vector<std::string> lines{header};
+  if (resume_after) {
+    // The rows the interrupted run wrote up to its snapshot; later ones go.
+    std::ifstream in(path_);
+    if (!in) throw InputError("cannot read '" + path_ + "': " + std::strerror(errno));
+    std::string line;
+    std::getline(in, line);
+    if (line != header)
+      throw InputError("'" + path_ + "' has the header '" + line.substr(0, 80) + "', not this run's '" +
+                       header.substr(0, 80) + "'");
+    const std::vector<double> times = statisticsRowTimes(path_);
+    for (std::size_t row = 0; row < times.size() && std::getline(in, line); ++row)
+      if (times[row] <= *resume_after) lines.push_back(line);
+    rows_ = lines.size() - 1;
+  }
+  file_.open(path_, std::ios::out | std::ios::trunc);
+  if (!file_) throw InputError("cannot write '" + path_ + "': " + std::strerror(errno));
+  for (const std::string& line : lines) append(line);
 }
 
 void StatisticsOutput::append(const std::string& line) {
@@ -66,7 +83,7 @@ void StatisticsOutput::append(const std::string& line) {
 }
 
 void StatisticsOutput::writeIfDue(const Simulation& simulation) {
-  if (simulation.stepsDone() % every_ == 0 || simulation.finished()) write(simulation);
+  if (simulation.clockStep() % every_ == 0 || simulation.finished()) write(simulation);
 }
 
 void StatisticsOutput::write(const Simulation& simulation) {
@@ -116,11 +133,30 @@ std::vector<std::string> solverFields(const SimulationConfig& config) {
   return fields;
 }
 
+std::vector<double> statisticsRowTimes(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError("cannot read '" + path + "': " + std::strerror(errno));
+  std::vector<double> times;
+  std::string line;
+  std::getline(in, line);  // the header
+  for (std::size_t number = 2; std::getline(in, line); ++number) {
+    const std::string first = line.substr(0, line.find(','));
+    char* end = nullptr;
+    const double time = std::strtod(first.c_str(), &end);
+    if (first.empty() || *end != '\0')
+      throw InputError("'" + path + "' line " + std::to_string(number) + ": '" + first.substr(0, 40) +
+                       "' is not a time");
+    times.push_back(time);
+  }
+  return times;
+}
+
 std::shared_ptr<StatisticsOutput> attachStatisticsOutput(Simulation& simulation, const std::string& directory,
-                                                         std::vector<std::string> fields, std::size_t every) {
+                                                         std::vector<std::string> fields, std::size_t every,
+                                                         std::optional<double> resume_after) {
   auto output = std::make_shared<StatisticsOutput>((std::filesystem::path(directory) / kStatisticsName).string(),
-                                                   simulation.tissue().dim(), std::move(fields), every);
-  output->write(simulation);
+                                                   simulation.tissue().dim(), std::move(fields), every, resume_after);
+  if (!resume_after) output->write(simulation);
   simulation.onStep([output](const Simulation& s) { output->writeIfDue(s); });
   return output;
 }

@@ -23,9 +23,19 @@ const char* boundaryRegionName(BoundaryRegion region) {
 bool SolveSchedule::due(const StepContext& context) {
   if (!start_) {
     start_ = context.time;
+    // A run restarted between two solves counts from the last solve before
+    // the snapshot, as the uninterrupted run does: solves end the clock
+    // steps that are multiples of every_, and solved() records time + dt.
+    const std::size_t last_solve = context.clock_step - context.clock_step % every_;
     last_ = context.time;
+    if (last_solve != context.clock_step && last_solve > 0) {
+      const auto clock = [&](std::size_t m) { return context.clock_origin + static_cast<double>(m) * context.clock_dt; };
+      last_ = clock(last_solve - 1) + (clock(last_solve) - clock(last_solve - 1));
+    } else if (last_solve != context.clock_step) {
+      last_ = context.clock_origin;
+    }
   }
-  return (context.step + 1) % every_ == 0;
+  return (context.clock_step + 1) % every_ == 0;
 }
 
 namespace {

@@ -54,6 +54,8 @@ class MeshSeriesWriter {
 
   const std::string& pvdPath() const { return pvd_path_; }
   const std::string& wallsPvdPath() const { return walls_pvd_path_; }
+  /// Continues the series on disk, as SeriesWriter::continueAfter (both .pvd files).
+  void continueAfter(double last_time);
   std::size_t steps() const { return times_.size(); }
 
  private:

@@ -23,6 +23,12 @@ class SeriesWriter {
   std::string write(const Tissue& tissue, double time, const RunState& state = {},
                     GeometryCache* geometry = nullptr);
 
+  /// Continues the series already on disk (an interrupted run resumed): its
+  /// entries up to `last_time` are kept and the next write follows them;
+  /// the files of later entries and leftover temporaries are deleted.
+  /// InputError if the .pvd cannot be read or a file cannot be removed.
+  void continueAfter(double last_time);
+
   const std::string& pvdPath() const { return pvd_path_; }
   std::size_t steps() const { return entries_.size(); }
 

@@ -80,6 +80,10 @@ class Simulation {
   /// Steps taken so far.
   std::size_t stepsDone() const { return step_; }
   std::size_t numSteps() const { return options_.time.numSteps(); }
+  /// Steps taken on the run's clock: stepsDone() plus the steps before the
+  /// snapshot a restart continues from. Output schedules count these, so a
+  /// resumed run writes at the steps the uninterrupted run writes at.
+  std::size_t clockStep() const { return options_.time.origin_steps + step_; }
   bool finished() const { return step_ >= numSteps(); }
   std::mt19937_64& rng() { return rng_; }
   /// The tissue's geometry shared by the stages (StepContext::geometry) and

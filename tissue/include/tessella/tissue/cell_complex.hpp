@@ -35,6 +35,26 @@ struct Renumbering {
   }
 };
 
+/// A complex as flat lists, with everything that makes two complexes the
+/// same and not merely alike: the numbering of every element, the direction
+/// of every edge, where every face loop starts and which way it runs, and
+/// the order of every border and region list (sums over them, and hence the
+/// last bits of a simulation, follow that order). Live elements are numbered
+/// in slot order, as compact() would. Lists are CSR: list k is
+/// items[offsets[k] .. offsets[k+1]). Oriented items are packed as
+/// 2 * index + (reversed ? 1 : 0). A 3D snapshot stores one, so that a
+/// restart continues on the very complex the run had.
+struct ComplexLayout {
+  int dim = 2;
+  std::size_t num_vertices = 0;
+  std::vector<Index> edge_vertices;  ///< from, to of every edge
+  std::vector<Index> face_edge_offsets, face_edges;
+  std::vector<Index> volume_face_offsets, volume_faces;  ///< empty lists in 2D
+  std::vector<Index> vertex_edge_offsets, vertex_edges;
+  std::vector<Index> edge_face_offsets, edge_faces;
+  std::vector<Index> face_volume_offsets, face_volumes;  ///< empty lists in 2D
+};
+
 class CellComplex {
  public:
   /// dim = 2 (vertices, edges, faces) or 3 (and volumes).
@@ -108,6 +128,14 @@ class CellComplex {
                                std::span<const Index> loop_offsets,
                                std::span<const Index> loop_vertices,
                                std::span<const Index> face_ids = {});
+  /// The complex as a ComplexLayout (live elements only, renumbered in order).
+  ComplexLayout layout() const;
+  /// The complex a layout describes, every element numbered and every list
+  /// ordered as listed. Checked like the element-by-element construction
+  /// (closed loops, closed and consistently oriented volumes, no duplicate
+  /// edge), and every region list must hold exactly the elements its borders
+  /// imply; throws TopologyError naming the element otherwise.
+  static CellComplex fromLayout(const ComplexLayout& layout);
   /// Appends volumes in bulk (3D): volume k is faces[offsets[k] .. offsets[k+1]).
   /// Same checks as addVolume (run in parallel, the first bad volume is
   /// reported); on error nothing is added.

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "tessella/io/mesh_vtu.hpp"
@@ -26,6 +27,8 @@ class FieldSeriesOutput {
   FieldSeriesOutput(const std::string& directory, std::shared_ptr<const FieldMesh> mesh, const OutputSpec& spec);
   /// Writes the mesh and its fields if due at the simulation's step and solved at least once.
   void writeIfDue(const Simulation& simulation);
+  /// Continues the series on disk after `time` (io::MeshSeriesWriter::continueAfter).
+  void continueAfter(double time) { writer_.continueAfter(time); }
   std::size_t snapshots() const { return writer_.steps(); }
   const std::string& pvdPath() const { return writer_.pvdPath(); }
 
@@ -40,7 +43,9 @@ std::shared_ptr<const FieldMesh> findFieldMesh(const Simulation& simulation);
 
 /// Registers a step callback writing the field series when the simulation
 /// has solver stages with a mesh; returns null (and registers nothing) otherwise.
+/// `resume_after` as for attachSeriesOutput.
 std::shared_ptr<FieldSeriesOutput> attachFieldOutput(Simulation& simulation, const std::string& directory,
-                                                     const OutputSpec& spec);
+                                                     const OutputSpec& spec,
+                                                     std::optional<double> resume_after = std::nullopt);
 
 }  // namespace tessella::sim

@@ -29,6 +29,8 @@ class MeshOutput {
   void writeIfDue(const Simulation& simulation);
   /// Writes it now (once per step: a second call is a no-op).
   void write(const Simulation& simulation);
+  /// Continues the series on disk after `time` (io::MeshSeriesWriter::continueAfter).
+  void continueAfter(const Simulation& simulation, double time);
 
   std::size_t snapshots() const { return writer_.steps(); }
   /// How many times the tissue was meshed (<= snapshots()).
@@ -47,7 +49,9 @@ class MeshOutput {
 
 /// With spec.output: writes the current state's mesh now and registers a step
 /// callback that keeps the series up to date; returns null otherwise.
+/// `resume_after` as for attachSeriesOutput.
 std::shared_ptr<MeshOutput> attachMeshOutput(Simulation& simulation, const std::string& directory,
-                                             const MeshSpec& spec, const OutputSpec& output);
+                                             const MeshSpec& spec, const OutputSpec& output,
+                                             std::optional<double> resume_after = std::nullopt);
 
 }  // namespace tessella::sim

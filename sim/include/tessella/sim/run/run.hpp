@@ -35,6 +35,16 @@ struct RunOptions {
 class PreparedRun {
  public:
   static PreparedRun prepare(SimulationConfig config, const RunOptions& options = {});
+  /// An interrupted run, to be continued in place (`tessella run --resume`):
+  /// reads RUN_DIR/run.yaml and restarts from the last complete snapshot of
+  /// its series (one that reads back, with its run state and, when the run
+  /// has a stats.csv, its row there). execute() then deletes what the
+  /// interrupted run wrote after that snapshot (later series entries and
+  /// their files, later stats.csv rows, leftover temporaries) and runs to the
+  /// end, appending, so that the directory ends as the uninterrupted run's.
+  /// Throws InputError naming the directory when it is not a run, has no
+  /// complete snapshot, or is already finished; writes nothing.
+  static PreparedRun resume(const std::string& run_directory);
 
   const std::string& outputDirectory() const { return directory_; }
   const SimulationConfig& config() const { return config_; }
@@ -58,6 +68,8 @@ class PreparedRun {
   std::size_t meshSnapshots() const { return mesh_output_ ? mesh_output_->snapshots() : 0; }
   std::size_t meshesBuilt() const { return mesh_output_ ? mesh_output_->meshes() : 0; }
   std::string runRecordPath() const;
+  /// The snapshot a resumed run continues from (resume()), else empty.
+  const std::string& resumedFrom() const { return resumed_from_; }
 
  private:
   PreparedRun(SimulationConfig config, Simulation simulation, std::string directory, bool overwrite);
@@ -66,6 +78,8 @@ class PreparedRun {
   Simulation simulation_;
   std::string directory_;
   bool overwrite_;
+  std::optional<double> resume_after_;  // resume(): the time of the snapshot continued from
+  std::string resumed_from_;
   std::shared_ptr<SeriesOutput> output_;
   std::shared_ptr<MeshOutput> mesh_output_;  // null unless mesh.output
   std::shared_ptr<FieldSeriesOutput> field_output_;  // null without solver stages on a mesh

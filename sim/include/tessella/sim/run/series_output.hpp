@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "tessella/io/series.hpp"
@@ -22,6 +23,8 @@ class SeriesOutput {
   void writeIfDue(const Simulation& simulation);
   /// Writes the current state now (once per step: a second call is a no-op).
   void write(const Simulation& simulation);
+  /// Continues the series on disk after `time` (io::SeriesWriter::continueAfter).
+  void continueAfter(const Simulation& simulation, double time);
 
   std::size_t snapshots() const { return writer_.steps(); }
   const std::string& pvdPath() const { return writer_.pvdPath(); }
@@ -34,8 +37,12 @@ class SeriesOutput {
 
 /// Writes the current state now and registers a step callback that keeps the
 /// series up to date. The callback owns the returned output.
+/// `resume_after`: continue the series already in `directory` (a resumed
+/// run): its entries up to that time stay, later ones are deleted, and the
+/// current state, already on disk, is not written again.
 std::shared_ptr<SeriesOutput> attachSeriesOutput(Simulation& simulation, const std::string& directory,
-                                                 const OutputSpec& spec);
+                                                 const OutputSpec& spec,
+                                                 std::optional<double> resume_after = std::nullopt);
 
 /// Number of snapshots a run of `steps` steps writes with output every `every`.
 std::size_t expectedSnapshots(std::size_t steps, std::size_t every);

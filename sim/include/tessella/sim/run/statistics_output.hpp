@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,11 @@ class StatisticsOutput {
   /// Creates (truncates) `path` and writes the header. `fields` are the
   /// solver fields: cell properties holding a concentration, each with an
   /// amount column `<name>_amount` where the solver keeps one.
-  StatisticsOutput(std::string path, int dim, std::vector<std::string> fields, std::size_t every);
+  /// With `resume_after` (a resumed run), the file is continued instead:
+  /// its header must be this run's, its rows up to that time stay and later
+  /// ones go (InputError naming the file otherwise).
+  StatisticsOutput(std::string path, int dim, std::vector<std::string> fields, std::size_t every,
+                   std::optional<double> resume_after = std::nullopt);
 
   /// Appends a row if due at the simulation's step (as SeriesOutput does).
   void writeIfDue(const Simulation& simulation);
@@ -53,7 +58,14 @@ std::vector<std::string> solverFields(const SimulationConfig& config);
 
 /// Writes the current state's row now and registers a step callback that
 /// keeps the statistics up to date. The callback owns the returned output.
+/// `resume_after` as for attachSeriesOutput: the rows up to that time stay,
+/// and the current state's row, already there, is not written again.
 std::shared_ptr<StatisticsOutput> attachStatisticsOutput(Simulation& simulation, const std::string& directory,
-                                                         std::vector<std::string> fields, std::size_t every);
+                                                         std::vector<std::string> fields, std::size_t every,
+                                                         std::optional<double> resume_after = std::nullopt);
+
+/// The times of the rows of a stats.csv (its first column), in file order;
+/// InputError naming the file and line for a row that does not start with a number.
+std::vector<double> statisticsRowTimes(const std::string& path);
 
 }  // namespace tessella::sim

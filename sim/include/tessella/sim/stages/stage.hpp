@@ -19,6 +19,13 @@ namespace tessella::sim {
 
 struct StepContext {
   std::size_t step = 0;  ///< index of the step being taken (0 for the first)
+  /// Index of the step on the run's clock: `step` plus the steps the run took
+  /// before the snapshot it restarted from (TimeSpan::origin_steps), so that
+  /// every-N schedules keep their phase across a restart. The clock's step m
+  /// starts at clock_origin + m * clock_dt.
+  std::size_t clock_step = 0;
+  double clock_origin = 0.0;
+  double clock_dt = 0.0;
   double time = 0.0;     ///< time at the start of the step
   double dt = 0.0;       ///< length of this step (the last one may be shorter)
   /// The simulation's random stream: every random draw of a run comes from
