@@ -89,7 +89,8 @@ TEST_CASE("a generator's entry passes its parameters to the generator function u
 TEST_CASE("checks across a generator's parameters blame one of them", "[generators][registry]") {
   const ParamValues huge{{"nx", std::int64_t{100000}}, {"ny", std::int64_t{1000}}};
   CHECK(blamed([&] { generators().make("rectangular_grid", huge, 0); }) == "nx");
-  CHECK_THROWS_WITH(generators().make("box_grid", {{"nx", std::int64_t{1000}}, {"ny", std::int64_t{1000}}, {"nz", std::int64_t{40}}}, 0),
+  const ParamValues box{{"nx", std::int64_t{1000}}, {"ny", std::int64_t{1000}}, {"nz", std::int64_t{40}}};
+  CHECK_THROWS_WITH(generators().make("box_grid", box, 0),
                     Contains("nx * ny * nz = 4e+07 cells is more than the limit of 1e+07"));
   const ParamValues flat{{"rectangle.min", std::vector<double>{0, 0}}, {"rectangle.max", std::vector<double>{5, 0}}};
   CHECK(blamed([&] { generators().make("voronoi", flat, 0); }) == "rectangle.max");

@@ -29,7 +29,8 @@ using detail::SmallMap;
 void checkSplitOptions(const SplitOptions& o) {
   if (!(o.snap_tolerance >= 0.0 && o.snap_tolerance <= kMaxSnapTolerance))
     throw InputError("splitCell: option snap_tolerance = " + formatNumber(o.snap_tolerance) +
-                     " is out of range; expected [0, " + formatNumber(kMaxSnapTolerance) + "] (a fraction of the cell size)");
+                     " is out of range; expected [0, " + formatNumber(kMaxSnapTolerance) +
+                     "] (a fraction of the cell size)");
   if (!(o.min_fraction >= 0.0 && o.min_fraction < 0.5))
     throw InputError("splitCell: option min_fraction = " + formatNumber(o.min_fraction) +
                      " is out of range; expected [0, 0.5) (a fraction of the cell's measure)");
