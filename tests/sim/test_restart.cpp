@@ -38,15 +38,6 @@ std::vector<Index> liveIndex(const Tissue& t) {
   return index;
 }
 
-bool sameLayout(const ComplexLayout& x, const ComplexLayout& y) {
-  return x.dim == y.dim && x.num_vertices == y.num_vertices && x.edge_vertices == y.edge_vertices &&
-         x.face_edge_offsets == y.face_edge_offsets && x.face_edges == y.face_edges &&
-         x.volume_face_offsets == y.volume_face_offsets && x.volume_faces == y.volume_faces &&
-         x.vertex_edge_offsets == y.vertex_edge_offsets && x.vertex_edges == y.vertex_edges &&
-         x.edge_face_offsets == y.edge_face_offsets && x.edge_faces == y.edge_faces &&
-         x.face_volume_offsets == y.face_volume_offsets && x.face_volumes == y.face_volumes;
-}
-
 // Equal up to the slot numbering of removed elements: the same live
 // vertices at the same positions, the same cells (loops, lineage, every
 // double property) in the same order, to the bit.
@@ -99,7 +90,7 @@ void requireSameTissue(const Tissue& a, const Tissue& b) {
   // listed as in the uninterrupted run (the snapshot stores it). 2D
   // snapshots do not store it, and their edges come back numbered by first
   // use in the polygon loops.
-  if (a.dim() == 3) CHECK(sameLayout(a.topology().layout(), b.topology().layout()));
+  if (a.dim() == 3) CHECK(a.topology().layout() == b.topology().layout());
 
   REQUIRE(a.cellProperties().names() == b.cellProperties().names());
   for (const std::string& name : a.cellProperties().names()) {

@@ -15,15 +15,6 @@ using namespace tessella;
 
 namespace {
 
-bool sameLayout(const ComplexLayout& x, const ComplexLayout& y) {
-  return x.dim == y.dim && x.num_vertices == y.num_vertices && x.edge_vertices == y.edge_vertices &&
-         x.face_edge_offsets == y.face_edge_offsets && x.face_edges == y.face_edges &&
-         x.volume_face_offsets == y.volume_face_offsets && x.volume_faces == y.volume_faces &&
-         x.vertex_edge_offsets == y.vertex_edge_offsets && x.vertex_edges == y.vertex_edges &&
-         x.edge_face_offsets == y.edge_face_offsets && x.edge_faces == y.edge_faces &&
-         x.face_volume_offsets == y.face_volume_offsets && x.face_volumes == y.face_volumes;
-}
-
 // Divisions by tilted planes: edges split (new edges take their place in the
 // vertices' lists, not at the end), faces split, walls added.
 Tissue dividedBoxes() {
@@ -59,7 +50,7 @@ TEST_CASE("a 3D complex rebuilt from its layout is the same complex", "[tissue][
   CHECK(unordered);
 
   const CellComplex rebuilt = CellComplex::fromLayout(layout);
-  CHECK(sameLayout(rebuilt.layout(), layout));
+  CHECK(rebuilt.layout() == layout);
   CHECK(rebuilt.count(3) == t.numCells());
   CHECK(rebuilt.count(1) == t.numEdges());
   // Independent of layout(): the borders read through the ordinary accessors.
@@ -78,7 +69,7 @@ TEST_CASE("a 2D complex with removed cells rebuilds from its layout, renumbered"
   CHECK(layout.num_vertices == t.numVertices());
   CHECK(layout.edge_vertices.size() == 2 * t.numEdges());
   const CellComplex rebuilt = CellComplex::fromLayout(layout);
-  CHECK(sameLayout(rebuilt.layout(), layout));
+  CHECK(rebuilt.layout() == layout);
   CHECK(rebuilt.count(2) == t.numCells());
   CHECK(rebuilt.slots(2) == t.numCells());  // no tombstones
 }

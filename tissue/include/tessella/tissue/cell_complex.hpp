@@ -53,6 +53,9 @@ struct ComplexLayout {
   std::vector<Index> vertex_edge_offsets, vertex_edges;
   std::vector<Index> edge_face_offsets, edge_faces;
   std::vector<Index> face_volume_offsets, face_volumes;  ///< empty lists in 2D
+
+  /// Every member equal: the same complex with the same numbering and order.
+  bool operator==(const ComplexLayout&) const = default;
 };
 
 class CellComplex {
