@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // tessella: the command-line simulator. A thin shell over sim/: it parses
 // arguments, prints, and turns errors into messages and exit codes.
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Positional numeric arguments of the bench programs: a value that is not a
 // whole number in range ends the program with a usage message, not an

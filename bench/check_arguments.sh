@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The Tessella developers
+# SPDX-License-Identifier: AGPL-3.0-or-later
 # Every bench program answers --help at once and refuses a bad argument with
 # a short message and exit code 2, instead of starting a long benchmark.
 #   check_arguments.sh PROGRAM

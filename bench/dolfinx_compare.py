@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: 2026 The Tessella developers
+# SPDX-License-Identifier: AGPL-3.0-or-later
 """Tessella's P1 solvers against FEniCS/dolfinx 0.5 on the same meshes.
 
 Runs bench/solvers_bench (built from this tree) with --write-meshes, then solves

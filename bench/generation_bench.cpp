@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Prints how long the Voronoi generators take, next to CGAL's bare Delaunay
 // triangulation of the same seeds timed in the same run (the ratio is what to
 // compare between machines) and, in 2D, CGAL's Delaunay plus the dual cells

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // growth_bench: cost of growth and division.
 //   growth step = move vertices (Euler or Heun) + recompute geometry + check
 //   thresholds (the integrator's step, then SizeThreshold::cellsDue), on 2D

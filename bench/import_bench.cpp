@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // import_bench: the cost of importing a MorphoGraphX-style cell mesh next to
 // the cost of merely parsing the same PLY file (the ratio's target: import
 // within 2x of parsing). The mesh is a synthetic square grid of cells, each a

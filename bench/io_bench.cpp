@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // io_bench: how fast tissue snapshots are written and read.
 //
 //   io_bench [N] [REPEATS] [DIR]   (default 1000 -> an N x N grid = 10^6 cells, 3 repeats, /tmp)

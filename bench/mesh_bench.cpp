@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // mesh_bench: meshing time and elements per second for Voronoi tissues,
 // 2D (10^3 .. 10^5 cells), curved domes and 3D (10^2 .. 10^4 cells), against
 // CGAL / TetGen meshing the same input alone (no checks, no cell tagging, no

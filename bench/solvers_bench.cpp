@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // solvers_bench: assembly rate and time to solution of the P1 solvers on
 // structured meshes (2D triangles, 3D Kuhn tetrahedra) of ~10^4, 10^5 and 10^6
 // unknowns, for every linear-solver back-end built in.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // tissue_bench: geometry recompute, division throughput and memory of the
 // cell complex, printed next to the targets of the tissue issue and next to a
 // baseline (a flat loop over a CSR vertex list, no complex) run side by side.

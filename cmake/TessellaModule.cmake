@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The Tessella developers
+# SPDX-License-Identifier: AGPL-3.0-or-later
 # tessella_add_module(name PUBLIC_DEPS ... PRIVATE_DEPS ...)
 # One module = one directory = one library target `tessella_<name>` with the
 # aliases `tessella::<name>` and `Tessella::<name>` (the latter is the name an

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The Tessella developers
+# SPDX-License-Identifier: AGPL-3.0-or-later
 # tessella_install_package(): the installable CMake package `Tessella`.
 # Call once, after every module is added. It creates the umbrella target
 # Tessella::tessella (links every built module), installs the export set

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The Tessella developers
+# SPDX-License-Identifier: AGPL-3.0-or-later
 """Render every step of a Tessella time series to PNG files.
 
 Run with ParaView's batch interpreter (it needs a display; under a headless

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The Tessella developers
+# SPDX-License-Identifier: AGPL-3.0-or-later
 # Installs dependencies (if missing) and builds Tessella into ./build (Release).
 set -euo pipefail
 cd "$(dirname "$0")/.."

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The Tessella developers
+# SPDX-License-Identifier: AGPL-3.0-or-later
 # Installs the Debian packages Tessella builds, tests and runs with.
 # Idempotent: packages already present are skipped; safe to run again.
 set -euo pipefail

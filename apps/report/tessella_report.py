@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: 2026 The Tessella developers
+# SPDX-License-Identifier: AGPL-3.0-or-later
 """Writes RUN_DIR/report.html: a run's configuration, plots and frames.
 
 Run by `tessella report RUN_DIR` (render/src/run_report.cpp), which first

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // A shoot apical meristem in C++ with Tessella's public API only.
 //
 // The L1 layer is a Voronoi tissue lifted onto a spherical-cap dome. A

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: 2026 The Tessella developers
+# SPDX-License-Identifier: AGPL-3.0-or-later
 """A shoot apical meristem in Python with the tessella module.
 
 The same model as examples/meristem_cpp/meristem.cpp, written against the

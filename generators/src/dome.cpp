@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Dome tissues: a planar Voronoi tissue of the footprint disk whose vertices
 // are lifted vertically onto a spherical cap or a paraboloid. Only vertices
 // move: walls stay straight chords between lifted vertices and cells are

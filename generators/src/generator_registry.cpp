@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The generator table (generator_registry.hpp). Each entry's parameter list
 // is the reference of its YAML subsection in docs/config.md, in this order.
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Lloyd relaxation: seeds move to the centroids of their clipped Voronoi
 // cells, which evens out cell sizes (a centroidal Voronoi tessellation in the
 // limit). A centroid lies inside its convex cell, hence inside the domain, and

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Seeds for the Voronoi generators: reproducible uniform random points in a
 // domain, and CSV files of coordinates.
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Private: orders of 2D points along a Hilbert curve, for building a Delaunay
 // triangulation (insertion order) and for visiting its cells (plain order).

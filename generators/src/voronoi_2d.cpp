@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // 2D Voronoi tissues from CGAL's Delaunay triangulation. Voronoi vertices are
 // the circumcentres of Delaunay triangles (triangles whose circumcentres lie
 // within the weld tolerance, e.g. 4 cocircular seeds, are one vertex). A cell

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // 3D Voronoi tissues from CGAL's Delaunay tetrahedralisation. Voronoi
 // vertices are the circumcentres of Delaunay cells (adjacent cells whose
 // circumcentres lie within the weld tolerance, e.g. of cospherical seeds, are

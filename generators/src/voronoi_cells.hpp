@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Private: clipped Voronoi cells as plain arrays, before they become a Tissue
 // (shared by the generators, the dome and Lloyd relaxation).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The clipping domains of the Voronoi generators as convex polygons/polyhedra.
 
 #include "voronoi_domain.hpp"

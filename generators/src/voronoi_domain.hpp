@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Private: the clipping domains of the Voronoi generators as convex polygons
 // (2D) and convex polyhedra (3D), given by their sides / faces as half-spaces

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Private: a convex polytope that can be cut by planes, each face remembering
 // the plane that made it (a neighbour seed or a domain face). One Voronoi cell

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Private: input checks shared by the Voronoi generators. Each throws
 // InputError naming the seed index and coordinates.

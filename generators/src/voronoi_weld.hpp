@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Private: VertexWelder gives one id to all points within a tolerance of each
 // other. The clipped Voronoi cells are computed one by one, so a vertex shared

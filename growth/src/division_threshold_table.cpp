@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The table of division thresholds (when a cell divides: SizeThreshold's
 // kinds, with the parameters each reads).
 #include "tessella/growth/registries.hpp"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // fixed_angle_to_main_axis: the main-axis plane turned by a fixed angle, for
 // cells that divide obliquely to their long axis at a set angle (docs/growth.md).
 //   2D cells (planar or on a curved sheet): the main-axis rule's plane normal

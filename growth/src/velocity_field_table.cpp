@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The table of velocity fields. Each field's source defines its entry (name,
 // doc, parameters, factory); a new field is its source, its declaration below
 // and its line in the list.

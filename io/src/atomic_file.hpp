@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Atomic replacement of a file: write everything to a temporary file in the
 // same directory, then rename it over the target. rename() within one

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Internal to io/: the cell complex that the cell-complex PLY importer reads
 // and the labelled-tetrahedra importer derives, and the closed-volume core

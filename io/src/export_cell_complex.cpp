@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Cell-complex PLY export (tessella/io/cell_complex_ply.hpp).
 
 #include <bit>

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // A snapshot holds finite numbers only: a NaN or infinite coordinate or
 // floating-point property value is refused when a snapshot is written and

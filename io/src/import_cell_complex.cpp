@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Cell-complex PLY ("property topomesh", OpenAlea cellcomplex) files
 // (docs/import.md): vertex, face, optional edge, and volume elements, each
 // volume listing its faces.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Labelled VTK meshes (docs/import.md): a .vtu whose elements carry the
 // label of the cell they lie in. Tetrahedra give a cell complex whose faces
 // are the triangles between elements of different labels (and on the mesh

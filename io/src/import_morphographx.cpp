@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // MorphoGraphX PLY cell meshes and cell graphs (docs/import.md).
 //
 // A cell is the set of triangles carrying its label; the shared core

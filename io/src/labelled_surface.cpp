@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The part of importing shared by the formats whose cells are labelled
 // patches of one polygon surface (MorphoGraphX cell meshes, cell-complex PLY
 // files of an L1 layer): each label's faces must form a disk, whose outline

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Internal to io/: the importing shared by the formats whose cells are
 // labelled patches of one polygon surface (MorphoGraphX cell meshes,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // FeMesh -> .vtu. The mesh's Eigen arrays are handed to VTK without copies
 // where their layout allows (node coordinates, connectivity, cell ids).
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // CRC-32 checksums of the arrays of a snapshot, so that a damaged file that
 // VTK still decodes (a flipped bit in a coordinate, a connectivity entry, a

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Names of the field-data arrays that make a .vtu a Tessella snapshot. The
 // writer and the reader share them, and docs/output.md documents them.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Collects the error and warning messages a VTK object emits, so that library
 // code can turn them into exceptions instead of letting VTK print them.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The VTK side of every .vtu this module writes or reads: writer settings
 // (appended raw binary, 64-bit headers, the chosen compressor), atomic

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // readTissueVtu: a snapshot back into a Tissue, through the same builders
 // the generators use, so the result is an ordinary, validated tissue.
 

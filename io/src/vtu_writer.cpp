@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // writeTissueVtu: a tissue as a vtkUnstructuredGrid, built straight into
 // preallocated VTK buffers (no per-item InsertNext), then written by VTK.
 

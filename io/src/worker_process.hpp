@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Internal: runs one task in a forked worker process, so that code which may
 // crash on bad input (VTK 9.1's XML reader dereferences, divides and

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Internal: CGAL Delaunay refinement with a vertex budget, so a refinement
 // that does not settle (an angle bound above the proven 20.7 degrees, a

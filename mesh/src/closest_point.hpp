@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Closest point on a triangle, shared by the interior-point search and the
 // field transfer (internal to the mesh module).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The geometry check run before every mesher: degenerate, inverted and
 // self-intersecting input is reported with element ids instead of reaching
 // CGAL or TetGen (TetGen aborts, or worse, silently meshes the wrong region).

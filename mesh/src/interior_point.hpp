@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Internal: a point strictly inside a closed triangulated surface (a 3D cell),
 // with clearance from its walls, for TetGen's region seeds. Also for

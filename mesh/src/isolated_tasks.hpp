@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Internal: runs tasks in forked worker processes, so that a task that aborts
 // (TetGen 1.5 is built with assertions on and calls abort()), crashes or

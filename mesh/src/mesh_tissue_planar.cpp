@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Planar tissues: one constrained Delaunay triangulation of every vertex with
 // every wall edge as a constraint (CGAL), refined for angle and size with
 // Delaunay_mesher_2. Because the whole tissue is one triangulation, a Steiner

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Curved-sheet tissues (Embedding::Surface): each cell is meshed on the
 // surface the tissue's geometry measures (tessella::polygonTriangulation()):
 // the triangles from the vertex mean to each loop edge, or, for a cell whose

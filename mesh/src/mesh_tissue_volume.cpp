@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // meshVolumeTissue: checks the 3D tissue, then hands it to the volume method
 // the options name (volume_methods.hpp).
 

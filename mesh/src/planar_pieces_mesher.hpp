@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Internal: a conforming triangle mesh of a surface made of planar pieces
 // glued along shared sides — the fan triangles of a curved-sheet tissue, the

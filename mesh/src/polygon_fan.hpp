@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Internal: the fan surface of a polygon loop, as tissue/geometry.hpp measures
 // it where it does not fold (triangles from the mean of the loop vertices,

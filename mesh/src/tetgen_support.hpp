@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Internal: what the two TetGen-based volume meshers share — the switch
 // string, running TetGen with its integer exit codes in words, and filling a

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // What the two volume methods share: the seed point of a cell's region.
 
 #include "volume_methods.hpp"

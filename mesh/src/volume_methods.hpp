@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Internal: the two ways meshVolumeTissue fills a 3D tissue with tetrahedra
 // (MeshOptions::volume_method; docs/meshing.md compares them), and what they

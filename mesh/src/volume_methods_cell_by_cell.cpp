@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // 3D tissues, cell by cell: the walls are meshed first, once, to the size and
 // angle bounds (wall_surface_mesh.hpp), and then every cell is filled by its
 // own TetGen run on the closed surface of its wall triangles, with -Y so that

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // 3D tissues: the walls become a piecewise-linear complex (one TetGen facet
 // per planar wall, one facet per fan triangle of a non-planar wall, every
 // facet marked with its wall id + 1) and TetGen fills the cells with quality

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Copies the wall segments a 2D mesher collected into FeMesh's wall-facet
 // arrays (shared by the planar and the surface mesher; internal).

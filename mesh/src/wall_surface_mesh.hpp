@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Internal: the walls of a 3D tissue as one conforming triangle mesh, refined
 // to a size and angle bound before any tetrahedron exists (the first half of

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Internal: every wall of a 3D tissue as triangles over one point list (the
 // tissue's vertex slots, then one fan centre per wall slot): the surface the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Shared pieces of the Python module `tessella`: one bind function per C++
 // module, and the conversions every binding file uses (handles as plain

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Compartment (cell-level) transport from Python: one concentration per
 // cell, passive and polar exchange across walls, no mesh. step/advance
 // return the new concentrations (a NumPy array) instead of editing in place.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Errors of Python code that runs inside a cell division (a custom property
 // division function). Tissue::splitCell calls it after the topology has

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Diffusion-reaction on an FeMesh from Python: species with per-cell
 // coefficients and boundary conditions, the time schemes and the steady
 // solve. Functions of (x, t) and the reaction are Python callables, called

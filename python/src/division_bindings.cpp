@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Division from Python: rules (built-in and Python functions), size
 // thresholds and the scheduler that divides the cells due each step.
 #include <memory>

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Linear elasticity from Python: plane stress / plane strain on flat
 // triangles, 3D solids on tetrahedra, membranes on triangle sheets in 3D.
 // Results are NumPy arrays; stresses and strains in Voigt order

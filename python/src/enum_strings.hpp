@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // C++ enums as Python enums that also accept their snake_case name, so
 // options read like the rest of the module (scheme="heun"):

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Tessella's C++ errors as Python exceptions, message unchanged:
 //   tessella.Error            (RuntimeError)  base of all below
 //   tessella.InputError       (Error, ValueError)  bad input: parameters, files, YAML

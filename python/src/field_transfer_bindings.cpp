@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Carrying fields from one tissue mesh to the next (growth and division in
 // between): nodal P1 interpolation, amount-preserving concentration transfer
 // and cell-wise amounts shared by lineage.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Generators: grids, Voronoi tissues of random or given seeds, dome sheets.
 // Seeds travel as (n, 3) float64 arrays (z = 0 for 2D domains).
 #include "bindings.hpp"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Growth from Python: velocity fields (built-in, expressions, Python
 // functions), surface projections and the growth integrator.
 #include <memory>

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Output from Python: single VTK snapshots and ParaView series.
 #include "bindings.hpp"
 #include "tessella/io/cell_complex_ply.hpp"

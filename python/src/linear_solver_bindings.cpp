@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The linear-solver choice shared by every FE solver: which back-end
 // (SolverMethod, solver_available), its options, and the report of a solve.
 #include "bindings.hpp"

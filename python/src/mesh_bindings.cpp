@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Meshing from Python: MeshOptions, mesh_tissue() -> FeMesh (its arrays as
 // NumPy copies), mesh measures and .vtu output of a mesh with nodal,
 // element and facet fields.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The Python module `tessella`: the C++ library's public API for models
 // written in Python (docs/embedding.md, "Python").
 #include "bindings.hpp"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Python values as the parameters of a registry entry (a division rule, a
 // velocity field: tessella/tissue/registry.hpp). Each keyword argument is

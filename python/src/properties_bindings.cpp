@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Property columns from Python: add with a division policy, read as a NumPy
 // copy or view, write from an array. One column type per NumPy dtype:
 //   float64 <-> double, int64 <-> int64, int32 <-> int (C++ `int`),

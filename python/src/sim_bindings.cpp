@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The simulation loop from Python: from a YAML file or string, or from code
 // with a tissue and stages (integrators, schedulers, Python functions); step
 // callbacks in Python; ParaView series output.

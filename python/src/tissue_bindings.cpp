@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // tessella.Tissue: counts, positions (copy or view), geometry queries,
 // neighbourhood, lineage, editing. Elements are named by slot index (int);
 // slots of removed elements are tombstones until compact() (generators and

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Private helper: deterministic OpenMP assembly. Element matrices are computed
 // in parallel into fixed slots of a preallocated triplet array (slot = element

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Private helper: Dirichlet conditions by elimination. The unknowns split into
 // free (F) and fixed (C) ones; A_FF u_F = b_F - A_FC u_C keeps the reduced

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Internal interface of the optional linear-solver back-ends (CHOLMOD, hypre).
 // Each lives in its own .cpp, compiled to a real solver when its library was

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // CHOLMOD back-end: SuiteSparse's supernodal Cholesky through Eigen's
 // CholmodSupport. Like the LDL^T path, a "successful" factorisation of a
 // numerically singular matrix is caught by CHOLMOD's reciprocal condition

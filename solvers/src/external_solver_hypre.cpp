@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // hypre back-end: conjugate gradients preconditioned by one BoomerAMG V-cycle.
 // Debian's hypre is built with MPI, so MPI is initialised here when the
 // program has not done it (and finalised at exit); every solver works on

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: 2026 The Tessella developers
+# SPDX-License-Identifier: AGPL-3.0-or-later
 # End-to-end checks of the tessella CLI: cli_cases.sh TESSELLA SOURCE_DIR CASE
 # Each case runs the real executable and checks exit code, messages and files.
 set -uo pipefail

@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: 2026 The Tessella developers
+# SPDX-License-Identifier: AGPL-3.0-or-later
 """Checks the module dependencies of the source tree against one table.
 
     check_dependencies.py --root SOURCE_DIR --table dependencies.txt [--links module_links.txt]

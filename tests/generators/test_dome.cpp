@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Dome tissues: a footprint Voronoi tissue lifted onto a spherical cap or a
 // paraboloid; every vertex must lie on the analytic surface.
 

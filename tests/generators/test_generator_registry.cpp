@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The generator table: every entry builds from its defaults what its shape()
 // announces, parameters reach the generator functions unchanged, and checks
 // across parameters blame the right one.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Seeds: reproducible uniform random points (checked against the standard's
 // fixed mt19937_64 sequence) and CSV reading with errors naming file and line.
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // 2D Voronoi tissues: validity, exact tiling of the domain, the Voronoi
 // property of cells and walls, Delaunay adjacency (checked by brute force,
 // independently of CGAL), degenerate seeds, errors and Lloyd relaxation.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // 3D Voronoi tissues: validity, exact filling of the box (and of an
 // icosahedron, whose volume is known in closed form), the Voronoi property of
 // cells and walls, Delaunay adjacency by brute force, cospherical seeds,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The fast paths of the Voronoi generators: cells read off the Delaunay
 // triangulation (interior) next to clipped cells (boundary), the bulk
 // builders, lattice seeds (every Voronoi vertex shared by 4 / 8 Delaunay

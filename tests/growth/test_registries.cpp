@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The tables of growth/ (registries.hpp, the integrator's enum tables): every
 // entry builds from its defaults, parameters reach the objects, and errors
 // name the parameter at fault.

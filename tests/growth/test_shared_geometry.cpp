@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Growth and division sharing one GeometryCache: the division step reads the
 // cell measures the growth step computed (nothing is computed twice), and the
 // run is bit for bit the run with a private cache per process.

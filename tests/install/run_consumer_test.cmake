@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The Tessella developers
+# SPDX-License-Identifier: AGPL-3.0-or-later
 # cmake -DSOURCE_DIR=... -DBUILD_DIR=... -DCONSUMER_DIR=... -DWORK_DIR=... -DMODULES=a,b
 #       [-DGENERATOR=...] [-DCXX=...] -P run_consumer_test.cmake
 # Installs the build tree into BUILD_DIR/install-test, checks what was installed,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Damaging files on purpose, shared by the io tests of bad input: bytes in
 // and out, and a snapshot rewritten by VTK alone after an edit of its grid

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Helpers shared by the io tests: a scratch directory that cleans up after
 // itself, and a field-by-field comparison of a tissue with its read-back copy.

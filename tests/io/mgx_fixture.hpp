@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // MorphoGraphX-style cell meshes for the import tests (and bench/import_bench):
 // an nx x ny grid of square cells on a gently curved sheet, each cell a fan of

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Cell-complex PLY ("property topomesh"): closed volumes -> a 3D tissue,
 // open patches -> a curved sheet, round trips through writeCellComplexPly,
 // and a clear error (file, element index, label) for every bad input.

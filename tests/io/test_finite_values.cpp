@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // A snapshot holds finite numbers only: a NaN or infinite coordinate or
 // floating-point property value is refused when written (nothing is written)
 // and when read, naming the element, the property and the value.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Labelled VTK meshes: tetrahedra with a per-element cell label -> a 3D
 // tissue walled by the triangles between labels; labelled triangles -> a
 // curved sheet; a clear error for each bad input.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // FeMesh output on tiny hand-made meshes, read back with VTK itself.
 
 #include <filesystem>

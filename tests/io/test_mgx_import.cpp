@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // MorphoGraphX cell meshes: what an import keeps, the options, and a clear
 // error (file, element index, cell label) for every kind of bad cell.
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Failed writes and reads say why in the operating system's words ("No such
 // file or directory", "File too large"), name the path, carry none of VTK's
 // internal dump, and leave no temporary file behind.

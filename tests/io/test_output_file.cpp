@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // checkOutputFile: an output path is checked before any work, with a message
 // naming the flag, the path and what is wrong with it.
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The strict PLY reader: every type, both byte orders, and an error naming
 // the file, the line or byte offset and the element for every malformed input.
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Time series: the .pvd is a valid collection after every step, lists every
 // step with its time, and every listed file exists and reads back.
 

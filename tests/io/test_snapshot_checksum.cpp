@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The checksum list of a snapshot: it covers every array of the file, and a
 // single flipped bit in any array's data is refused with the array's name.
 

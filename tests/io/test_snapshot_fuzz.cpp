@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Seeded fuzzing of the snapshot reader: small 2D and 3D snapshots are
 // damaged (bit flips and overwrites in the XML header and in the appended
 // binary data, truncations, swapped attribute values, deleted lines, damaged

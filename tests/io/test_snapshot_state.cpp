@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // What a restart needs from a snapshot besides positions and values: each
 // property's division policy and default (a Reset column's default is what
 // every later daughter gets), and the run state written beside the tissue.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // 3D snapshots: polyhedra with their face streams. Checked against analytic
 // box volumes, against the written tissue, and through VTK itself for what
 // ParaView relies on (cell types, outward faces).

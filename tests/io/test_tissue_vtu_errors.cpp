@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Bad files and failed writes: always an InputError naming the path and the
 // problem, never a crash, and never a damaged file left behind.
 

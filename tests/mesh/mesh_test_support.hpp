@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Shared checks of the mesh tests: the invariants every tissue mesh must meet,
 // compared with the tissue's own measures (never with numbers from a run).

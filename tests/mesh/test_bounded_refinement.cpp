@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The refinement budget behind the planar and surface meshers: a refinement
 // that needs more vertices than allowed stops with the caller's error instead
 // of running on (mesh/src/bounded_refinement.hpp, internal).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The conformity checker itself must catch broken meshes, or the mesher tests
 // that rely on it prove nothing.
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The element-count estimate and MeshOptions::max_elements: a mesh the size
 // bounds make too large is refused before any meshing.
 

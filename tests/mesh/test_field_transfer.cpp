@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Field transfer across growth and division: P1 interpolation reproduces
 // linear fields, cell amounts and concentration totals are conserved.
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Meshing the generated tissues: Voronoi 2D/3D (rectangle, disk, box, ball)
 // and the dome surface, checked against their own cell measures.
 

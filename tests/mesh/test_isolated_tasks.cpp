@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Tasks in worker processes (mesh/src/isolated_tasks.hpp, internal): a task
 // that aborts, hangs or throws costs that task, never the caller, and the
 // other tasks' results come back in order.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // meshAgreement: per-cell and total agreement of a mesh's element measures
 // with the tissue's cell measures (what `tessella mesh` reports).
 

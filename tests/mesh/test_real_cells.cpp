@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Meshing real cells: non-convex cells not star-shaped from their vertex mean
 // (curved sheets, 3D walls), the family of pinched cells that crashed the
 // planar mesher (issue 18), and a real MorphoGraphX meristem

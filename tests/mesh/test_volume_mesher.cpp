@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // 3D tissues -> TetGen tetrahedra: measures, region tags, conformity, quality,
 // non-planar walls, non-convex cells, bad geometry.
 

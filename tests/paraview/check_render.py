@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The Tessella developers
+# SPDX-License-Identifier: AGPL-3.0-or-later
 """Compares what ParaView read (render_series.py --summary) with what was
 written (write_example_series), and checks that the PNGs show something.
 

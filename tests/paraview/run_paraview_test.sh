@@ -1,4 +1,6 @@
 #!/bin/bash
+# SPDX-FileCopyrightText: 2026 The Tessella developers
+# SPDX-License-Identifier: AGPL-3.0-or-later
 # End-to-end check that ParaView opens Tessella series: writes a small series,
 # renders it with paraview/render_series.py under pvbatch, and compares what
 # ParaView read with what was written.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Writes a small growing, dividing tissue as a ParaView series, and a JSON
 // file of what each step contains, for the ParaView test to compare with what
 // ParaView reads.

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The Tessella developers
+# SPDX-License-Identifier: AGPL-3.0-or-later
 # Shared fixtures of the Python module's tests. CTest runs them with the
 # build's module directory on PYTHONPATH (tests/python/CMakeLists.txt).
 import os

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The Tessella developers
+# SPDX-License-Identifier: AGPL-3.0-or-later
 # Growth and division from Python: analytic growth laws, Python fields equal
 # to the built-in ones, Python division rules, conservation at division.
 import math

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The Tessella developers
+# SPDX-License-Identifier: AGPL-3.0-or-later
 # Importing segmented tissues from Python: tessella.import_tissue and
 # import_tissue_with_report (docs/import.md), on the bundled real meristem
 # (tests/data/mgx_meristem_cropped) and on small files written here.

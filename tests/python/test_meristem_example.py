@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The Tessella developers
+# SPDX-License-Identifier: AGPL-3.0-or-later
 # examples/meristem_py/meristem.py, run as a user runs it: a fresh
 # interpreter, the series it writes read back and checked.
 import os

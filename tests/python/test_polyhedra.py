@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The Tessella developers
+# SPDX-License-Identifier: AGPL-3.0-or-later
 # 3D tissues from arrays: tessella.Tissue.from_polyhedra against closed forms
 # (cube volumes, a shared wall, centroids), automatic and given face
 # orientation, the errors naming the cell, face or edge at fault, and

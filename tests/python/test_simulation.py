@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The Tessella developers
+# SPDX-License-Identifier: AGPL-3.0-or-later
 # The simulation loop from Python: YAML configurations, stages and callbacks
 # written in Python, ParaView series output, errors.
 import math

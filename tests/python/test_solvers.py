@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The Tessella developers
+# SPDX-License-Identifier: AGPL-3.0-or-later
 # Meshing and the finite-element / compartment solvers from Python, checked
 # against exact solutions: P1 elements reproduce linear fields exactly, the
 # zero-flux and compartment schemes conserve amounts, two compartments relax

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: 2026 The Tessella developers
+# SPDX-License-Identifier: AGPL-3.0-or-later
 # tessella.Tissue from Python: generators against exact measures, NumPy
 # copies and views, properties and their division policies, lineage,
 # neighbourhood, and errors for bad input.

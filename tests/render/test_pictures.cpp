@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Pictures: the size asked for, and cells in the colours of their property
 // (read back from the PNG at the pixel of each cell's centroid).
 #include <cairo.h>

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The solver sections (diffusion:, compartments:, elasticity:), their stages
 // in the loop, the division gate, and the example configs that use them,
 // checked against exact solutions and conservation laws.

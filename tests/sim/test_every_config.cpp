@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Every configs/*.yaml is run to its end, as shipped, with the tissue
 // validated after every step: a config added later is covered without a
 // test of its own (the per-config tests check what each one is about).

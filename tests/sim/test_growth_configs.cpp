@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The growth: and division: sections and the example configs that use them.
 
 #include <catch2/catch.hpp>

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // A real segmented tissue: the MorphoGraphX export of an Arabidopsis shoot
 // meristem's L1 layer at three time points (../shared/data/mgx_meristem_cropped,
 // see its README; skipped with a message when that folder is absent). Checked

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Registries in the configuration (sim/config/registry_config.hpp): the keys
 // declared from a table, the values read back, errors at the right key.
 #include <catch2/catch.hpp>

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // A run restarted from any of its snapshots must end where the uninterrupted
 // run ends, bit for bit: the snapshot carries the tissue with every
 // property's policy and default, and the run state (clock, random stream,

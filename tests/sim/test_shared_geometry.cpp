@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The geometry a Simulation shares between its stages and outputs
 // (StepContext::geometry, Simulation::geometry()): a grow-and-divide step
 // computes each quantity once, and the outputs compute only what the step's

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Several species in one diffusion stage (diffusion.species_map) and reaction
 // terms from YAML expressions: the same results as separate single-species
 // runs, the exact balance of a linear reaction A -> B and its convergence to

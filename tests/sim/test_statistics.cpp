@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // stats.csv: one row per snapshot, checked against the snapshots themselves
 // (cell counts, total measure, field amounts) and against conservation (each
 // division adds exactly one cell), and kept row by row when a run stops.

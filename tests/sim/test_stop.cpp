@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Stopping a run early (Ctrl-C in `tessella run`): a stop flag ends run() and
 // PreparedRun::execute() between steps, with every file written complete.
 

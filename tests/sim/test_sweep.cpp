@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Sweep planning: parsing --vary, the runs and seeds of a plan, refusals.
 #include <catch2/catch.hpp>
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Keys that assume a dimension or embedding of the tissue are checked against
 // the tissue the config builds (or restarts from) when the config is read:
 // a mismatch is a ConfigError naming the key and both dimensions, and a run

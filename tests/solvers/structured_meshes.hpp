@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Structured FeMesh fixtures for the solver tests: a rectangle split into
 // triangles, a box split into tetrahedra (6 per cube, Kuhn subdivision), and a

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // P1 assembly: exact integrals of constants and linear functions on flat,
 // curved and 3D meshes; symmetry, zero row sums; bit-identical with 1 or 2
 // OpenMP threads.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Compartment transport: exact discrete and analytic solutions of small
 // networks, exact conservation of the total amount, input validation.
 #include <catch2/catch.hpp>

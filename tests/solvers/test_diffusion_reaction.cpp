@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Diffusion-reaction: spatial convergence orders against manufactured
 // solutions, exact linear profiles, time orders of implicit Euler and
 // Crank-Nicolson against exact solutions, conservation, and refusal of

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Linear elasticity: uniaxial tension (3D, plane stress, plane strain, two
 // materials), hydrostatic pressure, patch tests on distorted meshes, and
 // refusal of under-constrained bodies.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // LinearSolver: both methods solve SPD systems to their tolerance, report what
 // they did, and refuse singular / indefinite matrices or non-convergence.
 #include <catch2/catch.hpp>

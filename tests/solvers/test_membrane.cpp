@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Membrane elasticity on triangle meshes in R^3: a flat sheet turned arbitrarily
 // in space gives the plane-stress answer turned with it, and a pressurised
 // sphere carries the Laplace membrane stress p R / (2 t).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Optional linear-solver back-ends (CHOLMOD, hypre BoomerAMG + CG): each one,
 // when built, solves Poisson problems to the analytic answer and agrees with
 // Eigen's direct solver; a back-end that is not built is a clear error.

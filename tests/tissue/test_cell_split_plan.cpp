@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Division plans on their own: what planCellSplit2D/3D decide (crossed edges
 // and walls, new vertex positions, sides) for cells whose cut is known by
 // hand, that planning never changes the tissue, and that splitCell does what

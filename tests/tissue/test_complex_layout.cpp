@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // CellComplex::layout / fromLayout: a complex written as flat lists and
 // rebuilt is the same complex (numbering, edge directions, loop starts,
 // list orders), and a damaged layout is a located TopologyError.

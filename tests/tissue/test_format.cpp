@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // formatNumber / formatPoint: the one spelling of a double in messages and text files.
 #include <catch2/catch.hpp>
 

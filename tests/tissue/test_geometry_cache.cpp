@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The shared, versioned GeometryCache: require() computes a quantity only
 // when it is missing or stale for the tissue's topology and geometry
 // versions, and what it computes is bit-identical to a full recompute.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Thousands of random divisions in 2D, on a curved sheet and in 3D: the
 // complex must stay valid, measures conserved, policies applied, lineage
 // ids unique.

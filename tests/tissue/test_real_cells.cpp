@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Geometry that holds on real cells: non-convex polygons that are not
 // star-shaped from their vertex mean (planar, tilted and curved), their
 // invariance to the loop's start and direction, 3D walls of that kind, the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Registry and parameter tables: defaults, type and range checks, messages
 // that name the entry, the parameter and the value.
 #include <catch2/catch.hpp>

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Planning a division (cell_split_plan.hpp): which edges and walls the plane
 // crosses, where the new vertices go, which side each part goes to. Reads the
 // tissue only; Tissue::splitCell applies the plan (tissue_editing.cpp).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // checkPolyhedra: the arrays of a 3D tissue checked (and oriented) before
 // buildPolyhedralTissue, so a mistake is reported in the caller's numbering:
 // the builder only knows its own edge ids.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The dome surface: heights above the footprint and vertical lifts, for the
 // dome generator and for growth's projection onto the dome.
 

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Private helpers of the editing primitives (tissue_editing.cpp) and of the
 // division planner (cell_split_plan.cpp). Internal to the tissue module.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Measure kernels shared by the per-element queries and the batched
 // recompute: one implementation, so a cached value is bit-identical to a

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Editing primitives of Tissue: split an edge, a face, a cell by a plane.
 // Every primitive checks its input (geometry included) before it changes
 // anything, applies the property division policies itself, and leaves a

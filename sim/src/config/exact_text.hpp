@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Reading back numbers written as text bit for bit (the run state a snapshot
 // carries for an exact restart); they are written by tessella::formatNumber.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // A Simulation from a config (simulation.hpp declares these without knowing
 // the config): the tissue its generator describes and the stages its
 // sections make.

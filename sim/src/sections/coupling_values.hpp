@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Reading the compact values of the solver sections: "name=value" lists
 // (per-type coefficients, conditions per boundary region), lineage-id lists

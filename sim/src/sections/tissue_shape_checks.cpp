@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // The keys that assume a dimension or embedding of the tissue, checked
 // against the tissue the config builds (or the snapshot it restarts from)
 // when the config is read, so a mismatch is refused before anything is

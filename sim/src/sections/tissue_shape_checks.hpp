@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // checkTissueShape(): the config keys that assume a dimension or embedding of
 // the tissue (elasticity models, growth.surface, boundary regions z_min/z_max,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // What the solver stages read off the tissue and the mesh: per-cell
 // coefficients by cell type, source/polar cell marks, and the wall facets of

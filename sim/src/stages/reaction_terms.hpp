@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // ReactionTerms: the reaction rates of the diffusion section's species,
 // muparser expressions in the species names ("A: -k*A" is written

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 // Checks an installed Tessella from the outside: a hexagonal tissue, a
 // property divided with its policy, division along the main axis, validation
 // and (when the growth module is installed) growth by a velocity field and

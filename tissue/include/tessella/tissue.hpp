@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Umbrella header of the tissue module. The generators (grids, Voronoi,
 // dome) are their own module: tessella/generators.hpp.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The generator table: every generator a configuration (`tissue.generator`)
 // or a script (tessella.generate) picks by name, with its doc, the parameters

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Voronoi tissues: cells are the Voronoi regions of seed points (computed as
 // the dual of CGAL's Delaunay triangulation), clipped to a domain. Cell

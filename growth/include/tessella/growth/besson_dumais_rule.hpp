@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Stochastic shortest-wall rule of Besson and Dumais (2011): the candidate
 // walls are the local minima of the new wall's measure over planes through

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The bump field of the PlantGL paper (Pradal et al. 2009, section 4.3.1,
 // figure 17):

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The tangent frame of a 2D cell (planar or on a curved sheet): centroid,
 // unit normal and two unit tangents. Division planes of 2D cells are spanned

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // DivisionRule: where a cell divides. A rule returns the cutting plane for a
 // cell; Tissue::splitCell does the cut (2D, surface and 3D alike). On a

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // DivisionScheduler: each step, divides every cell over its size threshold
 // with the division rule (Tissue::splitCell applies property policies and

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Division walls: every wall made by a division is tagged with the lineage
 // id of the cell that divided (wall property "division_of", -1 for walls

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // A velocity field written as three expressions (muparser syntax) of x, y, z,
 // t and named parameters, e.g. vx = "r*x", vy = "r*y", vz = "0".

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Fixed-direction rule: a plane through the centroid with a given normal, so
 // every new wall is perpendicular to one direction (e.g. transverse walls of

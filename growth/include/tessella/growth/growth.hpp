@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Everything in growth/: velocity fields, the integrator, harmonic
 // interpolation, division rules, thresholds, the scheduler and the tables

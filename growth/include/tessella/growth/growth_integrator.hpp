@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // GrowthIntegrator: moves every vertex of a tissue with a velocity field over
 // one time step, keeps the tissue on its surface (or in z = 0), recomputes

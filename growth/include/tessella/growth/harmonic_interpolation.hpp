@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Harmonic interpolation of vertex velocities (the paper's second growth
 // mode): velocities are known on control vertices (by default the boundary

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Linear growth fields v = G (x - c): G = r I is uniform (isotropic)
 // expansion at relative rate r per unit length (areas grow at 2r, volumes

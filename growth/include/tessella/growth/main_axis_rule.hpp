@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Main-axis rule: the plane through the centroid perpendicular to the cell's
 // longest principal axis (the eigenvector of the largest second moment), so

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Shoot apical meristem growth on a dome: a slowly growing central zone
 // around the summit and a fast peripheral zone (Reddy et al. 2004; Kwiatkowska

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // NewWallMeasure: the length (2D) or area (3D) of the wall a plane through a
 // given point would create in a cell, evaluated many times per cell by the

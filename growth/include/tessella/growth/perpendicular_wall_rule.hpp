@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Hofmeister/Sachs rule (Hofmeister 1863; Sachs 1878): the new wall meets the
 // wall through which the cell was born (its mother's division wall, see

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Radial growth: every point moves straight away from a centre (or, when an
 // axis is given, from an axis) with speed rate * d^exponent, d the distance.

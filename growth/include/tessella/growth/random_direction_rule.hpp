@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Random-direction rule: a plane through the centroid with a uniformly random
 // orientation (uniform angle in the cell's tangent plane in 2D, uniform

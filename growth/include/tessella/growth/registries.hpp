@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The tables of growth/: every division rule, division threshold, velocity
 // field and surface that a configuration or a script picks by name, each with

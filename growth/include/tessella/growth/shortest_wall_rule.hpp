@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Shortest-wall rule (Errera 1888): the cell divides by the plane through its
 // centroid that makes the new wall as short (2D) or as small (3D) as

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Local minima of the new wall's measure over the orientations of planes
 // through a point (the centroid): the candidate walls of the shortest-wall

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // SizeThreshold: when a cell divides. A cell is due when its size (area in
 // 2D, volume in 3D) exceeds its threshold, which is

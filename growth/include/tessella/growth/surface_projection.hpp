@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Surface projections keep a curved-sheet tissue (the L1 layer of a dome) on
 // its surface while it grows: the integrator applies one to every vertex

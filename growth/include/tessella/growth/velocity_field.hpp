@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // VelocityField: a prescribed kinematic growth field v(x, t). The growth
 // integrator moves every vertex (or every control vertex, see

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Writing a tissue as a cell-complex PLY file (the "property topomesh" layout
 // of the OpenAlea cellcomplex tools), which importCellComplex reads back

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Importing segmented tissues from other tools' files. One table,
 // importFormats(), lists every format (name, file extensions, reader); the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Finite-element meshes (tessella::mesh::FeMesh) as .vtu files, for looking at the
 // fields a solver computed: the elements (triangles or tetrahedra) with the

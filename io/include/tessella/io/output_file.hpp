@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Checking an output file before any work: a run or a mesh that takes
 // minutes should not fail at its last step because of a mistyped path.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // A strict reader of PLY 1.0 files (ASCII, binary little and big endian):
 // any elements, scalar and list properties of every PLY type (char .. double,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // ParaView time series: DIR/<name>.pvd listing DIR/<name>_000000.vtu, ...
 // with the simulation time of each step. The .pvd is rewritten (temporary

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Small text files (run records, collections) written the way snapshots are:
 // to a temporary file in the same directory, then renamed over the target.

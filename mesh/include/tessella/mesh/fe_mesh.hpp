@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // FeMesh: a finite-element mesh as plain Eigen arrays, independent of the cell
 // complex. mesh/ produces it from a tissue; solvers/ solve on it and io/ writes

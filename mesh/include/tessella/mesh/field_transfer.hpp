@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Carrying fields from one tissue mesh to the next after growth and division,
 // so that a diffusion run can continue on a dividing tissue.

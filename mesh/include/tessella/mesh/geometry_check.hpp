@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // checkMeshable(): finds the geometry a mesher cannot or must not mesh, and
 // names the elements involved, before any mesher runs (TetGen in particular

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // How closely a mesh reproduces its tissue: the elements of each cell should
 // add up to the cell's area or volume (the meshers mesh the surface the

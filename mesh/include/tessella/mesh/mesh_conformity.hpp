@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // checkConformity(): the structural guarantees of a tissue mesh, checked on
 // the plain arrays (used by the tests; cheap enough to run after every mesh).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Measures and quality figures of an FeMesh: element areas/volumes, per-cell
 // sums (to compare with the tissue's cellMeasure), angles and radius-edge

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // MeshOptions: the size and quality targets of a tissue mesh, in the tissue's
 // own length units. See docs/meshing.md for what each bound guarantees.

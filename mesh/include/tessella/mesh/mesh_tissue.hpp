@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // meshTissue(): any tissue -> a conforming finite-element mesh that respects
 // its cells. Every element lies in exactly one cell, every wall is a union of

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The colour map of every picture: viridis (perceptually uniform, readable
 // in grey and by colour-blind readers), as matplotlib defines it.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Pictures of a tissue as PNG files, drawn with Cairo: no ParaView, no
 // display. 2D and curved tissues are drawn cell by cell with their walls; 3D

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // A run's report: `tessella report RUN_DIR` writes RUN_DIR/report.html with
 // the run's configuration, plots made with matplotlib (cell count and cell

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The frames of a whole run: one PNG per snapshot of a series, one view and
 // one colour range for all of them, and a movie when ffmpeg is installed.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // TimeSpan: the clock of a Simulation (no YAML: the `time:` section reads it,
 // sections/time_section.hpp).

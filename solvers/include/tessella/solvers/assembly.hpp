@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // P1 finite-element assembly on an FeMesh (triangles in R^3 or tetrahedra).
 // All routines are OpenMP-parallel and deterministic: the result is

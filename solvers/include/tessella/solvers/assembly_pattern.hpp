@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Cached sparsity pattern of the P1 element matrices of one FeMesh, for fast
 // re-assembly. Built once from the connectivity: the compressed matrix

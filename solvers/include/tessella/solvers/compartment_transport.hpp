@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Cell-level (compartment) transport: one well-mixed concentration per cell,
 // exchange across walls, no mesh. For a wall between cells i and j with area

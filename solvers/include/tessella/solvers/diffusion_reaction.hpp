@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Diffusion-reaction of one or more species on an FeMesh with P1 elements:
 //   du/dt = div(D grad u) - k u + p + s(x, t) + r(u_1..u_S)

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Small-strain linear elasticity with P1 elements: plane stress / plane strain
 // on flat triangle meshes in the xy-plane, 3D on tetrahedra, and membranes on

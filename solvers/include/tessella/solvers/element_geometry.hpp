@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // P1 geometry of one simplex: its measure and the gradients of its hat
 // functions. Works for triangles anywhere in R^3 (flat or on a curved sheet) and

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Errors raised by solvers/. All derive from SolverError, itself a tessella::Error
 // (the root of every error Tessella throws on purpose), so a caller can catch

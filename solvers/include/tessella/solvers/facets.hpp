@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Selecting wall facets for boundary conditions (by wall id, on the tissue
 // boundary or not) and the geometry boundary conditions need from them.

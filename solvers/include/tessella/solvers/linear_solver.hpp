@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // One small interface over sparse SPD solvers: Eigen's direct LDL^T for small
 // systems and preconditioned conjugate gradients for large ones (always built),

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // CellComplex: the pure combinatorics of a tissue (no positions, no
 // properties): elements of degree 0..D with oriented borders and regions.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // What dividing a cell by a plane will do, decided without changing anything:
 // Tissue::splitCell plans with these functions, then applies the plan. A plan

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The dome surface: a spherical cap or a paraboloid of revolution over a
 // footprint disk. Tissue vocabulary shared by the dome generator (which puts

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // EnumTable: the names of an enum's values, for the choices a user makes by
 // name that take no parameters (an integration scheme, where velocities come

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Error types. Library code never prints or exits: it throws one of these,
 // with a message that names the element ids and values involved.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Quoting file contents in error messages: a line of a user's file may be
 // megabytes long or hold binary bytes, and must not flood or garble a

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Numbers as text: the one spelling of a double in the messages, reports and
 // text files Tessella writes (docs/ARCHITECTURE.md, "Conventions").

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Parameters of the things a user picks by name (a division rule, a velocity
 // field, a generator): their declarations (ParamSpec: name, type, doc,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // RaggedArray: many short lists (a face's edge loop, a vertex's star) in one
 // contiguous pool.

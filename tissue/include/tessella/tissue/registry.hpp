@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Registry: one table per extensible concept (division rules, thresholds,
 // velocity fields, generators, ...). An entry is a name, a doc string, the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Tissue: the t-scene-graph. A CellComplex augmented with geometry (vertex
 // positions only: every other measure is derived from borders), property

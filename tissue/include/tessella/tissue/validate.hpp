@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // validate(): checks every invariant of a tissue and reports the first
 // violation with the element ids involved. Tests call it after every edit;

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Small fixed-size linear algebra used by the geometry: Eigen types, plus a
 // compact symmetric 3x3 tensor for per-element second moments.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Config: a validated configuration. Every key of the schema that is active
 // has a value here (from the file, a --set override or the default), with the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // ConfigError: a configuration problem, reported before any work starts.
 // The message always reads "<where>: <key path>: <problem>", e.g.

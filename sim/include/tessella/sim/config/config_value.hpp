@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The typed values a configuration key can hold, and where each came from.
 // Kept free of yaml-cpp so that code embedding a Simulation does not need it.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Registries (tessella/tissue/registry.hpp) and enum tables
 // (tessella/tissue/enum_table.hpp) in the configuration: a section declares

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The configuration schema: every key a config file may hold, with its type,
 // default, allowed range or choices, and a doc string. Validation, defaults,

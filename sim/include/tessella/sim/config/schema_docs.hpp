@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The key reference of docs/config.md, generated from the schema
 // (`tessella schema` prints it), so the docs cannot drift from the code.

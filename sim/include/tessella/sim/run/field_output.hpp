@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // FieldSeriesOutput: writes the solver stages' mesh (the shared FieldMesh)
 // with its nodal fields as point data (a diffusing species, displacements) as

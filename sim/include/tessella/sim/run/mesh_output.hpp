@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // MeshOutput: with mesh.output on, a run writes the finite-element mesh of the
 // tissue as a ParaView series beside the tissue series: DIR/mesh.pvd listing

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // ProgressMeter: rate-limited progress lines for long runs. It formats, the
 // app prints (library code never writes to a terminal).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // PreparedRun: everything `tessella run` does, minus printing, split in two
 // so that no file is written until every check has passed:

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // run.yaml: the fully resolved configuration of a run (every active key,
 // defaults filled in, paths absolute, the RNG seed actually used and the

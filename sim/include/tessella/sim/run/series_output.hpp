@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // SeriesOutput: writes a Simulation's tissue as a ParaView series
 // (io::SeriesWriter) on a schedule: the initial state, every `every` steps,

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // StatisticsOutput: DIR/stats.csv, a summary row for every snapshot of the
 // tissue series (the initial state, every `output.every` steps, the final

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Parameter sweeps: one config per combination of the varied keys and per
 // replicate, and a Snakemake workflow that runs them and collects every run's

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // TissueSummary: what `tessella info` reports about a tissue: element counts,
 // total size, the distribution of cell sizes and whether validate() passes.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The solver sections: `diffusion:` (one or several diffusing species on the
 // tissue's finite-element mesh, with reaction terms), `compartments:` (one well-mixed concentration per

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The `growth:` and `division:` sections: the velocity field that moves the
 // vertices every step (and how), and the rule and threshold by which cells

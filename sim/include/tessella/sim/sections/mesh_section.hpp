@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The `mesh:` section: the size and quality targets of the finite-element
 // mesh of the tissue (mesh::MeshOptions) and whether a run writes that mesh

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // SectionUnit: one YAML section as one unit {declare its keys, read them,
 // make its stages}. The table of units (sectionUnits(), simulation_config.hpp)

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // SimulationConfig: a validated Config read into typed parameter structs,
 // one per section. What a Simulation and a run are built from.

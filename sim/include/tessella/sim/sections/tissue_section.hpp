@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The `tissue:` section: which generator builds the initial tissue, and its
 // parameters. `tissue.generator` picks one of the subsections; only that one

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The solver stages of a Simulation (see stage.hpp) and their parameters,
 // which the solver sections read (coupling_section.hpp) or a model builds.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // FieldMesh: the finite-element mesh of a simulation's tissue and the nodal
 // fields the solver stages keep on it. update() rebuilds the mesh only when

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // The growth and division stages of a Simulation (see stage.hpp):
 //   GrowthStage    moves every vertex with the velocity field over the step

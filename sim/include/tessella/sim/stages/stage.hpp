@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
 #pragma once
 // Stage: one process a Simulation applies at every step (growth, division,
 // a solve...). Stages run in the order they were added.
