@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "mesh_test_support.hpp"
+#include "../tissue/l_prisms.hpp"
 #include "tessella/mesh/geometry_check.hpp"
 #include "tessella/mesh/mesh_tissue.hpp"
 #include "tessella/tissue/builders.hpp"
@@ -161,22 +162,9 @@ TEST_CASE("a curved cell not star-shaped from its vertex mean is meshed on its o
 
 TEST_CASE("3D: a non-planar, non-convex wall is meshed on the surface the volumes are measured on",
           "[mesh][volume][real]") {
-  const std::vector<Vec3> L{{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};
-  std::vector<Vec3> q;
-  for (double z : {0.0, 1.0, 2.0})
-    for (const Vec3& v : L) q.push_back(v + Vec3(0, 0, z));
-  for (int i = 6; i < 12; ++i) q[i].z() += 0.3 * std::sin(q[i].x() + 2 * q[i].y());
-  std::vector<std::vector<Index>> faces{{5, 4, 3, 2, 1, 0}, {6, 7, 8, 9, 10, 11}, {12, 13, 14, 15, 16, 17}};
-  std::vector<std::vector<CellFace>> cells(2);
-  cells[0] = {{0, false}, {1, false}};
-  cells[1] = {{1, true}, {2, false}};
-  for (Index layer = 0; layer < 2; ++layer)
-    for (Index i = 0; i < 6; ++i) {
-      const Index a = 6 * layer + i, b = 6 * layer + (i + 1) % 6;
-      cells[layer].push_back({static_cast<Index>(faces.size()), false});
-      faces.push_back({a, b, b + 6, a + 6});
-    }
-  const Tissue t = buildPolyhedralTissue(q, faces, cells);
+  const fixtures::StackedPrisms prisms = fixtures::stackedLPrisms(1.0, 0.3);
+  const std::vector<Vec3>& q = prisms.positions;
+  const Tissue t = prisms.build();
   REQUIRE(validate(t).ok);
   REQUIRE(polygonTriangulation(std::vector<Vec3>(q.begin() + 6, q.begin() + 12)).folded);
   for (VolumeMethod method : {VolumeMethod::WholeTissue, VolumeMethod::CellByCell}) {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "fixtures.hpp"
+#include "l_prisms.hpp"
 #include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/generators/grids.hpp"
@@ -53,7 +54,7 @@ PolygonMeasures rectangles(const std::vector<Rect>& rs, const std::vector<Rect>&
 
 // An L (vertex mean on the reflex corner), a C (vertex mean in the notch) and
 // a dart (star-shaped from its tip, not from its vertex mean).
-const std::vector<Vec3> kL{{0, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}, {1, 2, 0}, {0, 2, 0}};
+const std::vector<Vec3>& kL = fixtures::kLShape;
 const std::vector<Vec3> kC{{0, 0, 0}, {3, 0, 0}, {3, 1, 0}, {1, 1, 0}, {1, 2, 0}, {3, 2, 0}, {3, 3, 0}, {0, 3, 0}};
 const std::vector<Vec3> kDart{{0, 0, 0}, {4, 0, 0}, {0.2, 0.2, 0}, {0, 4, 0}};
 
@@ -222,22 +223,10 @@ TEST_CASE("folded cells: the cache equals the per-element queries bit for bit, f
 TEST_CASE("3D: a prism over an L (folded planar walls) has the exact volume, and a non-planar folded wall adds up",
           "[tissue][geometry][real]") {
   const double h = 1.5;
-  std::vector<Vec3> q;
-  for (double z : {0.0, h, 2 * h})
-    for (const Vec3& v : kL) q.push_back(v + Vec3(0, 0, z));
   // The middle L is made non-planar: it is the wall between the two prisms.
-  for (int i = 6; i < 12; ++i) q[i].z() += 0.3 * std::sin(q[i].x() + 2 * q[i].y());
-  std::vector<std::vector<Index>> faces{{5, 4, 3, 2, 1, 0}, {6, 7, 8, 9, 10, 11}, {12, 13, 14, 15, 16, 17}};
-  std::vector<std::vector<CellFace>> cells(2);
-  cells[0] = {{0, false}, {1, false}};
-  cells[1] = {{1, true}, {2, false}};
-  for (Index layer = 0; layer < 2; ++layer)
-    for (Index i = 0; i < 6; ++i) {
-      const Index a = 6 * layer + i, b = 6 * layer + (i + 1) % 6;
-      cells[layer].push_back({static_cast<Index>(faces.size()), false});
-      faces.push_back({a, b, b + 6, a + 6});
-    }
-  const Tissue t = buildPolyhedralTissue(q, faces, cells);
+  const fixtures::StackedPrisms prisms = fixtures::stackedLPrisms(h, 0.3);
+  const std::vector<Vec3>& q = prisms.positions;
+  const Tissue t = prisms.build();
   REQUIRE(validate(t).ok);
   std::vector<Vec3> middle(q.begin() + 6, q.begin() + 12);
   REQUIRE(fanFolds(middle));
@@ -246,8 +235,7 @@ TEST_CASE("3D: a prism over an L (folded planar walls) has the exact volume, and
   CHECK(v1 > 0);
   CHECK(v0 + v1 == Approx(3.0 * 2 * h).epsilon(1e-13));
   // The same prisms with a flat middle wall: exact volumes and centroids.
-  for (int i = 6; i < 12; ++i) q[i].z() = h;
-  const Tissue flat = buildPolyhedralTissue(q, faces, cells);
+  const Tissue flat = fixtures::stackedLPrisms(h, 0.0).build();
   const PolyhedronMeasures m = polyhedronMeasures(flat, VolumeId(0));
   CHECK(m.volume == Approx(3.0 * h).epsilon(1e-13));
   CHECK((m.centroid - Vec3(2.5 / 3, 2.5 / 3, h / 2)).norm() < 1e-12);

@@ -127,6 +127,13 @@ std::vector<std::array<int, 3>> earClipTriangles(std::size_t n, At at, const Vec
   return out;
 }
 
+/// The area of the fan triangle (apex, apex + p, apex + q), signed against `normal`.
+inline double signedFanTriangle(const Vec3& p, const Vec3& q, const Vec3& normal) {
+  const Vec3 t = p.cross(q);
+  const double tn = t.norm();
+  return 0.5 * (t.dot(normal) < 0 ? -tn : tn);
+}
+
 /// Area, centroid and second moment of the triangles (loop positions) lifted
 /// to the loop's 3D points, about `origin`; each triangle signed against `normal`.
 template <typename At>
@@ -137,9 +144,7 @@ void trianglesKernel(const std::vector<std::array<int, 3>>& tris, At at, const V
   Mat3 second = Mat3::Zero();
   for (const auto& tri : tris) {
     const Vec3 p = at(tri[0]) - origin, q = at(tri[1]) - origin, r = at(tri[2]) - origin;
-    const Vec3 t = (q - p).cross(r - p);
-    const double tn = t.norm();
-    const double ti = 0.5 * (t.dot(normal) < 0 ? -tn : tn);
+    const double ti = signedFanTriangle(q - p, r - p, normal);
     const Vec3 s = p + q + r;
     a += ti;
     first += ti * s / 3.0;
@@ -208,7 +213,9 @@ bool kernelApex(std::size_t n, At at, const Vec3& origin, const Vec3& normal, Ve
 
 /// Signed fan from `apex` (each triangle against `normal`): area, first
 /// moment about apex, second moment about apex and the smallest triangle.
-template <typename At>
+/// Without Centroid only the area and the smallest triangle (whether the fan
+/// folds: the same sums, without the moments' cost).
+template <bool Centroid = true, typename At>
 void fanKernel(std::size_t n, At at, const Vec3& apex, const Vec3& normal, bool moments, double& area,
                Vec3& centroid, Mat3* second_moment, double& min_ti) {
   double a = 0;
@@ -218,19 +225,18 @@ void fanKernel(std::size_t n, At at, const Vec3& apex, const Vec3& normal, bool 
   Vec3 p = at(n - 1) - apex;
   for (std::size_t i = 0; i < n; ++i) {
     const Vec3 q = at(i) - apex;
-    const Vec3 t = p.cross(q);
-    const double tn = t.norm();
-    const double ti = 0.5 * (t.dot(normal) < 0 ? -tn : tn);
+    const double ti = signedFanTriangle(p, q, normal);
     a += ti;
     min_ti = std::min(min_ti, ti);
-    first += ti * (p + q) / 3.0;
-    if (moments) {
+    if constexpr (Centroid) first += ti * (p + q) / 3.0;
+    if (Centroid && moments) {
       const Vec3 s = p + q;
       second += (ti / 12.0) * (p * p.transpose() + q * q.transpose() + s * s.transpose());
     }
     p = q;
   }
   area = a;
+  if constexpr (!Centroid) return;
   const Vec3 g = a != 0 ? Vec3(first / a) : Vec3::Zero();
   centroid = apex + g;
   if (moments && second_moment) *second_moment = second - a * g * g.transpose();
@@ -285,15 +291,14 @@ FoldedSurface foldedSurface(std::size_t n, At at) {
   if (!(len > 0)) return out;
   const Vec3 normal = vec_area / len;
   double a, min_ti;
-  Vec3 fan_centroid;
-  fanKernel(n, at, c0, normal, false, a, fan_centroid, nullptr, min_ti);
+  Vec3 unused;
+  fanKernel<false>(n, at, c0, normal, false, a, unused, nullptr, min_ti);
   if (min_ti > kFoldTolerance * a) return out;
   out.folded = true;
   Vec3 apex;
   if (kernelApex(n, at, c0, normal, apex)) {
     double ka, kmin;
-    Vec3 kc;
-    fanKernel(n, at, apex, normal, false, ka, kc, nullptr, kmin);
+    fanKernel<false>(n, at, apex, normal, false, ka, unused, nullptr, kmin);
     if (kmin > kFoldTolerance * ka) {
       out.apex = apex;
       return out;
