@@ -27,12 +27,21 @@ NewWallMeasure::NewWallMeasure(const Tissue& t, CellId c, const Vec3& point)
     }
     return;
   }
+  // Each vertex once (a cell's vertex lies on three walls or more): a plane's
+  // signed distances are computed once per vertex, not once per loop entry.
   const VolumeId vol = t.cellVolume(c);
+  std::vector<VertexId> unique;
+  for (OrientedFace of : k.volumeFaces(vol))
+    for (VertexId v : k.faceVertices(of.handle())) unique.push_back(v);
+  std::sort(unique.begin(), unique.end());
+  unique.erase(std::unique(unique.begin(), unique.end()), unique.end());
+  points_.reserve(unique.size());
+  for (VertexId v : unique) points_.push_back(t.position(v) - point_);
   loop_start_.push_back(0);
   for (OrientedFace of : k.volumeFaces(vol)) {
-    const auto loop = k.faceVertices(of.handle());
     const std::size_t first = loops_.size();
-    for (VertexId v : loop) loops_.push_back(t.position(v) - point_);
+    for (VertexId v : k.faceVertices(of.handle()))
+      loops_.push_back(static_cast<std::uint32_t>(std::lower_bound(unique.begin(), unique.end(), v) - unique.begin()));
     // Orient every loop outward: a reversed face is traversed backwards.
     if (of.reversed()) std::reverse(loops_.begin() + first, loops_.end());
     loop_start_.push_back(static_cast<std::uint32_t>(loops_.size()));
@@ -106,22 +115,31 @@ double NewWallMeasure::section(const Vec3& n) const {
   // traversed counter-clockwise about n. Pairing crossings in loop order
   // instead of along the line gives the same sum (it is linear in the
   // crossings' abscissae), so non-convex walls are handled too.
+  std::array<double, 256> small;  // no allocation for cells of up to 256 vertices
+  std::vector<double> large;
+  double* s = small.data();
+  if (points_.size() > small.size()) {
+    large.resize(points_.size());
+    s = large.data();
+  }
+  for (std::size_t v = 0; v < points_.size(); ++v) s[v] = n.dot(points_[v]);
   double twice_area = 0.0;
   for (std::size_t f = 0; f + 1 < loop_start_.size(); ++f) {
-    const Vec3* q = loops_.data() + loop_start_[f];
+    const std::uint32_t* q = loops_.data() + loop_start_[f];
     const std::size_t m = loop_start_[f + 1] - loop_start_[f];
     bool have_b = false;
     Vec3 first_b = Vec3::Zero(), b = Vec3::Zero();
     bool pending_a_before_b = false;
     Vec3 first_a = Vec3::Zero();
-    double sj = n.dot(q[0]);
+    double sj = s[q[0]];
     for (std::size_t i = 0; i < m; ++i) {
       const std::size_t j = i + 1 == m ? 0 : i + 1;
       const double si = sj;
-      sj = n.dot(q[j]);
+      sj = s[q[j]];
       const bool pi = si > 0, pj = sj > 0;
       if (pi == pj) continue;
-      const Vec3 x = q[i] + (si / (si - sj)) * (q[j] - q[i]);
+      const Vec3& qi = points_[q[i]];
+      const Vec3 x = qi + (si / (si - sj)) * (points_[q[j]] - qi);
       if (pi) {  // + -> -: start of a section boundary segment
         b = x;
         if (!have_b) first_b = x;

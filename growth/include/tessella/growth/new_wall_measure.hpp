@@ -65,7 +65,8 @@ class NewWallMeasure {
   CellFrame frame_;
   Vec3 point_;
   std::vector<double> u_, v_;             // 2D: loop in tangent coordinates about point_
-  std::vector<Vec3> loops_;               // 3D: outward-oriented wall loops relative to point_,
+  std::vector<Vec3> points_;               // 3D: the cell's vertices relative to point_
+  std::vector<std::uint32_t> loops_;       //     outward-oriented wall loops as indices into points_,
   std::vector<std::uint32_t> loop_start_;  //     back to back; loop i is [start[i], start[i + 1])
 };
 
