@@ -216,8 +216,9 @@ bool kernelApex(std::size_t n, At at, const Vec3& origin, const Vec3& normal, Ve
 /// Without Centroid only the area and the smallest triangle (whether the fan
 /// folds: the same sums, without the moments' cost).
 template <bool Centroid = true, typename At>
-void fanKernel(std::size_t n, At at, const Vec3& apex, const Vec3& normal, bool moments, double& area,
-               Vec3& centroid, Mat3* second_moment, double& min_ti) {
+[[gnu::always_inline]] inline void fanKernel(std::size_t n, At at, const Vec3& apex, const Vec3& normal,
+                                             bool moments, double& area, Vec3& centroid, Mat3* second_moment,
+                                             double& min_ti) {
   double a = 0;
   min_ti = std::numeric_limits<double>::infinity();
   Vec3 first = Vec3::Zero();
@@ -251,7 +252,7 @@ struct MeanFan {
 };
 
 template <typename At>
-MeanFan meanFan(std::size_t n, At at) {
+[[gnu::always_inline]] inline MeanFan meanFan(std::size_t n, At at) {
   Vec3 c0 = Vec3::Zero();
   for (std::size_t i = 0; i < n; ++i) c0 += at(i);
   c0 /= static_cast<double>(n);
