@@ -65,49 +65,109 @@ namespace {
 // The cells of a mesh: faces grouped by label (sorted by label), each
 // checked to be a disk, with its oriented outline.
 
-// Per cell, the connected pieces of its faces (faces joined by an edge).
-// Fills `owner` (directed edge -> face) and throws on an edge used twice the
-// same way.
-std::vector<std::vector<std::vector<Index>>> pieces(const LabelledSurface& m, const std::vector<Label>& labels,
-                                                    const std::vector<std::vector<Index>>& faces,
-                                                    std::unordered_map<std::uint64_t, Index>& owner) {
-  owner.clear();
-  owner.reserve(m.face_vertices.size() * 2);
+// The directed edges of the faces, grouped by tail vertex (a counting sort,
+// linear): the face running along u->v is found by scanning u's few edges.
+// Sorted vectors instead of a hash map of edges: building this and the
+// lookups were most of an import's time.
+struct DirectedEdges {
+  struct Entry {
+    Index head, face, corner;  // corner: position of the tail in the face's loop
+  };
+  std::vector<std::size_t> start;  // per tail vertex, into entries (size vertices + 1)
+  std::vector<Entry> entries;      // per tail, sorted by (head, face)
+
+  /// The face running along u->v, or kInvalidIndex.
+  Index face(Index u, Index v) const {
+    for (std::size_t i = start[u]; i < start[u + 1]; ++i)
+      if (entries[i].head == v) return entries[i].face;
+    return kInvalidIndex;
+  }
+};
+
+// Builds the directed edges; throws on an edge used twice the same way (the
+// first such face in file order, as a sequential scan would find it).
+void buildDirectedEdges(const LabelledSurface& m, DirectedEdges& out) {
+  out.start.assign(m.positions.size() + 1, 0);
+  for (Index u : m.face_vertices) ++out.start[u + 1];
+  for (std::size_t i = 1; i < out.start.size(); ++i) out.start[i] += out.start[i - 1];
+  out.entries.resize(m.face_vertices.size());
+  std::vector<std::size_t> fill(out.start.begin(), out.start.end() - 1);
   for (std::size_t f = 0; f < m.numFaces(); ++f) {
     const auto loop = m.face(f);
-    for (std::size_t k = 0; k < loop.size(); ++k) {
-      const Index u = loop[k], v = loop[(k + 1) % loop.size()];
-      const auto [it, fresh] = owner.emplace(edgeKey(u, v), static_cast<Index>(f));
-      if (fresh) continue;
-      const Index g = it->second;
-      if (m.face_label[g] == m.face_label[f])
-        throw InputError("'" + m.path + "' face " + m.faceId(f) + " (cell label " +
-                         std::to_string(m.face_label[f]) + "): it and face " + m.faceId(g) +
-                         " both run along edge " + std::to_string(u) + "->" + std::to_string(v) +
-                         ": the cell's triangles are not a disk (more than two meet at an edge, or they are "
-                         "oriented inconsistently)");
-      throw InputError("'" + m.path + "' face " + m.faceId(f) + " (cell label " +
-                       std::to_string(m.face_label[f]) + ") and face " + m.faceId(g) + " (cell label " +
-                       std::to_string(m.face_label[g]) + ") both run along edge " + std::to_string(u) + "->" +
-                       std::to_string(v) +
-                       ": the two cells are oriented opposite ways, or more than two triangles meet at that edge");
-    }
+    for (std::size_t k = 0; k < loop.size(); ++k)
+      out.entries[fill[loop[k]]++] = {loop[(k + 1) % loop.size()], static_cast<Index>(f), static_cast<Index>(k)};
   }
+  // Per tail: sort by (head, face); equal heads are an edge used twice.
+  struct Clash {
+    Index face = kInvalidIndex, corner = 0, earlier = 0, tail = 0, head = 0;
+  } clash;
+  for (std::size_t u = 0; u + 1 < out.start.size(); ++u) {
+    const auto first = out.entries.begin() + static_cast<std::ptrdiff_t>(out.start[u]);
+    const auto last = out.entries.begin() + static_cast<std::ptrdiff_t>(out.start[u + 1]);
+    if (last - first > 1)
+      std::sort(first, last, [](const DirectedEdges::Entry& a, const DirectedEdges::Entry& b) {
+        return a.head != b.head ? a.head < b.head : a.face < b.face;
+      });
+    for (auto it = first; it + 1 < last; ++it)
+      if (it->head == (it + 1)->head) {
+        const auto& later = *(it + 1);
+        if (later.face < clash.face || (later.face == clash.face && later.corner < clash.corner))
+          clash = {later.face, later.corner, it->face, static_cast<Index>(u), it->head};
+      }
+  }
+  if (clash.face == kInvalidIndex) return;
+  const Index f = clash.face, g = clash.earlier, u = clash.tail, v = clash.head;
+  if (m.face_label[g] == m.face_label[f])
+    throw InputError("'" + m.path + "' face " + m.faceId(f) + " (cell label " + std::to_string(m.face_label[f]) +
+                     "): it and face " + m.faceId(g) + " both run along edge " + std::to_string(u) + "->" +
+                     std::to_string(v) +
+                     ": the cell's triangles are not a disk (more than two meet at an edge, or they are "
+                     "oriented inconsistently)");
+  throw InputError("'" + m.path + "' face " + m.faceId(f) + " (cell label " + std::to_string(m.face_label[f]) +
+                   ") and face " + m.faceId(g) + " (cell label " + std::to_string(m.face_label[g]) +
+                   ") both run along edge " + std::to_string(u) + "->" + std::to_string(v) +
+                   ": the two cells are oriented opposite ways, or more than two triangles meet at that edge");
+}
+
+// Per cell, the connected pieces of its faces (faces joined by an edge), in
+// the order of their first face. Fills `edges`.
+std::vector<std::vector<std::vector<Index>>> pieces(const LabelledSurface& m, const std::vector<Label>& labels,
+                                                    const std::vector<std::vector<Index>>& faces,
+                                                    DirectedEdges& edges) {
+  buildDirectedEdges(m, edges);
   UnionFind uf(m.numFaces());
   for (std::size_t f = 0; f < m.numFaces(); ++f) {
     const auto loop = m.face(f);
     for (std::size_t k = 0; k < loop.size(); ++k) {
-      const auto it = owner.find(edgeKey(loop[(k + 1) % loop.size()], loop[k]));
-      if (it != owner.end() && m.face_label[it->second] == m.face_label[f]) uf.unite(static_cast<Index>(f), it->second);
+      const Index g = edges.face(loop[(k + 1) % loop.size()], loop[k]);
+      if (g != kInvalidIndex && m.face_label[g] == m.face_label[f]) uf.unite(static_cast<Index>(f), g);
     }
   }
   std::vector<std::vector<std::vector<Index>>> out(labels.size());
+  std::vector<std::pair<Index, Index>> roots;  // (root, position in the cell's face list)
   for (std::size_t c = 0; c < labels.size(); ++c) {
-    std::unordered_map<Index, std::size_t> piece_of;
-    for (Index f : faces[c]) {
-      const auto [it, fresh] = piece_of.emplace(uf.find(f), out[c].size());
-      if (fresh) out[c].emplace_back();
-      out[c][it->second].push_back(f);
+    const auto& fs = faces[c];
+    const Index root0 = uf.find(fs.front());
+    bool one = true;
+    for (Index f : fs) one = one && uf.find(f) == root0;
+    if (one) {
+      out[c] = {fs};
+      continue;
+    }
+    // Several pieces: group by root, pieces ordered by their first face.
+    roots.clear();
+    for (Index q = 0; q < fs.size(); ++q) roots.emplace_back(uf.find(fs[q]), q);
+    std::sort(roots.begin(), roots.end());
+    std::vector<std::pair<Index, std::vector<Index>>> grouped;  // (first position, faces)
+    for (std::size_t i = 0; i < roots.size(); ++i) {
+      if (i == 0 || roots[i].first != roots[i - 1].first) grouped.emplace_back(roots[i].second, std::vector<Index>{});
+      grouped.back().second.push_back(roots[i].second);
+    }
+    std::sort(grouped.begin(), grouped.end());
+    for (auto& [pos, members] : grouped) {
+      std::sort(members.begin(), members.end());
+      for (Index& q : members) q = fs[q];
+      out[c].push_back(std::move(members));
     }
   }
   return out;
@@ -118,8 +178,10 @@ void groupByLabel(const LabelledSurface& m, std::vector<Label>& labels, std::vec
   std::sort(labels.begin(), labels.end());
   labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
   faces.assign(labels.size(), {});
+  std::size_t c = 0;  // files list a cell's faces together: try the previous face's cell first
   for (std::size_t f = 0; f < m.numFaces(); ++f) {
-    const auto c = std::lower_bound(labels.begin(), labels.end(), m.face_label[f]) - labels.begin();
+    if (labels[c] != m.face_label[f])
+      c = static_cast<std::size_t>(std::lower_bound(labels.begin(), labels.end(), m.face_label[f]) - labels.begin());
     faces[c].push_back(static_cast<Index>(f));
   }
 }
@@ -129,7 +191,7 @@ void groupByLabel(const LabelledSurface& m, std::vector<Label>& labels, std::vec
 // it shares none). Returns whether anything changed.
 bool repairSlivers(LabelledSurface& m, const std::vector<Label>& labels,
                    const std::vector<std::vector<std::vector<Index>>>& parts,
-                   const std::unordered_map<std::uint64_t, Index>& owner, std::vector<std::string>& repairs,
+                   const DirectedEdges& edges, std::vector<std::string>& repairs,
                    std::vector<char>& dropped) {
   bool changed = false;
   for (std::size_t c = 0; c < labels.size(); ++c) {
@@ -143,8 +205,8 @@ bool repairSlivers(LabelledSurface& m, const std::vector<Label>& labels,
       std::unordered_map<Label, int> shared;
       const auto loop = m.face(f);
       for (std::size_t k = 0; k < loop.size(); ++k) {
-        const auto it = owner.find(edgeKey(loop[(k + 1) % loop.size()], loop[k]));
-        if (it != owner.end() && m.face_label[it->second] != labels[c]) ++shared[m.face_label[it->second]];
+        const Index g = edges.face(loop[(k + 1) % loop.size()], loop[k]);
+        if (g != kInvalidIndex && m.face_label[g] != labels[c]) ++shared[m.face_label[g]];
       }
       Label best = 0;
       int most = 0;
@@ -186,7 +248,7 @@ bool repairSlivers(LabelledSurface& m, const std::vector<Label>& labels,
 
 SheetCells findCells(LabelledSurface& m, bool repair, ImportReport& report) {
   SheetCells cells;
-  std::unordered_map<std::uint64_t, Index> owner;
+  DirectedEdges owner;
   std::vector<std::vector<std::vector<Index>>> parts;
   std::vector<char> dropped(m.numFaces(), 0);
   for (int round = 0;; ++round) {
@@ -230,45 +292,62 @@ SheetCells findCells(LabelledSurface& m, bool repair, ImportReport& report) {
       return InputError("'" + m.path + "' face " + m.faceId(f0) + " (cell label " + std::to_string(label) +
                         "): " + what);
     };
-    std::unordered_map<Index, Index> next;  // boundary: vertex -> next vertex
+    // Boundary edges (u, v), sorted by u: a vertex with two is pinched.
+    std::vector<std::pair<Index, Index>> next;
     std::vector<Index> verts;
     std::size_t edges_twice = 0, edges_once = 0;
+    Index pinched = kInvalidIndex;
     for (Index f : cells.faces[c]) {
       const auto loop = m.face(f);
       for (std::size_t k = 0; k < loop.size(); ++k) {
         const Index u = loop[k], v = loop[(k + 1) % loop.size()];
         verts.push_back(u);
-        const auto it = owner.find(edgeKey(v, u));
-        if (it != owner.end() && m.face_label[it->second] == label) {
+        const Index g = owner.face(v, u);
+        if (g != kInvalidIndex && m.face_label[g] == label) {
           ++edges_twice;
           continue;
         }
         ++edges_once;
-        if (!next.emplace(u, v).second)
-          throw fail("the cell's triangles meet at vertex " + std::to_string(u) +
-                     " only by a corner (a pinched, non-manifold vertex): the cell is not a disk");
+        next.emplace_back(u, v);
       }
     }
+    {
+      // The pinched vertex a sequential scan meets first: the smallest
+      // position of a second boundary edge from one vertex.
+      std::vector<std::pair<Index, Index>> by_tail(next.size());  // (u, position)
+      for (Index i = 0; i < next.size(); ++i) by_tail[i] = {next[i].first, i};
+      std::sort(by_tail.begin(), by_tail.end());
+      std::size_t best = next.size();
+      for (std::size_t i = 1; i < by_tail.size(); ++i)
+        if (by_tail[i].first == by_tail[i - 1].first && by_tail[i].second < best)
+          best = by_tail[i].second, pinched = by_tail[i].first;
+    }
+    if (pinched != kInvalidIndex)
+      throw fail("the cell's triangles meet at vertex " + std::to_string(pinched) +
+                 " only by a corner (a pinched, non-manifold vertex): the cell is not a disk");
+    std::sort(next.begin(), next.end());
     std::sort(verts.begin(), verts.end());
     verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
     const long long euler = static_cast<long long>(verts.size()) -
                             static_cast<long long>(edges_twice / 2 + edges_once) +
                             static_cast<long long>(cells.faces[c].size());
     // Walk the loops, starting each at its smallest vertex.
-    std::vector<Index> starts;
-    for (const auto& [u, v] : next) starts.push_back(u);
-    std::sort(starts.begin(), starts.end());
-    std::unordered_map<Index, char> seen;
+    std::vector<char> seen(next.size(), 0);
+    auto at = [&](Index u) {
+      const auto it = std::lower_bound(next.begin(), next.end(), std::pair<Index, Index>(u, 0));
+      return it != next.end() && it->first == u ? static_cast<std::size_t>(it - next.begin()) : next.size();
+    };
     std::vector<std::vector<Index>> loops;
-    for (Index s : starts) {
-      if (seen.count(s)) continue;
+    for (std::size_t s0 = 0; s0 < next.size(); ++s0) {
+      if (seen[s0]) continue;
       loops.emplace_back();
-      for (Index u = s; !seen.count(u);) {
-        seen[u] = 1;
+      for (std::size_t i = s0; !seen[i];) {
+        seen[i] = 1;
+        const Index u = next[i].first;
         loops.back().push_back(u);
-        const auto it = next.find(u);
-        if (it == next.end()) throw fail("its boundary is not closed at vertex " + std::to_string(u));
-        u = it->second;
+        const Index v = next[i].second;
+        i = at(v);
+        if (i == next.size()) throw fail("its boundary is not closed at vertex " + std::to_string(v));
       }
     }
     if (loops.size() != 1)
