@@ -72,21 +72,24 @@ std::vector<std::string> requestedNames(const std::string& option) {
   return names;
 }
 
-// A label value as read (a double: PLY and VTK values); InputError unless it is an integer.
-Label labelValue(double v, const std::string& where) {
+// A label value as read (a double: PLY and VTK values); InputError unless
+// it is an integer. `where()` builds the message's start, only on error.
+template <typename Where>
+Label labelValue(double v, Where where) {
   if (!(std::isfinite(v) && v == std::floor(v) && std::abs(v) < 9007199254740992.0))
-    throw InputError(where + ": label " + formatNumber(v) + " is not an integer");
+    throw InputError(where() + ": label " + formatNumber(v) + " is not an integer");
   return static_cast<Label>(v);
 }
 
 // Checks a face's vertex indices (already in range) for repeats and count.
-void checkFaceLoop(const LabelledFaces& m, std::size_t f, const std::string& where) {
+template <typename Where>
+void checkFaceLoop(const LabelledFaces& m, std::size_t f, Where where) {
   const std::size_t n = m.offsets[f + 1] - m.offsets[f];
-  if (n < 3) throw InputError(where + ": has " + std::to_string(n) + " vertices, a face needs at least 3");
+  if (n < 3) throw InputError(where() + ": has " + std::to_string(n) + " vertices, a face needs at least 3");
   for (std::size_t a = m.offsets[f]; a < m.offsets[f + 1]; ++a)
     for (std::size_t b = a + 1; b < m.offsets[f + 1]; ++b)
       if (m.vertices[a] == m.vertices[b])
-        throw InputError(where + ": uses vertex " + std::to_string(m.vertices[a]) + " twice (a degenerate face)");
+        throw InputError(where() + ": uses vertex " + std::to_string(m.vertices[a]) + " twice (a degenerate face)");
 }
 
 std::string faceWhere(const LabelledFaces& m, std::size_t f) {
@@ -164,13 +167,13 @@ LabelledFaces readPly(const std::string& path, const std::string& label_array) {
   m.offsets = fv.offsets;
   m.vertices.resize(fv.values.size());
   for (std::size_t f = 0; f < nf; ++f) {
-    const std::string bare = "'" + path + "' face " + std::to_string(f);
-    m.first.push_back(labelValue(label_columns[0]->values[f], bare + " ('" + names[0] + "')"));
-    if (names.size() == 2) m.second.push_back(labelValue(label_columns[1]->values[f], bare + " ('" + names[1] + "')"));
-    const std::string where = faceWhere(m, f);
+    auto bare = [&](std::size_t a) { return "'" + path + "' face " + std::to_string(f) + " ('" + names[a] + "')"; };
+    m.first.push_back(labelValue(label_columns[0]->values[f], [&] { return bare(0); }));
+    if (names.size() == 2) m.second.push_back(labelValue(label_columns[1]->values[f], [&] { return bare(1); }));
+    auto where = [&] { return faceWhere(m, f); };
     for (std::size_t k = m.offsets[f]; k < m.offsets[f + 1]; ++k) {
       const double v = fv.values[k];
-      if (v < 0 || v >= double(nv)) throw InputError(where + ": " + outOfRange(v, nv));
+      if (v < 0 || v >= double(nv)) throw InputError(where() + ": " + outOfRange(v, nv));
       m.vertices[k] = static_cast<Index>(v);
     }
     checkFaceLoop(m, f, where);
@@ -254,17 +257,17 @@ LabelledFaces readObj(const std::string& path, const std::string& label_array) {
       const std::string labels =
           label_arity == 2 ? "s " + std::to_string(current[0]) + " and " + std::to_string(current[1])
                            : " " + std::to_string(current[0]);
-      const std::string where = at + " (face " + std::to_string(f) + ", cell label" + labels + ")";
+      auto where = [&] { return at + " (face " + std::to_string(f) + ", cell label" + labels + ")"; };
       for (std::size_t k = 1; k < tok.size(); ++k) {
         const std::string_view index = tok[k].substr(0, tok[k].find('/'));
         long long i = 0;
         auto [p, ec] = std::from_chars(index.data(), index.data() + index.size(), i);
         if (ec != std::errc() || p != index.data() + index.size() || i == 0)
-          throw InputError(where + ": vertex reference " + quotedToken(tok[k]) + " is no vertex index");
+          throw InputError(where() + ": vertex reference " + quotedToken(tok[k]) + " is no vertex index");
         const long long n = static_cast<long long>(m.positions.size());
         const long long v = i > 0 ? i - 1 : n + i;  // negative: relative to the vertices so far
         if (v < 0 || v >= n)
-          throw InputError(where + ": vertex index " + std::to_string(i) + " is out of range (" + std::to_string(n) +
+          throw InputError(where() + ": vertex index " + std::to_string(i) + " is out of range (" + std::to_string(n) +
                            " vertices defined so far, 1.." + std::to_string(n) + ")");
         m.vertices.push_back(static_cast<Index>(v));
       }
@@ -344,16 +347,16 @@ LabelledFaces readVtp(const std::string& path, const std::string& label_array) {
       throw InputError(file + ": cell-data array '" + std::string(a->GetName()) + "' has " +
                        std::to_string(a->GetNumberOfTuples()) + " values for " + std::to_string(nf) + " polygons");
   for (vtkIdType f = 0; f < nf; ++f) {
-    const std::string bare = file + " polygon " + std::to_string(f);
+    auto bare = [&] { return file + " polygon " + std::to_string(f); };
     m.first.push_back(labelValue(sources[0].first->GetComponent(f, sources[0].second), bare));
     if (sources.size() == 2) m.second.push_back(labelValue(sources[1].first->GetComponent(f, sources[1].second), bare));
-    const std::string where = faceWhere(m, static_cast<std::size_t>(f));
+    auto where = [&] { return faceWhere(m, static_cast<std::size_t>(f)); };
     vtkIdType n = 0;
     const vtkIdType* pts = nullptr;
     polys->GetCellAtId(f, n, pts);
     for (vtkIdType k = 0; k < n; ++k) {
       if (pts[k] < 0 || pts[k] >= np)
-        throw InputError(where + ": point index " + std::to_string(pts[k]) + " is out of range (the file has " +
+        throw InputError(where() + ": point index " + std::to_string(pts[k]) + " is out of range (the file has " +
                          std::to_string(np) + " points)");
       m.vertices.push_back(static_cast<Index>(pts[k]));
     }

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 #include <unordered_map>
 
@@ -37,26 +38,55 @@ void checkDuplicateVertices(const LabelledSurface& m) {
   for (std::size_t f = 0; f < m.numFaces(); ++f)
     for (Index v : m.face(f))
       if (first_face[v] == kInvalidIndex) first_face[v] = static_cast<Index>(f);
-  std::vector<Index> used;
-  for (Index v = 0; v < m.positions.size(); ++v)
-    if (first_face[v] != kInvalidIndex) used.push_back(v);
-  auto less = [&](Index a, Index b) {
-    const Vec3 &p = m.positions[a], &q = m.positions[b];
+  // A flat open-addressing table of positions (linear probing), filled in
+  // index order: a vertex finding its position taken is a duplicate. Of all
+  // duplicates, the one reported is at the smallest position (x, then y, z)
+  // and the two smallest indices there, whatever the table's order.
+  std::size_t size = 16;
+  while (size < 2 * m.positions.size()) size *= 2;
+  const std::size_t mask = size - 1;
+  std::vector<Index> table(size, kInvalidIndex);
+  auto hash = [](const Vec3& p) {
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for (int k = 0; k < 3; ++k) {
+      const double c = p[k] + 0.0;  // -0 and +0 compare equal: hash them alike
+      std::uint64_t bits;
+      std::memcpy(&bits, &c, sizeof bits);
+      h = (h ^ bits) * 0xff51afd7ed558ccdull;
+      h ^= h >> 32;
+    }
+    return h;
+  };
+  auto lexLess = [](const Vec3& p, const Vec3& q) {
     if (p.x() != q.x()) return p.x() < q.x();
     if (p.y() != q.y()) return p.y() < q.y();
-    if (p.z() != q.z()) return p.z() < q.z();
-    return a < b;
+    return p.z() < q.z();
   };
-  std::sort(used.begin(), used.end(), less);
-  for (std::size_t i = 1; i < used.size(); ++i) {
-    const Index a = used[i - 1], b = used[i];
-    if (m.positions[a] == m.positions[b])
-      throw InputError("'" + m.path + "' vertices " + std::to_string(a) + " and " + std::to_string(b) +
-                       " are duplicates at " + fmtPoint(m.positions[a]) + " (used by face " +
-                       m.faceId(first_face[a]) + " of cell label " +
-                       std::to_string(m.face_label[first_face[a]]) + " and face " + m.faceId(first_face[b]) +
-                       " of cell label " + std::to_string(m.face_label[first_face[b]]) +
-                       "): the mesh is not welded, neighbours would not share their walls");
+  Index dup_a = kInvalidIndex, dup_b = kInvalidIndex;
+  for (Index v = 0; v < m.positions.size(); ++v) {
+    if (first_face[v] == kInvalidIndex) continue;
+    const Vec3& p = m.positions[v];
+    for (std::size_t i = hash(p) & mask;; i = (i + 1) & mask) {
+      const Index w = table[i];
+      if (w == kInvalidIndex) {
+        table[i] = v;
+        break;
+      }
+      if (m.positions[w] == p) {  // w < v is the first vertex here; keep the second one only
+        if (dup_a == kInvalidIndex || lexLess(p, m.positions[dup_a]) ||
+            (m.positions[dup_a] == p && v < dup_b))
+          dup_a = w, dup_b = v;
+        break;
+      }
+    }
+  }
+  if (dup_a != kInvalidIndex) {
+    const Index a = dup_a, b = dup_b;
+    throw InputError("'" + m.path + "' vertices " + std::to_string(a) + " and " + std::to_string(b) +
+                     " are duplicates at " + fmtPoint(m.positions[a]) + " (used by face " + m.faceId(first_face[a]) +
+                     " of cell label " + std::to_string(m.face_label[first_face[a]]) + " and face " +
+                     m.faceId(first_face[b]) + " of cell label " + std::to_string(m.face_label[first_face[b]]) +
+                     "): the mesh is not welded, neighbours would not share their walls");
   }
 }
 
@@ -130,7 +160,8 @@ void buildDirectedEdges(const LabelledSurface& m, DirectedEdges& out) {
 }
 
 // Per cell, the connected pieces of its faces (faces joined by an edge), in
-// the order of their first face. Fills `edges`.
+// the order of their first face; none listed when the cell is one piece.
+// Fills `edges`.
 std::vector<std::vector<std::vector<Index>>> pieces(const LabelledSurface& m, const std::vector<Label>& labels,
                                                     const std::vector<std::vector<Index>>& faces,
                                                     DirectedEdges& edges) {
@@ -150,10 +181,7 @@ std::vector<std::vector<std::vector<Index>>> pieces(const LabelledSurface& m, co
     const Index root0 = uf.find(fs.front());
     bool one = true;
     for (Index f : fs) one = one && uf.find(f) == root0;
-    if (one) {
-      out[c] = {fs};
-      continue;
-    }
+    if (one) continue;  // no list: one piece, the cell's faces
     // Several pieces: group by root, pieces ordered by their first face.
     roots.clear();
     for (Index q = 0; q < fs.size(); ++q) roots.emplace_back(uf.find(fs[q]), q);
@@ -178,6 +206,16 @@ void groupByLabel(const LabelledSurface& m, std::vector<Label>& labels, std::vec
   std::sort(labels.begin(), labels.end());
   labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
   faces.assign(labels.size(), {});
+  {
+    std::vector<Index> count(labels.size(), 0);
+    std::size_t c = 0;
+    for (std::size_t f = 0; f < m.numFaces(); ++f) {
+      if (labels[c] != m.face_label[f])
+        c = static_cast<std::size_t>(std::lower_bound(labels.begin(), labels.end(), m.face_label[f]) - labels.begin());
+      ++count[c];
+    }
+    for (std::size_t k = 0; k < labels.size(); ++k) faces[k].reserve(count[k]);
+  }
   std::size_t c = 0;  // files list a cell's faces together: try the previous face's cell first
   for (std::size_t f = 0; f < m.numFaces(); ++f) {
     if (labels[c] != m.face_label[f])
@@ -283,8 +321,13 @@ SheetCells findCells(LabelledSurface& m, bool repair, ImportReport& report) {
                      m.faceId(parts[c][0].front()) + " is in the first)" +
                      (repair ? "" : "; repair: true moves a one-triangle sliver to its neighbour"));
   }
-  // The outline of each cell: its boundary edges, one loop.
+  // The outline of each cell: its boundary edges, one loop. Buffers reused
+  // from cell to cell.
   cells.outlines.resize(n);
+  std::vector<std::pair<Index, Index>> next;
+  std::vector<Index> verts;
+  std::vector<char> seen;
+  std::vector<std::vector<Index>> loops;
   for (std::size_t c = 0; c < n; ++c) {
     const Label label = cells.labels[c];
     const Index f0 = cells.faces[c].front();
@@ -293,8 +336,7 @@ SheetCells findCells(LabelledSurface& m, bool repair, ImportReport& report) {
                         "): " + what);
     };
     // Boundary edges (u, v), sorted by u: a vertex with two is pinched.
-    std::vector<std::pair<Index, Index>> next;
-    std::vector<Index> verts;
+    next.clear(), verts.clear();
     std::size_t edges_twice = 0, edges_once = 0;
     Index pinched = kInvalidIndex;
     for (Index f : cells.faces[c]) {
@@ -311,9 +353,21 @@ SheetCells findCells(LabelledSurface& m, bool repair, ImportReport& report) {
         next.emplace_back(u, v);
       }
     }
-    {
+    std::sort(next.begin(), next.end());
+    bool any_pinched = false;
+    for (std::size_t i = 1; i < next.size(); ++i) any_pinched = any_pinched || next[i].first == next[i - 1].first;
+    if (any_pinched) {
       // The pinched vertex a sequential scan meets first: the smallest
       // position of a second boundary edge from one vertex.
+      next.clear();
+      for (Index f : cells.faces[c]) {
+        const auto loop = m.face(f);
+        for (std::size_t k = 0; k < loop.size(); ++k) {
+          const Index u = loop[k], v = loop[(k + 1) % loop.size()];
+          const Index g = owner.face(v, u);
+          if (g == kInvalidIndex || m.face_label[g] != label) next.emplace_back(u, v);
+        }
+      }
       std::vector<std::pair<Index, Index>> by_tail(next.size());  // (u, position)
       for (Index i = 0; i < next.size(); ++i) by_tail[i] = {next[i].first, i};
       std::sort(by_tail.begin(), by_tail.end());
@@ -325,19 +379,18 @@ SheetCells findCells(LabelledSurface& m, bool repair, ImportReport& report) {
     if (pinched != kInvalidIndex)
       throw fail("the cell's triangles meet at vertex " + std::to_string(pinched) +
                  " only by a corner (a pinched, non-manifold vertex): the cell is not a disk");
-    std::sort(next.begin(), next.end());
     std::sort(verts.begin(), verts.end());
     verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
     const long long euler = static_cast<long long>(verts.size()) -
                             static_cast<long long>(edges_twice / 2 + edges_once) +
                             static_cast<long long>(cells.faces[c].size());
     // Walk the loops, starting each at its smallest vertex.
-    std::vector<char> seen(next.size(), 0);
+    seen.assign(next.size(), 0);
     auto at = [&](Index u) {
       const auto it = std::lower_bound(next.begin(), next.end(), std::pair<Index, Index>(u, 0));
       return it != next.end() && it->first == u ? static_cast<std::size_t>(it - next.begin()) : next.size();
     };
-    std::vector<std::vector<Index>> loops;
+    loops.clear();
     for (std::size_t s0 = 0; s0 < next.size(); ++s0) {
       if (seen[s0]) continue;
       loops.emplace_back();
@@ -490,16 +543,19 @@ LabelledSheet buildLabelledSheet(LabelledSurface& m, const ImportOptions& option
       new_index[v] = static_cast<Index>(positions.size());
       positions.push_back(scaled[v]);
     }
-  std::vector<std::vector<Index>> polygons(cells.outlines.size());
-  for (std::size_t c = 0; c < polygons.size(); ++c)
-    for (Index v : cells.outlines[c]) polygons[c].push_back(new_index[v]);
-  for (std::size_t c = 0; c < polygons.size(); ++c)
-    if (polygons[c].size() < 3)
+  // The polygons as one flat list (offsets, vertices), as the builder takes them.
+  std::vector<Index> offsets{0}, items;
+  offsets.reserve(cells.outlines.size() + 1);
+  for (std::size_t c = 0; c < cells.outlines.size(); ++c) {
+    if (cells.outlines[c].size() < 3)
       throw InputError("'" + m.path + "' cell label " + std::to_string(cells.labels[c]) + ": simplify = " +
                        formatNumber(options.simplify) + " leaves its outline " +
-                       std::to_string(polygons[c].size()) + " vertices");
+                       std::to_string(cells.outlines[c].size()) + " vertices");
+    for (Index v : cells.outlines[c]) items.push_back(new_index[v]);
+    offsets.push_back(static_cast<Index>(items.size()));
+  }
   try {
-    sheet.tissue = buildPolygonTissue(positions, polygons, Embedding::Surface);
+    sheet.tissue = buildPolygonTissue(std::move(positions), offsets, items, Embedding::Surface);
   } catch (const Error& e) {
     throw InputError("'" + m.path + "': the cells do not form a tissue: " + std::string(e.what()));
   }
