@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
   if (bench::helpRequested(argc, argv, usage)) return 0;
   const std::size_t cells = bench::countArgument(argc, argv, 1, "CELLS", 100000, 1, 10000000, usage);
   const std::size_t k = bench::countArgument(argc, argv, 2, "K", 3, 1, 100, usage);
-  const std::size_t cells3d = bench::countArgument(argc, argv, 3, "CELLS3D", 10000, 2, 1000000, usage);
+  const std::size_t cells3d = bench::countArgument(argc, argv, 3, "CELLS3D", 10000, 4, 1000000, usage);
   const int nx = static_cast<int>(std::ceil(std::sqrt(double(cells))));
   const int ny = static_cast<int>((cells + nx - 1) / nx);
   const auto m = io::testing::MgxFixture::grid(nx, ny, static_cast<int>(k));

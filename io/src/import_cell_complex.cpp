@@ -19,7 +19,6 @@
 #include <array>
 #include <cmath>
 #include <compare>
-#include <map>
 #include <numeric>
 #include <tuple>
 #include <unordered_map>
@@ -152,8 +151,9 @@ ComplexFile readComplex(const std::string& path) {
     throw InputError("'" + path + "': element 'face' has neither a vertex list ('vertex_index' or "
                      "'vertex_indices') nor an edge list ('edge_index')");
   }
+  std::vector<Index> sorted;  // reused from face to face
   for (std::size_t f = 0; f < nf; ++f) {
-    std::vector<Index> sorted(m.face(f).begin(), m.face(f).end());
+    sorted.assign(m.face(f).begin(), m.face(f).end());
     std::sort(sorted.begin(), sorted.end());
     const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
     if (twice != sorted.end())
@@ -188,19 +188,25 @@ ComplexFile readComplex(const std::string& path) {
       m.volume_faces.push_back(static_cast<Index>(f));
     }
     m.volume_offsets.push_back(m.volume_faces.size());
-    std::vector<Index> sorted(m.volume(v).begin(), m.volume(v).end());
+    sorted.assign(m.volume(v).begin(), m.volume(v).end());
     std::sort(sorted.begin(), sorted.end());
     const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
     if (twice != sorted.end())
       throw InputError(m.volumeName(v) + ": lists face " + std::to_string(*twice) + " twice");
   }
-  std::map<Label, std::size_t> first_with;
-  for (std::size_t v = 0; v < nvol; ++v) {
-    const auto [it, fresh] = first_with.emplace(m.volume_label[v], v);
-    if (!fresh)
-      throw InputError("'" + path + "' volumes " + std::to_string(it->second) + " and " + std::to_string(v) +
-                       ": label " + std::to_string(m.volume_label[v]) + " appears twice");
+  // A label used twice: reported as a scan in volume order would, the
+  // second use that comes first, with the first volume of its label.
+  std::vector<std::pair<Label, Index>> by_label(nvol);
+  for (std::size_t v = 0; v < nvol; ++v) by_label[v] = {m.volume_label[v], static_cast<Index>(v)};
+  std::sort(by_label.begin(), by_label.end());
+  Index first = kInvalidIndex, second = kInvalidIndex;
+  for (std::size_t i = 1, start = 0; i < nvol; ++i) {
+    if (by_label[i].first != by_label[start].first) start = i;
+    else if (i == start + 1 && by_label[i].second < second) first = by_label[start].second, second = by_label[i].second;
   }
+  if (first != kInvalidIndex)
+    throw InputError("'" + path + "' volumes " + std::to_string(first) + " and " + std::to_string(second) +
+                     ": label " + std::to_string(m.volume_label[first]) + " appears twice");
   return m;
 }
 
@@ -258,8 +264,10 @@ struct FaceEdge {
 VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
   const auto faces = m.volume(v);
   const std::string name = m.volumeName(v);
-  std::vector<FaceEdge> edges;
-  std::vector<Index> corner_vertex;
+  // Scratch reused from volume to volume (a file has many small volumes).
+  thread_local std::vector<FaceEdge> edges;
+  thread_local std::vector<Index> corner_vertex, verts;
+  edges.clear(), corner_vertex.clear();
   for (Index q = 0; q < faces.size(); ++q) {
     const auto loop = m.face(faces[q]);
     const Index first = static_cast<Index>(corner_vertex.size());
@@ -273,8 +281,10 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
   std::sort(edges.begin(), edges.end(), [](const FaceEdge& a, const FaceEdge& b) {
     return a.key != b.key ? a.key < b.key : a.face < b.face;
   });
-  UnionFind pieces(faces.size()), corners(corner_vertex.size());
-  std::vector<std::pair<Index, Index>> boundary;
+  thread_local UnionFind pieces(0), corners(0);
+  pieces.reset(faces.size()), corners.reset(corner_vertex.size());
+  thread_local std::vector<std::pair<Index, Index>> boundary;
+  boundary.clear();
   std::size_t num_edges = 0;
   for (std::size_t i = 0; i < edges.size();) {
     std::size_t j = i;
@@ -306,7 +316,7 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
                      " disconnected pieces (" + m.faceName(faces[0]) + " is in one, " +
                      m.faceName(faces[piece_first[0] == pieces.find(0) ? piece_first[1] : piece_first[0]]) +
                      " in another): a cell is one piece");
-  std::vector<Index> verts = corner_vertex;
+  verts.assign(corner_vertex.begin(), corner_vertex.end());
   std::sort(verts.begin(), verts.end());
   verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
   const long long euler = static_cast<long long>(verts.size()) - static_cast<long long>(num_edges) +
@@ -343,7 +353,8 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
     // (vertex, fan) of every corner, sorted: a vertex in two fans is pinched.
     // Reported: the vertex of the first corner (in listing order) whose fan
     // differs from that of the vertex's first corner.
-    std::vector<std::array<Index, 3>> fans(corner_vertex.size());  // vertex, corner, fan
+    thread_local std::vector<std::array<Index, 3>> fans;  // vertex, corner, fan
+    fans.resize(corner_vertex.size());
     for (Index c = 0; c < corner_vertex.size(); ++c) fans[c] = {corner_vertex[c], c, corners.find(c)};
     std::sort(fans.begin(), fans.end());
     Index pinched_corner = kInvalidIndex;
@@ -361,14 +372,13 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
   // Orient the faces consistently: across a shared edge, two faces run opposite ways.
   out.orientation.assign(faces.size(), 0);
   // The edges of each face (positions in `edges`), grouped by face (counting sort).
-  std::vector<Index> face_edge_start(faces.size() + 1, 0), face_edge_list(edges.size());
+  thread_local std::vector<Index> face_edge_start, face_edge_list, fill, stack;
+  face_edge_start.assign(faces.size() + 1, 0), face_edge_list.resize(edges.size());
   for (const FaceEdge& e : edges) ++face_edge_start[e.face + 1];
   for (std::size_t q = 0; q < faces.size(); ++q) face_edge_start[q + 1] += face_edge_start[q];
-  {
-    std::vector<Index> fill(face_edge_start.begin(), face_edge_start.end() - 1);
-    for (Index i = 0; i < edges.size(); ++i) face_edge_list[fill[edges[i].face]++] = i;
-  }
-  std::vector<Index> stack{0};
+  fill.assign(face_edge_start.begin(), face_edge_start.end() - 1);
+  for (Index i = 0; i < edges.size(); ++i) face_edge_list[fill[edges[i].face]++] = i;
+  stack.assign(1, 0);
   out.orientation[0] = 1;
   while (!stack.empty()) {
     const Index q = stack.back();
