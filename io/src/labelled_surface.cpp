@@ -321,86 +321,56 @@ SheetCells findCells(LabelledSurface& m, bool repair, ImportReport& report) {
                      m.faceId(parts[c][0].front()) + " is in the first)" +
                      (repair ? "" : "; repair: true moves a one-triangle sliver to its neighbour"));
   }
-  // The outline of each cell: its boundary edges, one loop. Buffers reused
-  // from cell to cell.
+  // The outline of each cell: its boundary edges, one loop. Per-vertex
+  // arrays stamped with the cell's index (no clearing, no sorting): whether
+  // a vertex is in the cell, its boundary successor, whether the walk passed it.
   cells.outlines.resize(n);
-  std::vector<std::pair<Index, Index>> next;
-  std::vector<Index> verts;
-  std::vector<char> seen;
+  std::vector<Index> in_cell(m.positions.size(), kInvalidIndex), has_next(m.positions.size(), kInvalidIndex),
+      walked(m.positions.size(), kInvalidIndex), next_of(m.positions.size(), kInvalidIndex);
+  std::vector<Index> tails;
   std::vector<std::vector<Index>> loops;
   for (std::size_t c = 0; c < n; ++c) {
     const Label label = cells.labels[c];
     const Index f0 = cells.faces[c].front();
+    const Index stamp = static_cast<Index>(c);
     auto fail = [&](const std::string& what) {
       return InputError("'" + m.path + "' face " + m.faceId(f0) + " (cell label " + std::to_string(label) +
                         "): " + what);
     };
-    // Boundary edges (u, v), sorted by u: a vertex with two is pinched.
-    next.clear(), verts.clear();
-    std::size_t edges_twice = 0, edges_once = 0;
-    Index pinched = kInvalidIndex;
+    tails.clear();
+    std::size_t num_verts = 0, edges_twice = 0, edges_once = 0;
     for (Index f : cells.faces[c]) {
       const auto loop = m.face(f);
       for (std::size_t k = 0; k < loop.size(); ++k) {
         const Index u = loop[k], v = loop[(k + 1) % loop.size()];
-        verts.push_back(u);
+        if (in_cell[u] != stamp) in_cell[u] = stamp, ++num_verts;
         const Index g = owner.face(v, u);
         if (g != kInvalidIndex && m.face_label[g] == label) {
           ++edges_twice;
           continue;
         }
         ++edges_once;
-        next.emplace_back(u, v);
+        if (has_next[u] == stamp)  // a second boundary edge leaves u
+          throw fail("the cell's triangles meet at vertex " + std::to_string(u) +
+                     " only by a corner (a pinched, non-manifold vertex): the cell is not a disk");
+        has_next[u] = stamp, next_of[u] = v;
+        tails.push_back(u);
       }
     }
-    std::sort(next.begin(), next.end());
-    bool any_pinched = false;
-    for (std::size_t i = 1; i < next.size(); ++i) any_pinched = any_pinched || next[i].first == next[i - 1].first;
-    if (any_pinched) {
-      // The pinched vertex a sequential scan meets first: the smallest
-      // position of a second boundary edge from one vertex.
-      next.clear();
-      for (Index f : cells.faces[c]) {
-        const auto loop = m.face(f);
-        for (std::size_t k = 0; k < loop.size(); ++k) {
-          const Index u = loop[k], v = loop[(k + 1) % loop.size()];
-          const Index g = owner.face(v, u);
-          if (g == kInvalidIndex || m.face_label[g] != label) next.emplace_back(u, v);
-        }
-      }
-      std::vector<std::pair<Index, Index>> by_tail(next.size());  // (u, position)
-      for (Index i = 0; i < next.size(); ++i) by_tail[i] = {next[i].first, i};
-      std::sort(by_tail.begin(), by_tail.end());
-      std::size_t best = next.size();
-      for (std::size_t i = 1; i < by_tail.size(); ++i)
-        if (by_tail[i].first == by_tail[i - 1].first && by_tail[i].second < best)
-          best = by_tail[i].second, pinched = by_tail[i].first;
-    }
-    if (pinched != kInvalidIndex)
-      throw fail("the cell's triangles meet at vertex " + std::to_string(pinched) +
-                 " only by a corner (a pinched, non-manifold vertex): the cell is not a disk");
-    std::sort(verts.begin(), verts.end());
-    verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
-    const long long euler = static_cast<long long>(verts.size()) -
+    const long long euler = static_cast<long long>(num_verts) -
                             static_cast<long long>(edges_twice / 2 + edges_once) +
                             static_cast<long long>(cells.faces[c].size());
-    // Walk the loops, starting each at its smallest vertex.
-    seen.assign(next.size(), 0);
-    auto at = [&](Index u) {
-      const auto it = std::lower_bound(next.begin(), next.end(), std::pair<Index, Index>(u, 0));
-      return it != next.end() && it->first == u ? static_cast<std::size_t>(it - next.begin()) : next.size();
-    };
+    // Walk the loops, each from its smallest vertex, in that order.
+    std::sort(tails.begin(), tails.end());
     loops.clear();
-    for (std::size_t s0 = 0; s0 < next.size(); ++s0) {
-      if (seen[s0]) continue;
+    for (Index s0 : tails) {
+      if (walked[s0] == stamp) continue;
       loops.emplace_back();
-      for (std::size_t i = s0; !seen[i];) {
-        seen[i] = 1;
-        const Index u = next[i].first;
+      for (Index u = s0; walked[u] != stamp;) {
+        walked[u] = stamp;
         loops.back().push_back(u);
-        const Index v = next[i].second;
-        i = at(v);
-        if (i == next.size()) throw fail("its boundary is not closed at vertex " + std::to_string(v));
+        if (has_next[u] != stamp) throw fail("its boundary is not closed at vertex " + std::to_string(u));
+        u = next_of[u];
       }
     }
     if (loops.size() != 1)
