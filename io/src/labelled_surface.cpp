@@ -134,10 +134,15 @@ void buildDirectedEdges(const LabelledSurface& m, DirectedEdges& out) {
   for (std::size_t u = 0; u + 1 < out.start.size(); ++u) {
     const auto first = out.entries.begin() + static_cast<std::ptrdiff_t>(out.start[u]);
     const auto last = out.entries.begin() + static_cast<std::ptrdiff_t>(out.start[u + 1]);
-    if (last - first > 1)
-      std::sort(first, last, [](const DirectedEdges::Entry& a, const DirectedEdges::Entry& b) {
-        return a.head != b.head ? a.head < b.head : a.face < b.face;
-      });
+    auto less = [](const DirectedEdges::Entry& a, const DirectedEdges::Entry& b) {
+      return a.head != b.head ? a.head < b.head : a.face < b.face;
+    };
+    if (last - first > 16) {
+      std::sort(first, last, less);
+    } else {  // a vertex has a few edges: insertion sort
+      for (auto it = first + (first != last); it < last; ++it)
+        for (auto j = it; j != first && less(*j, *(j - 1)); --j) std::iter_swap(j, j - 1);
+    }
     for (auto it = first; it + 1 < last; ++it)
       if (it->head == (it + 1)->head) {
         const auto& later = *(it + 1);
