@@ -263,10 +263,13 @@ struct FaceEdge {
 
 VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
   const auto faces = m.volume(v);
-  const std::string name = m.volumeName(v);
+  auto name = [&] { return m.volumeName(v); };  // built only for an error
   // Scratch reused from volume to volume (a file has many small volumes).
-  thread_local std::vector<FaceEdge> edges;
-  thread_local std::vector<Index> corner_vertex, verts;
+  thread_local std::vector<FaceEdge> scratch_edges;
+  thread_local std::vector<Index> scratch_corners, scratch_verts;
+  auto& edges = scratch_edges;
+  auto& corner_vertex = scratch_corners;
+  auto& verts = scratch_verts;
   edges.clear(), corner_vertex.clear();
   for (Index q = 0; q < faces.size(); ++q) {
     const auto loop = m.face(faces[q]);
@@ -293,7 +296,7 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
     if (j - i > 2) {
       std::string listed;
       for (std::size_t k = i; k < j; ++k) listed += (k > i ? ", " : "") + m.faceName(faces[edges[k].face]);
-      throw InputError(name + ": edge " + std::to_string(edges[i].tail) + "-" + std::to_string(edges[i].head) +
+      throw InputError(name() + ": edge " + std::to_string(edges[i].tail) + "-" + std::to_string(edges[i].head) +
                        " is in " + std::to_string(j - i) + " of its faces (" + listed +
                        "): the cell is not a manifold surface");
     }
@@ -312,7 +315,7 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
   for (Index q = 0; q < faces.size(); ++q)
     if (pieces.find(q) == q) piece_first.push_back(q);
   if (piece_first.size() > 1)
-    throw InputError(name + ": its faces form " + std::to_string(piece_first.size()) +
+    throw InputError(name() + ": its faces form " + std::to_string(piece_first.size()) +
                      " disconnected pieces (" + m.faceName(faces[0]) + " is in one, " +
                      m.faceName(faces[piece_first[0] == pieces.find(0) ? piece_first[1] : piece_first[0]]) +
                      " in another): a cell is one piece");
@@ -334,14 +337,14 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
     }
     for (auto [vertex, d] : degree)
       if (d != 2)
-        throw InputError(name + ": neither a closed surface nor a patch of one: " + std::to_string(d) +
+        throw InputError(name() + ": neither a closed surface nor a patch of one: " + std::to_string(d) +
                          " edges of its boundary meet at vertex " + std::to_string(vertex) + " (a pinched boundary)");
     UnionFind loops(local.size());
     for (auto [a, b] : boundary) loops.unite(local[a], local[b]);
     std::size_t num_loops = 0;
     for (Index i = 0; i < local.size(); ++i) num_loops += loops.find(i) == i;
     if (num_loops != 1 || euler != 1)
-      throw InputError(name + ": neither a closed surface nor a patch of one: " + std::to_string(boundary.size()) +
+      throw InputError(name() + ": neither a closed surface nor a patch of one: " + std::to_string(boundary.size()) +
                        " of its edges are on one face only, forming " + std::to_string(num_loops) +
                        " boundary loop(s), Euler characteristic V-E+F = " + std::to_string(euler) +
                        " (a closed cell has no such edge, a patch one loop and characteristic 1)");
@@ -363,11 +366,11 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
       else if (fans[i][2] != fans[first][2] && fans[i][1] < pinched_corner) pinched_corner = fans[i][1];
     }
     if (pinched_corner != kInvalidIndex)
-      throw InputError(name + ": its faces meet at vertex " + std::to_string(corner_vertex[pinched_corner]) +
+      throw InputError(name() + ": its faces meet at vertex " + std::to_string(corner_vertex[pinched_corner]) +
                        " only by a corner (a pinched, non-manifold vertex): the cell is not a closed manifold");
   }
   if (euler != 2)
-    throw InputError(name + ": its closed surface has Euler characteristic V-E+F = " + std::to_string(euler) +
+    throw InputError(name() + ": its closed surface has Euler characteristic V-E+F = " + std::to_string(euler) +
                      ", expected 2 (a sphere; a cell with a handle or a tunnel is refused)");
   // Orient the faces consistently: across a shared edge, two faces run opposite ways.
   out.orientation.assign(faces.size(), 0);
@@ -393,7 +396,7 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
         out.orientation[b.face] = wanted;
         stack.push_back(b.face);
       } else if (out.orientation[b.face] != wanted) {
-        throw InputError(name + ": its faces cannot be oriented consistently (" + m.faceName(faces[q]) + " and " +
+        throw InputError(name() + ": its faces cannot be oriented consistently (" + m.faceName(faces[q]) + " and " +
                          m.faceName(faces[b.face]) + " along edge " + std::to_string(a.tail) + "-" +
                          std::to_string(a.head) + "): a non-orientable surface");
       }
@@ -414,7 +417,7 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
     }
   }
   if (!(std::abs(six_volume) > 1e-12 * scale * scale * scale))
-    throw InputError(name + ": its closed surface encloses no volume (" + formatNumber(six_volume / 6) + ")");
+    throw InputError(name() + ": its closed surface encloses no volume (" + formatNumber(six_volume / 6) + ")");
   if (six_volume < 0)
     for (int& o : out.orientation) o = -o;
   return out;
