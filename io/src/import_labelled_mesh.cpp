@@ -116,6 +116,7 @@ LabelledFaces readPly(const std::string& path, const std::string& label_array) {
   LabelledFaces m;
   m.path = path;
   const std::size_t nv = ply.count("vertex");
+  const std::size_t nf = ply.count("face");  // InputError naming the file when there is no face element
   const PlyColumn& x = ply.scalar("vertex", "x");
   const PlyColumn& y = ply.scalar("vertex", "y");
   const PlyColumn& z = ply.scalar("vertex", "z");
@@ -163,7 +164,6 @@ LabelledFaces readPly(const std::string& path, const std::string& label_array) {
   if (fv.type == PlyType::Float32 || fv.type == PlyType::Float64)
     throw InputError("'" + path + "': face property '" + list_name + "' holds " + plyTypeName(fv.type) +
                      " values, expected vertex indices of an integer type");
-  const std::size_t nf = ply.count("face");
   m.offsets = fv.offsets;
   m.vertices.resize(fv.values.size());
   for (std::size_t f = 0; f < nf; ++f) {
@@ -377,6 +377,7 @@ ComplexFile toComplex(const LabelledFaces& m) {
   c.face_offsets = m.offsets;
   c.face_vertices = m.vertices;
   c.volume_noun = "cell";
+  c.face_noun = m.face_noun;
   const bool two = !m.second.empty();
   // (label, face) pairs, sorted once: the volumes in label order.
   std::vector<std::pair<Label, Index>> pairs;

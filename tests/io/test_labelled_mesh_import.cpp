@@ -390,6 +390,12 @@ TEST_CASE("labelled mesh: bad files name the file, the element and the label", "
     CHECK_THAT(importError(vtp, ImportOptions{"auto", 1.0, 0.0, false, "region"}),
                Contains("no cell-data array 'region'"));
   }
+  SECTION("a PLY without faces, read as labelled_mesh") {
+    const std::string path = dir.file("points.ply");
+    std::ofstream(path) << "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                           "property float z\nend_header\n0 0 0\n";
+    CHECK_THAT(importError(path, ImportOptions{"labelled_mesh"}), Contains(path) && Contains("face"));
+  }
   SECTION("a label that is no integer") {
     LabelledFaces m = twoSquares();
     m.float_labels = true;
