@@ -504,9 +504,11 @@ LabelledSheet buildLabelledSheet(LabelledSurface& m, const ImportOptions& option
   LabelledSheet sheet{Tissue(2, Embedding::Surface), findCells(m, options.repair, report)};
   SheetCells& cells = sheet.cells;
 
-  std::vector<Vec3> scaled(m.positions.size());
-  for (std::size_t i = 0; i < scaled.size(); ++i) scaled[i] = options.scale * m.positions[i];
-  if (options.simplify > 0) report.simplified_vertices = simplifyWalls(cells.outlines, scaled, options.simplify);
+  if (options.simplify > 0) {  // the tolerance is in scaled units
+    std::vector<Vec3> scaled(m.positions.size());
+    for (std::size_t i = 0; i < scaled.size(); ++i) scaled[i] = options.scale * m.positions[i];
+    report.simplified_vertices = simplifyWalls(cells.outlines, scaled, options.simplify);
+  }
 
   // Keep the outline vertices only, numbered in file order.
   std::vector<Index> new_index(m.positions.size(), kInvalidIndex);
@@ -516,7 +518,7 @@ LabelledSheet buildLabelledSheet(LabelledSurface& m, const ImportOptions& option
   for (Index v = 0; v < new_index.size(); ++v)
     if (new_index[v] == 0) {
       new_index[v] = static_cast<Index>(positions.size());
-      positions.push_back(scaled[v]);
+      positions.push_back(options.scale * m.positions[v]);
     }
   // The polygons as one flat list (offsets, vertices), as the builder takes them.
   std::vector<Index> offsets{0}, items;
