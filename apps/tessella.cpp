@@ -9,6 +9,7 @@
 //   tessella mesh SNAPSHOT.vtu --out MESH.vtu [--walls WALLS.vtu] [--size H] [--min-angle A] [--max-volume V]
 //                 [--volume-method cell_by_cell|whole_tissue] [--max-elements N] [--config CFG.yaml]
 //   tessella import FILE --out TISSUE.vtu [--format F] [--scale S] [--simplify TOL] [--repair]
+//                   [--label-array NAME]
 //   tessella export SNAPSHOT.vtu --out FILE.ply [--binary]   (cell-complex PLY, docs/import.md)
 //   tessella render RUN_DIR|SERIES.pvd|SNAPSHOT.vtu [--property NAME] [--out DIR] [--size WxH] [--every N]
 //                   [--view X,Y,Z] [--range LOW,HIGH] [--no-movie]
@@ -162,14 +163,15 @@ int infoCommand(const std::string& path) {
 }
 
 struct ImportArgs {
-  std::string file, out, format = "auto";
+  std::string file, out, format = "auto", label_array;
   double scale = 1.0, simplify = 0.0;
   bool repair = false;
 };
 
 int importCommand(const ImportArgs& a) {
   using namespace tessella;
-  const io::ImportResult r = io::importTissue(a.file, io::ImportOptions{a.format, a.scale, a.simplify, a.repair});
+  const io::ImportResult r =
+      io::importTissue(a.file, io::ImportOptions{a.format, a.scale, a.simplify, a.repair, a.label_array});
   const sim::TissueSummary s = sim::summarizeTissue(r.tissue);
   fmt::print("{}", sim::formatImportSummary(r.report, s, r.tissue.time()));
   if (!s.validation.ok) {
@@ -381,6 +383,9 @@ int main(int argc, char** argv) {
   import->add_option("--simplify", import_args.simplify,
                      "Simplify wall polylines between junctions to this tolerance (0 = keep every vertex)");
   import->add_flag("--repair", import_args.repair, "Repair harmless defects (a one-triangle sliver), each reported");
+  import->add_option("--label-array", import_args.label_array,
+                     "labelled_mesh, labelled_vtu: the face property / cell-data array (OBJ: g, o or usemtl) holding "
+                     "each face's cell label; A,B for the cells on either side (default: label, cell_label, cell_id)");
 
   auto* export_ = app.add_subcommand(
       "export", "Write a tissue snapshot (.vtu) as a cell-complex PLY file (OpenAlea property topomesh)");

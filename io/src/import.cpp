@@ -26,6 +26,13 @@ const std::vector<ImportFormat>& importFormats() {
        "3D tissue, open patches of one surface a curved sheet",
        &importCellComplex,
        &isCellComplexPly},
+      {"labelled_mesh",
+       {".ply", ".obj", ".vtp"},
+       "polygon mesh with integer cell labels per face (PLY face property, OBJ `g LABEL` groups, VTK PolyData "
+       "cell data; label_array picks it): one label per face gives a curved sheet, two (the cells on either "
+       "side) a 3D tissue",
+       &importLabelledMesh,
+       &isLabelledMesh},
       {"labelled_vtu",
        {".vtu"},
        "VTK mesh with a per-element cell label (label, cell_label or cell_id): tetrahedra give a 3D tissue "
@@ -87,14 +94,30 @@ const ImportFormat& detectImportFormat(const std::string& path) {
   for (const ImportFormat* f : candidates)
     if (!f->recognises || f->recognises(path)) return *f;
   std::string layout;
-  if (ext == ".ply") layout = " (it holds " + plyLayout(path) + ")";
-  throw InputError("cannot import '" + path + "': its layout" + layout +
-                   " is none of the supported formats; supported formats:\n" + importFormatList());
+  std::string hint;
+  if (ext == ".ply") {
+    layout = " (it holds " + plyLayout(path) + ")";
+    hint = " (a labelled mesh whose face label property has another name: give its name as label_array, "
+           "--label-array)";
+  }
+  throw InputError("cannot import '" + path + "': its layout" + layout + " is none of the supported formats" + hint +
+                   "; supported formats:\n" + importFormatList());
 }
 
 ImportResult importTissue(const std::string& path, const ImportOptions& options) {
   const ImportFormat* format = nullptr;
-  if (options.format == "auto") {
+  if (options.format == "auto" && !options.label_array.empty()) {
+    // A label array names a labelled format: the one reading this extension.
+    const std::string ext = lowerExtension(path);
+    for (const ImportFormat& f : importFormats())
+      if (!format && (f.name == "labelled_mesh" || f.name == "labelled_vtu") &&
+          std::find(f.extensions.begin(), f.extensions.end(), ext) != f.extensions.end())
+        format = &f;
+    if (!format)
+      throw InputError("cannot import '" + path + "': label_array ('" + options.label_array +
+                       "') applies to the labelled_mesh and labelled_vtu formats, which do not read '" + ext +
+                       "' files");
+  } else if (options.format == "auto") {
     format = &detectImportFormat(path);
   } else {
     for (const ImportFormat& f : importFormats())
@@ -103,6 +126,9 @@ ImportResult importTissue(const std::string& path, const ImportOptions& options)
       throw InputError("unknown import format '" + options.format + "'; choose auto or one of:\n" +
                        importFormatList());
   }
+  if (!options.label_array.empty() && format->name != "labelled_mesh" && format->name != "labelled_vtu")
+    throw InputError("cannot import '" + path + "': label_array ('" + options.label_array +
+                     "') applies to the labelled_mesh and labelled_vtu formats, not " + format->name);
   ImportResult result = format->read(path, options);
   result.report.format = format->name;
   return result;

@@ -18,7 +18,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <map>
+#include <compare>
 #include <numeric>
 #include <tuple>
 #include <unordered_map>
@@ -151,8 +151,9 @@ ComplexFile readComplex(const std::string& path) {
     throw InputError("'" + path + "': element 'face' has neither a vertex list ('vertex_index' or "
                      "'vertex_indices') nor an edge list ('edge_index')");
   }
+  std::vector<Index> sorted;  // reused from face to face
   for (std::size_t f = 0; f < nf; ++f) {
-    std::vector<Index> sorted(m.face(f).begin(), m.face(f).end());
+    sorted.assign(m.face(f).begin(), m.face(f).end());
     std::sort(sorted.begin(), sorted.end());
     const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
     if (twice != sorted.end())
@@ -187,19 +188,25 @@ ComplexFile readComplex(const std::string& path) {
       m.volume_faces.push_back(static_cast<Index>(f));
     }
     m.volume_offsets.push_back(m.volume_faces.size());
-    std::vector<Index> sorted(m.volume(v).begin(), m.volume(v).end());
+    sorted.assign(m.volume(v).begin(), m.volume(v).end());
     std::sort(sorted.begin(), sorted.end());
     const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
     if (twice != sorted.end())
       throw InputError(m.volumeName(v) + ": lists face " + std::to_string(*twice) + " twice");
   }
-  std::map<Label, std::size_t> first_with;
-  for (std::size_t v = 0; v < nvol; ++v) {
-    const auto [it, fresh] = first_with.emplace(m.volume_label[v], v);
-    if (!fresh)
-      throw InputError("'" + path + "' volumes " + std::to_string(it->second) + " and " + std::to_string(v) +
-                       ": label " + std::to_string(m.volume_label[v]) + " appears twice");
+  // A label used twice: reported as a scan in volume order would, the
+  // second use that comes first, with the first volume of its label.
+  std::vector<std::pair<Label, Index>> by_label(nvol);
+  for (std::size_t v = 0; v < nvol; ++v) by_label[v] = {m.volume_label[v], static_cast<Index>(v)};
+  std::sort(by_label.begin(), by_label.end());
+  Index first = kInvalidIndex, second = kInvalidIndex;
+  for (std::size_t i = 1, start = 0; i < nvol; ++i) {
+    if (by_label[i].first != by_label[start].first) start = i;
+    else if (i == start + 1 && by_label[i].second < second) first = by_label[start].second, second = by_label[i].second;
   }
+  if (first != kInvalidIndex)
+    throw InputError("'" + path + "' volumes " + std::to_string(first) + " and " + std::to_string(second) +
+                     ": label " + std::to_string(m.volume_label[first]) + " appears twice");
   return m;
 }
 
@@ -209,15 +216,36 @@ namespace detail {
 
 // Two faces on the same vertices: one wall listed twice instead of shared.
 void checkDuplicateFaces(const ComplexFile& m) {
-  std::map<std::vector<Index>, std::size_t> seen;
-  for (std::size_t f = 0; f < m.numFaces(); ++f) {
-    std::vector<Index> key(m.face(f).begin(), m.face(f).end());
-    std::sort(key.begin(), key.end());
-    const auto [it, fresh] = seen.emplace(std::move(key), f);
-    if (!fresh)
-      throw InputError("'" + m.path + "' faces " + std::to_string(it->second) + " and " + std::to_string(f) +
-                       " have the same vertices: a wall is listed once, by both the volumes it separates");
+  // Each face's vertices sorted, in one flat array; faces sorted by those
+  // keys: equal keys are neighbours. Reported, as a scan in face order would:
+  // the pair whose second face comes first, with the first face of its key.
+  std::vector<Index> keys(m.face_vertices);
+  for (std::size_t f = 0; f < m.numFaces(); ++f)
+    std::sort(keys.begin() + static_cast<std::ptrdiff_t>(m.face_offsets[f]),
+              keys.begin() + static_cast<std::ptrdiff_t>(m.face_offsets[f + 1]));
+  auto key = [&](Index f) {
+    return std::span<const Index>(keys.data() + m.face_offsets[f], m.face_offsets[f + 1] - m.face_offsets[f]);
+  };
+  std::vector<Index> order(m.numFaces());
+  std::iota(order.begin(), order.end(), Index{0});
+  std::sort(order.begin(), order.end(), [&](Index a, Index b) {
+    const auto ka = key(a), kb = key(b);
+    if (ka.size() != kb.size()) return ka.size() < kb.size();
+    const auto c = std::lexicographical_compare_three_way(ka.begin(), ka.end(), kb.begin(), kb.end());
+    return c != 0 ? c < 0 : a < b;
+  });
+  Index first = kInvalidIndex, second = kInvalidIndex;
+  for (std::size_t i = 1, start = 0; i < order.size(); ++i) {
+    const auto ka = key(order[start]), kb = key(order[i]);
+    if (!std::equal(ka.begin(), ka.end(), kb.begin(), kb.end())) {
+      start = i;
+    } else if (i == start + 1 && order[i] < second) {
+      first = order[start], second = order[i];
+    }
   }
+  if (first != kInvalidIndex)
+    throw InputError("'" + m.path + "' faces " + std::to_string(first) + " and " + std::to_string(second) +
+                     " have the same vertices: a wall is listed once, by both the volumes it separates");
 }
 
 namespace {
@@ -235,9 +263,14 @@ struct FaceEdge {
 
 VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
   const auto faces = m.volume(v);
-  const std::string name = m.volumeName(v);
-  std::vector<FaceEdge> edges;
-  std::vector<Index> corner_vertex;
+  auto name = [&] { return m.volumeName(v); };  // built only for an error
+  // Scratch reused from volume to volume (a file has many small volumes).
+  thread_local std::vector<FaceEdge> scratch_edges;
+  thread_local std::vector<Index> scratch_corners, scratch_verts;
+  auto& edges = scratch_edges;
+  auto& corner_vertex = scratch_corners;
+  auto& verts = scratch_verts;
+  edges.clear(), corner_vertex.clear();
   for (Index q = 0; q < faces.size(); ++q) {
     const auto loop = m.face(faces[q]);
     const Index first = static_cast<Index>(corner_vertex.size());
@@ -251,8 +284,10 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
   std::sort(edges.begin(), edges.end(), [](const FaceEdge& a, const FaceEdge& b) {
     return a.key != b.key ? a.key < b.key : a.face < b.face;
   });
-  UnionFind pieces(faces.size()), corners(corner_vertex.size());
-  std::vector<std::pair<Index, Index>> boundary;
+  thread_local UnionFind pieces(0), corners(0);
+  pieces.reset(faces.size()), corners.reset(corner_vertex.size());
+  thread_local std::vector<std::pair<Index, Index>> boundary;
+  boundary.clear();
   std::size_t num_edges = 0;
   for (std::size_t i = 0; i < edges.size();) {
     std::size_t j = i;
@@ -261,7 +296,7 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
     if (j - i > 2) {
       std::string listed;
       for (std::size_t k = i; k < j; ++k) listed += (k > i ? ", " : "") + m.faceName(faces[edges[k].face]);
-      throw InputError(name + ": edge " + std::to_string(edges[i].tail) + "-" + std::to_string(edges[i].head) +
+      throw InputError(name() + ": edge " + std::to_string(edges[i].tail) + "-" + std::to_string(edges[i].head) +
                        " is in " + std::to_string(j - i) + " of its faces (" + listed +
                        "): the cell is not a manifold surface");
     }
@@ -280,11 +315,11 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
   for (Index q = 0; q < faces.size(); ++q)
     if (pieces.find(q) == q) piece_first.push_back(q);
   if (piece_first.size() > 1)
-    throw InputError(name + ": its faces form " + std::to_string(piece_first.size()) +
+    throw InputError(name() + ": its faces form " + std::to_string(piece_first.size()) +
                      " disconnected pieces (" + m.faceName(faces[0]) + " is in one, " +
                      m.faceName(faces[piece_first[0] == pieces.find(0) ? piece_first[1] : piece_first[0]]) +
                      " in another): a cell is one piece");
-  std::vector<Index> verts = corner_vertex;
+  verts.assign(corner_vertex.begin(), corner_vertex.end());
   std::sort(verts.begin(), verts.end());
   verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
   const long long euler = static_cast<long long>(verts.size()) - static_cast<long long>(num_edges) +
@@ -302,14 +337,14 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
     }
     for (auto [vertex, d] : degree)
       if (d != 2)
-        throw InputError(name + ": neither a closed surface nor a patch of one: " + std::to_string(d) +
+        throw InputError(name() + ": neither a closed surface nor a patch of one: " + std::to_string(d) +
                          " edges of its boundary meet at vertex " + std::to_string(vertex) + " (a pinched boundary)");
     UnionFind loops(local.size());
     for (auto [a, b] : boundary) loops.unite(local[a], local[b]);
     std::size_t num_loops = 0;
     for (Index i = 0; i < local.size(); ++i) num_loops += loops.find(i) == i;
     if (num_loops != 1 || euler != 1)
-      throw InputError(name + ": neither a closed surface nor a patch of one: " + std::to_string(boundary.size()) +
+      throw InputError(name() + ": neither a closed surface nor a patch of one: " + std::to_string(boundary.size()) +
                        " of its edges are on one face only, forming " + std::to_string(num_loops) +
                        " boundary loop(s), Euler characteristic V-E+F = " + std::to_string(euler) +
                        " (a closed cell has no such edge, a patch one loop and characteristic 1)");
@@ -317,26 +352,42 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
     return out;
   }
   // Closed: every vertex one fan of faces (not pinched), a sphere.
-  std::unordered_map<Index, Index> fan_of;
-  for (Index c = 0; c < corner_vertex.size(); ++c) {
-    const auto [it, fresh] = fan_of.emplace(corner_vertex[c], corners.find(c));
-    if (!fresh && it->second != corners.find(c))
-      throw InputError(name + ": its faces meet at vertex " + std::to_string(corner_vertex[c]) +
+  {
+    // (vertex, fan) of every corner, sorted: a vertex in two fans is pinched.
+    // Reported: the vertex of the first corner (in listing order) whose fan
+    // differs from that of the vertex's first corner.
+    thread_local std::vector<std::array<Index, 3>> fans;  // vertex, corner, fan
+    fans.resize(corner_vertex.size());
+    for (Index c = 0; c < corner_vertex.size(); ++c) fans[c] = {corner_vertex[c], c, corners.find(c)};
+    std::sort(fans.begin(), fans.end());
+    Index pinched_corner = kInvalidIndex;
+    for (std::size_t i = 1, first = 0; i < fans.size(); ++i) {
+      if (fans[i][0] != fans[first][0]) first = i;
+      else if (fans[i][2] != fans[first][2] && fans[i][1] < pinched_corner) pinched_corner = fans[i][1];
+    }
+    if (pinched_corner != kInvalidIndex)
+      throw InputError(name() + ": its faces meet at vertex " + std::to_string(corner_vertex[pinched_corner]) +
                        " only by a corner (a pinched, non-manifold vertex): the cell is not a closed manifold");
   }
   if (euler != 2)
-    throw InputError(name + ": its closed surface has Euler characteristic V-E+F = " + std::to_string(euler) +
+    throw InputError(name() + ": its closed surface has Euler characteristic V-E+F = " + std::to_string(euler) +
                      ", expected 2 (a sphere; a cell with a handle or a tunnel is refused)");
   // Orient the faces consistently: across a shared edge, two faces run opposite ways.
   out.orientation.assign(faces.size(), 0);
-  std::vector<std::vector<Index>> face_edges(faces.size());
-  for (Index i = 0; i < edges.size(); ++i) face_edges[edges[i].face].push_back(i);
-  std::vector<Index> stack{0};
+  // The edges of each face (positions in `edges`), grouped by face (counting sort).
+  thread_local std::vector<Index> face_edge_start, face_edge_list, fill, stack;
+  face_edge_start.assign(faces.size() + 1, 0), face_edge_list.resize(edges.size());
+  for (const FaceEdge& e : edges) ++face_edge_start[e.face + 1];
+  for (std::size_t q = 0; q < faces.size(); ++q) face_edge_start[q + 1] += face_edge_start[q];
+  fill.assign(face_edge_start.begin(), face_edge_start.end() - 1);
+  for (Index i = 0; i < edges.size(); ++i) face_edge_list[fill[edges[i].face]++] = i;
+  stack.assign(1, 0);
   out.orientation[0] = 1;
   while (!stack.empty()) {
     const Index q = stack.back();
     stack.pop_back();
-    for (Index i : face_edges[q]) {
+    for (Index k = face_edge_start[q]; k < face_edge_start[q + 1]; ++k) {
+      const Index i = face_edge_list[k];
       // The other face along this edge: the neighbour in sorted order.
       const Index j = (i + 1 < edges.size() && edges[i + 1].key == edges[i].key) ? i + 1 : i - 1;
       const FaceEdge &a = edges[i], &b = edges[j];
@@ -345,7 +396,7 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
         out.orientation[b.face] = wanted;
         stack.push_back(b.face);
       } else if (out.orientation[b.face] != wanted) {
-        throw InputError(name + ": its faces cannot be oriented consistently (" + m.faceName(faces[q]) + " and " +
+        throw InputError(name() + ": its faces cannot be oriented consistently (" + m.faceName(faces[q]) + " and " +
                          m.faceName(faces[b.face]) + " along edge " + std::to_string(a.tail) + "-" +
                          std::to_string(a.head) + "): a non-orientable surface");
       }
@@ -366,7 +417,7 @@ VolumeSurface analyseVolume(const ComplexFile& m, std::size_t v) {
     }
   }
   if (!(std::abs(six_volume) > 1e-12 * scale * scale * scale))
-    throw InputError(name + ": its closed surface encloses no volume (" + formatNumber(six_volume / 6) + ")");
+    throw InputError(name() + ": its closed surface encloses no volume (" + formatNumber(six_volume / 6) + ")");
   if (six_volume < 0)
     for (int& o : out.orientation) o = -o;
   return out;
@@ -395,18 +446,26 @@ ImportResult importClosedVolumes(const ComplexFile& m, const std::vector<VolumeS
     }
     checkDuplicateVertices(s);
   }
-  // Which volumes list each face, with the face's outward orientation in each.
-  std::vector<std::vector<std::pair<Index, int>>> listed(m.numFaces());
-  for (std::size_t v = 0; v < m.numVolumes(); ++v) {
-    const auto faces = m.volume(v);
-    for (std::size_t q = 0; q < faces.size(); ++q)
-      listed[faces[q]].emplace_back(static_cast<Index>(v), surfaces[v].orientation[q]);
+  // Which volumes list each face, with the face's outward orientation in
+  // each (grouped by face with a counting sort, volumes in order).
+  std::vector<std::size_t> listed_start(m.numFaces() + 1, 0);
+  for (Index f : m.volume_faces) ++listed_start[f + 1];
+  for (std::size_t f = 0; f < m.numFaces(); ++f) listed_start[f + 1] += listed_start[f];
+  std::vector<std::pair<Index, int>> listed_by(m.volume_faces.size());
+  {
+    std::vector<std::size_t> fill(listed_start.begin(), listed_start.end() - 1);
+    for (std::size_t v = 0; v < m.numVolumes(); ++v) {
+      const auto faces = m.volume(v);
+      for (std::size_t q = 0; q < faces.size(); ++q)
+        listed_by[fill[faces[q]]++] = {static_cast<Index>(v), surfaces[v].orientation[q]};
+    }
   }
   std::vector<Index> face_index(m.numFaces(), kInvalidIndex);
-  std::vector<std::vector<Index>> walls;
+  std::vector<Index> wall_offsets{0}, wall_vertices;  // the walls, flat
   std::size_t shared = 0, unlisted = 0;
   for (std::size_t f = 0; f < m.numFaces(); ++f) {
-    const auto& by = listed[f];
+    const std::span<const std::pair<Index, int>> by(listed_by.data() + listed_start[f],
+                                                    listed_start[f + 1] - listed_start[f]);
     if (by.empty()) {
       ++unlisted;
       continue;
@@ -424,47 +483,50 @@ ImportResult importClosedVolumes(const ComplexFile& m, const std::vector<VolumeS
                        std::to_string(m.volume_label[by[1].first]) +
                        ") lie on the same side of it: the cells overlap");
     shared += by.size() == 2;
-    face_index[f] = static_cast<Index>(walls.size());
-    walls.emplace_back(m.face(f).begin(), m.face(f).end());
+    face_index[f] = static_cast<Index>(wall_offsets.size() - 1);
+    wall_vertices.insert(wall_vertices.end(), m.face(f).begin(), m.face(f).end());
+    wall_offsets.push_back(static_cast<Index>(wall_vertices.size()));
   }
+  const std::size_t num_walls = wall_offsets.size() - 1;
   // Vertices used by a wall, in file order.
   std::vector<Index> vertex_index(m.positions.size(), kInvalidIndex);
-  for (const auto& w : walls)
-    for (Index u : w) vertex_index[u] = 0;
+  for (Index u : wall_vertices) vertex_index[u] = 0;
   std::vector<Vec3> positions;
   for (Index u = 0; u < vertex_index.size(); ++u)
     if (vertex_index[u] == 0) {
       vertex_index[u] = static_cast<Index>(positions.size());
       positions.push_back(options.scale * m.positions[u]);
     }
-  for (auto& w : walls)
-    for (Index& u : w) u = vertex_index[u];
+  for (Index& u : wall_vertices) u = vertex_index[u];
   // Cells ordered by label, as for every other format.
   std::vector<Index> order(m.numVolumes());
   std::iota(order.begin(), order.end(), Index{0});
   std::sort(order.begin(), order.end(), [&](Index a, Index b) { return m.volume_label[a] < m.volume_label[b]; });
-  std::vector<std::vector<CellFace>> cells;
+  std::vector<Index> cell_offsets{0};
+  std::vector<CellFace> cell_faces;
+  cell_faces.reserve(m.volume_faces.size());
   for (Index v : order) {
-    cells.emplace_back();
     const auto faces = m.volume(v);
     for (std::size_t q = 0; q < faces.size(); ++q)
-      cells.back().push_back(CellFace{face_index[faces[q]], surfaces[v].orientation[q] < 0});
+      cell_faces.push_back(CellFace{face_index[faces[q]], surfaces[v].orientation[q] < 0});
+    cell_offsets.push_back(static_cast<Index>(cell_faces.size()));
   }
   ImportResult result{Tissue(3, Embedding::Volume), {}};
+  const std::size_t num_positions = positions.size();
   try {
-    result.tissue = buildPolyhedralTissue(positions, walls, cells);
+    result.tissue = buildPolyhedralTissue(std::move(positions), wall_offsets, wall_vertices, cell_offsets, cell_faces);
   } catch (const Error& e) {
     throw InputError("'" + m.path + "': the volumes do not form a tissue: " + std::string(e.what()));
   }
   auto& label = result.tissue.cellProperties().add<std::int64_t>("label", 0);
   for (std::size_t c = 0; c < order.size(); ++c) label[CellId(static_cast<Index>(c))] = m.volume_label[order[c]];
-  report.notes.push_back("layout: closed " + m.volume_noun + "s, a 3D tissue (" + std::to_string(walls.size()) +
+  report.notes.push_back("layout: closed " + m.volume_noun + "s, a 3D tissue (" + std::to_string(num_walls) +
                          " walls, each " + (m.face_element.empty() ? "a face of the file" : "a side of a tetrahedron") +
                          ": " + std::to_string(shared) + " between two cells, " +
-                         std::to_string(walls.size() - shared) + " on the boundary)");
+                         std::to_string(num_walls - shared) + " on the boundary)");
   if (unlisted > 0)
     report.notes.push_back(std::to_string(unlisted) + " faces of the file are in no volume: ignored");
-  if (const std::size_t unused = m.positions.size() - positions.size(); unused > 0)
+  if (const std::size_t unused = m.positions.size() - num_positions; unused > 0)
     report.notes.push_back(std::to_string(unused) + " vertices of the file are in no wall: ignored");
   return result;
 }

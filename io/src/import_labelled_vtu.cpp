@@ -77,14 +77,27 @@ ImportResult importLabelledVtu(const std::string& path, const ImportOptions& opt
   const std::string file = "'" + path + "'";
   vtkDataArray* labels = nullptr;
   std::string label_name;
-  for (const char* name : kLabelNames)
-    if (!labels && (labels = grid->GetCellData()->GetArray(name))) label_name = name;
+  if (options.label_array.find(',') != std::string::npos)
+    throw InputError(file + ": label_array '" + options.label_array +
+                     "' names two arrays; a labelled .vtu carries one label per element");
+  if (!options.label_array.empty()) {
+    labels = grid->GetCellData()->GetArray(options.label_array.c_str());
+    label_name = options.label_array;
+  } else {
+    for (const char* name : kLabelNames)
+      if (!labels && (labels = grid->GetCellData()->GetArray(name))) label_name = name;
+  }
   if (!labels) {
     std::string present;
-    for (int i = 0; i < grid->GetCellData()->GetNumberOfArrays(); ++i)
-      present += (present.empty() ? "" : ", ") + std::string(grid->GetCellData()->GetArrayName(i));
-    throw InputError(file + " has no cell-data array label, cell_label or cell_id naming each element's cell (it has " +
-                     (present.empty() ? std::string("none") : present) + ")");
+    for (int i = 0; i < grid->GetCellData()->GetNumberOfArrays(); ++i) {
+      const char* name = grid->GetCellData()->GetArrayName(i);
+      present += (present.empty() ? "" : ", ") + std::string(name ? name : "(unnamed)");
+    }
+    throw InputError(file + " has no cell-data array " +
+                     (options.label_array.empty() ? std::string("label, cell_label or cell_id")
+                                                  : "'" + options.label_array + "'") +
+                     " naming each element's cell (it has " + (present.empty() ? std::string("none") : present) +
+                     ")");
   }
   if (labels->GetNumberOfComponents() != 1 || !integerType(labels->GetDataType()))
     throw InputError(file + ": cell-data array '" + label_name + "' must be one integer per element (it has " +

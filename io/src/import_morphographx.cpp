@@ -61,14 +61,15 @@ LabelledSurface readMesh(const std::string& path, std::vector<Label>& vertex_par
   m.face_label.resize(nf);
   for (std::size_t f = 0; f < nf; ++f) {
     m.face_label[f] = static_cast<Label>(fl.values[f]);
-    const std::string where = "'" + path + "' face " + std::to_string(f) + " (cell label " +
-                              std::to_string(m.face_label[f]) + ")";
+    auto where = [&] {  // built only for an error
+      return "'" + path + "' face " + std::to_string(f) + " (cell label " + std::to_string(m.face_label[f]) + ")";
+    };
     const std::size_t n = m.face_offsets[f + 1] - m.face_offsets[f];
-    if (n < 3) throw InputError(where + ": has " + std::to_string(n) + " vertices, a face needs at least 3");
+    if (n < 3) throw InputError(where() + ": has " + std::to_string(n) + " vertices, a face needs at least 3");
     for (std::size_t k = m.face_offsets[f]; k < m.face_offsets[f + 1]; ++k) {
       const double v = fv.values[k];
       if (v < 0 || v >= double(nv))
-        throw InputError(where + ": vertex index " + std::to_string(static_cast<long long>(v)) +
+        throw InputError(where() + ": vertex index " + std::to_string(static_cast<long long>(v)) +
                          " is out of range (the file has " + std::to_string(nv) + " vertices, 0.." +
                          std::to_string(nv == 0 ? 0 : nv - 1) + ")");
       m.face_vertices[k] = static_cast<Index>(v);
@@ -76,10 +77,10 @@ LabelledSurface readMesh(const std::string& path, std::vector<Label>& vertex_par
     for (std::size_t a = m.face_offsets[f]; a < m.face_offsets[f + 1]; ++a)
       for (std::size_t b = a + 1; b < m.face_offsets[f + 1]; ++b)
         if (m.face_vertices[a] == m.face_vertices[b])
-          throw InputError(where + ": uses vertex " + std::to_string(m.face_vertices[a]) +
+          throw InputError(where() + ": uses vertex " + std::to_string(m.face_vertices[a]) +
                            " twice (a degenerate face)");
     if (m.face_label[f] <= 0)
-      throw InputError(where + ": label " + std::to_string(m.face_label[f]) +
+      throw InputError(where() + ": label " + std::to_string(m.face_label[f]) +
                        " is no cell (MorphoGraphX cell labels are positive)");
   }
   return m;

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <numeric>
 #include <unordered_map>
 
@@ -37,26 +38,55 @@ void checkDuplicateVertices(const LabelledSurface& m) {
   for (std::size_t f = 0; f < m.numFaces(); ++f)
     for (Index v : m.face(f))
       if (first_face[v] == kInvalidIndex) first_face[v] = static_cast<Index>(f);
-  std::vector<Index> used;
-  for (Index v = 0; v < m.positions.size(); ++v)
-    if (first_face[v] != kInvalidIndex) used.push_back(v);
-  auto less = [&](Index a, Index b) {
-    const Vec3 &p = m.positions[a], &q = m.positions[b];
+  // A flat open-addressing table of positions (linear probing), filled in
+  // index order: a vertex finding its position taken is a duplicate. Of all
+  // duplicates, the one reported is at the smallest position (x, then y, z)
+  // and the two smallest indices there, whatever the table's order.
+  std::size_t size = 16;
+  while (size < 2 * m.positions.size()) size *= 2;
+  const std::size_t mask = size - 1;
+  std::vector<Index> table(size, kInvalidIndex);
+  auto hash = [](const Vec3& p) {
+    std::uint64_t h = 0x9e3779b97f4a7c15ull;
+    for (int k = 0; k < 3; ++k) {
+      const double c = p[k] + 0.0;  // -0 and +0 compare equal: hash them alike
+      std::uint64_t bits;
+      std::memcpy(&bits, &c, sizeof bits);
+      h = (h ^ bits) * 0xff51afd7ed558ccdull;
+      h ^= h >> 32;
+    }
+    return h;
+  };
+  auto lexLess = [](const Vec3& p, const Vec3& q) {
     if (p.x() != q.x()) return p.x() < q.x();
     if (p.y() != q.y()) return p.y() < q.y();
-    if (p.z() != q.z()) return p.z() < q.z();
-    return a < b;
+    return p.z() < q.z();
   };
-  std::sort(used.begin(), used.end(), less);
-  for (std::size_t i = 1; i < used.size(); ++i) {
-    const Index a = used[i - 1], b = used[i];
-    if (m.positions[a] == m.positions[b])
-      throw InputError("'" + m.path + "' vertices " + std::to_string(a) + " and " + std::to_string(b) +
-                       " are duplicates at " + fmtPoint(m.positions[a]) + " (used by face " +
-                       m.faceId(first_face[a]) + " of cell label " +
-                       std::to_string(m.face_label[first_face[a]]) + " and face " + m.faceId(first_face[b]) +
-                       " of cell label " + std::to_string(m.face_label[first_face[b]]) +
-                       "): the mesh is not welded, neighbours would not share their walls");
+  Index dup_a = kInvalidIndex, dup_b = kInvalidIndex;
+  for (Index v = 0; v < m.positions.size(); ++v) {
+    if (first_face[v] == kInvalidIndex) continue;
+    const Vec3& p = m.positions[v];
+    for (std::size_t i = hash(p) & mask;; i = (i + 1) & mask) {
+      const Index w = table[i];
+      if (w == kInvalidIndex) {
+        table[i] = v;
+        break;
+      }
+      if (m.positions[w] == p) {  // w < v is the first vertex here; keep the second one only
+        if (dup_a == kInvalidIndex || lexLess(p, m.positions[dup_a]) ||
+            (m.positions[dup_a] == p && v < dup_b))
+          dup_a = w, dup_b = v;
+        break;
+      }
+    }
+  }
+  if (dup_a != kInvalidIndex) {
+    const Index a = dup_a, b = dup_b;
+    throw InputError("'" + m.path + "' vertices " + std::to_string(a) + " and " + std::to_string(b) +
+                     " are duplicates at " + fmtPoint(m.positions[a]) + " (used by face " + m.faceId(first_face[a]) +
+                     " of cell label " + std::to_string(m.face_label[first_face[a]]) + " and face " +
+                     m.faceId(first_face[b]) + " of cell label " + std::to_string(m.face_label[first_face[b]]) +
+                     "): the mesh is not welded, neighbours would not share their walls");
   }
 }
 
@@ -65,49 +95,112 @@ namespace {
 // The cells of a mesh: faces grouped by label (sorted by label), each
 // checked to be a disk, with its oriented outline.
 
-// Per cell, the connected pieces of its faces (faces joined by an edge).
-// Fills `owner` (directed edge -> face) and throws on an edge used twice the
-// same way.
-std::vector<std::vector<std::vector<Index>>> pieces(const LabelledSurface& m, const std::vector<Label>& labels,
-                                                    const std::vector<std::vector<Index>>& faces,
-                                                    std::unordered_map<std::uint64_t, Index>& owner) {
-  owner.clear();
-  owner.reserve(m.face_vertices.size() * 2);
+// The directed edges of the faces, grouped by tail vertex (a counting sort,
+// linear): the face running along u->v is found by scanning u's few edges.
+// Sorted vectors instead of a hash map of edges: building this and the
+// lookups were most of an import's time.
+struct DirectedEdges {
+  struct Entry {
+    Index head, face, corner;  // corner: position of the tail in the face's loop
+  };
+  std::vector<std::size_t> start;  // per tail vertex, into entries (size vertices + 1)
+  std::vector<Entry> entries;      // per tail, sorted by (head, face)
+
+  /// The face running along u->v, or kInvalidIndex.
+  Index face(Index u, Index v) const {
+    for (std::size_t i = start[u]; i < start[u + 1]; ++i)
+      if (entries[i].head == v) return entries[i].face;
+    return kInvalidIndex;
+  }
+};
+
+// Builds the directed edges; throws on an edge used twice the same way (the
+// first such face in file order, as a sequential scan would find it).
+void buildDirectedEdges(const LabelledSurface& m, DirectedEdges& out) {
+  out.start.assign(m.positions.size() + 1, 0);
+  for (Index u : m.face_vertices) ++out.start[u + 1];
+  for (std::size_t i = 1; i < out.start.size(); ++i) out.start[i] += out.start[i - 1];
+  out.entries.resize(m.face_vertices.size());
+  std::vector<std::size_t> fill(out.start.begin(), out.start.end() - 1);
   for (std::size_t f = 0; f < m.numFaces(); ++f) {
     const auto loop = m.face(f);
-    for (std::size_t k = 0; k < loop.size(); ++k) {
-      const Index u = loop[k], v = loop[(k + 1) % loop.size()];
-      const auto [it, fresh] = owner.emplace(edgeKey(u, v), static_cast<Index>(f));
-      if (fresh) continue;
-      const Index g = it->second;
-      if (m.face_label[g] == m.face_label[f])
-        throw InputError("'" + m.path + "' face " + m.faceId(f) + " (cell label " +
-                         std::to_string(m.face_label[f]) + "): it and face " + m.faceId(g) +
-                         " both run along edge " + std::to_string(u) + "->" + std::to_string(v) +
-                         ": the cell's triangles are not a disk (more than two meet at an edge, or they are "
-                         "oriented inconsistently)");
-      throw InputError("'" + m.path + "' face " + m.faceId(f) + " (cell label " +
-                       std::to_string(m.face_label[f]) + ") and face " + m.faceId(g) + " (cell label " +
-                       std::to_string(m.face_label[g]) + ") both run along edge " + std::to_string(u) + "->" +
-                       std::to_string(v) +
-                       ": the two cells are oriented opposite ways, or more than two triangles meet at that edge");
-    }
+    for (std::size_t k = 0; k < loop.size(); ++k)
+      out.entries[fill[loop[k]]++] = {loop[(k + 1) % loop.size()], static_cast<Index>(f), static_cast<Index>(k)};
   }
+  // Per tail: sort by (head, face); equal heads are an edge used twice.
+  struct Clash {
+    Index face = kInvalidIndex, corner = 0, earlier = 0, tail = 0, head = 0;
+  } clash;
+  for (std::size_t u = 0; u + 1 < out.start.size(); ++u) {
+    const auto first = out.entries.begin() + static_cast<std::ptrdiff_t>(out.start[u]);
+    const auto last = out.entries.begin() + static_cast<std::ptrdiff_t>(out.start[u + 1]);
+    auto less = [](const DirectedEdges::Entry& a, const DirectedEdges::Entry& b) {
+      return a.head != b.head ? a.head < b.head : a.face < b.face;
+    };
+    if (last - first > 16) {
+      std::sort(first, last, less);
+    } else {  // a vertex has a few edges: insertion sort
+      for (auto it = first + (first != last); it < last; ++it)
+        for (auto j = it; j != first && less(*j, *(j - 1)); --j) std::iter_swap(j, j - 1);
+    }
+    for (auto it = first; it + 1 < last; ++it)
+      if (it->head == (it + 1)->head) {
+        const auto& later = *(it + 1);
+        if (later.face < clash.face || (later.face == clash.face && later.corner < clash.corner))
+          clash = {later.face, later.corner, it->face, static_cast<Index>(u), it->head};
+      }
+  }
+  if (clash.face == kInvalidIndex) return;
+  const Index f = clash.face, g = clash.earlier, u = clash.tail, v = clash.head;
+  if (m.face_label[g] == m.face_label[f])
+    throw InputError("'" + m.path + "' face " + m.faceId(f) + " (cell label " + std::to_string(m.face_label[f]) +
+                     "): it and face " + m.faceId(g) + " both run along edge " + std::to_string(u) + "->" +
+                     std::to_string(v) +
+                     ": the cell's triangles are not a disk (more than two meet at an edge, or they are "
+                     "oriented inconsistently)");
+  throw InputError("'" + m.path + "' face " + m.faceId(f) + " (cell label " + std::to_string(m.face_label[f]) +
+                   ") and face " + m.faceId(g) + " (cell label " + std::to_string(m.face_label[g]) +
+                   ") both run along edge " + std::to_string(u) + "->" + std::to_string(v) +
+                   ": the two cells are oriented opposite ways, or more than two triangles meet at that edge");
+}
+
+// Per cell, the connected pieces of its faces (faces joined by an edge), in
+// the order of their first face; none listed when the cell is one piece.
+// Fills `edges`.
+std::vector<std::vector<std::vector<Index>>> pieces(const LabelledSurface& m, const std::vector<Label>& labels,
+                                                    const std::vector<std::vector<Index>>& faces,
+                                                    DirectedEdges& edges) {
+  buildDirectedEdges(m, edges);
   UnionFind uf(m.numFaces());
   for (std::size_t f = 0; f < m.numFaces(); ++f) {
     const auto loop = m.face(f);
     for (std::size_t k = 0; k < loop.size(); ++k) {
-      const auto it = owner.find(edgeKey(loop[(k + 1) % loop.size()], loop[k]));
-      if (it != owner.end() && m.face_label[it->second] == m.face_label[f]) uf.unite(static_cast<Index>(f), it->second);
+      const Index g = edges.face(loop[(k + 1) % loop.size()], loop[k]);
+      if (g != kInvalidIndex && m.face_label[g] == m.face_label[f]) uf.unite(static_cast<Index>(f), g);
     }
   }
   std::vector<std::vector<std::vector<Index>>> out(labels.size());
+  std::vector<std::pair<Index, Index>> roots;  // (root, position in the cell's face list)
   for (std::size_t c = 0; c < labels.size(); ++c) {
-    std::unordered_map<Index, std::size_t> piece_of;
-    for (Index f : faces[c]) {
-      const auto [it, fresh] = piece_of.emplace(uf.find(f), out[c].size());
-      if (fresh) out[c].emplace_back();
-      out[c][it->second].push_back(f);
+    const auto& fs = faces[c];
+    const Index root0 = uf.find(fs.front());
+    bool one = true;
+    for (Index f : fs) one = one && uf.find(f) == root0;
+    if (one) continue;  // no list: one piece, the cell's faces
+    // Several pieces: group by root, pieces ordered by their first face.
+    roots.clear();
+    for (Index q = 0; q < fs.size(); ++q) roots.emplace_back(uf.find(fs[q]), q);
+    std::sort(roots.begin(), roots.end());
+    std::vector<std::pair<Index, std::vector<Index>>> grouped;  // (first position, faces)
+    for (std::size_t i = 0; i < roots.size(); ++i) {
+      if (i == 0 || roots[i].first != roots[i - 1].first) grouped.emplace_back(roots[i].second, std::vector<Index>{});
+      grouped.back().second.push_back(roots[i].second);
+    }
+    std::sort(grouped.begin(), grouped.end());
+    for (auto& [pos, members] : grouped) {
+      std::sort(members.begin(), members.end());
+      for (Index& q : members) q = fs[q];
+      out[c].push_back(std::move(members));
     }
   }
   return out;
@@ -118,8 +211,20 @@ void groupByLabel(const LabelledSurface& m, std::vector<Label>& labels, std::vec
   std::sort(labels.begin(), labels.end());
   labels.erase(std::unique(labels.begin(), labels.end()), labels.end());
   faces.assign(labels.size(), {});
+  {
+    std::vector<Index> count(labels.size(), 0);
+    std::size_t c = 0;
+    for (std::size_t f = 0; f < m.numFaces(); ++f) {
+      if (labels[c] != m.face_label[f])
+        c = static_cast<std::size_t>(std::lower_bound(labels.begin(), labels.end(), m.face_label[f]) - labels.begin());
+      ++count[c];
+    }
+    for (std::size_t k = 0; k < labels.size(); ++k) faces[k].reserve(count[k]);
+  }
+  std::size_t c = 0;  // files list a cell's faces together: try the previous face's cell first
   for (std::size_t f = 0; f < m.numFaces(); ++f) {
-    const auto c = std::lower_bound(labels.begin(), labels.end(), m.face_label[f]) - labels.begin();
+    if (labels[c] != m.face_label[f])
+      c = static_cast<std::size_t>(std::lower_bound(labels.begin(), labels.end(), m.face_label[f]) - labels.begin());
     faces[c].push_back(static_cast<Index>(f));
   }
 }
@@ -129,7 +234,7 @@ void groupByLabel(const LabelledSurface& m, std::vector<Label>& labels, std::vec
 // it shares none). Returns whether anything changed.
 bool repairSlivers(LabelledSurface& m, const std::vector<Label>& labels,
                    const std::vector<std::vector<std::vector<Index>>>& parts,
-                   const std::unordered_map<std::uint64_t, Index>& owner, std::vector<std::string>& repairs,
+                   const DirectedEdges& edges, std::vector<std::string>& repairs,
                    std::vector<char>& dropped) {
   bool changed = false;
   for (std::size_t c = 0; c < labels.size(); ++c) {
@@ -143,8 +248,8 @@ bool repairSlivers(LabelledSurface& m, const std::vector<Label>& labels,
       std::unordered_map<Label, int> shared;
       const auto loop = m.face(f);
       for (std::size_t k = 0; k < loop.size(); ++k) {
-        const auto it = owner.find(edgeKey(loop[(k + 1) % loop.size()], loop[k]));
-        if (it != owner.end() && m.face_label[it->second] != labels[c]) ++shared[m.face_label[it->second]];
+        const Index g = edges.face(loop[(k + 1) % loop.size()], loop[k]);
+        if (g != kInvalidIndex && m.face_label[g] != labels[c]) ++shared[m.face_label[g]];
       }
       Label best = 0;
       int most = 0;
@@ -186,7 +291,7 @@ bool repairSlivers(LabelledSurface& m, const std::vector<Label>& labels,
 
 SheetCells findCells(LabelledSurface& m, bool repair, ImportReport& report) {
   SheetCells cells;
-  std::unordered_map<std::uint64_t, Index> owner;
+  DirectedEdges owner;
   std::vector<std::vector<std::vector<Index>>> parts;
   std::vector<char> dropped(m.numFaces(), 0);
   for (int round = 0;; ++round) {
@@ -221,54 +326,56 @@ SheetCells findCells(LabelledSurface& m, bool repair, ImportReport& report) {
                      m.faceId(parts[c][0].front()) + " is in the first)" +
                      (repair ? "" : "; repair: true moves a one-triangle sliver to its neighbour"));
   }
-  // The outline of each cell: its boundary edges, one loop.
+  // The outline of each cell: its boundary edges, one loop. Per-vertex
+  // arrays stamped with the cell's index (no clearing, no sorting): whether
+  // a vertex is in the cell, its boundary successor, whether the walk passed it.
   cells.outlines.resize(n);
+  std::vector<Index> in_cell(m.positions.size(), kInvalidIndex), has_next(m.positions.size(), kInvalidIndex),
+      walked(m.positions.size(), kInvalidIndex), next_of(m.positions.size(), kInvalidIndex);
+  std::vector<Index> tails;
+  std::vector<std::vector<Index>> loops;
   for (std::size_t c = 0; c < n; ++c) {
     const Label label = cells.labels[c];
     const Index f0 = cells.faces[c].front();
+    const Index stamp = static_cast<Index>(c);
     auto fail = [&](const std::string& what) {
       return InputError("'" + m.path + "' face " + m.faceId(f0) + " (cell label " + std::to_string(label) +
                         "): " + what);
     };
-    std::unordered_map<Index, Index> next;  // boundary: vertex -> next vertex
-    std::vector<Index> verts;
-    std::size_t edges_twice = 0, edges_once = 0;
+    tails.clear();
+    std::size_t num_verts = 0, edges_twice = 0, edges_once = 0;
     for (Index f : cells.faces[c]) {
       const auto loop = m.face(f);
       for (std::size_t k = 0; k < loop.size(); ++k) {
         const Index u = loop[k], v = loop[(k + 1) % loop.size()];
-        verts.push_back(u);
-        const auto it = owner.find(edgeKey(v, u));
-        if (it != owner.end() && m.face_label[it->second] == label) {
+        if (in_cell[u] != stamp) in_cell[u] = stamp, ++num_verts;
+        const Index g = owner.face(v, u);
+        if (g != kInvalidIndex && m.face_label[g] == label) {
           ++edges_twice;
           continue;
         }
         ++edges_once;
-        if (!next.emplace(u, v).second)
+        if (has_next[u] == stamp)  // a second boundary edge leaves u
           throw fail("the cell's triangles meet at vertex " + std::to_string(u) +
                      " only by a corner (a pinched, non-manifold vertex): the cell is not a disk");
+        has_next[u] = stamp, next_of[u] = v;
+        tails.push_back(u);
       }
     }
-    std::sort(verts.begin(), verts.end());
-    verts.erase(std::unique(verts.begin(), verts.end()), verts.end());
-    const long long euler = static_cast<long long>(verts.size()) -
+    const long long euler = static_cast<long long>(num_verts) -
                             static_cast<long long>(edges_twice / 2 + edges_once) +
                             static_cast<long long>(cells.faces[c].size());
-    // Walk the loops, starting each at its smallest vertex.
-    std::vector<Index> starts;
-    for (const auto& [u, v] : next) starts.push_back(u);
-    std::sort(starts.begin(), starts.end());
-    std::unordered_map<Index, char> seen;
-    std::vector<std::vector<Index>> loops;
-    for (Index s : starts) {
-      if (seen.count(s)) continue;
+    // Walk the loops, each from its smallest vertex, in that order.
+    std::sort(tails.begin(), tails.end());
+    loops.clear();
+    for (Index s0 : tails) {
+      if (walked[s0] == stamp) continue;
       loops.emplace_back();
-      for (Index u = s; !seen.count(u);) {
-        seen[u] = 1;
+      for (Index u = s0; walked[u] != stamp;) {
+        walked[u] = stamp;
         loops.back().push_back(u);
-        const auto it = next.find(u);
-        if (it == next.end()) throw fail("its boundary is not closed at vertex " + std::to_string(u));
-        u = it->second;
+        if (has_next[u] != stamp) throw fail("its boundary is not closed at vertex " + std::to_string(u));
+        u = next_of[u];
       }
     }
     if (loops.size() != 1)
@@ -397,9 +504,11 @@ LabelledSheet buildLabelledSheet(LabelledSurface& m, const ImportOptions& option
   LabelledSheet sheet{Tissue(2, Embedding::Surface), findCells(m, options.repair, report)};
   SheetCells& cells = sheet.cells;
 
-  std::vector<Vec3> scaled(m.positions.size());
-  for (std::size_t i = 0; i < scaled.size(); ++i) scaled[i] = options.scale * m.positions[i];
-  if (options.simplify > 0) report.simplified_vertices = simplifyWalls(cells.outlines, scaled, options.simplify);
+  if (options.simplify > 0) {  // the tolerance is in scaled units
+    std::vector<Vec3> scaled(m.positions.size());
+    for (std::size_t i = 0; i < scaled.size(); ++i) scaled[i] = options.scale * m.positions[i];
+    report.simplified_vertices = simplifyWalls(cells.outlines, scaled, options.simplify);
+  }
 
   // Keep the outline vertices only, numbered in file order.
   std::vector<Index> new_index(m.positions.size(), kInvalidIndex);
@@ -409,18 +518,21 @@ LabelledSheet buildLabelledSheet(LabelledSurface& m, const ImportOptions& option
   for (Index v = 0; v < new_index.size(); ++v)
     if (new_index[v] == 0) {
       new_index[v] = static_cast<Index>(positions.size());
-      positions.push_back(scaled[v]);
+      positions.push_back(options.scale * m.positions[v]);
     }
-  std::vector<std::vector<Index>> polygons(cells.outlines.size());
-  for (std::size_t c = 0; c < polygons.size(); ++c)
-    for (Index v : cells.outlines[c]) polygons[c].push_back(new_index[v]);
-  for (std::size_t c = 0; c < polygons.size(); ++c)
-    if (polygons[c].size() < 3)
+  // The polygons as one flat list (offsets, vertices), as the builder takes them.
+  std::vector<Index> offsets{0}, items;
+  offsets.reserve(cells.outlines.size() + 1);
+  for (std::size_t c = 0; c < cells.outlines.size(); ++c) {
+    if (cells.outlines[c].size() < 3)
       throw InputError("'" + m.path + "' cell label " + std::to_string(cells.labels[c]) + ": simplify = " +
                        formatNumber(options.simplify) + " leaves its outline " +
-                       std::to_string(polygons[c].size()) + " vertices");
+                       std::to_string(cells.outlines[c].size()) + " vertices");
+    for (Index v : cells.outlines[c]) items.push_back(new_index[v]);
+    offsets.push_back(static_cast<Index>(items.size()));
+  }
   try {
-    sheet.tissue = buildPolygonTissue(positions, polygons, Embedding::Surface);
+    sheet.tissue = buildPolygonTissue(std::move(positions), offsets, items, Embedding::Surface);
   } catch (const Error& e) {
     throw InputError("'" + m.path + "': the cells do not form a tissue: " + std::string(e.what()));
   }

@@ -23,7 +23,12 @@ inline std::uint64_t edgeKey(Index u, Index v) { return (std::uint64_t(u) << 32)
 
 struct UnionFind {
   std::vector<Index> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), Index{0}); }
+  explicit UnionFind(std::size_t n) { reset(n); }
+  /// n singletons again (keeps the storage).
+  void reset(std::size_t n) {
+    parent.resize(n);
+    std::iota(parent.begin(), parent.end(), Index{0});
+  }
   Index find(Index x) {
     while (parent[x] != x) x = parent[x] = parent[parent[x]];
     return x;

@@ -11,13 +11,16 @@
 #include <cstring>
 #include <filesystem>
 #include <new>
+#include <type_traits>
 #include <vector>
 
 #include <SMP/Common/vtkSMPToolsAPI.h>  // vtkSMPTools.h itself does not compile as C++20
 #include <vtkCellArray.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
+#include <vtkPolyData.h>
 #include <vtkUnsignedCharArray.h>
+#include <vtkXMLPolyDataReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
@@ -88,16 +91,17 @@ void writeGridFile(vtkUnstructuredGrid* grid, const std::string& path, const Vtu
 
 namespace {
 
-/// VTK's parse of `path`; InputError naming the path on every error VTK reports.
-vtkSmartPointer<vtkUnstructuredGrid> parseGrid(const std::string& path) {
-  vtkNew<vtkXMLUnstructuredGridReader> reader;
+/// VTK's parse of `path` with `Reader`; InputError naming the path on every
+/// error VTK reports. `kind` names the file type for the message.
+template <typename Reader>
+auto parseXml(const std::string& path, const char* kind) {
+  vtkNew<Reader> reader;
   vtkNew<VtkErrorCapture> reader_errors;
   vtkNew<VtkErrorCapture> parser_errors;
   reader_errors->watch(reader);
   reader->SetReaderErrorObserver(reader_errors);
   reader->SetParserErrorObserver(parser_errors);
-  if (!reader->CanReadFile(path.c_str()))
-    throw InputError("cannot read '" + path + "': not a VTK XML UnstructuredGrid (.vtu) file");
+  if (!reader->CanReadFile(path.c_str())) throw InputError("cannot read '" + path + "': not a " + kind + " file");
   reader->SetFileName(path.c_str());
   reader->Update();
   if (reader_errors->failed() || parser_errors->failed()) {
@@ -105,10 +109,13 @@ vtkSmartPointer<vtkUnstructuredGrid> parseGrid(const std::string& path) {
     if (parser_errors->failed()) what += (what.empty() ? "" : "; ") + parser_errors->message();
     throw InputError("cannot read '" + path + "': " + what);
   }
-  vtkSmartPointer<vtkUnstructuredGrid> grid = reader->GetOutput();
-  if (!grid) throw InputError("cannot read '" + path + "': the reader produced no grid");
-  return grid;
+  vtkSmartPointer<std::remove_pointer_t<decltype(reader->GetOutput())>> out = reader->GetOutput();
+  if (!out) throw InputError("cannot read '" + path + "': the reader produced no data");
+  return out;
 }
+
+constexpr const char* kVtuKind = "VTK XML UnstructuredGrid (.vtu)";
+constexpr const char* kVtpKind = "VTK XML PolyData (.vtp)";
 
 /// The errors VTK printed (through its logger or output window) in `text`,
 /// without decoration, joined by "; "; empty if there are none. VTK objects
@@ -182,7 +189,10 @@ FileIdentity identityOf(const std::string& path) {
 
 }  // namespace
 
-vtkSmartPointer<vtkUnstructuredGrid> readGridFile(const std::string& path) {
+namespace {
+
+template <typename Reader>
+auto readXmlFile(const std::string& path, const char* kind) {
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError("cannot read '" + path + "': no such file");
   if (!fs::is_regular_file(path, ec)) throw InputError("cannot read '" + path + "': not a regular file");
@@ -205,7 +215,7 @@ vtkSmartPointer<vtkUnstructuredGrid> readGridFile(const std::string& path) {
         // process does not exist in the worker: run sequentially.
         vtk::detail::smp::vtkSMPToolsAPI::GetInstance().SetBackend("Sequential");
         try {
-          parseGrid(path);
+          parseXml<Reader>(path, kind);
         } catch (const std::bad_alloc&) {
           throw;
         } catch (const InputError&) {
@@ -224,10 +234,20 @@ vtkSmartPointer<vtkUnstructuredGrid> readGridFile(const std::string& path) {
   if (const std::string errors = printedVtkErrors(outcome.printed); !errors.empty())
     throw InputError("cannot read '" + path + "': " + errors + "; the file is corrupted");
 
-  vtkSmartPointer<vtkUnstructuredGrid> grid = parseGrid(path);
+  auto grid = parseXml<Reader>(path, kind);
   if (!(identityOf(path) == before))
     throw InputError("cannot read '" + path + "': the file changed while it was being read");
   return grid;
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkUnstructuredGrid> readGridFile(const std::string& path) {
+  return readXmlFile<vtkXMLUnstructuredGridReader>(path, kVtuKind);
+}
+
+vtkSmartPointer<vtkPolyData> readPolyDataFile(const std::string& path) {
+  return readXmlFile<vtkXMLPolyDataReader>(path, kVtpKind);
 }
 
 void checkCellArrays(vtkUnstructuredGrid* grid, const std::string& path) {
@@ -247,6 +267,19 @@ void checkCellArrays(vtkUnstructuredGrid* grid, const std::string& path) {
     checkOffsets(cells->GetOffsetsArray64()->GetPointer(0), num_offsets, cells->GetNumberOfConnectivityIds(), path);
   else
     checkOffsets(cells->GetOffsetsArray32()->GetPointer(0), num_offsets, cells->GetNumberOfConnectivityIds(), path);
+}
+
+void checkPolyArrays(vtkPolyData* data, const std::string& path) {
+  const auto fail = [&](const std::string& what) { throw InputError("cannot read '" + path + "': " + what); };
+  if (vtkPoints* points = data->GetPoints(); points && points->GetData()->GetNumberOfComponents() != 3)
+    fail("the points have " + std::to_string(points->GetData()->GetNumberOfComponents()) + " components, not 3");
+  vtkCellArray* polys = data->GetPolys();
+  if (!polys || polys->GetNumberOfOffsets() == 0) return;
+  const vtkIdType n = polys->GetNumberOfOffsets();
+  if (polys->IsStorage64Bit())
+    checkOffsets(polys->GetOffsetsArray64()->GetPointer(0), n, polys->GetNumberOfConnectivityIds(), path);
+  else
+    checkOffsets(polys->GetOffsetsArray32()->GetPointer(0), n, polys->GetNumberOfConnectivityIds(), path);
 }
 
 }  // namespace tessella::io::detail

@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
 
@@ -23,9 +24,16 @@ void writeGridFile(vtkUnstructuredGrid* grid, const std::string& path, const Vtu
 /// it allocate without bound or hang, is an InputError too.
 vtkSmartPointer<vtkUnstructuredGrid> readGridFile(const std::string& path);
 
+/// The same for a VTK XML PolyData (.vtp) file.
+vtkSmartPointer<vtkPolyData> readPolyDataFile(const std::string& path);
+
 /// InputError naming `path` unless what a reader walks without further
 /// checks is consistent: 3D points, a type for every cell, cell offsets that
 /// start at 0, never decrease and end at the connectivity's size.
 void checkCellArrays(vtkUnstructuredGrid* grid, const std::string& path);
+
+/// The same for the polygons of a PolyData: 3D points, polygon offsets that
+/// start at 0, never decrease and end at the connectivity's size.
+void checkPolyArrays(vtkPolyData* data, const std::string& path);
 
 }  // namespace tessella::io::detail

@@ -30,8 +30,10 @@ void bindIo(py::module_& m) {
   m.def("read_vtu", &io::readTissueVtu, py::arg("path"), "A tissue back from a snapshot written by write_vtu.");
 
   m.def("import_tissue_with_report",
-        [](const std::string& path, const std::string& format, double scale, double simplify, bool repair) {
-          io::ImportResult r = io::importTissue(path, io::ImportOptions{format, scale, simplify, repair});
+        [](const std::string& path, const std::string& format, double scale, double simplify, bool repair,
+           const std::string& label_array) {
+          io::ImportResult r =
+              io::importTissue(path, io::ImportOptions{format, scale, simplify, repair, label_array});
           py::dict report;
           report["path"] = r.report.path;
           report["format"] = r.report.format;
@@ -44,22 +46,25 @@ void bindIo(py::module_& m) {
           return py::make_tuple(std::move(r.tissue), report);
         },
         py::arg("path"), py::arg("format") = "auto", py::arg("scale") = 1.0, py::arg("simplify") = 0.0,
-        py::arg("repair") = false, R"doc(
+        py::arg("repair") = false, py::arg("label_array") = "", R"doc(
 Imports a segmented tissue (docs/import.md) and returns (tissue, report): the
 report is a dict with path, format, file_vertices, file_faces (file_faces_noun:
 what they count), simplified_vertices, repairs (one line per repair) and notes.
 )doc");
   m.def("import_tissue",
-        [](const std::string& path, const std::string& format, double scale, double simplify, bool repair) {
-          return io::importTissue(path, io::ImportOptions{format, scale, simplify, repair}).tissue;
+        [](const std::string& path, const std::string& format, double scale, double simplify, bool repair,
+           const std::string& label_array) {
+          return io::importTissue(path, io::ImportOptions{format, scale, simplify, repair, label_array}).tissue;
         },
         py::arg("path"), py::arg("format") = "auto", py::arg("scale") = 1.0, py::arg("simplify") = 0.0,
-        py::arg("repair") = false, R"doc(
+        py::arg("repair") = false, py::arg("label_array") = "", R"doc(
 Imports a segmented tissue from another tool's file. format: "auto" (from the
 extension and, for .ply, the properties) or one of import_formats(). Cells keep
 their label as the cell property "label" (and "parent" where the file has one).
 scale multiplies positions; simplify (> 0) simplifies wall polylines between
 junctions; repair fixes harmless defects (see import_tissue_with_report).
+label_array names the face property / cell-data array holding the cell labels
+(labelled_mesh, labelled_vtu; "A,B" for the cells on either side of each face).
 Raises InputError naming the file, element and cell label on bad input.
 )doc");
   m.def("import_formats", &io::importFormatNames, "The names import_tissue accepts as format (auto first).");

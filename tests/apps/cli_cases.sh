@@ -516,6 +516,36 @@ case "$case_name" in
       [ "$(grep "^$key" "$tmp/info")" = "$(grep "^$key" "$tmp/import")" ] || fail "$key changed"
     done
     ;;
+  import_labelled_faces)
+    # labelled_mesh: two unit squares as labelled triangles, in OBJ (g groups) and in PLY with a label
+    # property of another name, read with --label-array; each square a cell of area 1 (4 with --scale 2).
+    printf 'v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\ng 5\nf 1 2 5\nf 1 5 4\ng 2\nf 2 3 6\nf 2 6 5\n' \
+      >"$tmp/squares.obj"
+    "$tessella" import "$tmp/squares.obj" --out "$tmp/obj.vtu" >"$tmp/import" 2>"$tmp/stderr" \
+      || fail "OBJ import failed: $(cat "$tmp/stderr")"
+    cat "$tmp/import"
+    grep -Eq '^format +labelled_mesh \(6 vertices, 4 faces in the file\)$' "$tmp/import" || fail "no format line"
+    grep -Eq '^cells +2$' "$tmp/import" || fail "expected 2 cells"
+    grep -Eq '^total area +2$' "$tmp/import" || fail "expected total area 2"
+    grep -Eq '^validate +ok$' "$tmp/import" || fail "expected validate ok"
+    [ -f "$tmp/obj.vtu" ] || fail "no snapshot written"
+    { printf 'ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\nproperty float z\n'
+      printf 'element face 4\nproperty list uchar int vertex_indices\nproperty int segment\nend_header\n'
+      printf '0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n3 0 1 4 5\n3 0 4 3 5\n3 1 2 5 2\n3 1 5 4 2\n'; } >"$tmp/seg.ply"
+    "$tessella" import "$tmp/seg.ply" --out "$tmp/ply.vtu" 2>"$tmp/stderr"
+    [ $? -eq 1 ] || fail "a PLY without a known label property was imported"
+    grep -q 'label-array' "$tmp/stderr" || fail "the error does not point at --label-array: $(cat "$tmp/stderr")"
+    [ ! -e "$tmp/ply.vtu" ] || fail "an output file was left"
+    "$tessella" import "$tmp/seg.ply" --out "$tmp/ply.vtu" --label-array segment --scale 2 >"$tmp/import2" \
+      2>"$tmp/stderr" || fail "PLY import with --label-array failed: $(cat "$tmp/stderr")"
+    grep -Eq '^total area +8$' "$tmp/import2" || fail "expected total area 8: $(cat "$tmp/import2")"
+    grep -q "face property 'segment'" "$tmp/import2" || fail "the label source is not named"
+    "$tessella" import "$tmp/seg.ply" --out "$tmp/x.vtu" --label-array nope --format labelled_mesh 2>"$tmp/stderr"
+    [ $? -eq 1 ] || fail "a missing label array was accepted"
+    grep -q "no cell label property 'nope'; it has vertex_indices, segment" "$tmp/stderr" \
+      || fail "unclear error: $(cat "$tmp/stderr")"
+    [ ! -e "$tmp/x.vtu" ] || fail "an output file was left"
+    ;;
   render_run)
     "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/hex" -q || fail "run failed"
     "$tessella" render "$tmp/hex" --property size --size 320x240 --no-movie >"$tmp/stdout" 2>"$tmp/stderr" \

@@ -227,14 +227,15 @@ TEST_CASE("import: auto tells a MorphoGraphX mesh from other PLY layouts", "[io]
   CHECK_THROWS_WITH(importTissue(plain), Contains("its layout (it holds vertex(x y z), face(vertex_indices)) is none "
                                                   "of the supported formats") &&
                                              Contains("morphographx (.ply)") && Contains("cell_complex (.ply)"));
-  const std::string txt = dir.file("cells.obj");
-  std::ofstream(txt) << "v 0 0 0\n";
-  CHECK_THROWS_WITH(importTissue(txt), Contains("no import format reads '.obj' files"));
+  const std::string txt = dir.file("cells.stl");
+  std::ofstream(txt) << "solid\n";
+  CHECK_THROWS_WITH(importTissue(txt), Contains("no import format reads '.stl' files"));
   const MgxFixture m = MgxFixture::grid(1, 1, 1);
   const std::string upper = dir.file("GRID.PLY");
   m.write(upper);
   CHECK(detectImportFormat(upper).name == "morphographx");
-  CHECK(importFormatNames() == std::vector<std::string>{"auto", "morphographx", "cell_complex", "labelled_vtu"});
+  CHECK(importFormatNames() == std::vector<std::string>{"auto", "morphographx", "cell_complex", "labelled_mesh",
+                                                        "labelled_vtu"});
 }
 
 TEST_CASE("mgx cell graph: labels, areas and neighbour pairs by label", "[io][import]") {

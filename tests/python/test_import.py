@@ -88,3 +88,26 @@ def test_cell_complex_errors_name_the_volume_and_label(tmp_path):
                     "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 1 7 12\n")
     with pytest.raises(tessella.InputError, match=r"bad.ply' volume 0 \(label 12\): face index 7 is out of range"):
         tessella.import_tissue(str(path))
+
+
+def test_import_labelled_mesh_with_label_array(tmp_path):
+    """labelled_mesh: an OBJ by its g groups, a PLY whose label property is named by label_array."""
+    obj = tmp_path / "squares.obj"
+    obj.write_text("v 0 0 0\nv 1 0 0\nv 2 0 0\nv 0 1 0\nv 1 1 0\nv 2 1 0\n"
+                   "g 5\nf 1 2 5\nf 1 5 4\ng 2\nf 2 3 6\nf 2 6 5\n")
+    t, report = tessella.import_tissue_with_report(str(obj))
+    assert report["format"] == "labelled_mesh"
+    assert list(t.property("label")) == [2, 5]
+    assert [t.cell_measure(c) for c in t.cells()] == [pytest.approx(1.0, rel=1e-14)] * 2
+    assert "labelled_mesh" in tessella.import_formats()
+    ply = tmp_path / "seg.ply"
+    ply.write_text("ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\nproperty float z\n"
+                   "element face 4\nproperty list uchar int vertex_indices\nproperty int segment\nend_header\n"
+                   "0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n3 0 1 4 5\n3 0 4 3 5\n3 1 2 5 2\n3 1 5 4 2\n")
+    with pytest.raises(tessella.InputError, match=r"none of the supported formats.*label-array"):
+        tessella.import_tissue(str(ply))
+    t = tessella.import_tissue(str(ply), label_array="segment", scale=3.0)
+    assert list(t.property("label")) == [2, 5]
+    assert [t.cell_measure(c) for c in t.cells()] == [pytest.approx(9.0, rel=1e-14)] * 2
+    with pytest.raises(tessella.InputError, match=r"seg.ply': element 'face' has no cell label property 'region'"):
+        tessella.import_tissue(str(ply), format="labelled_mesh", label_array="region")

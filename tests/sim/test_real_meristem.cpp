@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <map>
 #include <set>
 #include <string>
@@ -171,4 +172,26 @@ TEST_CASE("real meristem: configs/real_meristem.yaml grows and divides the impor
   s.run();
   CHECK(s.finished());
   CHECK(s.tissue().numCells() > before);
+}
+
+TEST_CASE("import generator: tissue.import.label_array names a labelled mesh's label property", "[sim][real][config]") {
+  // Two unit squares as labelled triangles, their label property named `segment`.
+  const auto path = std::filesystem::temp_directory_path() / "tessella_sim_label_array_squares.ply";
+  std::ofstream(path) << "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\n"
+                         "property float z\nelement face 4\nproperty list uchar int vertex_indices\n"
+                         "property int segment\nend_header\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n"
+                         "3 0 1 4 5\n3 0 4 3 5\n3 1 2 5 2\n3 1 5 4 2\n";
+  const std::string yaml = "tissue:\n  generator: import\n  import:\n    file: " + path.string() +
+                           "\n    label_array: segment\n    scale: 2\ntime: {end: 0}\n";
+  sim::Simulation s = sim::Simulation::fromYaml(yaml);
+  REQUIRE(s.tissue().numCells() == 2);
+  const auto& label = s.tissue().cellProperties().get<std::int64_t>("label");
+  CHECK(label[CellId(0)] == 2);
+  CHECK(label[CellId(1)] == 5);
+  CHECK(cellMeasure(s.tissue(), CellId(0)) == Approx(4.0).epsilon(1e-14));
+  // Without label_array, auto finds no format for the file: the run does not start.
+  const std::string without = "tissue:\n  generator: import\n  import:\n    file: " + path.string() +
+                              "\ntime: {end: 0}\n";
+  CHECK_THROWS_WITH(sim::Simulation::fromYaml(without), Catch::Matchers::Contains("label-array"));
+  std::filesystem::remove(path);
 }

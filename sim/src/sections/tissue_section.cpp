@@ -87,11 +87,17 @@ const Registry<FileSourceReader>& tissueFileSources() {
          ParamSpec("repair", ParamType::Bool,
                    "Repair the harmless defects the importer knows (a one-triangle sliver of a cell lying apart "
                    "from it goes to its neighbour) and report each; without it they are errors.")
-             .byDefault(false)},
+             .byDefault(false),
+         ParamSpec("label_array", ParamType::String,
+                   "For `labelled_mesh` and `labelled_vtu`: the face property or cell-data array holding each "
+                   "face's cell label (OBJ: the statement `g`, `o` or `usemtl`); `A,B` names two, the cells on "
+                   "either side of each face (a 3D tissue). Empty: the first of `label`, `cell_label`, `cell_id`, "
+                   "else the pair `label_front`, `label_back`.")
+             .byDefault(std::string(""))},
         [](const ParamValues& p) -> TissueSpec {
           ImportSpec spec{p.getString("file"),
                           io::ImportOptions{p.getString("format"), p.getFloat("scale"), p.getFloat("simplify"),
-                                            p.getBool("repair")},
+                                            p.getBool("repair"), p.getString("label_array")},
                           nullptr};
           spec.tissue = std::make_shared<const Tissue>(io::importTissue(spec.file, spec.options).tissue);
           return spec;

@@ -31,6 +31,12 @@ struct ImportOptions {
   double simplify = 0.0;
   /// Fix the harmless defects the format's importer knows (and report them).
   bool repair = false;
+  /// The array (PLY face property, VTK cell-data array; for OBJ the label
+  /// statement: g, o or usemtl) holding each face's cell label, for the
+  /// labelled_mesh and labelled_vtu formats; "A,B" names two, the cells on
+  /// either side of each face (a 3D tissue). Empty: the first of label,
+  /// cell_label, cell_id present, else the pair label_front, label_back.
+  std::string label_array = "";
 };
 
 struct ImportReport {
@@ -124,6 +130,21 @@ ImportResult importLabelledVtu(const std::string& path, const ImportOptions& opt
 /// Whether a .vtu file declares a cell-data array named label, cell_label or
 /// cell_id and is not a Tessella snapshot (reads the XML header only).
 bool isLabelledVtu(const std::string& path);
+
+// --- generic labelled meshes ------------------------------------------------------
+
+/// A polygon mesh in PLY (ASCII or binary), Wavefront OBJ or VTK PolyData
+/// (.vtp) whose faces carry integer cell labels (ImportOptions::label_array;
+/// OBJ: the integer names of `g` groups). One label per face: each label's
+/// faces are a patch of one surface, and the tissue is the curved sheet of
+/// the patches' outlines (the core of importMorphoGraphX). Two labels per
+/// face (the cells on either side, <= 0 for the outside): each label's faces
+/// bound a closed cell, a 3D tissue whose walls are the faces (the core of
+/// importCellComplex). Cell property `label` (int64).
+ImportResult importLabelledMesh(const std::string& path, const ImportOptions& options = {});
+/// Whether a file could be a labelled mesh: any .obj or .vtp; a .ply with
+/// vertex and face elements and a face vertex list (reads the header only).
+bool isLabelledMesh(const std::string& path);
 
 /// A MorphoGraphX cell graph (cellGraph_*.ply): one vertex per cell with its
 /// label and `Geometry/Area`, one edge per neighbour pair listing the two
