@@ -95,8 +95,10 @@ void polyhedronKernel(const Tissue& t, VolumeId c, bool moments, double& volume,
 // arrays sized by the caller). Without Measures the kernel's area, centroid
 // and normal go to locals: the second moments come out of the same
 // arithmetic either way, so they are bit-identical to a pass computing both.
-template <bool Planar, bool Measures, bool Moments>
-void facesLoop(const Tissue& t, GeometryCache& cache) {
+// With `surfaces` (non-planar faces only), each live face's surface too, as
+// faceSurface would find it: the volume pass then need not look again.
+template <bool Planar, bool Measures, bool Moments, bool Surfaces>
+void facesLoop(const Tissue& t, GeometryCache& cache, FaceSurface* surfaces) {
   const CellComplex& k = t.topology();
   const auto& face_alive = k.aliveFlags(2);
   const std::int64_t nf = static_cast<std::int64_t>(k.slots(2));
@@ -120,34 +122,46 @@ void facesLoop(const Tissue& t, GeometryCache& cache) {
     double a;
     Vec3 g, n;
     Mat3 m;
-    detail::polygonKernel(
-        loop.size(), [&](std::size_t i) -> const Vec3& { return x[loop[i].index()]; }, Planar, Moments,
-        Measures ? area[f] : a, Measures ? centroid[f] : g, Measures ? normal[f] : n, Moments ? &m : nullptr);
+    const auto at = [&](std::size_t i) -> const Vec3& { return x[loop[i].index()]; };
+    if constexpr (Surfaces) {
+      detail::FoldedSurface surface;
+      detail::polygonKernel(loop.size(), at, Planar, Moments, Measures ? area[f] : a, Measures ? centroid[f] : g,
+                            Measures ? normal[f] : n, Moments ? &m : nullptr, &surface);
+      surfaces[f] = FaceSurface{surface.apex, std::move(surface.triangles)};
+    } else {
+      detail::polygonKernel(loop.size(), at, Planar, Moments, Measures ? area[f] : a, Measures ? centroid[f] : g,
+                            Measures ? normal[f] : n, Moments ? &m : nullptr);
+    }
     if constexpr (Moments) second[f] = Sym3::fromMatrix(m);
   }
 }
 
-template <bool Planar>
-void facesLoop(const Tissue& t, GeometryCache& cache, bool measures, bool moments) {
+template <bool Planar, bool Surfaces>
+void facesLoop(const Tissue& t, GeometryCache& cache, bool measures, bool moments, FaceSurface* surfaces) {
   if (measures)
-    moments ? facesLoop<Planar, true, true>(t, cache) : facesLoop<Planar, true, false>(t, cache);
+    moments ? facesLoop<Planar, true, true, Surfaces>(t, cache, surfaces)
+            : facesLoop<Planar, true, false, Surfaces>(t, cache, surfaces);
   else if (moments)
-    facesLoop<Planar, false, true>(t, cache);
+    facesLoop<Planar, false, true, Surfaces>(t, cache, surfaces);
 }
 
 // Volume measures and/or second moments of every volume (3D); measures read
-// the face areas, which the caller has made fresh.
-void volumesLoop(const Tissue& t, GeometryCache& cache, bool measures, bool moments) {
+// the face areas, which the caller has made fresh. `surfaces`: every face's
+// surface (vertex mean, folded triangles), shared by the two volumes of each
+// face; empty when the face pass did not find them, and then found here.
+void volumesLoop(const Tissue& t, GeometryCache& cache, bool measures, bool moments,
+                 std::vector<FaceSurface>& surfaces) {
   const CellComplex& k = t.topology();
   const auto& face_alive = k.aliveFlags(2);
   const auto& vol_alive = k.aliveFlags(3);
   const std::int64_t nf = static_cast<std::int64_t>(k.slots(2));
   const std::int64_t nc = static_cast<std::int64_t>(k.slots(3));
-  // Face surfaces (vertex mean, folded triangles), shared by the two volumes of each face.
-  std::vector<FaceSurface> surfaces(nf);
+  if (surfaces.empty()) {
+    surfaces.resize(nf);
 #pragma omp parallel for schedule(static)
-  for (std::int64_t f = 0; f < nf; ++f)
-    if (face_alive[f]) surfaces[f] = faceSurface(t, FaceId(static_cast<Index>(f)));
+    for (std::int64_t f = 0; f < nf; ++f)
+      if (face_alive[f]) surfaces[f] = faceSurface(t, FaceId(static_cast<Index>(f)));
+  }
   if (measures) {
     cache.volume.resize(nc);
     cache.volume_surface.resize(nc);
@@ -432,16 +446,21 @@ void GeometryCache::compute(const Tissue& t, GeometryQuantities quantities) {
     face_normal.resize(nf);
   }
   if (face_moments) face_second_moment.resize(nf);
+  const bool volume_measures = quantities.contains(Q::VolumeMeasures);
+  const bool volume_moments = quantities.contains(Q::VolumeSecondMoments);
+  // A face pass before a volume pass keeps the faces' surfaces for it.
+  std::vector<FaceSurface> surfaces;
+  if ((face_measures || face_moments) && (volume_measures || volume_moments)) surfaces.resize(nf);
   // The embedding and what to compute as template arguments: each loop is
   // compiled with its own straight kernel (same arithmetic).
   if (planar(t))
-    facesLoop<true>(t, *this, face_measures, face_moments);
+    facesLoop<true, false>(t, *this, face_measures, face_moments, nullptr);
+  else if (surfaces.empty())
+    facesLoop<false, false>(t, *this, face_measures, face_moments, nullptr);
   else
-    facesLoop<false>(t, *this, face_measures, face_moments);
+    facesLoop<false, true>(t, *this, face_measures, face_moments, surfaces.data());
 
-  const bool volume_measures = quantities.contains(Q::VolumeMeasures);
-  const bool volume_moments = quantities.contains(Q::VolumeSecondMoments);
-  if (volume_measures || volume_moments) volumesLoop(t, *this, volume_measures, volume_moments);
+  if (volume_measures || volume_moments) volumesLoop(t, *this, volume_measures, volume_moments, surfaces);
 
   for (GeometryQuantity q : kEveryQuantity)
     if (quantities.contains(q)) {

@@ -312,7 +312,7 @@ FoldedSurface foldedSurface(std::size_t n, At at) {
 // Loop of n points read through `at(i)`. See geometry.hpp for the definition.
 template <typename At>
 inline void polygonKernel(std::size_t n, At at, bool planar, bool moments, double& area,
-                          Vec3& centroid, Vec3& normal, Mat3* second_moment) {
+                          Vec3& centroid, Vec3& normal, Mat3* second_moment, FoldedSurface* surface = nullptr) {
   if (planar) {
     // Shoelace in the z = 0 plane, one pass, about the first vertex (any
     // origin gives the same exact result; a local one keeps it well conditioned).
@@ -359,12 +359,15 @@ inline void polygonKernel(std::size_t n, At at, bool planar, bool moments, doubl
   fanKernel(n, at, c0, normal, moments, area, centroid, second_moment, min_ti);
   if (len > 0 && !(min_ti > kFoldTolerance * area)) {
     // The fan folds over: the fan from the kernel's centroid, or the loop's own triangles (see foldedSurface).
-    const FoldedSurface f = foldedSurface(n, at);
+    FoldedSurface f = foldedSurface(n, at);
     double kmin;
     if (f.triangles.empty())
       fanKernel(n, at, f.apex, normal, moments, area, centroid, second_moment, kmin);
     else
       trianglesKernel(f.triangles, at, c0, normal, moments, area, centroid, second_moment);
+    if (surface) *surface = std::move(f);
+  } else if (surface) {
+    *surface = FoldedSurface{false, c0, {}};  // what foldedSurface(n, at) finds: the same sums decide
   }
 }
 
