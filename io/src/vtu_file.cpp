@@ -108,10 +108,11 @@ void checkComponentCounts(const std::string& path) {
     appended = header.find("<AppendedData", from);
   }
   if (appended != std::string::npos) header.resize(appended);
-  static const std::regex count(R"(NumberOfComponents\s*=\s*"([^"]*)")");
+  static const std::regex count(R"re(NumberOfComponents\s*=\s*"([^"]*)")re");
   for (auto it = std::sregex_iterator(header.begin(), header.end(), count); it != std::sregex_iterator(); ++it) {
     const std::string value = (*it)[1].str();
-    const bool digits = !value.empty() && value.size() <= 6 && value.find_first_not_of("0123456789") == std::string::npos;
+    const bool digits =
+        !value.empty() && value.size() <= 6 && value.find_first_not_of("0123456789") == std::string::npos;
     if (!digits || std::stol(value) < 1 || std::stol(value) > kMaxComponents)
       throw InputError("cannot read '" + path + "': an array has NumberOfComponents=\"" + value.substr(0, 40) +
                        "\" (expected 1 to " + std::to_string(kMaxComponents) + "); the file is corrupted");
