@@ -263,7 +263,7 @@ case "$case_name" in
     for spec in "voronoi_growth.yaml KILL time.end=20" "box_growth_3d.yaml TERM time.end=8" \
                 "morphogen_gradient_2d.yaml KILL time.end=10"; do
       read -r config sig end <<<"$spec"
-      whole="$tmp/whole_$sig"; part="$tmp/part_$sig"
+      whole="$tmp/whole_${config%.yaml}"; part="$tmp/part_${config%.yaml}"
       "$tessella" run "$src/configs/$config" --out "$whole" -q --set output.every=1 --set "$end" \
         || fail "$config: the uninterrupted run failed"
       total=$(grep -c '<DataSet' "$whole/tissue.pvd")
