@@ -12,7 +12,8 @@ namespace tessella::python {
 using namespace tessella::mesh;
 
 void bindFieldTransfer(py::module_& m) {
-  m.def("ancestor_cells", py::overload_cast<const Tissue&, const Tissue&>(&ancestorCells), py::arg("old_tissue"), py::arg("new_tissue"),
+  m.def("ancestor_cells", py::overload_cast<const Tissue&, const Tissue&>(&ancestorCells), py::arg("old_tissue"),
+        py::arg("new_tissue"),
         "Per cell slot of new_tissue: the old cell it comes from (lineage, then parent), -1 for dead slots.");
   m.def("interpolate_nodal_field",
         py::overload_cast<const Tissue&, const FeMesh&, const Eigen::VectorXd&, const Tissue&, const FeMesh&>(

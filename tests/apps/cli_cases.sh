@@ -292,7 +292,8 @@ case "$case_name" in
         cmp "$f" "$part/$(basename "$f")" || fail "$config: $(basename "$f") differs"
         n=$((n + 1))
       done
-      [ "$n" -eq "$total" ] && [ "$(ls "$part"/tissue_*[0-9].vtu | wc -l)" -eq "$total" ] || fail "$config: snapshot counts"
+      [ "$n" -eq "$total" ] && [ "$(ls "$part"/tissue_*[0-9].vtu | wc -l)" -eq "$total" ] \
+        || fail "$config: snapshot counts"
       # The solver fields: their state beside every snapshot, and the fields series.
       for f in "$whole"/tissue_*.fields.vtu "$whole"/fields*.pvd "$whole"/fields_*.vtu; do
         [ -e "$f" ] || continue

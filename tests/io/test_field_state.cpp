@@ -106,9 +106,8 @@ TEST_CASE("a damaged, foreign or inconsistent field state is refused naming the 
 
   // A value changed under its checksum.
   const std::string flipped = dir.file("flipped.vtu");
-  io::testing::tamper(
-      path, flipped, [](vtkUnstructuredGrid* grid) { grid->GetPointData()->GetArray("auxin")->SetComponent(2, 0, 1.5); },
-      true);
+  const auto flip = [](vtkUnstructuredGrid* grid) { grid->GetPointData()->GetArray("auxin")->SetComponent(2, 0, 1.5); };
+  io::testing::tamper(path, flipped, flip, true);
   refused(flipped, "auxin");
 
   // An element in a cell the lineage list does not have (checksums removed).

@@ -141,7 +141,8 @@ TEST_CASE("inconsistent arrays are named in the error", "[io][vtu][errors]") {
       g->ReplaceCell(4, static_cast<int>(reversed.size()), reversed.data());
     };
     tamper(good, bad, reverse);
-    REQUIRE_THROWS_WITH(readTissueVtu(bad), Contains(bad) && Contains("cell 4 has another vertex loop than the topology arrays"));
+    REQUIRE_THROWS_WITH(readTissueVtu(bad),
+                        Contains(bad) && Contains("cell 4 has another vertex loop than the topology arrays"));
     tamper(good, bad, [&](vtkUnstructuredGrid* g) {
       reverse(g);
       vtkFieldData* field = g->GetFieldData();
