@@ -19,6 +19,10 @@ SeriesWriter::SeriesWriter(std::string directory, std::string name, VtuOptions o
   pvd_path_ = (std::filesystem::path(directory_) / (name_ + ".pvd")).string();
 }
 
+std::string SeriesWriter::nextPath() const {
+  return (std::filesystem::path(directory_) / detail::stepFileName(name_, entries_.size())).string();
+}
+
 std::string SeriesWriter::write(const Tissue& tissue, double time, const RunState& state, GeometryCache* geometry) {
   detail::checkNextTime(pvd_path_, entries_.empty() ? nullptr : &entries_.back().time, time);
   const std::string file = detail::stepFileName(name_, entries_.size());

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "tessella/io/field_state.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
 
@@ -63,6 +64,9 @@ std::vector<PvdEntry> truncateSeries(const std::string& pvd_path, const std::str
       kept.push_back(std::move(entry));
     } else {
       removeFile(dir / entry.file);
+      // The solver fields' state written beside it (field_state.hpp), if any.
+      const fs::path beside = fieldStatePath((dir / entry.file).string());
+      if (fs::exists(beside, ec)) removeFile(beside);
       dropped = true;
     }
   }

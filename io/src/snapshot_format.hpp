@@ -40,27 +40,34 @@ inline constexpr const char* kVertexDefaultPrefix = "tessella_vertex_default:";
 /// The run's state beside the tissue (RunState), as "key=value" strings.
 inline constexpr const char* kRunStateArray = "tessella_run_state";
 
-/// A 3D tissue's CellComplex as a ComplexLayout (wall and edge numbering,
+/// The tissue's CellComplex as a ComplexLayout (wall and edge numbering,
 /// orientations, list orders), so that a restart rebuilds the very complex
 /// the run had: one UInt32 field array per layout list, named
-/// "<prefix><list>". Absent in older files, which read back with walls
-/// matched by vertex set and edges numbered by first use.
+/// "<prefix><list>" (no volume lists in 2D). Absent in older
+/// files (and in 2D files before 2D layouts were stored), which read back
+/// with walls matched by vertex set and edges numbered by first use.
 inline constexpr const char* kTopologyPrefix = "tessella_topology:";
 
-/// The layout's lists by name, in one place for the writer and the reader.
+/// The layout's lists by name, in one place for the writer and the reader;
+/// the volume lists only in 3D (a 2D layout has them empty, and they are not
+/// stored).
 template <typename Layout, typename Visit>
 void forEachLayoutList(Layout& layout, Visit visit) {
   visit("edge_vertices", layout.edge_vertices);
   visit("face_edge_offsets", layout.face_edge_offsets);
   visit("face_edges", layout.face_edges);
-  visit("volume_face_offsets", layout.volume_face_offsets);
-  visit("volume_faces", layout.volume_faces);
+  if (layout.dim == 3) {
+    visit("volume_face_offsets", layout.volume_face_offsets);
+    visit("volume_faces", layout.volume_faces);
+  }
   visit("vertex_edge_offsets", layout.vertex_edge_offsets);
   visit("vertex_edges", layout.vertex_edges);
   visit("edge_face_offsets", layout.edge_face_offsets);
   visit("edge_faces", layout.edge_faces);
-  visit("face_volume_offsets", layout.face_volume_offsets);
-  visit("face_volumes", layout.face_volumes);
+  if (layout.dim == 3) {
+    visit("face_volume_offsets", layout.face_volume_offsets);
+    visit("face_volumes", layout.face_volumes);
+  }
 }
 
 /// Derived cell measures, written for ParaView and never read back.

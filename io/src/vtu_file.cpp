@@ -10,7 +10,9 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <new>
+#include <regex>
 #include <type_traits>
 #include <vector>
 
@@ -90,6 +92,34 @@ void writeGridFile(vtkUnstructuredGrid* grid, const std::string& path, const Vtu
 }
 
 namespace {
+
+// The component counts of the XML header (before the appended data), which
+// VTK 9.1 takes as they are: a count past what any array of a tissue or a
+// mesh has (2^32 + 1 for the points, say) keeps its reader busy for minutes.
+void checkComponentCounts(const std::string& path) {
+  constexpr std::size_t kMaxHeader = std::size_t{16} << 20;
+  constexpr long kMaxComponents = 1 << 16;
+  std::ifstream in(path, std::ios::binary);
+  std::string header;
+  std::vector<char> chunk(std::size_t{1} << 16);
+  std::size_t appended = std::string::npos;
+  while (in && header.size() < kMaxHeader && appended == std::string::npos) {
+    in.read(chunk.data(), static_cast<std::streamsize>(chunk.size()));
+    const std::size_t from = header.size() > 16 ? header.size() - 16 : 0;  // a marker across two chunks
+    header.append(chunk.data(), static_cast<std::size_t>(in.gcount()));
+    appended = header.find("<AppendedData", from);
+  }
+  if (appended != std::string::npos) header.resize(appended);
+  static const std::regex count(R"re(NumberOfComponents\s*=\s*"([^"]*)")re");
+  for (auto it = std::sregex_iterator(header.begin(), header.end(), count); it != std::sregex_iterator(); ++it) {
+    const std::string value = (*it)[1].str();
+    const bool digits =
+        !value.empty() && value.size() <= 6 && value.find_first_not_of("0123456789") == std::string::npos;
+    if (!digits || std::stol(value) < 1 || std::stol(value) > kMaxComponents)
+      throw InputError("cannot read '" + path + "': an array has NumberOfComponents=\"" + value.substr(0, 40) +
+                       "\" (expected 1 to " + std::to_string(kMaxComponents) + "); the file is corrupted");
+  }
+}
 
 /// VTK's parse of `path` with `Reader`; InputError naming the path on every
 /// error VTK reports. `kind` names the file type for the message.
@@ -200,6 +230,7 @@ auto readXmlFile(const std::string& path, const char* kind) {
   if (fd < 0) throw InputError("cannot read '" + path + "': " + osReason(errno));  // e.g. Permission denied
   ::close(fd);
   const FileIdentity before = identityOf(path);
+  checkComponentCounts(path);
 
   // VTK 9.1's XML reader believes what the file says: a damaged type name,
   // header type, size or offset can make it follow a bad pointer, divide by

@@ -244,14 +244,15 @@ void restoreLineage(Tissue& tissue, vtkCellData* data, vtkIdType num_cells, cons
   }
 }
 
-// The complex a 3D snapshot's topology arrays describe, or nothing for a file
+// The complex a snapshot's topology arrays describe, or nothing for a file
 // without them (written before they existed).
-std::optional<CellComplex> storedComplex(vtkFieldData* field, std::size_t num_vertices, const Source& src) {
+std::optional<CellComplex> storedComplex(vtkFieldData* field, int dim, std::size_t num_vertices, const Source& src) {
   const std::string prefix = detail::kTopologyPrefix;
   if (!field->GetAbstractArray((prefix + "edge_vertices").c_str())) return std::nullopt;
   ComplexLayout layout;
-  layout.dim = 3;
+  layout.dim = dim;
   layout.num_vertices = num_vertices;
+  if (dim == 2) layout.volume_face_offsets = layout.face_volume_offsets = {0};  // as CellComplex::layout() has them
   detail::forEachLayoutList(layout, [&](const char* list, std::vector<Index>& items) {
     const std::string name = prefix + list;
     // VTK reads a UInt32 array back as its own unsigned int class.
@@ -266,6 +267,23 @@ std::optional<CellComplex> storedComplex(vtkFieldData* field, std::size_t num_ve
     return CellComplex::fromLayout(layout);
   } catch (const TopologyError& e) {
     src.fail(std::string("the arrays ") + detail::kTopologyPrefix + "* do not form a tissue: " + e.what());
+  }
+}
+
+// The polygons of a 2D file must be the stored complex's faces, vertex by
+// vertex from where each loop starts (as the writer lists them).
+void requireSamePolygons(const std::vector<std::vector<Index>>& polygons, const CellComplex& complex,
+                         const Source& src) {
+  if (complex.count(2) != polygons.size())
+    src.fail("the topology arrays list " + std::to_string(complex.count(2)) + " cells, the file has " +
+             std::to_string(polygons.size()));
+  for (std::size_t c = 0; c < polygons.size(); ++c) {
+    const auto loop = complex.faceVertices(FaceId(static_cast<Index>(c)));
+    bool same = loop.size() == polygons[c].size();
+    for (std::size_t i = 0; same && i < loop.size(); ++i) same = loop[i].index() == polygons[c][i];
+    if (!same)
+      src.fail("cell " + std::to_string(c) + " has another vertex loop than the topology arrays " +
+               detail::kTopologyPrefix + "* give it");
   }
 }
 
@@ -342,11 +360,18 @@ Snapshot readSnapshot(const std::string& path) {
   detail::requireFinitePositions(positions, detail::RowSelection{.count = positions.size()}, path);
   Tissue tissue = [&] {
     try {
-      if (dim == 2) return buildPolygonTissue(positions, polygonsOf(grid, src), *embedding);
+      if (dim == 2) {
+        const std::vector<std::vector<Index>> polygons = polygonsOf(grid, src);
+        if (std::optional<CellComplex> complex = storedComplex(field, 2, positions.size(), src)) {
+          requireSamePolygons(polygons, *complex, src);
+          return Tissue(std::move(*complex), positions, *embedding);
+        }
+        return buildPolygonTissue(positions, polygons, *embedding);
+      }
       std::vector<std::vector<Index>> faces;
       std::vector<std::vector<CellFace>> cells;
       polyhedraOf(grid, src, faces, cells);
-      if (std::optional<CellComplex> complex = storedComplex(field, positions.size(), src)) {
+      if (std::optional<CellComplex> complex = storedComplex(field, 3, positions.size(), src)) {
         requireSameCells(grid, *complex, src);
         return Tissue(std::move(*complex), positions, Embedding::Volume);
       }

@@ -210,8 +210,8 @@ vtkSmartPointer<vtkStringArray> runStateArray(const RunState& state, const std::
   return array;
 }
 
-// 3D: the complex's numbering and list orders, which the polyhedra alone do
-// not fix (snapshot_format.hpp).
+// The complex's numbering and list orders, which the cells alone do not fix
+// (snapshot_format.hpp).
 void addTopologyLayout(vtkFieldData* field, const CellComplex& topology) {
   const ComplexLayout layout = topology.layout();
   detail::forEachLayoutList(layout, [&](const char* list, const std::vector<Index>& items) {
@@ -261,7 +261,7 @@ void writeTissueVtu(const Tissue& tissue, const std::string& path, const VtuOpti
   field->AddArray(singleValue<vtkTypeInt64Array>(detail::kNextLineageArray,
                                                  static_cast<vtkTypeInt64>(tissue.nextLineageId())));
   if (!state.empty()) field->AddArray(runStateArray(state, path));
-  if (tissue.dim() == 3) addTopologyLayout(field, topo);
+  addTopologyLayout(field, topo);
 
   // Last: the checksums cover every array added above.
   detail::addChecksums(grid);

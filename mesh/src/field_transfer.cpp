@@ -63,9 +63,20 @@ double locate(const FeMesh& m, int e, const Vec3& p, Eigen::Vector4d& lambda) {
 
 }  // namespace
 
+std::vector<std::int64_t> cellLineage(const Tissue& tissue) {
+  std::vector<std::int64_t> lineage(tissue.cellSlots(), -1);
+  for (CellId c : tissue.cells()) lineage[c.index()] = tissue.lineageId(c);
+  return lineage;
+}
+
 std::vector<int> ancestorCells(const Tissue& old_tissue, const Tissue& new_tissue) {
+  return ancestorCells(cellLineage(old_tissue), new_tissue);
+}
+
+std::vector<int> ancestorCells(std::span<const std::int64_t> old_lineage, const Tissue& new_tissue) {
   std::unordered_map<std::int64_t, int> by_lineage;
-  for (CellId c : old_tissue.cells()) by_lineage[old_tissue.lineageId(c)] = static_cast<int>(c.index());
+  for (std::size_t c = 0; c < old_lineage.size(); ++c)
+    if (old_lineage[c] >= 0) by_lineage[old_lineage[c]] = static_cast<int>(c);
   std::vector<int> out(new_tissue.cellSlots(), -1);
   for (CellId c : new_tissue.cells()) {
     if (auto it = by_lineage.find(new_tissue.lineageId(c)); it != by_lineage.end()) {
@@ -84,15 +95,28 @@ std::vector<int> ancestorCells(const Tissue& old_tissue, const Tissue& new_tissu
 
 Eigen::VectorXd interpolateNodalField(const Tissue& old_tissue, const FeMesh& old_mesh, const Eigen::VectorXd& old_field,
                                       const Tissue& new_tissue, const FeMesh& new_mesh) {
+  return interpolateNodalField(cellLineage(old_tissue), old_mesh, old_field, new_tissue, new_mesh);
+}
+
+Eigen::VectorXd interpolateNodalField(std::span<const std::int64_t> old_lineage, const FeMesh& old_mesh,
+                                      const Eigen::VectorXd& old_field, const Tissue& new_tissue,
+                                      const FeMesh& new_mesh) {
   if (old_field.size() != old_mesh.numNodes())
     throw InputError("field transfer: the old field has " + std::to_string(old_field.size()) + " values for " +
                      std::to_string(old_mesh.numNodes()) + " nodes");
   if (old_mesh.dim != new_mesh.dim)
     throw InputError("field transfer: the meshes have different dimensions (" + std::to_string(old_mesh.dim) +
                      " and " + std::to_string(new_mesh.dim) + ")");
-  const std::vector<int> ancestor = ancestorCells(old_tissue, new_tissue);
-  std::vector<std::vector<int>> old_elements(old_tissue.cellSlots());
-  for (int e = 0; e < old_mesh.numElements(); ++e) old_elements[static_cast<std::size_t>(old_mesh.element_cell(e))].push_back(e);
+  const std::vector<int> ancestor = ancestorCells(old_lineage, new_tissue);
+  std::vector<std::vector<int>> old_elements(old_lineage.size());
+  for (int e = 0; e < old_mesh.numElements(); ++e) {
+    const int cell = old_mesh.element_cell(e);
+    if (cell < 0 || static_cast<std::size_t>(cell) >= old_lineage.size())
+      throw InputError("field transfer: element " + std::to_string(e) + " of the old mesh lies in cell " +
+                       std::to_string(cell) + ", but the old tissue has " + std::to_string(old_lineage.size()) +
+                       " cell slots");
+    old_elements[static_cast<std::size_t>(cell)].push_back(e);
+  }
   // The old cells each new node may come from: the ancestors of its cells.
   std::vector<std::vector<int>> node_sources(static_cast<std::size_t>(new_mesh.numNodes()));
   for (int e = 0; e < new_mesh.numElements(); ++e) {
@@ -165,9 +189,15 @@ std::vector<double> cellIntegrals(const FeMesh& mesh, const Eigen::VectorXd& fie
 
 Eigen::VectorXd transferConcentration(const Tissue& old_tissue, const FeMesh& old_mesh, const Eigen::VectorXd& old_field,
                                       const Tissue& new_tissue, const FeMesh& new_mesh) {
-  Eigen::VectorXd out = interpolateNodalField(old_tissue, old_mesh, old_field, new_tissue, new_mesh);
+  return transferConcentration(cellLineage(old_tissue), old_mesh, old_field, new_tissue, new_mesh);
+}
+
+Eigen::VectorXd transferConcentration(std::span<const std::int64_t> old_lineage, const FeMesh& old_mesh,
+                                      const Eigen::VectorXd& old_field, const Tissue& new_tissue,
+                                      const FeMesh& new_mesh) {
+  Eigen::VectorXd out = interpolateNodalField(old_lineage, old_mesh, old_field, new_tissue, new_mesh);
   double old_total = 0.0, new_total = 0.0;
-  for (double a : cellIntegrals(old_mesh, old_field, old_tissue.cellSlots())) old_total += a;
+  for (double a : cellIntegrals(old_mesh, old_field, old_lineage.size())) old_total += a;
   for (double a : cellIntegrals(new_mesh, out, new_tissue.cellSlots())) new_total += a;
   if (new_total != 0.0) out *= old_total / new_total;
   return out;

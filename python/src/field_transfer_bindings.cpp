@@ -12,12 +12,17 @@ namespace tessella::python {
 using namespace tessella::mesh;
 
 void bindFieldTransfer(py::module_& m) {
-  m.def("ancestor_cells", &ancestorCells, py::arg("old_tissue"), py::arg("new_tissue"),
+  m.def("ancestor_cells", py::overload_cast<const Tissue&, const Tissue&>(&ancestorCells), py::arg("old_tissue"),
+        py::arg("new_tissue"),
         "Per cell slot of new_tissue: the old cell it comes from (lineage, then parent), -1 for dead slots.");
-  m.def("interpolate_nodal_field", &interpolateNodalField, py::arg("old_tissue"), py::arg("old_mesh"),
+  m.def("interpolate_nodal_field",
+        py::overload_cast<const Tissue&, const FeMesh&, const Eigen::VectorXd&, const Tissue&, const FeMesh&>(
+            &interpolateNodalField), py::arg("old_tissue"), py::arg("old_mesh"),
         py::arg("old_field"), py::arg("new_tissue"), py::arg("new_mesh"),
         "P1 interpolation of a nodal field onto new_mesh, locating nodes by cell lineage.");
-  m.def("transfer_concentration", &transferConcentration, py::arg("old_tissue"), py::arg("old_mesh"),
+  m.def("transfer_concentration",
+        py::overload_cast<const Tissue&, const FeMesh&, const Eigen::VectorXd&, const Tissue&, const FeMesh&>(
+            &transferConcentration), py::arg("old_tissue"), py::arg("old_mesh"),
         py::arg("old_field"), py::arg("new_tissue"), py::arg("new_mesh"),
         "interpolate_nodal_field rescaled so that the total amount (integral) is conserved.");
   m.def("transfer_cell_amounts",

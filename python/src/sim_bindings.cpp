@@ -160,6 +160,10 @@ stage, step and time, followed by the cause's message.
             }
           },
           "Steps to the end of the time span.")
+      .def("write_snapshot", [](const Simulation& s, const std::string& path) { s.writeSnapshot(path); },
+           py::arg("path"),
+           "Writes a snapshot a restart (tissue.generator: snapshot) continues bit for bit: the tissue with the "
+           "run's clock and random stream, and a diffusion stage's mesh and fields beside it (<stem>.fields.vtu).")
       .def(
           "attach_series",
           [](Simulation& s, const std::string& directory, std::size_t every, const std::string& name,

@@ -37,6 +37,16 @@ io::RunState Simulation::runState() const {
   return state;
 }
 
+io::RunState Simulation::snapshotState(const std::string& snapshot_path, const io::VtuOptions& options) const {
+  io::RunState state = runState();
+  for (const auto& stage : stages_) stage->saveState(tissue_, snapshot_path, options, state);
+  return state;
+}
+
+void Simulation::writeSnapshot(const std::string& path, const io::VtuOptions& options) const {
+  io::writeTissueVtu(tissue_, path, options, snapshotState(path, options), &geometry_);
+}
+
 std::string continueRunState(const io::RunState& state, double snapshot_time, std::uint64_t seed, TimeSpan& time) {
   const auto value = [&](const char* key) -> const std::string* {
     const auto it = state.find(key);

@@ -257,11 +257,13 @@ case "$case_name" in
   resume_interrupted)
     # A run stopped half way (killed outright in 2D, SIGTERM in 3D) and resumed with --resume ends with the
     # directory of the uninterrupted run: the same .pvd, the same stats.csv rows, every snapshot byte for
-    # byte (positions, properties, random stream), and no temporary left.
+    # byte (positions, properties, random stream), and no temporary left. With transient diffusion, the
+    # solver fields' state beside each snapshot and the fields series are identical too.
     set -m
-    for spec in "voronoi_growth.yaml KILL time.end=20" "box_growth_3d.yaml TERM time.end=8"; do
+    for spec in "voronoi_growth.yaml KILL time.end=20" "box_growth_3d.yaml TERM time.end=8" \
+                "morphogen_gradient_2d.yaml KILL time.end=10"; do
       read -r config sig end <<<"$spec"
-      whole="$tmp/whole_$sig"; part="$tmp/part_$sig"
+      whole="$tmp/whole_${config%.yaml}"; part="$tmp/part_${config%.yaml}"
       "$tessella" run "$src/configs/$config" --out "$whole" -q --set output.every=1 --set "$end" \
         || fail "$config: the uninterrupted run failed"
       total=$(grep -c '<DataSet' "$whole/tissue.pvd")
@@ -286,11 +288,22 @@ case "$case_name" in
       diff <(grep -v 'directory:' "$whole/run.yaml") <(grep -v 'directory:' "$part/run.yaml") \
         || fail "$config: run.yaml differs (beyond output.directory)"
       n=0
-      for f in "$whole"/tissue_*.vtu; do
+      for f in "$whole"/tissue_*[0-9].vtu; do
         cmp "$f" "$part/$(basename "$f")" || fail "$config: $(basename "$f") differs"
         n=$((n + 1))
       done
-      [ "$n" -eq "$total" ] && [ "$(ls "$part"/tissue_*.vtu | wc -l)" -eq "$total" ] || fail "$config: snapshot counts"
+      [ "$n" -eq "$total" ] && [ "$(ls "$part"/tissue_*[0-9].vtu | wc -l)" -eq "$total" ] \
+        || fail "$config: snapshot counts"
+      # The solver fields: their state beside every snapshot, and the fields series.
+      for f in "$whole"/tissue_*.fields.vtu "$whole"/fields*.pvd "$whole"/fields_*.vtu; do
+        [ -e "$f" ] || continue
+        cmp "$f" "$part/$(basename "$f")" || fail "$config: $(basename "$f") differs"
+      done
+      [ "$(ls "$whole" | wc -l)" -eq "$(ls "$part" | wc -l)" ] \
+        || fail "$config: the directories hold $(ls "$whole" | wc -l) and $(ls "$part" | wc -l) files"
+      if [ "$config" = morphogen_gradient_2d.yaml ]; then
+        [ "$(ls "$part"/tissue_*.fields.vtu | wc -l)" -eq "$total" ] || fail "$config: not one field state per snapshot"
+      fi
       left=$(find "$part" -name '*.tmp*')
       [ -z "$left" ] || fail "$config: temporaries left: $left"
       echo "$config: stopped by SIG$sig after $listed of $total snapshots, resumed: identical"

@@ -3,6 +3,7 @@
 // 2D snapshots: write, read back, compare with the written tissue and with
 // analytic measures.
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <fstream>
@@ -10,6 +11,7 @@
 
 #include <catch2/catch.hpp>
 
+#include "file_edits.hpp"
 #include "io_test_support.hpp"
 #include "tessella/io/vtu.hpp"
 #include "tessella/tissue/builders.hpp"
@@ -157,6 +159,53 @@ TEST_CASE("divided and removed cells: lineage survives, tombstones are skipped",
   std::int64_t max_id = -1;
   for (CellId c : r.cells()) max_id = std::max(max_id, r.lineageId(c));
   REQUIRE(r.nextLineageId() > max_id);
+}
+
+TEST_CASE("a 2D snapshot keeps the numbering and direction of edges", "[io][vtu][restart]") {
+  // Divisions append edges, and a removed cell leaves tombstones: the
+  // numbering of a run's complex is not the polygons' order of first use.
+  TempDir dir;
+  Tissue t = rectangularGrid(4, 3);
+  for (Index i : {5u, 6u, 9u}) t.splitCell(CellId(i), Plane{cellCentroid(t, CellId(i)), Vec3(1, 0.3, 0)});
+  t.splitCell(CellId(0), Plane{cellCentroid(t, CellId(0)), Vec3(0, 1, 0)});
+  t.removeCell(CellId(11));
+  const std::string path = dir.file("divided.vtu");
+  writeTissueVtu(t, path);
+  const Tissue r = readTissueVtu(path);
+  requireSameTissue(t, r);
+  CHECK(r.topology().layout() == t.topology().layout());
+
+  // Without the arrays (a file written before 2D layouts were stored): the
+  // same cells, edges numbered by first use.
+  const std::string old = dir.file("old.vtu");
+  io::testing::tamper(path, old, [](vtkUnstructuredGrid* grid) {
+    vtkFieldData* field = grid->GetFieldData();
+    for (int i = field->GetNumberOfArrays() - 1; i >= 0; --i)
+      if (std::string(field->GetArrayName(i)).rfind("tessella_topology:", 0) == 0)
+        field->RemoveArray(field->GetArrayName(i));
+  });
+  const Tissue from_old = readTissueVtu(old);
+  requireSameTissue(t, from_old);
+  CHECK_FALSE(from_old.topology().layout() == t.topology().layout());
+
+  // A polygon that is not its face's loop from where the loop starts.
+  const std::string shifted = dir.file("shifted.vtu");
+  io::testing::tamper(path, shifted, [](vtkUnstructuredGrid* grid) {
+    vtkIdType n = 0;
+    const vtkIdType* pts = nullptr;
+    grid->GetCells()->GetCellAtId(0, n, pts);
+    std::vector<vtkIdType> loop(pts, pts + n);
+    std::rotate(loop.begin(), loop.begin() + 1, loop.end());
+    grid->GetCells()->ReplaceCellAtId(0, n, loop.data());
+  });
+  try {
+    readTissueVtu(shifted);
+    FAIL("a polygon started elsewhere was accepted");
+  } catch (const InputError& e) {
+    INFO(e.what());
+    CHECK(std::string(e.what()).find("cell 0 has another vertex loop than the topology arrays") != std::string::npos);
+    CHECK(std::string(e.what()).find(shifted) != std::string::npos);
+  }
 }
 
 TEST_CASE("the ids of removed cells are not handed out again after reading back", "[io][vtu]") {

@@ -130,13 +130,25 @@ TEST_CASE("inconsistent arrays are named in the error", "[io][vtu][errors]") {
     REQUIRE(readTissueVtu(bad).cellProperties().get<double>("auxin")[CellId(4)] == 2.5);
   }
   SECTION("polygons that do not form a tissue") {
-    // Reverse one loop: it now runs against its neighbours.
-    tamper(good, bad, [](vtkUnstructuredGrid* g) {
+    // Reverse one loop: it now runs against its neighbours. With the topology
+    // arrays, it is not the loop they give that cell; in a file without them
+    // (older ones), the polygons do not form a tissue.
+    const auto reverse = [](vtkUnstructuredGrid* g) {
       vtkNew<vtkIdList> ids;
       g->GetCellPoints(4, ids);
       std::vector<vtkIdType> reversed(ids->GetPointer(0), ids->GetPointer(0) + ids->GetNumberOfIds());
       std::reverse(reversed.begin(), reversed.end());
       g->ReplaceCell(4, static_cast<int>(reversed.size()), reversed.data());
+    };
+    tamper(good, bad, reverse);
+    REQUIRE_THROWS_WITH(readTissueVtu(bad),
+                        Contains(bad) && Contains("cell 4 has another vertex loop than the topology arrays"));
+    tamper(good, bad, [&](vtkUnstructuredGrid* g) {
+      reverse(g);
+      vtkFieldData* field = g->GetFieldData();
+      for (int i = field->GetNumberOfArrays() - 1; i >= 0; --i)
+        if (std::string(field->GetArrayName(i)).rfind("tessella_topology:", 0) == 0)
+          field->RemoveArray(field->GetArrayName(i));
     });
     REQUIRE_THROWS_WITH(readTissueVtu(bad), Contains(bad) && Contains("do not form a"));
   }

@@ -3,8 +3,10 @@
 // A run restarted from any of its snapshots must end where the uninterrupted
 // run ends, bit for bit: the snapshot carries the tissue with every
 // property's policy and default, and the run state (clock, random stream,
-// the dome a sheet lives on). Every bundled config is stopped half way,
-// written, read back as `tissue.generator: snapshot`, and run to its end.
+// the dome a sheet lives on), and the diffusion stage's mesh and nodal
+// fields lie beside it. Every bundled config is stopped half way, written
+// (Simulation::writeSnapshot), read back as `tissue.generator: snapshot`,
+// and run to its end.
 
 #include <catch2/catch.hpp>
 
@@ -14,11 +16,14 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
+#include "tessella/io/field_state.hpp"
 #include "tessella/io/vtu.hpp"
 #include "tessella/sim/config/config_loader.hpp"
+#include "tessella/sim/run/field_output.hpp"
 #include "tessella/sim/sections/simulation_config.hpp"
 #include "tessella/sim/simulation.hpp"
 #include "tessella/tissue/geometry.hpp"
@@ -88,11 +93,9 @@ void requireSameTissue(const Tissue& a, const Tissue& b) {
   CHECK(other_loop == 0);
   CHECK(other_measure == 0);
   CHECK(centroid_gap == 0);
-  // 3D: the very same complex, every wall and edge numbered, directed and
-  // listed as in the uninterrupted run (the snapshot stores it). 2D
-  // snapshots do not store it, and their edges come back numbered by first
-  // use in the polygon loops.
-  if (a.dim() == 3) CHECK(a.topology().layout() == b.topology().layout());
+  // The very same complex, every wall and edge numbered, directed and
+  // listed as in the uninterrupted run (the snapshot stores it).
+  CHECK(a.topology().layout() == b.topology().layout());
 
   REQUIRE(a.cellProperties().names() == b.cellProperties().names());
   for (const std::string& name : a.cellProperties().names()) {
@@ -109,6 +112,52 @@ void requireSameTissue(const Tissue& a, const Tissue& b) {
   }
 }
 
+// The solver stages' mesh and nodal fields, to the bit.
+void requireSameFields(const Simulation& a, const Simulation& b) {
+  const auto ma = findFieldMesh(a), mb = findFieldMesh(b);
+  REQUIRE(ma);
+  REQUIRE(mb);
+  REQUIRE(ma->hasMesh() == mb->hasMesh());
+  if (!ma->hasMesh()) return;
+  const mesh::FeMesh &x = ma->mesh(), &y = mb->mesh();
+  REQUIRE(x.numNodes() == y.numNodes());
+  REQUIRE(x.numElements() == y.numElements());
+  CHECK(x.elements == y.elements);
+  CHECK(x.element_cell == y.element_cell);
+  CHECK(std::memcmp(x.nodes.data(), y.nodes.data(), sizeof(double) * static_cast<std::size_t>(x.nodes.size())) == 0);
+  REQUIRE(ma->fields().size() == mb->fields().size());
+  for (const auto& [name, values] : ma->fields()) {
+    INFO("field " << name);
+    REQUIRE(mb->hasField(name));
+    const Eigen::VectorXd& other = mb->field(name);
+    REQUIRE(other.size() == values.size());
+    std::size_t differ = 0;
+    for (Eigen::Index i = 0; i < values.size(); ++i) differ += !sameBits(values[i], other[i]);
+    CHECK(differ == 0);
+  }
+}
+
+// `path` with `overrides` run straight through, and stopped after `stop`
+// steps, written with Simulation::writeSnapshot and restarted: both ends
+// must be the same to the bit, tissue and fields.
+void requireExactRestart(const std::string& path, const std::vector<std::string>& overrides, std::size_t stop) {
+  ScratchDir dir;
+  Simulation whole = Simulation::fromFile(path, overrides);
+  REQUIRE(stop < whole.numSteps());
+  Simulation first = Simulation::fromFile(path, overrides);
+  while (first.stepsDone() < stop) first.step();
+  const std::string snapshot = dir / "stop.vtu";
+  first.writeSnapshot(snapshot);
+  std::vector<std::string> restart = overrides;
+  restart.insert(restart.end(), {"tissue.generator=snapshot", "tissue.snapshot.file=" + snapshot});
+  Simulation rest = Simulation::fromFile(path, restart);
+  CHECK(rest.numSteps() == whole.numSteps() - stop);
+  rest.run();
+  whole.run();
+  requireSameTissue(whole.tissue(), rest.tissue());
+  requireSameFields(whole, rest);
+}
+
 }  // namespace
 
 TEST_CASE("every bundled config, restarted half way from its snapshot, ends as the uninterrupted run",
@@ -119,6 +168,7 @@ TEST_CASE("every bundled config, restarted half way from its snapshot, ends as t
   std::sort(configs.begin(), configs.end());
   REQUIRE(configs.size() >= 9);
   ScratchDir dir;
+  int with_diffusion = 0;
   for (const auto& path : configs) {
     INFO(path.filename().string());
     Simulation whole = Simulation::fromFile(path.string());
@@ -127,7 +177,7 @@ TEST_CASE("every bundled config, restarted half way from its snapshot, ends as t
     Simulation first = Simulation::fromFile(path.string());
     while (first.stepsDone() < half) first.step();
     const std::string snapshot = dir / (path.stem().string() + "_half.vtu");
-    io::writeTissueVtu(first.tissue(), snapshot, {}, first.runState());
+    first.writeSnapshot(snapshot);
 
     std::vector<std::string> restart{"tissue.generator=snapshot", "tissue.snapshot.file=" + snapshot};
     const SimulationConfig config = loadSimulationConfigFile(path.string());
@@ -143,19 +193,13 @@ TEST_CASE("every bundled config, restarted half way from its snapshot, ends as t
     CHECK(sameBits(rest.time(), first.time()));
     rest.run();
     whole.run();
-    // Transient diffusion species live on the mesh, not in the snapshot: a
-    // restart starts them afresh (docs/config.md), so such a run can only
-    // stay close, not equal.
-    if (!config.diffusion.species.empty() && !config.diffusion.steady) {
-      INFO("mesh fields restart afresh: uninterrupted " << whole.tissue().numCells() << " cells, restarted "
-                                                        << rest.tissue().numCells());
-      CHECK(validate(rest.tissue()).ok);
-      CHECK(std::abs(double(rest.tissue().numCells()) - double(whole.tissue().numCells())) <=
-            0.25 * double(whole.tissue().numCells()));
-      continue;
-    }
     requireSameTissue(whole.tissue(), rest.tissue());
+    if (!config.diffusion.species.empty()) {
+      ++with_diffusion;
+      requireSameFields(whole, rest);
+    }
   }
+  CHECK(with_diffusion >= 2);  // activator_inhibitor_2d, morphogen_gradient_2d
 }
 
 TEST_CASE("a noisy division threshold survives a restart: daughters born after it draw theirs", "[sim][restart]") {
@@ -228,4 +272,124 @@ TEST_CASE("a restart between two solves keeps the solver's schedule", "[sim][res
   rest.run();
   whole.run();
   requireSameTissue(whole.tissue(), rest.tissue());
+}
+
+TEST_CASE("transient diffusion restarts exactly between two solves, in 2D and on a growing, dividing 3D tissue",
+          "[sim][restart][diffusion]") {
+  // Solving every 3 (2D) or 2 (3D) steps and stopped after a step without a
+  // solve, the tissue has grown since its mesh: the restart carries the
+  // saved fields from the saved mesh to a new one, as the uninterrupted run does.
+  SECTION("2D, every 3 steps") {
+    requireExactRestart(sourcePath("configs/morphogen_gradient_2d.yaml"), {"diffusion.every=3"}, 7);
+  }
+  SECTION("2D, stopped right after a solve") {
+    requireExactRestart(sourcePath("configs/activator_inhibitor_2d.yaml"), {"time.end=5"}, 4);
+  }
+  SECTION("3D, every 2 steps, Crank-Nicolson with a source") {
+    requireExactRestart(sourcePath("configs/box_growth_3d.yaml"),
+                        {"time.end=1.4", "diffusion.mode=transient", "diffusion.species=u", "diffusion.every=2",
+                         "diffusion.scheme=crank_nicolson", "diffusion.dirichlet=x_min=1", "diffusion.decay=0.5"},
+                        5);
+  }
+  SECTION("3D steady, stopped between two solves") {
+    requireExactRestart(sourcePath("configs/steady_diffusion_3d.yaml"),
+                        {"time.end=4", "diffusion.every=2"}, 3);
+  }
+}
+
+TEST_CASE("a missing, damaged or mismatched diffusion state beside a snapshot is an error naming it",
+          "[sim][restart][diffusion]") {
+  ScratchDir dir;
+  const std::string config = sourcePath("configs/morphogen_gradient_2d.yaml");
+  Simulation first = Simulation::fromFile(config);
+  while (first.stepsDone() < 5) first.step();
+  const std::string snapshot = dir / "step5.vtu";
+  first.writeSnapshot(snapshot);
+  const std::string beside = io::fieldStatePath(snapshot);
+  REQUIRE(beside == (dir / "step5.fields.vtu"));
+  REQUIRE(std::filesystem::exists(beside));
+  first.step();
+  const std::string later = dir / "step6.vtu";
+  first.writeSnapshot(later);
+
+  const std::vector<std::string> restart{"tissue.generator=snapshot", "tissue.snapshot.file=" + snapshot};
+  auto refused = [&](const std::vector<std::string>& parts, std::vector<std::string> overrides = {}) {
+    overrides.insert(overrides.begin(), restart.begin(), restart.end());
+    try {
+      Simulation::fromFile(config, overrides);
+      FAIL("the restart was accepted");
+    } catch (const std::exception& e) {
+      const std::string what = e.what();
+      INFO(what);
+      for (const std::string& part : parts) CHECK(what.find(part) != std::string::npos);
+    }
+  };
+  const auto fresh = [&] {
+    std::vector<std::string> overrides = restart;
+    overrides.push_back("diffusion.restart=fresh");
+    Simulation rest = Simulation::fromFile(config, overrides);
+    rest.run();
+    CHECK(rest.finished());
+  };
+
+  // Missing.
+  std::filesystem::rename(beside, dir / "away.vtu");
+  refused({beside, "is missing", "diffusion.restart: fresh"});
+  fresh();  // asked for explicitly: the species start again
+  std::filesystem::rename(dir / "away.vtu", beside);
+  Simulation::fromFile(config, restart);  // back in place: accepted
+
+  // Another step's file in its place.
+  std::filesystem::copy_file(beside, dir / "keep.vtu");
+  std::filesystem::copy_file(io::fieldStatePath(later), beside, std::filesystem::copy_options::overwrite_existing);
+  refused({beside, "is not the diffusion state written with snapshot", snapshot});
+
+  // Damaged: one byte changed near the end (the appended data).
+  std::filesystem::copy_file(dir / "keep.vtu", beside, std::filesystem::copy_options::overwrite_existing);
+  {
+    std::fstream file(beside, std::ios::in | std::ios::out | std::ios::binary);
+    file.seekg(-200, std::ios::end);
+    char byte = 0;
+    file.read(&byte, 1);
+    file.seekp(-200, std::ios::end);
+    byte = static_cast<char>(byte ^ 0x10);
+    file.write(&byte, 1);
+  }
+  refused({beside, "CRC-32"});
+  // ... and read directly, the file's own checksums name the array.
+  CHECK_THROWS_WITH(io::readFieldState(beside), Catch::Contains(beside));
+  std::filesystem::copy_file(dir / "keep.vtu", beside, std::filesystem::copy_options::overwrite_existing);
+
+  // Other species than the config's.
+  {
+    const std::string other = dir / "other.vtu";
+    io::RunState state = first.snapshotState(other);
+    state["diffusion.species"] = "ions";
+    io::writeTissueVtu(first.tissue(), other, {}, state);
+    try {
+      Simulation::fromFile(config, {"tissue.generator=snapshot", "tissue.snapshot.file=" + other});
+      FAIL("other species were accepted");
+    } catch (const std::exception& e) {
+      INFO(e.what());
+      CHECK(std::string(e.what()).find("continues the species 'ions', the config has 'auxin'") != std::string::npos);
+    }
+  }
+
+  // A snapshot written without the stage's state (the tissue and the clock only).
+  const std::string bare = dir / "bare.vtu";
+  io::writeTissueVtu(first.tissue(), bare, {}, first.runState());
+  try {
+    Simulation::fromFile(config, {"tissue.generator=snapshot", "tissue.snapshot.file=" + bare});
+    FAIL("a snapshot without the diffusion state was accepted");
+  } catch (const std::exception& e) {
+    INFO(e.what());
+    CHECK(std::string(e.what()).find("holds no state of the diffusion stage") != std::string::npos);
+    CHECK(std::string(e.what()).find(bare) != std::string::npos);
+  }
+  Simulation::fromFile(config, {"tissue.generator=snapshot", "tissue.snapshot.file=" + bare,
+                                "diffusion.restart=fresh"});
+  // A tissue file that is not a run's snapshot is an initial tissue: the species start from `initial`.
+  const std::string plain = dir / "plain.vtu";
+  io::writeTissueVtu(first.tissue(), plain);
+  Simulation::fromFile(config, {"tissue.generator=snapshot", "tissue.snapshot.file=" + plain});
 }

@@ -36,7 +36,11 @@ Simulation Simulation::fromConfig(const SimulationConfig& config) {
   Simulation sim(buildTissue(config.tissue, config.rng_seed, config.config), options);
   StageList stages = makeStageList(config);
   checkMeshSize(config.config, sim.tissue(), stages.hasFieldMesh());
-  for (auto& stage : stages.release()) sim.addStage(std::move(stage));
+  const auto* snapshot = std::get_if<SnapshotSpec>(&config.tissue);
+  for (auto& stage : stages.release()) {
+    if (snapshot) stage->continueFrom(snapshot->file, snapshot->state);  // before prepare()
+    sim.addStage(std::move(stage));
+  }
   return sim;
 }
 

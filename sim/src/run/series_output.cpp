@@ -13,7 +13,9 @@ void SeriesOutput::writeIfDue(const Simulation& simulation) {
 
 void SeriesOutput::write(const Simulation& simulation) {
   if (simulation.stepsDone() == last_written_step_) return;
-  writer_.write(simulation.tissue(), simulation.time(), simulation.runState(), &simulation.geometry());
+  // The stages' files beside the snapshot first: a complete snapshot has them.
+  const io::RunState state = simulation.snapshotState(writer_.nextPath(), writer_.options());
+  writer_.write(simulation.tissue(), simulation.time(), state, &simulation.geometry());
   last_written_step_ = simulation.stepsDone();
 }
 

@@ -131,6 +131,14 @@ void declareDiffusionSection(Schema& s) {
       .byDefault(std::string("consistent"))
       .activeWhen(on.key, on.values);
   detail::declareEveryAndStep(s, "diffusion", on);
+  s.key("diffusion.restart", ValueType::Enum,
+        "A run restarted from a snapshot of a run (`tissue.generator: snapshot`): `continue` the mesh and "
+        "nodal values saved beside the snapshot (<snapshot>.fields.vtu), so the restart ends as the "
+        "uninterrupted run, bit for bit; a missing, damaged or mismatched file is an error naming it. "
+        "`fresh`: start every species from `initial` on a new mesh instead.")
+      .oneOf({"continue", "fresh"})
+      .byDefault(std::string("continue"))
+      .activeWhen(on.key, on.values);
   declareSpeciesKeys(s, "diffusion", on, true);
   s.section(kMap,
             "Several species in one stage: a map from each species' name (letters, digits, '_', not "
@@ -153,6 +161,7 @@ DiffusionSpec readDiffusionSection(const Config& c) {
   d.every = static_cast<std::size_t>(c.getInt("diffusion.every"));
   if (c.has("diffusion.dt")) d.dt = c.getFloat("diffusion.dt");
   if (c.has("diffusion.by_property")) d.type_property = c.getString("diffusion.by_property");
+  d.fresh_restart = c.getString("diffusion.restart") == "fresh";
 
   const std::vector<std::string> names = c.entryNames(kMap);
   if (names.empty()) {

@@ -3,12 +3,20 @@
 #include "tessella/sim/stages/coupling_stages.hpp"
 
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <set>
+#include <sstream>
 
+#include "../config/exact_text.hpp"
 #include "coupling_cells.hpp"
 #include "reaction_terms.hpp"
+#include "tessella/io/field_state.hpp"
+#include "tessella/mesh/field_transfer.hpp"
 #include "tessella/solvers/compartment_transport.hpp"
 #include "tessella/solvers/elasticity.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"
 
 namespace tessella::sim {
@@ -73,6 +81,9 @@ void DiffusionStage::prepare(Tissue& tissue, double /*time*/) {
   for (const SpeciesSpec& sp : spec_.species)
     detail::markCells(tissue, sp.name + "_source", sp.source.lineage_ids, sp.source.center, sp.source.radius,
                       sp.key_prefix + ".source.cells");
+  // A restart continues the saved mesh and fields; the snapshot's tissue
+  // already holds the cell averages and amounts the run had.
+  if (restart_ && !spec_.fresh_restart && restore(tissue)) return;
   if (spec_.steady) return;  // the first solve gives the fields
   mesh_->update(tissue);
   for (const SpeciesSpec& sp : spec_.species)
@@ -151,6 +162,155 @@ void DiffusionStage::apply(Tissue& tissue, const StepContext& context) {
   }
   storeCellValues(tissue);
   schedule_.solved(context);
+}
+
+namespace {
+std::string joined(const std::vector<std::string>& words) {
+  std::string out;
+  for (const std::string& w : words) out += (out.empty() ? "" : " ") + w;
+  return out;
+}
+
+std::vector<std::string> words(const std::string& text) {
+  std::istringstream in(text);
+  std::vector<std::string> out;
+  for (std::string w; in >> w;) out.push_back(w);
+  return out;
+}
+
+std::string hex(std::uint32_t x) {
+  char text[16];
+  std::snprintf(text, sizeof text, "%08x", x);
+  return text;
+}
+}  // namespace
+
+void DiffusionStage::saveState(const Tissue& tissue, const std::string& snapshot_path, const io::VtuOptions& options,
+                               io::RunState& state) const {
+  std::vector<std::string> names, totals;
+  for (const SpeciesSpec& sp : spec_.species) names.push_back(sp.name);
+  for (double total : total_) totals.push_back(formatNumber(total));
+  state["diffusion.species"] = joined(names);
+  state["diffusion.mode"] = spec_.steady ? "steady" : "transient";
+  state["diffusion.total"] = joined(totals);
+  if (!mesh_->hasMesh()) {  // a steady species before its first solve
+    state["diffusion.fields"] = "";
+    return;
+  }
+  // The cells as the field state numbers them: the meshed tissue's live
+  // cells in slot order, as its snapshot would number them.
+  const std::vector<std::int64_t>& lineage = mesh_->meshedLineage();
+  std::vector<int> rank(lineage.size(), -1);
+  io::FieldState saved;
+  for (std::size_t c = 0; c < lineage.size(); ++c)
+    if (lineage[c] >= 0) {
+      rank[c] = static_cast<int>(saved.cell_lineage.size());
+      saved.cell_lineage.push_back(lineage[c]);
+    }
+  saved.mesh = mesh_->mesh();
+  for (Eigen::Index e = 0; e < saved.mesh.element_cell.size(); ++e)
+    saved.mesh.element_cell[e] = rank[static_cast<std::size_t>(saved.mesh.element_cell[e])];
+  saved.fields = mesh_->fields();
+  std::vector<std::string> carried;
+  for (const auto& [name, values] : saved.fields)
+    if (mesh_->carried(name)) carried.push_back(name);
+  const std::string path = io::fieldStatePath(snapshot_path);
+  const std::uint32_t crc = io::writeFieldState(saved, path, options);
+  state["diffusion.fields"] = std::filesystem::path(path).filename().string();
+  state["diffusion.fields.crc32"] = hex(crc);
+  state["diffusion.fields.current"] = mesh_->meshes(tissue) ? "1" : "0";
+  state["diffusion.fields.carried"] = joined(carried);
+}
+
+void DiffusionStage::continueFrom(const std::string& snapshot_path, const io::RunState& state) {
+  restart_ = Restart{snapshot_path, state};
+}
+
+bool DiffusionStage::restore(const Tissue& tissue) {
+  const std::string& snapshot = restart_->snapshot;
+  const io::RunState& state = restart_->state;
+  const auto value = [&](const std::string& key) -> const std::string* {
+    const auto it = state.find(key);
+    return it == state.end() ? nullptr : &it->second;
+  };
+  const std::string fresh = " (set diffusion.restart: fresh to start the species from their initial values instead)";
+  const std::string* file = value("diffusion.fields");
+  if (!file) {
+    // A tissue file that is not a run's snapshot: an initial tissue.
+    if (!value("clock.step")) return false;
+    throw InputError("snapshot '" + snapshot +
+                     "' holds no state of the diffusion stage: its run had no diffusion section, or it was "
+                     "written without it (by an older Tessella, or by io::writeTissueVtu instead of "
+                     "Simulation::writeSnapshot)" + fresh);
+  }
+  std::vector<std::string> names;
+  for (const SpeciesSpec& sp : spec_.species) names.push_back(sp.name);
+  const std::string* species = value("diffusion.species");
+  const std::string* mode = value("diffusion.mode");
+  const std::string* totals = value("diffusion.total");
+  const std::string want_mode = spec_.steady ? "steady" : "transient";
+  if (!species || words(*species) != names)
+    throw InputError("snapshot '" + snapshot + "' continues the species '" + (species ? *species : "") +
+                     "', the config has '" + joined(names) + "'" + fresh);
+  if (!mode || *mode != want_mode)
+    throw InputError("snapshot '" + snapshot + "' was written by a run with diffusion.mode " +
+                     (mode ? *mode : "?") + ", the config has " + want_mode + fresh);
+  const std::vector<std::string> total_words = totals ? words(*totals) : std::vector<std::string>{};
+  std::vector<double> total(names.size(), 0.0);
+  bool totals_ok = total_words.size() == names.size();
+  for (std::size_t k = 0; totals_ok && k < names.size(); ++k)
+    totals_ok = detail::parseExact(total_words[k], total[k]);
+  if (!totals_ok)
+    throw InputError("snapshot '" + snapshot + "': its run state holds diffusion.total = '" + (totals ? *totals : "") +
+                     "', not one number per species");
+  total_ = total;
+  if (file->empty()) return true;  // no mesh yet (a steady species before its first solve)
+
+  const std::string path = (std::filesystem::path(snapshot).parent_path() / *file).string();
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec))
+    throw InputError("'" + path + "', the diffusion state written beside snapshot '" + snapshot +
+                     "', is missing" + fresh);
+  const std::string* crc = value("diffusion.fields.crc32");
+  const std::string actual = hex(io::fileChecksum(path));
+  if (!crc || *crc != actual)
+    throw InputError("'" + path + "' is not the diffusion state written with snapshot '" + snapshot +
+                     "': its CRC-32 is " + actual + ", the snapshot's run state records " + (crc ? *crc : "none") +
+                     " (a file of another step or run, or damaged)" + fresh);
+  io::FieldState saved = io::readFieldState(path);
+  if (saved.mesh.dim != tissue.dim())
+    throw InputError("'" + path + "' holds a mesh of dimension " + std::to_string(saved.mesh.dim) +
+                     " for a tissue of dimension " + std::to_string(tissue.dim()));
+  for (const std::string& name : names)
+    if (!saved.fields.count(name))
+      throw InputError("'" + path + "' has no field '" + name + "' (it has " + std::to_string(saved.fields.size()) +
+                       " fields)");
+  const std::string* current = value("diffusion.fields.current");
+  const bool is_current = current && *current == "1";
+  if (is_current) {
+    // The mesh was made of the snapshot's tissue itself: the same cells in
+    // the same order.
+    const std::vector<std::int64_t> lineage = mesh::cellLineage(tissue);
+    std::vector<std::int64_t> live;
+    for (std::int64_t id : lineage)
+      if (id >= 0) live.push_back(id);
+    if (live != saved.cell_lineage)
+      throw InputError("'" + path + "' was meshed from " + std::to_string(saved.cell_lineage.size()) +
+                       " cells that are not the snapshot's " + std::to_string(live.size()) +
+                       " cells (lineage ids differ): not the state of snapshot '" + snapshot + "'");
+    if (lineage.size() != live.size())
+      throw InputError("snapshot '" + snapshot + "' read back with removed cells; cannot continue its mesh");
+  }
+  const std::string* carried = value("diffusion.fields.carried");
+  std::set<std::string> carried_names;
+  for (const std::string& name : carried ? words(*carried) : names) carried_names.insert(name);
+  try {
+    mesh_->restore(std::move(saved.mesh), std::move(saved.cell_lineage), std::move(saved.fields), carried_names,
+                   is_current ? &tissue : nullptr);
+  } catch (const InputError& e) {
+    throw InputError("'" + path + "': " + e.what());
+  }
+  return true;
 }
 
 // --- compartments -------------------------------------------------------------

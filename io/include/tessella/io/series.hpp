@@ -27,12 +27,16 @@ class SeriesWriter {
 
   /// Continues the series already on disk (an interrupted run resumed): its
   /// entries up to `last_time` are kept and the next write follows them;
-  /// the files of later entries and leftover temporaries are deleted.
+  /// the files of later entries (with their field state files,
+  /// field_state.hpp) and leftover temporaries are deleted.
   /// InputError if the .pvd cannot be read or a file cannot be removed.
   void continueAfter(double last_time);
 
   const std::string& pvdPath() const { return pvd_path_; }
   std::size_t steps() const { return entries_.size(); }
+  /// The path the next write() writes to (for files written beside it first).
+  std::string nextPath() const;
+  const VtuOptions& options() const { return options_; }
 
  private:
   struct Entry {

@@ -9,6 +9,7 @@
 // born since the old mesh). Cells of other origin (two divisions in between,
 // founders added later) raise InputError naming their lineage ids.
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -22,6 +23,12 @@ namespace tessella::mesh {
 /// For every cell slot of new_tissue: the slot of the old cell it comes from
 /// (by lineage id, then parent id), or -1 for dead slots.
 std::vector<int> ancestorCells(const Tissue& old_tissue, const Tissue& new_tissue);
+
+/// The old tissue as the transfer sees it: the lineage id of every cell slot
+/// (-1 for dead slots). The overloads below that take it need nothing else
+/// of the old tissue, so a caller may keep just this instead of a copy.
+std::vector<std::int64_t> cellLineage(const Tissue& tissue);
+std::vector<int> ancestorCells(std::span<const std::int64_t> old_lineage, const Tissue& new_tissue);
 
 /// P1 interpolation of a nodal field: each new node is located in the old
 /// mesh among the elements of the old cells its own cells come from (the
@@ -55,6 +62,14 @@ std::vector<double> cellIntegrals(const FeMesh& mesh, const Eigen::VectorXd& fie
 /// transferCellAmounts for cell-wise quantities. Where the interpolated total
 /// is zero the interpolated values are returned unscaled.
 Eigen::VectorXd transferConcentration(const Tissue& old_tissue, const FeMesh& old_mesh,
+                                      const Eigen::VectorXd& old_field, const Tissue& new_tissue,
+                                      const FeMesh& new_mesh);
+
+/// The same with the old tissue given by cellLineage(): the very same values.
+Eigen::VectorXd interpolateNodalField(std::span<const std::int64_t> old_lineage, const FeMesh& old_mesh,
+                                      const Eigen::VectorXd& old_field, const Tissue& new_tissue,
+                                      const FeMesh& new_mesh);
+Eigen::VectorXd transferConcentration(std::span<const std::int64_t> old_lineage, const FeMesh& old_mesh,
                                       const Eigen::VectorXd& old_field, const Tissue& new_tissue,
                                       const FeMesh& new_mesh);
 

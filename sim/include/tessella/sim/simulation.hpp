@@ -99,6 +99,14 @@ class Simulation {
   /// into every snapshot by SeriesOutput;
   /// continueRunState() reads it back.
   io::RunState runState() const;
+  /// runState() with what every stage keeps besides the tissue
+  /// (Stage::saveState: the diffusion stage's mesh and nodal fields, written
+  /// now to files beside `snapshot_path`): the state to write with a
+  /// snapshot at that path.
+  io::RunState snapshotState(const std::string& snapshot_path, const io::VtuOptions& options = {}) const;
+  /// Writes a snapshot a restart continues exactly: the stages' files first,
+  /// then the tissue with snapshotState() (io::writeTissueVtu, atomically).
+  void writeSnapshot(const std::string& path, const io::VtuOptions& options = {}) const;
 
   // --- composition ------------------------------------------------------------
   void addStage(std::unique_ptr<Stage> stage);

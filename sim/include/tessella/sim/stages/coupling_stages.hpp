@@ -99,6 +99,9 @@ struct DiffusionSpec {
   std::optional<double> dt;
   /// Integer cell property selecting per-type coefficients; empty: uniform.
   std::string type_property;
+  /// A restart from a snapshot starts the species afresh instead of
+  /// continuing the state saved beside it (diffusion.restart: fresh).
+  bool fresh_restart = false;
 
   bool hasReaction() const {
     for (const SpeciesSpec& s : species)
@@ -186,15 +189,36 @@ class DiffusionStage final : public MeshFieldStage {
   /// <species> (cell average) and <species>_amount, for every species.
   std::vector<std::string> cellPropertiesWritten() const override;
   /// Marks the source cells; transient: meshes and sets the initial field.
+  /// After continueFrom(): restores the mesh and fields saved beside the
+  /// snapshot instead (unless spec.fresh_restart).
   void prepare(Tissue& tissue, double time) override;
   void apply(Tissue& tissue, const StepContext& context) override;
   std::size_t solves() const { return schedule_.solves(); }
   /// Total amount (integral) of species `k` (in the order of the spec) after the last solve.
   double totalAmount(std::size_t k = 0) const { return total_.at(k); }
 
+  /// Run state diffusion.* (species, mode, totals) and, once there is a
+  /// mesh, the mesh with every field as io::FieldState beside the snapshot
+  /// (diffusion.fields names it, diffusion.fields.crc32 its checksum,
+  /// diffusion.fields.current whether the tissue is the one meshed,
+  /// diffusion.fields.carried the carried fields).
+  void saveState(const Tissue& tissue, const std::string& snapshot_path, const io::VtuOptions& options,
+                 io::RunState& state) const override;
+  void continueFrom(const std::string& snapshot_path, const io::RunState& state) override;
+
  private:
   DiffusionSpec spec_;
   void storeCellValues(Tissue& tissue);
+  /// Restores what saveState() saved; false when there is nothing to
+  /// restore (a tissue file that is not a run's snapshot). InputError naming
+  /// the snapshot or the field state file when it is missing or does not fit.
+  bool restore(const Tissue& tissue);
+
+  struct Restart {
+    std::string snapshot;
+    io::RunState state;
+  };
+  std::optional<Restart> restart_;
 
   SolveSchedule schedule_;
   std::optional<solvers::DiffusionReaction> solver_;

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "tessella/io/vtu.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/tissue.hpp"
 
@@ -58,6 +59,19 @@ class Stage {
   /// amounts, stresses): values other stages may read, such as a division
   /// gate. Marks (source cells) are not values and are not listed.
   virtual std::vector<std::string> cellPropertiesWritten() const { return {}; }
+
+  // --- restarts (a stage with state that is not in the tissue) ---------------
+  /// Called when a snapshot of the run is about to be written to
+  /// `snapshot_path` (Simulation::writeSnapshot): adds what a restart needs
+  /// of this stage to the snapshot's run state (keys "<name>.*"), after
+  /// writing anything larger to files beside the snapshot (with `options`).
+  /// Default: nothing (the stage's state is the tissue's).
+  virtual void saveState(const Tissue& /*tissue*/, const std::string& /*snapshot_path*/,
+                         const io::VtuOptions& /*options*/, io::RunState& /*state*/) const {}
+  /// A run restarted from a snapshot: called before prepare() with the
+  /// snapshot's path and run state, so that prepare() continues what
+  /// saveState() saved there instead of starting afresh.
+  virtual void continueFrom(const std::string& /*snapshot_path*/, const io::RunState& /*state*/) {}
 };
 
 }  // namespace tessella::sim
