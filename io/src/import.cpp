@@ -32,6 +32,12 @@ const std::vector<ImportFormat>& importFormats() {
        "(walls: the triangles between labels), triangles a curved sheet",
        &importLabelledVtu,
        &isLabelledVtu},
+      {"label_image",
+       {".tif", ".tiff", ".nrrd", ".nhdr", ".mha", ".mhd", ".vti"},
+       "segmented 2D label image (one integer label per pixel; TIFF, NRRD, MetaImage, VTK image data): each "
+       "label a cell of a planar tissue, walls along the pixel edges between labels",
+       &importLabelImage,
+       nullptr},
   };
   return formats;
 }

@@ -20,6 +20,27 @@
 
 namespace tessella::io {
 
+/// Options of the label_image format (docs/import.md, "Label images").
+struct LabelImageOptions {
+  /// Pixel size (x, y) or voxel size (x, y, z), overriding the file's; empty:
+  /// the file's spacing (1 where the file has none).
+  std::vector<double> voxel_size;
+  /// Labels that are no cell (PlantSeg and MARS use 0 and 1).
+  std::vector<std::int64_t> background{0, 1};
+  /// Labels dropped (made background) before anything else.
+  std::vector<std::int64_t> drop_labels;
+  /// Labels with fewer pixels are dropped or merged (small_cells); 0 keeps all.
+  std::int64_t min_cell_size = 0;
+  /// "drop" (make them background) or "merge" (into the neighbour sharing
+  /// the longest wall).
+  std::string small_cells = "drop";
+  /// Empty, or {x0, y0, x1, y1}: the pixels x0 <= i < x1, y0 <= j < y1 only.
+  std::vector<std::int64_t> crop;
+  /// A label in several disconnected pieces: an error (false) or one cell
+  /// per piece, each keeping the label (true).
+  bool keep_pieces = false;
+};
+
 struct ImportOptions {
   /// A row of importFormats() by name, or "auto": chosen from the file's
   /// extension and, where several formats share it, from its contents.
@@ -31,6 +52,8 @@ struct ImportOptions {
   double simplify = 0.0;
   /// Fix the harmless defects the format's importer knows (and report them).
   bool repair = false;
+  /// For label images only (format label_image); `simplify` is then in pixels.
+  LabelImageOptions image;
 };
 
 struct ImportReport {
@@ -124,6 +147,16 @@ ImportResult importLabelledVtu(const std::string& path, const ImportOptions& opt
 /// Whether a .vtu file declares a cell-data array named label, cell_label or
 /// cell_id and is not a Tessella snapshot (reads the XML header only).
 bool isLabelledVtu(const std::string& path);
+
+// --- label images -----------------------------------------------------------------
+
+/// A segmented 2D label image (TIFF, NRRD, MetaImage .mha/.mhd, VTK .vti; a
+/// 3D file with one z layer counts as 2D): each label not in
+/// options.image.background a cell of a planar tissue, walls along the pixel
+/// edges between labels, simplified (options.simplify, in pixels) with
+/// junctions fixed. Cell property `label` (int64). label_image.hpp holds the
+/// in-memory form (a NumPy array from Python).
+ImportResult importLabelImage(const std::string& path, const ImportOptions& options = {});
 
 /// A MorphoGraphX cell graph (cellGraph_*.ply): one vertex per cell with its
 /// label and `Geometry/Area`, one edge per neighbour pair listing the two
