@@ -55,7 +55,7 @@ LabelImage readLabelImage(const std::string& path) {
     vtkSmartPointer<vtkImageReader2> r;
     if (ext == ".tif" || ext == ".tiff") {
       auto tiff = vtkSmartPointer<vtkTIFFReader>::New();
-      tiff->SetOrientationType(4);  // ORIENTATION_BOTLEFT: row 0 as stored is j = 0, no flip (as NumPy reads it)
+      tiff->SetOrientationType(1);  // see docs/import.md: the first row stored is j = 0, as NumPy reads it
       r = tiff;
     } else if (ext == ".nrrd" || ext == ".nhdr") r = vtkSmartPointer<vtkNrrdReader>::New();
     else if (ext == ".mha" || ext == ".mhd") r = vtkSmartPointer<vtkMetaImageReader>::New();

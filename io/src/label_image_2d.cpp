@@ -106,7 +106,7 @@ void douglasPeucker(const std::vector<std::int32_t>& chain, std::size_t lo, std:
 struct Wall {
   std::vector<std::int32_t> chain;  // vertices, junction to junction (closed: first == last)
   double tol;
-  bool twin = false;  // another wall has the same two ends
+  bool keep_one = false;  // keep an inner vertex: another wall with the same two ends is a straight segment
 };
 
 void simplifyWall(const Wall& w, const std::vector<Vec3>& pos, std::vector<char>& keep) {
@@ -124,7 +124,7 @@ void simplifyWall(const Wall& w, const std::vector<Vec3>& pos, std::vector<char>
     douglasPeucker(ch, far, last, pos, w.tol, last - far > 1, keep);
     return;
   }
-  douglasPeucker(ch, 0, last, pos, w.tol, w.twin, keep);
+  douglasPeucker(ch, 0, last, pos, w.tol, w.keep_one, keep);
 }
 
 }  // namespace
@@ -449,11 +449,6 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
       junction[edges[e].u] = 1;
       walk(edges[e].u, static_cast<std::int32_t>(e));
     }
-  {
-    std::map<std::pair<std::int32_t, std::int32_t>, int> ends;
-    for (const Wall& wl : walls) ++ends[std::minmax(wl.chain.front(), wl.chain.back())];
-    for (Wall& wl : walls) wl.twin = ends[std::minmax(wl.chain.front(), wl.chain.back())] > 1;
-  }
 
   // Outlines: per cell, its boundary edges chained the way the cell runs (counter-clockwise).
   std::vector<std::vector<std::int32_t>> cell_edges(n_cells);
@@ -515,6 +510,19 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
   std::vector<char> keep(n_verts, 0);
   for (std::size_t v = 0; v < n_verts; ++v) keep[v] = junction[v];
   for (const Wall& wl : walls) simplifyWall(wl, pos, keep);
+  {
+    // Of the walls with the same two ends, one at most may become a straight segment (they would collapse).
+    std::map<std::pair<std::int32_t, std::int32_t>, int> straight;
+    for (Wall& wl : walls) {
+      if (wl.chain.front() == wl.chain.back() || wl.chain.size() < 3) continue;
+      bool inner = false;
+      for (std::size_t k = 1; k + 1 < wl.chain.size(); ++k) inner = inner || keep[wl.chain[k]];
+      if (inner) continue;
+      if (straight[std::minmax(wl.chain.front(), wl.chain.back())]++ == 0) continue;
+      wl.keep_one = true;
+      simplifyWall(wl, pos, keep);
+    }
+  }
   std::vector<std::vector<std::int32_t>> wall_cells(walls.size());
   for (std::size_t e = 0; e < edges.size(); ++e) {
     auto& cs = wall_cells[edge_wall[e]];
@@ -591,7 +599,7 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
       new_index[v] = static_cast<std::int32_t>(positions.size());
       const double x = img.origin[0] + (pos[v].x() + static_cast<double>(x0) - 0.5) * sx;
       const double y = img.origin[1] + (pos[v].y() + static_cast<double>(y0) - 0.5) * sy;
-      positions.emplace_back(o.scale * x, o.scale * y, o.scale * img.origin[2]);
+      positions.emplace_back(o.scale * x, o.scale * y, 0.0);
     }
   report.file_vertices = 0;
   report.simplified_vertices = n_verts - positions.size();

@@ -234,7 +234,7 @@ TEST_CASE("import: auto tells a MorphoGraphX mesh from other PLY layouts", "[io]
   const std::string upper = dir.file("GRID.PLY");
   m.write(upper);
   CHECK(detectImportFormat(upper).name == "morphographx");
-  CHECK(importFormatNames() == std::vector<std::string>{"auto", "morphographx", "cell_complex", "labelled_vtu"});
+  CHECK(importFormatNames() == std::vector<std::string>{"auto", "morphographx", "cell_complex", "labelled_vtu", "label_image"});
 }
 
 TEST_CASE("mgx cell graph: labels, areas and neighbour pairs by label", "[io][import]") {
