@@ -322,7 +322,8 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
     }
   if (pieces.empty())
     throw InputError(file + ": no cells: every pixel is background (" + labelList(io.background) + ")" +
-                     (io.drop_labels.empty() && io.min_cell_size == 0 ? "" : ", dropped or smaller than min_cell_size"));
+                     (io.drop_labels.empty() && io.min_cell_size == 0 ? ""
+                                                                      : ", dropped or smaller than min_cell_size"));
   std::vector<std::size_t> order(pieces.size());
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(), [&](std::size_t p, std::size_t q) {

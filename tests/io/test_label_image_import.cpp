@@ -476,7 +476,8 @@ TEST_CASE("label image errors name the file, the label and the value", "[io][lab
   SECTION("voxel size") {
     LabelImageOptions o;
     o.voxel_size = {1.0, 0.0};
-    CHECK_THROWS_WITH(tissueFromLabelImage(img, withImage(o)), Contains("'drawn': voxel_size y = 0 must be a positive"));
+    CHECK_THROWS_WITH(tissueFromLabelImage(img, withImage(o)),
+                      Contains("'drawn': voxel_size y = 0 must be a positive"));
     o.voxel_size = {-2.0, 1.0};
     CHECK_THROWS_WITH(tissueFromLabelImage(img, withImage(o)), Contains("voxel_size x = -2"));
     LabelImage bad = img;
@@ -501,7 +502,8 @@ TEST_CASE("label image errors name the file, the label and the value", "[io][lab
     f.spacing = {0.5, 0.5, 1};
     const std::string floats = dir.file("float.vti");
     writeVtkImage(f, floats, true);
-    CHECK_THROWS_WITH(importTissue(floats), Contains("'" + floats + "' holds float values: a label image holds integers"));
+    CHECK_THROWS_WITH(importTissue(floats),
+                      Contains("'" + floats + "' holds float values: a label image holds integers"));
     LabelImage vol = f;
     vol.dims = {4, 1, 2};
     const std::string three = dir.file("vol.mha");
