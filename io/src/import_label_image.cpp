@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <limits>
+#include <type_traits>
 
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
@@ -15,6 +17,7 @@
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
 #include <vtkTIFFReader.h>
+#include <vtkSetGet.h>
 #include <vtkType.h>
 #include <vtkXMLImageDataReader.h>
 
@@ -35,6 +38,21 @@ bool integerScalar(int vtk_type) {
       return true;
     default:
       return false;
+  }
+}
+
+template <typename T>
+void copyLabels(const T* values, std::vector<std::int64_t>& labels, const std::string& file) {
+  if constexpr (!std::is_integral_v<T>) {
+    throw InputError("label image " + file + " holds non-integer values");
+  } else {
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+      if constexpr (std::is_unsigned_v<T> && sizeof(T) == 8)
+        if (values[i] > static_cast<T>(std::numeric_limits<std::int64_t>::max()))
+          throw InputError("label image " + file + ": pixel " + std::to_string(i) + " has label " +
+                           std::to_string(values[i]) + ", beyond a 64-bit signed integer");
+      labels[i] = static_cast<std::int64_t>(values[i]);
+    }
   }
 }
 
@@ -96,19 +114,10 @@ LabelImage readLabelImage(const std::string& path) {
     throw InputError("label image " + file + " has " + std::to_string(n) + " values for " + std::to_string(dims[0]) +
                      " x " + std::to_string(dims[1]) + " x " + std::to_string(dims[2]) + " pixels");
   img.labels.resize(static_cast<std::size_t>(n));
-  const bool unsigned64 = scalars->GetDataType() == VTK_UNSIGNED_LONG_LONG ||
-                          (scalars->GetDataType() == VTK_UNSIGNED_LONG && sizeof(unsigned long) == 8);
-  for (vtkIdType i = 0; i < n; ++i) {
-    const vtkVariant v = scalars->GetVariantValue(i);
-    if (unsigned64) {
-      const unsigned long long u = v.ToUnsignedLongLong();
-      if (u > static_cast<unsigned long long>(std::numeric_limits<std::int64_t>::max()))
-        throw InputError("label image " + file + ": pixel " + std::to_string(i) + " has label " + std::to_string(u) +
-                         ", beyond a 64-bit signed integer");
-      img.labels[static_cast<std::size_t>(i)] = static_cast<std::int64_t>(u);
-    } else {
-      img.labels[static_cast<std::size_t>(i)] = v.ToLongLong();
-    }
+  switch (scalars->GetDataType()) {
+    vtkTemplateMacro(copyLabels(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)), img.labels, file));
+    default:
+      throw InputError("label image " + file + ": unsupported scalar type " + scalars->GetDataTypeAsString());
   }
   return img;
 }

@@ -310,15 +310,18 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
     Label label;
     std::size_t first, pixels = 0;
   };
-  std::unordered_map<Index, std::size_t> piece_of_root;
+  std::vector<std::int32_t> piece_of_root(lab.size(), -1);  // by root pixel
   std::vector<Piece> pieces;
   for (std::int64_t j = 1; j < H - 1; ++j)
     for (std::int64_t i = 1; i < W - 1; ++i) {
       const Label a = lab[pix(i, j)];
       if (a == kOutside) continue;
-      const auto [it, fresh] = piece_of_root.emplace(uf.find(static_cast<Index>(pix(i, j))), pieces.size());
-      if (fresh) pieces.push_back({a, pix(i, j)});
-      ++pieces[it->second].pixels;
+      std::int32_t& piece = piece_of_root[uf.find(static_cast<Index>(pix(i, j)))];
+      if (piece < 0) {
+        piece = static_cast<std::int32_t>(pieces.size());
+        pieces.push_back({a, pix(i, j)});
+      }
+      ++pieces[static_cast<std::size_t>(piece)].pixels;
     }
   if (pieces.empty())
     throw InputError(file + ": no cells: every pixel is background (" + labelList(io.background) + ")" +
@@ -372,7 +375,7 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
     for (std::int64_t i = 1; i < W - 1; ++i)
       if (lab[pix(i, j)] != kOutside)
         cell[pix(i, j)] = static_cast<std::int32_t>(
-            cell_of_piece[piece_of_root.at(uf.find(static_cast<Index>(pix(i, j))))]);
+            cell_of_piece[static_cast<std::size_t>(piece_of_root[uf.find(static_cast<Index>(pix(i, j)))])]);
   auto cellName = [&](std::int32_t c) {
     return c < 0 ? std::string("the background") : "label " + std::to_string(pieces[order[c]].label);
   };

@@ -117,3 +117,25 @@ def test_rasterised_voronoi_tissue_through_a_tiff_file(tmp_path):
     areas = dict(zip(labels_of(from_array), from_array.cell_measures()))
     err = [abs(areas[c + 2] - a) / a for c, a in zip(original.cells(), original.cell_measures())]
     assert np.mean(err) < 0.02
+
+
+def test_random_label_images_give_valid_tissues_or_a_hole_error():
+    # Small noisy images: pieces, diagonal contacts and checkerboards everywhere.
+    rng = np.random.default_rng(0)
+    outcomes = {"valid": 0, "hole": 0}
+    for _ in range(400):
+        a = rng.integers(0, rng.integers(2, 6), size=(rng.integers(2, 12), rng.integers(2, 12)))
+        if len(np.unique(a)) < 2:
+            continue
+        for simplify in (0.0, 1.0, 3.0):
+            try:
+                t = tessella.tissue_from_label_image(a, keep_pieces=True, background=[0], simplify=simplify)
+            except tessella.InputError as e:
+                assert "has a hole: it surrounds" in str(e) or "no cells" in str(e), str(e)
+                outcomes["hole"] += 1
+                continue
+            ok, message = t.validate()
+            assert ok, (a, simplify, message)
+            outcomes["valid"] += 1
+            assert sorted(set(labels_of(t))) == sorted(set(np.unique(a)) - {0})
+    assert outcomes["valid"] > 500
