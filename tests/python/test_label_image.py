@@ -139,3 +139,17 @@ def test_random_label_images_give_valid_tissues_or_a_hole_error():
             outcomes["valid"] += 1
             assert sorted(set(labels_of(t))) == sorted(set(np.unique(a)) - {0})
     assert outcomes["valid"] > 500
+
+
+def test_the_bundled_label_image_is_what_its_script_writes(source_dir, tmp_path):
+    import subprocess
+    import sys
+    out = tmp_path / "cells_2d.tif"
+    subprocess.run([sys.executable, str(source_dir / "scripts" / "make_label_image.py"), str(out)], check=True)
+    assert out.read_bytes() == (source_dir / "configs" / "label_images" / "cells_2d.tif").read_bytes()
+    t, report = tessella.tissue_from_label_image_with_report(out, voxel_size=(0.5, 0.5), min_cell_size=20,
+                                                             small_cells="merge", simplify=1.0)
+    assert t.validate()[0]
+    # The specks (labels 500..502) went to the cells around them.
+    assert not {500, 501, 502} & set(labels_of(t))
+    assert sum("merged into" in note for note in report["notes"]) >= 3
