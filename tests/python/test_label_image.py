@@ -153,3 +153,56 @@ def test_the_bundled_label_image_is_what_its_script_writes(source_dir, tmp_path)
     # The specks (labels 500..502) went to the cells around them.
     assert not {500, 501, 502} & set(labels_of(t))
     assert sum("merged into" in note for note in report["notes"]) >= 3
+
+
+def shared_wall_lengths(t, labels, positions=None):
+    """{(label a, label b): length of the walls they share}, from consecutive shared vertices of a's loop."""
+    pos = t.positions() if positions is None else positions
+    loops = {c: list(t.cell_vertices(c)) for c in t.cells()}
+    out = {}
+    for c in t.cells():
+        loop = loops[c]
+        for n in t.cell_neighbors(c):
+            if n < c:
+                continue
+            other = set(loops[n])
+            length = sum(np.linalg.norm(pos[u] - pos[v]) for u, v in zip(loop, loop[1:] + loop[:1])
+                         if u in other and v in other)
+            out[tuple(sorted((labels[c], labels[n])))] = length
+    return out
+
+
+def test_a_real_meristem_projected_and_rasterised_keeps_its_cell_graph(source_dir):
+    # The MorphoGraphX meristem (128 cells, a curved L1 sheet), projected onto its best-fit plane and
+    # rasterised by label at 0.05 um per pixel (1478 x 1243): every cell lies inside the image, and the
+    # neighbour pairs (those of the MorphoGraphX cell graph: tests/sim/test_real_meristem.cpp) come back.
+    mesh = source_dir / "tests" / "data" / "mgx_meristem_cropped" / "mesh_meristem_cropped_T0.ply"
+    sheet = tessella.import_tissue(str(mesh))
+    sheet_labels = labels_of(sheet)
+    p = sheet.positions()
+    _, _, axes = np.linalg.svd(p - p.mean(axis=0))
+    flat = (p - p.mean(axis=0)) @ axes[:2].T
+    h = 0.05
+    lo = flat.min(axis=0) - 2 * h
+    nx, ny = (np.ceil((flat.max(axis=0) + 2 * h - lo) / h)).astype(int)
+    image = np.zeros((ny, nx), dtype=np.int32)
+    xs = lo[0] + (np.arange(nx) + 0.5) * h
+    ys = lo[1] + (np.arange(ny) + 0.5) * h
+    for c in sheet.cells():
+        poly = flat[sheet.cell_vertices(c)]
+        i0, j0 = np.floor((poly.min(axis=0) - lo) / h).astype(int)
+        i1, j1 = np.ceil((poly.max(axis=0) - lo) / h).astype(int) + 1
+        x, y = np.meshgrid(xs[i0:i1], ys[j0:j1])
+        block = image[j0:j1, i0:i1]
+        block[point_in_polygon(poly, x, y)] = sheet_labels[c]
+    # MorphoGraphX labels start at 1: only 0 is background here.
+    t = tessella.tissue_from_label_image(image, voxel_size=(h, h), simplify=1.0, background=[0])
+    assert t.validate()[0]
+    assert sorted(labels_of(t)) == sorted(sheet_labels)
+    flat3 = np.column_stack([flat, np.zeros(len(flat))])
+    want = shared_wall_lengths(sheet, sheet_labels, flat3)
+    got = shared_wall_lengths(t, labels_of(t))
+    assert len(want) == 340  # the cell graph's neighbour pairs at T0
+    # At this resolution the shortest wall spans enough pixels: the same pairs exactly.
+    assert min(want.values()) > 3 * h
+    assert set(got) == set(want)
