@@ -460,23 +460,27 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
     if (edges[e].left >= 0) cell_edges[edges[e].left].push_back(static_cast<std::int32_t>(e));
     if (edges[e].right >= 0) cell_edges[edges[e].right].push_back(static_cast<std::int32_t>(e));
   }
+  std::vector<std::uint8_t> edge_used(edges.size(), 0);  // 1: walked by its left cell, 2: by its right one
   std::vector<std::vector<std::int32_t>> outline_edges(n_cells);  // the edges in loop order
   std::vector<std::vector<std::int32_t>> outlines(n_cells);       // the vertices
   for (std::size_t c = 0; c < n_cells; ++c) {
     const auto ci = static_cast<std::int32_t>(c);
     auto from = [&](std::int32_t e) { return edges[e].left == ci ? edges[e].u : edges[e].v; };
     auto to = [&](std::int32_t e) { return edges[e].left == ci ? edges[e].v : edges[e].u; };
-    std::unordered_map<std::int32_t, std::int32_t> out;  // vertex -> the cell's edge leaving it
-    for (const std::int32_t e : cell_edges[c]) out.emplace(from(e), e);
+    // The cell's edge leaving vertex v: one at most, as pinched corners are bridged.
+    auto out = [&](std::int32_t v) {
+      for (int k = 0; k < degree[v]; ++k) {
+        const std::int32_t e = incident[v][k];
+        if ((edges[e].left == ci && edges[e].u == v) || (edges[e].right == ci && edges[e].v == v)) return e;
+      }
+      throw InputError(file + ": " + cellName(ci) + ": its outline is not closed (an internal error)");
+    };
     std::vector<std::vector<std::int32_t>> loops;
-    std::unordered_map<std::int32_t, char> used;
-    std::vector<std::int32_t> sorted = cell_edges[c];
-    std::sort(sorted.begin(), sorted.end());
-    for (const std::int32_t e0 : sorted) {
-      if (used.count(e0)) continue;
+    for (const std::int32_t e0 : cell_edges[c]) {  // in increasing order
+      if (edge_used[e0] & (edges[e0].left == ci ? 1 : 2)) continue;
       loops.emplace_back();
-      for (std::int32_t e = e0; !used.count(e); e = out.at(to(e))) {
-        used[e] = 1;
+      for (std::int32_t e = e0; !(edge_used[e] & (edges[e].left == ci ? 1 : 2)); e = out(to(e))) {
+        edge_used[e] |= edges[e].left == ci ? 1 : 2;
         loops.back().push_back(e);
       }
     }
