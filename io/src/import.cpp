@@ -109,6 +109,10 @@ ImportResult importTissue(const std::string& path, const ImportOptions& options)
       throw InputError("unknown import format '" + options.format + "'; choose auto or one of:\n" +
                        importFormatList());
   }
+  if (format->name != "label_image" && options.image != LabelImageOptions{})
+    throw InputError("cannot import '" + path + "': the label-image options (voxel_size, background, drop_labels, "
+                     "min_cell_size, small_cells, crop, keep_pieces) apply to label images only, not to " +
+                     format->name);
   ImportResult result = format->read(path, options);
   result.report.format = format->name;
   return result;

@@ -509,6 +509,13 @@ TEST_CASE("label image errors name the file, the label and the value", "[io][lab
     const std::string three = dir.file("vol.mha");
     writeVtkImage(vol, three);
     CHECK_THROWS_WITH(importTissue(three), Contains("'" + three + "': a 3D image of 4 x 1 x 2 voxels"));
+    LabelImageOptions only_images;
+    only_images.min_cell_size = 3;
+    const std::string ply = dir.file("cells.ply");
+    std::ofstream(ply) << "ply\n";
+    ImportOptions as_mesh = withImage(only_images);
+    as_mesh.format = "morphographx";
+    CHECK_THROWS_WITH(importTissue(ply, as_mesh), Contains("apply to label images only, not to morphographx"));
     const std::string missing = dir.file("missing.tif");
     CHECK_THROWS_WITH(importTissue(missing), Contains("no such file"));
     const std::string junk = dir.file("junk.mha");

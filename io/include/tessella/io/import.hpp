@@ -39,6 +39,8 @@ struct LabelImageOptions {
   /// A label in several disconnected pieces: an error (false) or one cell
   /// per piece, each keeping the label (true).
   bool keep_pieces = false;
+
+  bool operator==(const LabelImageOptions&) const = default;
 };
 
 struct ImportOptions {
