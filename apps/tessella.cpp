@@ -10,6 +10,8 @@
 //                 [--volume-method cell_by_cell|whole_tissue] [--max-elements N] [--config CFG.yaml]
 //   tessella import FILE --out TISSUE.vtu [--format F] [--scale S] [--simplify TOL] [--repair]
 //                   [--label-array NAME]
+//                   [--voxel-size X,Y] [--background L,..] [--drop-labels L,..] [--min-cell-size N]
+//                   [--small-cells drop|merge] [--crop X0,Y0,X1,Y1] [--keep-pieces]   (label images)
 //   tessella export SNAPSHOT.vtu --out FILE.ply [--binary]   (cell-complex PLY, docs/import.md)
 //   tessella render RUN_DIR|SERIES.pvd|SNAPSHOT.vtu [--property NAME] [--out DIR] [--size WxH] [--every N]
 //                   [--view X,Y,Z] [--range LOW,HIGH] [--no-movie]
@@ -166,12 +168,14 @@ struct ImportArgs {
   std::string file, out, format = "auto", label_array;
   double scale = 1.0, simplify = 0.0;
   bool repair = false;
+  tessella::io::LabelImageOptions image;
 };
 
 int importCommand(const ImportArgs& a) {
   using namespace tessella;
-  const io::ImportResult r =
-      io::importTissue(a.file, io::ImportOptions{a.format, a.scale, a.simplify, a.repair, a.label_array});
+  io::ImportOptions options{a.format, a.scale, a.simplify, a.repair, a.label_array};
+  options.image = a.image;
+  const io::ImportResult r = io::importTissue(a.file, options);
   const sim::TissueSummary s = sim::summarizeTissue(r.tissue);
   fmt::print("{}", sim::formatImportSummary(r.report, s, r.tissue.time()));
   if (!s.validation.ok) {
@@ -381,11 +385,29 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember(tessella::io::importFormatNames()));
   import->add_option("--scale", import_args.scale, "Multiply every position by this (unit conversion)");
   import->add_option("--simplify", import_args.simplify,
-                     "Simplify wall polylines between junctions to this tolerance (0 = keep every vertex)");
+                     "Simplify wall polylines between junctions to this tolerance (0 = keep every vertex; label "
+                     "images: in pixels)");
   import->add_flag("--repair", import_args.repair, "Repair harmless defects (a one-triangle sliver), each reported");
   import->add_option("--label-array", import_args.label_array,
                      "labelled_mesh, labelled_vtu: the face property / cell-data array (OBJ: g, o or usemtl) holding "
                      "each face's cell label; A,B for the cells on either side (default: label, cell_label, cell_id)");
+  import->add_option("--voxel-size", import_args.image.voxel_size,
+                     "Label images: pixel size X,Y (or X,Y,Z), overriding the file's")
+      ->delimiter(',');
+  import->add_option("--background", import_args.image.background,
+                     "Label images: the labels that are no cell (default 0,1)")
+      ->delimiter(',');
+  import->add_option("--drop-labels", import_args.image.drop_labels, "Label images: labels to drop (made background)")
+      ->delimiter(',');
+  import->add_option("--min-cell-size", import_args.image.min_cell_size,
+                     "Label images: labels with fewer pixels are dropped or merged (--small-cells)");
+  import->add_option("--small-cells", import_args.image.small_cells,
+                     "Label images: drop (default) or merge (into the neighbour sharing the longest wall)")
+      ->check(CLI::IsMember({"drop", "merge"}));
+  import->add_option("--crop", import_args.image.crop, "Label images: only the pixels X0 <= i < X1, Y0 <= j < Y1")
+      ->delimiter(',');
+  import->add_flag("--keep-pieces", import_args.image.keep_pieces,
+                   "Label images: a label in disconnected pieces becomes one cell per piece (else an error)");
 
   auto* export_ = app.add_subcommand(
       "export", "Write a tissue snapshot (.vtu) as a cell-complex PLY file (OpenAlea property topomesh)");

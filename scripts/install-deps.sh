@@ -11,7 +11,7 @@ packages=(
   libvtk9-dev zlib1g-dev libyaml-cpp-dev libcli11-dev libfmt-dev libmuparser-dev
   catch2
   libsuitesparse-dev libhypre-dev
-  python3-dev pybind11-dev python3-numpy python3-pytest
+  python3-dev pybind11-dev python3-numpy python3-pytest python3-pil
   libcairo2-dev snakemake python3-matplotlib chromium
 )
 

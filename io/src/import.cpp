@@ -39,6 +39,12 @@ const std::vector<ImportFormat>& importFormats() {
        "(walls: the triangles between labels), triangles a curved sheet",
        &importLabelledVtu,
        &isLabelledVtu},
+      {"label_image",
+       {".tif", ".tiff", ".nrrd", ".nhdr", ".mha", ".mhd", ".vti"},
+       "segmented 2D label image (one integer label per pixel; TIFF, NRRD, MetaImage, VTK image data): each "
+       "label a cell of a planar tissue, walls along the pixel edges between labels",
+       &importLabelImage,
+       nullptr},
   };
   return formats;
 }
@@ -129,6 +135,10 @@ ImportResult importTissue(const std::string& path, const ImportOptions& options)
   if (!options.label_array.empty() && format->name != "labelled_mesh" && format->name != "labelled_vtu")
     throw InputError("cannot import '" + path + "': label_array ('" + options.label_array +
                      "') applies to the labelled_mesh and labelled_vtu formats, not " + format->name);
+  if (format->name != "label_image" && options.image != LabelImageOptions{})
+    throw InputError("cannot import '" + path + "': the label-image options (voxel_size, background, drop_labels, "
+                     "min_cell_size, small_cells, crop, keep_pieces) apply to label images only, not to " +
+                     format->name);
   ImportResult result = format->read(path, options);
   result.report.format = format->name;
   return result;

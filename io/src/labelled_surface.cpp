@@ -17,6 +17,7 @@
 #include <unordered_map>
 
 #include "labelled_surface.hpp"
+#include "polyline_simplification.hpp"
 #include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
@@ -393,29 +394,6 @@ SheetCells findCells(LabelledSurface& m, bool repair, ImportReport& report) {
 }
 
 // --- simplification of wall polylines ---------------------------------------
-
-double pointSegmentDistance(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double len2 = ab.squaredNorm();
-  const double t = len2 > 0 ? std::clamp((p - a).dot(ab) / len2, 0.0, 1.0) : 0.0;
-  return (p - (a + t * ab)).norm();
-}
-
-// Douglas-Peucker on chain[lo..hi] (ends kept), marking kept vertices.
-void douglasPeucker(const std::vector<Index>& chain, std::size_t lo, std::size_t hi, const std::vector<Vec3>& pos,
-                    double tol, bool keep_one, std::vector<char>& keep) {
-  if (hi <= lo + 1) return;
-  double worst = -1;
-  std::size_t at = lo;
-  for (std::size_t i = lo + 1; i < hi; ++i) {
-    const double d = pointSegmentDistance(pos[chain[i]], pos[chain[lo]], pos[chain[hi]]);
-    if (d > worst) worst = d, at = i;
-  }
-  if (worst <= tol && !keep_one) return;
-  keep[chain[at]] = 1;
-  douglasPeucker(chain, lo, at, pos, tol, false, keep);
-  douglasPeucker(chain, at, hi, pos, tol, false, keep);
-}
 
 // Simplifies every wall (a chain of outline edges between junctions, shared
 // by the same cells) with tolerance `tol`; both sides of a wall see the same

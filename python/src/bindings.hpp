@@ -35,6 +35,7 @@ void bindLinearSolver(py::module_& m);
 void bindDiffusion(py::module_& m);
 void bindCompartments(py::module_& m);
 void bindElasticity(py::module_& m);
+void bindLabelImage(py::module_& m);
 
 /// Python code names cells by their slot index; a dead or out-of-range one
 /// is bad input (ValueError), never undefined behaviour.

@@ -17,6 +17,7 @@ PYBIND11_MODULE(tessella, m) {
   bindGrowth(m);
   bindDivision(m);
   bindIo(m);
+  bindLabelImage(m);
   bindSim(m);
   bindMesh(m);
   bindFieldTransfer(m);

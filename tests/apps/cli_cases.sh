@@ -559,6 +559,66 @@ case "$case_name" in
       || fail "unclear error: $(cat "$tmp/stderr")"
     [ ! -e "$tmp/x.vtu" ] || fail "an output file was left"
     ;;
+  import_label_image)
+    # A discrete Voronoi label image (nearest of 30 seeds, labels 2..31) written as TIFF by Pillow.
+    /usr/bin/python3 - "$tmp" <<'PY' || fail "could not write the images"
+import sys
+import numpy as np
+from PIL import Image
+rng = np.random.default_rng(3)
+seeds = rng.uniform(0, 256, size=(30, 2))
+y, x = np.mgrid[0:256, 0:256] + 0.5
+d = (x[..., None] - seeds[:, 0]) ** 2 + (y[..., None] - seeds[:, 1]) ** 2
+labels = (np.argmin(d, axis=2) + 2).astype(np.uint16)
+Image.fromarray(labels).save(sys.argv[1] + "/cells.tif")
+split = labels.copy()
+split[0:3, 0:3] = labels[128, 128]  # a second piece of the label at the centre
+Image.fromarray(split).save(sys.argv[1] + "/split.tif")
+Image.fromarray(labels.astype(np.float32)).save(sys.argv[1] + "/float.tif")
+print(len(np.unique(labels)), int(labels[128, 128]), file=open(sys.argv[1] + "/facts", "w"))
+PY
+    read -r ncells centre <"$tmp/facts"
+    "$tessella" import "$tmp/cells.tif" --out "$tmp/t.vtu" --voxel-size 0.5,0.5 --simplify 1 >"$tmp/import" \
+      2>"$tmp/stderr" || fail "import failed: $(cat "$tmp/stderr")"
+    cat "$tmp/import"
+    grep -Eq '^format +label_image \(0 vertices, 65536 pixels in the file\)$' "$tmp/import" || fail "no format line"
+    grep -Eq "^cells +$ncells\$" "$tmp/import" || fail "expected $ncells cells"
+    # Every pixel is a cell's: 256 x 256 pixels of 0.5 x 0.5.
+    grep -Eq '^total area +16384$' "$tmp/import" || fail "expected total area 16384"
+    grep -Eq '^validate +ok$' "$tmp/import" || fail "expected validate ok"
+    [ -f "$tmp/t.vtu" ] || fail "no snapshot written"
+    # The same through the YAML generator.
+    cat >"$tmp/from_image.yaml" <<YAML
+tissue:
+  generator: import
+  import:
+    file: cells.tif
+    voxel_size: [0.5, 0.5]
+    simplify: 1.0
+time:
+  start: 0.0
+  end: 0.0
+  dt: 1.0
+YAML
+    "$tessella" run "$tmp/from_image.yaml" --out "$tmp/run" -q || fail "run from the image failed"
+    "$tessella" info "$tmp/run/tissue_000000.vtu" >"$tmp/info" || fail "info failed"
+    for key in cells 'total area' 'cell area'; do
+      [ "$(grep "^$key" "$tmp/info")" = "$(grep "^$key" "$tmp/import")" ] || fail "$key differs from tessella import"
+    done
+    # Errors: exit 1, the file, label and value named, nothing written.
+    "$tessella" import "$tmp/split.tif" --out "$tmp/s.vtu" 2>"$tmp/stderr"
+    [ $? -eq 1 ] || fail "a split label was not an error"
+    grep -q "split.tif': label $centre is made of 2 disconnected pieces" "$tmp/stderr" \
+      || fail "unclear error: $(cat "$tmp/stderr")"
+    [ ! -e "$tmp/s.vtu" ] || fail "an output file was left"
+    "$tessella" import "$tmp/split.tif" --out "$tmp/s.vtu" --keep-pieces >/dev/null || fail "--keep-pieces failed"
+    "$tessella" import "$tmp/float.tif" --out "$tmp/f.vtu" 2>"$tmp/stderr"
+    [ $? -eq 1 ] && grep -q "float.tif' holds float values" "$tmp/stderr" || fail "float image: $(cat "$tmp/stderr")"
+    "$tessella" import "$tmp/cells.tif" --out "$tmp/z.vtu" --voxel-size 0,1 2>"$tmp/stderr"
+    [ $? -eq 1 ] && grep -q "voxel_size x = 0 must be a positive" "$tmp/stderr" \
+      || fail "zero voxel size: $(cat "$tmp/stderr")"
+    [ ! -e "$tmp/f.vtu" ] && [ ! -e "$tmp/z.vtu" ] || fail "an output file was left"
+    ;;
   render_run)
     "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/hex" -q || fail "run failed"
     "$tessella" render "$tmp/hex" --property size --size 320x240 --no-movie >"$tmp/stdout" 2>"$tmp/stderr" \

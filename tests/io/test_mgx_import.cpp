@@ -235,7 +235,7 @@ TEST_CASE("import: auto tells a MorphoGraphX mesh from other PLY layouts", "[io]
   m.write(upper);
   CHECK(detectImportFormat(upper).name == "morphographx");
   CHECK(importFormatNames() == std::vector<std::string>{"auto", "morphographx", "cell_complex", "labelled_mesh",
-                                                        "labelled_vtu"});
+                                                        "labelled_vtu", "label_image"});
 }
 
 TEST_CASE("mgx cell graph: labels, areas and neighbour pairs by label", "[io][import]") {

@@ -17,6 +17,29 @@ namespace {
 
 std::string sectionOf(const std::string& name) { return "tissue." + name; }
 
+// "0, 1" -> {0, 1}: the integer lists of the label-image keys (a ParamError at `param` otherwise).
+std::vector<std::int64_t> integerList(const ParamValues& p, const std::string& param) {
+  std::vector<std::int64_t> out;
+  std::string text = p.getString(param);
+  std::replace(text.begin(), text.end(), ',', ' ');
+  std::istringstream words(text);
+  std::string word;
+  while (words >> word) {
+    std::size_t used = 0;
+    long long value = 0;
+    try {
+      value = std::stoll(word, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != word.size())
+      throw ParamError(param, "'" + word + "' in '" + p.getString(param) + "' is no integer (give integers "
+                              "separated by commas, e.g. \"0, 1\")");
+    out.push_back(value);
+  }
+  return out;
+}
+
 // The values given for `params` under `section` (defaults are the params' own:
 // completeParams fills them in).
 ParamValues givenValues(const Config& c, const std::string& section, const std::vector<ParamSpec>& params) {
@@ -81,7 +104,8 @@ const Registry<FileSourceReader>& tissueFileSources() {
              .above(0),
          ParamSpec("simplify", ParamType::Float,
                    "Douglas-Peucker tolerance (after `scale`) for the wall polylines between junctions; both sides "
-                   "of a wall get the same polyline. 0 keeps every wall vertex.")
+                   "of a wall get the same polyline. 0 keeps every wall vertex. Label images: in pixels, 0 keeps every "
+                   "corner where the pixel boundary turns.")
              .byDefault(0.0)
              .atLeast(0),
          ParamSpec("repair", ParamType::Bool,
@@ -93,12 +117,47 @@ const Registry<FileSourceReader>& tissueFileSources() {
                    "face's cell label (OBJ: the statement `g`, `o` or `usemtl`); `A,B` names two, the cells on "
                    "either side of each face (a 3D tissue). Empty: the first of `label`, `cell_label`, `cell_id`, "
                    "else the pair `label_front`, `label_back`.")
-             .byDefault(std::string(""))},
+             .byDefault(std::string("")),
+         ParamSpec("voxel_size", ParamType::Vec2,
+                   "Label images: the pixel size [x, y], overriding the file's (docs/import.md, \"Label images\").")
+             .whenAbsent("the pixel size the file gives (1 where it gives none)"),
+         ParamSpec("background", ParamType::String,
+                   "Label images: the labels that are no cell, integers separated by commas (PlantSeg and MARS "
+                   "use 0 and 1).")
+             .byDefault(std::string("0, 1")),
+         ParamSpec("drop_labels", ParamType::String,
+                   "Label images: labels to drop (made background), integers separated by commas.")
+             .byDefault(std::string("")),
+         ParamSpec("min_cell_size", ParamType::Int,
+                   "Label images: labels with fewer pixels are dropped or merged (`small_cells`), each reported; 0 "
+                   "keeps every label.")
+             .byDefault(std::int64_t{0})
+             .atLeast(0),
+         ParamSpec("small_cells", ParamType::Enum,
+                   "Label images: what happens to a label smaller than `min_cell_size`: `drop` (made background) "
+                   "or `merge` (into the neighbour sharing the longest wall).")
+             .oneOf({"drop", "merge"})
+             .byDefault(std::string("drop")),
+         ParamSpec("crop", ParamType::String,
+                   "Label images: `x0, y0, x1, y1` keeps the pixels x0 <= i < x1, y0 <= j < y1 only; empty keeps "
+                   "the whole image.")
+             .byDefault(std::string("")),
+         ParamSpec("keep_pieces", ParamType::Bool,
+                   "Label images: a label in several disconnected pieces becomes one cell per piece (each keeping "
+                   "the label); without it, an error.")
+             .byDefault(false)},
         [](const ParamValues& p) -> TissueSpec {
           ImportSpec spec{p.getString("file"),
                           io::ImportOptions{p.getString("format"), p.getFloat("scale"), p.getFloat("simplify"),
                                             p.getBool("repair"), p.getString("label_array")},
                           nullptr};
+          if (p.has("voxel_size")) spec.options.image.voxel_size = p.getList("voxel_size");
+          spec.options.image.background = integerList(p, "background");
+          spec.options.image.drop_labels = integerList(p, "drop_labels");
+          spec.options.image.min_cell_size = p.getInt("min_cell_size");
+          spec.options.image.small_cells = p.getString("small_cells");
+          spec.options.image.crop = integerList(p, "crop");
+          spec.options.image.keep_pieces = p.getBool("keep_pieces");
           spec.tissue = std::make_shared<const Tissue>(io::importTissue(spec.file, spec.options).tissue);
           return spec;
         }}});
@@ -144,6 +203,8 @@ TissueSpec readTissueSection(const Config& c) {
       completeParams(source.params, givenValues(c, section, source.params), "tissue source '" + name + "'");
   try {
     return source.make(values);
+  } catch (const ParamError& e) {
+    throw c.errorAt(joinPath(section, e.param()), e.what());
   } catch (const InputError& e) {
     throw c.errorAt(joinPath(section, "file"), e.what());
   }

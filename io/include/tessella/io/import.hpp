@@ -20,6 +20,29 @@
 
 namespace tessella::io {
 
+/// Options of the label_image format (docs/import.md, "Label images").
+struct LabelImageOptions {
+  /// Pixel size (x, y) or voxel size (x, y, z), overriding the file's; empty:
+  /// the file's spacing (1 where the file has none).
+  std::vector<double> voxel_size;
+  /// Labels that are no cell (PlantSeg and MARS use 0 and 1).
+  std::vector<std::int64_t> background{0, 1};
+  /// Labels dropped (made background) before anything else.
+  std::vector<std::int64_t> drop_labels;
+  /// Labels with fewer pixels are dropped or merged (small_cells); 0 keeps all.
+  std::int64_t min_cell_size = 0;
+  /// "drop" (make them background) or "merge" (into the neighbour sharing
+  /// the longest wall).
+  std::string small_cells = "drop";
+  /// Empty, or {x0, y0, x1, y1}: the pixels x0 <= i < x1, y0 <= j < y1 only.
+  std::vector<std::int64_t> crop;
+  /// A label in several disconnected pieces: an error (false) or one cell
+  /// per piece, each keeping the label (true).
+  bool keep_pieces = false;
+
+  bool operator==(const LabelImageOptions&) const = default;
+};
+
 struct ImportOptions {
   /// A row of importFormats() by name, or "auto": chosen from the file's
   /// extension and, where several formats share it, from its contents.
@@ -37,6 +60,8 @@ struct ImportOptions {
   /// either side of each face (a 3D tissue). Empty: the first of label,
   /// cell_label, cell_id present, else the pair label_front, label_back.
   std::string label_array = "";
+  /// For label images only (format label_image); `simplify` is then in pixels.
+  LabelImageOptions image;
 };
 
 struct ImportReport {
@@ -145,6 +170,15 @@ ImportResult importLabelledMesh(const std::string& path, const ImportOptions& op
 /// Whether a file could be a labelled mesh: any .obj or .vtp; a .ply with
 /// vertex and face elements and a face vertex list (reads the header only).
 bool isLabelledMesh(const std::string& path);
+// --- label images -----------------------------------------------------------------
+
+/// A segmented 2D label image (TIFF, NRRD, MetaImage .mha/.mhd, VTK .vti; a
+/// 3D file with one z layer counts as 2D): each label not in
+/// options.image.background a cell of a planar tissue, walls along the pixel
+/// edges between labels, simplified (options.simplify, in pixels) with
+/// junctions fixed. Cell property `label` (int64). label_image.hpp holds the
+/// in-memory form (a NumPy array from Python).
+ImportResult importLabelImage(const std::string& path, const ImportOptions& options = {});
 
 /// A MorphoGraphX cell graph (cellGraph_*.ply): one vertex per cell with its
 /// label and `Geometry/Area`, one edge per neighbour pair listing the two

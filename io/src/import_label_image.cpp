@@ -1,0 +1,131 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
+// Label images read through VTK's image readers (TIFF, NRRD, MetaImage, VTK
+// XML image data) and imported as tissues (label_image_2d.cpp).
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <limits>
+#include <type_traits>
+
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkImageReader2.h>
+#include <vtkMetaImageReader.h>
+#include <vtkNrrdReader.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkTIFFReader.h>
+#include <vtkSetGet.h>
+#include <vtkType.h>
+#include <vtkXMLImageDataReader.h>
+
+#include "tessella/io/import.hpp"
+#include "tessella/io/label_image.hpp"
+#include "tessella/tissue/errors.hpp"
+#include "vtk_error_capture.hpp"
+
+namespace tessella::io {
+
+namespace {
+
+bool integerScalar(int vtk_type) {
+  switch (vtk_type) {
+    case VTK_CHAR: case VTK_SIGNED_CHAR: case VTK_UNSIGNED_CHAR: case VTK_SHORT: case VTK_UNSIGNED_SHORT:
+    case VTK_INT: case VTK_UNSIGNED_INT: case VTK_LONG: case VTK_UNSIGNED_LONG: case VTK_LONG_LONG:
+    case VTK_UNSIGNED_LONG_LONG: case VTK_ID_TYPE:
+      return true;
+    default:
+      return false;
+  }
+}
+
+template <typename T>
+void copyLabels(const T* values, std::vector<std::int64_t>& labels, const std::string& file) {
+  if constexpr (!std::is_integral_v<T>) {
+    throw InputError("label image " + file + " holds non-integer values");
+  } else {
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+      if constexpr (std::is_unsigned_v<T> && sizeof(T) == 8)
+        if (values[i] > static_cast<T>(std::numeric_limits<std::int64_t>::max()))
+          throw InputError("label image " + file + ": pixel " + std::to_string(i) + " has label " +
+                           std::to_string(values[i]) + ", beyond a 64-bit signed integer");
+      labels[i] = static_cast<std::int64_t>(values[i]);
+    }
+  }
+}
+
+}  // namespace
+
+LabelImage readLabelImage(const std::string& path) {
+  const std::string file = "'" + path + "'";
+  if (!std::filesystem::is_regular_file(path)) throw InputError("cannot read label image " + file + ": no such file");
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  auto capture = vtkSmartPointer<detail::VtkErrorCapture>::New();
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (ext == ".vti") {
+    auto r = vtkSmartPointer<vtkXMLImageDataReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  } else {
+    vtkSmartPointer<vtkImageReader2> r;
+    if (ext == ".tif" || ext == ".tiff") {
+      auto tiff = vtkSmartPointer<vtkTIFFReader>::New();
+      tiff->SetOrientationType(1);  // see docs/import.md: the first row stored is j = 0, as NumPy reads it
+      r = tiff;
+    } else if (ext == ".nrrd" || ext == ".nhdr") r = vtkSmartPointer<vtkNrrdReader>::New();
+    else if (ext == ".mha" || ext == ".mhd") r = vtkSmartPointer<vtkMetaImageReader>::New();
+    else
+      throw InputError("cannot read label image " + file + ": '" + ext +
+                       "' is no image format read (.tif, .tiff, .nrrd, .nhdr, .mha, .mhd, .vti)");
+    if (!r->CanReadFile(path.c_str()))
+      throw InputError("cannot read label image " + file + ": not a readable " + ext + " file");
+    r->SetFileName(path.c_str());
+    reader = r;
+  }
+  capture->watch(reader);
+  reader->Update();
+  vtkImageData* data = vtkImageData::SafeDownCast(reader->GetOutputDataObject(0));
+  if (capture->failed() || !data)
+    throw InputError("cannot read label image " + file + ": " +
+                     (capture->failed() ? capture->message() : std::string("no image in the file")));
+  vtkDataArray* scalars = data->GetPointData() ? data->GetPointData()->GetScalars() : nullptr;
+  if (!scalars && data->GetPointData() && data->GetPointData()->GetNumberOfArrays() > 0)
+    scalars = data->GetPointData()->GetArray(0);
+  if (!scalars) throw InputError("label image " + file + " holds no pixel values");
+  if (!integerScalar(scalars->GetDataType()))
+    throw InputError("label image " + file + " holds " + std::string(scalars->GetDataTypeAsString()) +
+                     " values: a label image holds integers (one label per pixel), not intensities");
+  if (scalars->GetNumberOfComponents() != 1)
+    throw InputError("label image " + file + " has " + std::to_string(scalars->GetNumberOfComponents()) +
+                     " components per pixel (colour?): a label image has one integer per pixel");
+  LabelImage img;
+  img.name = path;
+  int dims[3];
+  data->GetDimensions(dims);
+  double spacing[3], origin[3];
+  data->GetSpacing(spacing);
+  data->GetOrigin(origin);
+  for (int k = 0; k < 3; ++k) img.dims[k] = dims[k], img.spacing[k] = spacing[k], img.origin[k] = origin[k];
+  const vtkIdType n = scalars->GetNumberOfTuples();
+  if (n != static_cast<vtkIdType>(dims[0]) * dims[1] * dims[2])
+    throw InputError("label image " + file + " has " + std::to_string(n) + " values for " + std::to_string(dims[0]) +
+                     " x " + std::to_string(dims[1]) + " x " + std::to_string(dims[2]) + " pixels");
+  img.labels.resize(static_cast<std::size_t>(n));
+  switch (scalars->GetDataType()) {
+    vtkTemplateMacro(copyLabels(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)), img.labels, file));
+    default:
+      throw InputError("label image " + file + ": unsupported scalar type " + scalars->GetDataTypeAsString());
+  }
+  return img;
+}
+
+ImportResult importLabelImage(const std::string& path, const ImportOptions& options) {
+  ImportResult r = tissueFromLabelImage(readLabelImage(path), options);
+  r.report.path = path;
+  return r;
+}
+
+}  // namespace tessella::io
