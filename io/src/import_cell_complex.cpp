@@ -25,6 +25,7 @@
 
 #include "cell_complex_core.hpp"
 #include "labelled_surface.hpp"
+#include "ply_mesh_columns.hpp"
 #include "tessella/io/import.hpp"
 #include "tessella/io/ply.hpp"
 #include "tessella/tissue/builders.hpp"
@@ -36,7 +37,6 @@ namespace tessella::io {
 namespace {
 
 using detail::edgeKey;
-using detail::fmtPoint;
 using detail::Label;
 using detail::UnionFind;
 using detail::ComplexFile;
@@ -91,16 +91,7 @@ ComplexFile readComplex(const std::string& path) {
   ComplexFile m;
   m.path = path;
   const std::size_t nv = ply.count("vertex");
-  const PlyColumn& x = ply.scalar("vertex", "x");
-  const PlyColumn& y = ply.scalar("vertex", "y");
-  const PlyColumn& z = ply.scalar("vertex", "z");
-  m.positions.resize(nv);
-  for (std::size_t i = 0; i < nv; ++i) {
-    m.positions[i] = Vec3(x.values[i], y.values[i], z.values[i]);
-    if (!m.positions[i].allFinite())
-      throw InputError("'" + path + "' vertex " + std::to_string(i) + ": position " + fmtPoint(m.positions[i]) +
-                       " is not finite");
-  }
+  m.positions = detail::plyPositions(ply, path);
   // Edges: needed when faces list edges, checked whenever present.
   std::vector<std::array<Index, 2>> edge_vertices;
   if (ply.hasElement("edge")) {

@@ -21,6 +21,7 @@
 #include <vtkType.h>
 #include <vtkXMLImageDataReader.h>
 
+#include "vtk_integer_types.hpp"
 #include "tessella/io/import.hpp"
 #include "tessella/io/label_image.hpp"
 #include "tessella/tissue/errors.hpp"
@@ -29,17 +30,6 @@
 namespace tessella::io {
 
 namespace {
-
-bool integerScalar(int vtk_type) {
-  switch (vtk_type) {
-    case VTK_CHAR: case VTK_SIGNED_CHAR: case VTK_UNSIGNED_CHAR: case VTK_SHORT: case VTK_UNSIGNED_SHORT:
-    case VTK_INT: case VTK_UNSIGNED_INT: case VTK_LONG: case VTK_UNSIGNED_LONG: case VTK_LONG_LONG:
-    case VTK_UNSIGNED_LONG_LONG: case VTK_ID_TYPE:
-      return true;
-    default:
-      return false;
-  }
-}
 
 template <typename T>
 void copyLabels(const T* values, std::vector<std::int64_t>& labels, const std::string& file) {
@@ -95,7 +85,7 @@ LabelImage readLabelImage(const std::string& path) {
   if (!scalars && data->GetPointData() && data->GetPointData()->GetNumberOfArrays() > 0)
     scalars = data->GetPointData()->GetArray(0);
   if (!scalars) throw InputError("label image " + file + " holds no pixel values");
-  if (!integerScalar(scalars->GetDataType()))
+  if (!detail::isVtkIntegerType(scalars->GetDataType()))
     throw InputError("label image " + file + " holds " + std::string(scalars->GetDataTypeAsString()) +
                      " values: a label image holds integers (one label per pixel), not intensities");
   if (scalars->GetNumberOfComponents() != 1)

@@ -23,6 +23,7 @@
 #include <vtkPolyData.h>
 
 #include "cell_complex_core.hpp"
+#include "ply_mesh_columns.hpp"
 #include "tessella/io/import.hpp"
 #include "tessella/io/ply.hpp"
 #include "tessella/tissue/errors.hpp"
@@ -117,16 +118,7 @@ LabelledFaces readPly(const std::string& path, const std::string& label_array) {
   m.path = path;
   const std::size_t nv = ply.count("vertex");
   const std::size_t nf = ply.count("face");  // InputError naming the file when there is no face element
-  const PlyColumn& x = ply.scalar("vertex", "x");
-  const PlyColumn& y = ply.scalar("vertex", "y");
-  const PlyColumn& z = ply.scalar("vertex", "z");
-  m.positions.resize(nv);
-  for (std::size_t i = 0; i < nv; ++i) {
-    m.positions[i] = Vec3(x.values[i], y.values[i], z.values[i]);
-    if (!m.positions[i].allFinite())
-      throw InputError("'" + path + "' vertex " + std::to_string(i) + ": position " + fmtPoint(m.positions[i]) +
-                       " is not finite");
-  }
+  m.positions = detail::plyPositions(ply, path);
   // The label properties: asked for, or the first default present.
   std::vector<std::string> names;
   if (!label_array.empty()) {
@@ -156,14 +148,7 @@ LabelledFaces readPly(const std::string& path, const std::string& label_array) {
       throw InputError("'" + path + "': face property '" + n + "' is a list, expected one integer label per face");
     label_columns.push_back(&c);
   }
-  const char* list_name = ply.hasProperty("face", "vertex_indices") ? "vertex_indices" : "vertex_index";
-  if (!ply.hasProperty("face", list_name))
-    throw InputError("'" + path + "': element 'face' has no vertex list (property 'vertex_indices' or "
-                     "'vertex_index')");
-  const PlyColumn& fv = ply.list("face", list_name);
-  if (fv.type == PlyType::Float32 || fv.type == PlyType::Float64)
-    throw InputError("'" + path + "': face property '" + list_name + "' holds " + plyTypeName(fv.type) +
-                     " values, expected vertex indices of an integer type");
+  const PlyColumn& fv = detail::plyFaceVertexList(ply, path);
   m.offsets = fv.offsets;
   m.vertices.resize(fv.values.size());
   for (std::size_t f = 0; f < nf; ++f) {

@@ -21,6 +21,7 @@
 #include <vtkUnstructuredGrid.h>
 
 #include "cell_complex_core.hpp"
+#include "vtk_integer_types.hpp"
 #include "tessella/io/import.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
@@ -34,17 +35,6 @@ using detail::ComplexFile;
 using detail::Label;
 
 constexpr const char* kLabelNames[] = {"label", "cell_label", "cell_id"};
-
-bool integerType(int vtk_type) {
-  switch (vtk_type) {
-    case VTK_CHAR: case VTK_SIGNED_CHAR: case VTK_UNSIGNED_CHAR: case VTK_SHORT: case VTK_UNSIGNED_SHORT:
-    case VTK_INT: case VTK_UNSIGNED_INT: case VTK_LONG: case VTK_UNSIGNED_LONG: case VTK_LONG_LONG:
-    case VTK_UNSIGNED_LONG_LONG: case VTK_ID_TYPE:
-      return true;
-    default:
-      return false;
-  }
-}
 
 // One side of a tetrahedron, as the loop that points out of it.
 struct Side {
@@ -99,7 +89,7 @@ ImportResult importLabelledVtu(const std::string& path, const ImportOptions& opt
                      " naming each element's cell (it has " + (present.empty() ? std::string("none") : present) +
                      ")");
   }
-  if (labels->GetNumberOfComponents() != 1 || !integerType(labels->GetDataType()))
+  if (labels->GetNumberOfComponents() != 1 || !detail::isVtkIntegerType(labels->GetDataType()))
     throw InputError(file + ": cell-data array '" + label_name + "' must be one integer per element (it has " +
                      std::to_string(labels->GetNumberOfComponents()) + " component(s) of type " +
                      labels->GetDataTypeAsString() + ")");

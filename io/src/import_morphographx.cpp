@@ -10,6 +10,7 @@
 #include <cmath>
 
 #include "labelled_surface.hpp"
+#include "ply_mesh_columns.hpp"
 #include "tessella/io/import.hpp"
 #include "tessella/io/ply.hpp"
 #include "tessella/tissue/errors.hpp"
@@ -19,7 +20,6 @@ namespace tessella::io {
 
 namespace {
 
-using detail::fmtPoint;
 using detail::Label;
 using detail::LabelledSurface;
 
@@ -28,32 +28,16 @@ LabelledSurface readMesh(const std::string& path, std::vector<Label>& vertex_par
   const PlyFile ply = PlyFile::read(path);
   LabelledSurface m;
   m.path = path;
-  const PlyColumn& x = ply.scalar("vertex", "x");
-  const PlyColumn& y = ply.scalar("vertex", "y");
-  const PlyColumn& z = ply.scalar("vertex", "z");
   const PlyColumn& vl = ply.integerScalar("vertex", "label");
   const std::size_t nv = ply.count("vertex");
-  m.positions.resize(nv);
+  m.positions = detail::plyPositions(ply, path);
   m.vertex_label.resize(nv);
-  for (std::size_t i = 0; i < nv; ++i) {
-    m.positions[i] = Vec3(x.values[i], y.values[i], z.values[i]);
-    if (!m.positions[i].allFinite())
-      throw InputError("'" + path + "' vertex " + std::to_string(i) + ": position " + fmtPoint(m.positions[i]) +
-                       " is not finite");
-    m.vertex_label[i] = static_cast<Label>(vl.values[i]);
-  }
+  for (std::size_t i = 0; i < nv; ++i) m.vertex_label[i] = static_cast<Label>(vl.values[i]);
   if (ply.hasProperty("vertex", "parent")) {
     const PlyColumn& vp = ply.integerScalar("vertex", "parent");
     vertex_parent.assign(vp.values.begin(), vp.values.end());
   }
-  const char* list_name = ply.hasProperty("face", "vertex_indices") ? "vertex_indices" : "vertex_index";
-  if (!ply.hasProperty("face", list_name))
-    throw InputError("'" + path + "': element 'face' has no vertex list (property 'vertex_indices' or "
-                     "'vertex_index')");
-  const PlyColumn& fv = ply.list("face", list_name);
-  if (fv.type == PlyType::Float32 || fv.type == PlyType::Float64)
-    throw InputError("'" + path + "': face property '" + list_name + "' holds " + plyTypeName(fv.type) +
-                     " values, expected vertex indices of an integer type");
+  const PlyColumn& fv = detail::plyFaceVertexList(ply, path);
   const PlyColumn& fl = ply.integerScalar("face", "label");
   const std::size_t nf = ply.count("face");
   m.face_offsets = fv.offsets;
