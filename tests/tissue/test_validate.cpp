@@ -82,3 +82,16 @@ TEST_CASE("building refuses bad input with the element named", "[tissue][builder
   CHECK_THROWS_AS(rectangularGrid(0, 3), InputError);
   CHECK_THROWS_AS(boxGrid(1, 1, 1, -1.0), InputError);
 }
+
+TEST_CASE("validate reports a face listed twice, naming the first", "[tissue][validate]") {
+  // A hexagon, then a second face on the same six edges (each edge then bounds two faces, as an inner wall does).
+  Tissue t = hexagon();
+  REQUIRE(validate(t).ok);
+  const auto edges = t.topology().faceEdges(FaceId(0));
+  const std::vector<OrientedEdge> loop(edges.begin(), edges.end());
+  const FaceId copy = t.addFace(loop);
+  const ValidationReport r = validate(t);
+  CHECK_FALSE(r.ok);
+  CHECK(r.element == ElementId{2, copy.index()});
+  CHECK(r.message.find("duplicates face 0") != std::string::npos);
+}

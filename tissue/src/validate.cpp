@@ -3,7 +3,9 @@
 #include "tessella/tissue/validate.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <numeric>
+#include <span>
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
@@ -43,9 +45,50 @@ struct UnionFind {
   void unite(Index a, Index b) { parent[find(a)] = find(b); }
 };
 
+// The vertex ids of f's loop, sorted, into `key` (reused: no allocation per face).
+void sortedVertices(const CellComplex& k, FaceId f, std::vector<Index>& key) {
+  key.clear();
+  for (VertexId v : k.faceVertices(f)) key.push_back(v.index());
+  std::sort(key.begin(), key.end());
+}
+
+// For each live face, the first face (in index order) with the same vertex
+// set, or kInvalidIndex: faces sorted by a hash of their sorted vertex list,
+// and only faces of equal hash compared in full (no hash map of keys).
+std::vector<Index> duplicateFaces(const CellComplex& k, std::span<const FaceId> faces) {
+  std::vector<Index> first(k.slots(2), kInvalidIndex);
+  std::vector<std::pair<std::uint64_t, Index>> hashed;
+  hashed.reserve(faces.size());
+  std::vector<Index> key, other;
+  for (FaceId f : faces) {
+    sortedVertices(k, f, key);
+    std::uint64_t h = 1469598103934665603ull;  // FNV-1a over the sorted ids
+    for (Index v : key) h = (h ^ v) * 1099511628211ull;
+    hashed.emplace_back(h, f.index());
+  }
+  std::sort(hashed.begin(), hashed.end());
+  for (std::size_t a = 0; a < hashed.size();) {
+    std::size_t b = a + 1;
+    while (b < hashed.size() && hashed[b].first == hashed[a].first) ++b;
+    for (std::size_t j = a + 1; j < b; ++j) {  // ascending face index within a run of equal hashes
+      sortedVertices(k, FaceId(hashed[j].second), key);
+      for (std::size_t i = a; i < j; ++i) {
+        sortedVertices(k, FaceId(hashed[i].second), other);
+        if (other == key) {
+          first[hashed[j].second] = hashed[i].second;
+          break;
+        }
+      }
+    }
+    a = b;
+  }
+  return first;
+}
+
 void checkIncidence(const Tissue& t) {
   const CellComplex& k = t.topology();
   const int D = t.dim();
+  std::vector<EdgeId> s;  // reused for each vertex's star
   for (VertexId v : t.vertices()) {
     const auto star = k.vertexEdges(v);
     if (star.empty()) fail(0, v.index(), "dangling (bounds no edge)");
@@ -54,7 +97,7 @@ void checkIncidence(const Tissue& t) {
       const auto ev = k.edgeVertices(e);
       if (ev[0] != v && ev[1] != v) fail(0, v.index(), "its star lists edge " + std::to_string(e.index()) + " which does not end at it");
     }
-    std::vector<EdgeId> s(star.begin(), star.end());
+    s.assign(star.begin(), star.end());
     std::sort(s.begin(), s.end());
     if (std::adjacent_find(s.begin(), s.end()) != s.end()) fail(0, v.index(), "an edge appears twice in its star");
     if (!t.position(v).allFinite()) fail(0, v.index(), "position is not finite");
@@ -76,8 +119,10 @@ void checkIncidence(const Tissue& t) {
       if (k.loopPosition(f, e) < 0) fail(1, e.index(), "regions list face " + std::to_string(f.index()) + " whose loop does not use it");
     }
   }
-  std::unordered_map<std::string, Index> seen_faces;
-  for (FaceId f : t.faces()) {
+  const std::vector<FaceId> live_faces(t.faces().begin(), t.faces().end());
+  const std::vector<Index> duplicate_of = duplicateFaces(k, live_faces);
+  std::vector<Index> key;
+  for (FaceId f : live_faces) {
     const auto loop = k.faceEdges(f);
     const auto verts = k.faceVertices(f);
     if (loop.size() < 3) fail(2, f.index(), "loop has " + std::to_string(loop.size()) + " edges");
@@ -90,13 +135,10 @@ void checkIncidence(const Tissue& t) {
         fail(2, f.index(), "loop is not closed after edge " + std::to_string(e.index()));
       if (!contains(k.edgeFaces(e), f)) fail(2, f.index(), "missing from the regions of edge " + std::to_string(e.index()));
     }
-    std::vector<Index> key;
-    for (VertexId v : verts) key.push_back(v.index());
-    std::sort(key.begin(), key.end());
+    sortedVertices(k, f, key);
     if (std::adjacent_find(key.begin(), key.end()) != key.end()) fail(2, f.index(), "loop passes twice through a vertex");
-    std::string skey(reinterpret_cast<const char*>(key.data()), key.size() * sizeof(Index));
-    if (auto [it, fresh] = seen_faces.emplace(skey, f.index()); !fresh)
-      fail(2, f.index(), "duplicates face " + std::to_string(it->second));
+    if (duplicate_of[f.index()] != kInvalidIndex)
+      fail(2, f.index(), "duplicates face " + std::to_string(duplicate_of[f.index()]));
     if (D == 3) {
       const auto vols = k.faceVolumes(f);
       if (vols.empty()) fail(2, f.index(), "dangling wall (bounds no cell)");
