@@ -46,4 +46,15 @@ void tamper(const std::string& in, const std::string& out, Edit edit, bool keep_
   REQUIRE(writer->Write() == 1);
 }
 
+/// The snapshot `in` as a file written before snapshots stored the complex's
+/// layout: every `tessella_topology:*` field array removed.
+inline void withoutLayoutArrays(const std::string& in, const std::string& out) {
+  tamper(in, out, [](vtkUnstructuredGrid* grid) {
+    vtkFieldData* field = grid->GetFieldData();
+    for (int i = field->GetNumberOfArrays() - 1; i >= 0; --i)
+      if (std::string(field->GetArrayName(i)).rfind("tessella_topology:", 0) == 0)
+        field->RemoveArray(field->GetArrayName(i));
+  });
+}
+
 }  // namespace tessella::io::testing

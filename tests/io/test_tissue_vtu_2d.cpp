@@ -178,12 +178,7 @@ TEST_CASE("a 2D snapshot keeps the numbering and direction of edges", "[io][vtu]
   // Without the arrays (a file written before 2D layouts were stored): the
   // same cells, edges numbered by first use.
   const std::string old = dir.file("old.vtu");
-  io::testing::tamper(path, old, [](vtkUnstructuredGrid* grid) {
-    vtkFieldData* field = grid->GetFieldData();
-    for (int i = field->GetNumberOfArrays() - 1; i >= 0; --i)
-      if (std::string(field->GetArrayName(i)).rfind("tessella_topology:", 0) == 0)
-        field->RemoveArray(field->GetArrayName(i));
-  });
+  io::testing::withoutLayoutArrays(path, old);
   const Tissue from_old = readTissueVtu(old);
   requireSameTissue(t, from_old);
   CHECK_FALSE(from_old.topology().layout() == t.topology().layout());

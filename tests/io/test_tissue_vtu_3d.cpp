@@ -153,12 +153,7 @@ TEST_CASE("a 3D snapshot keeps the numbering and direction of walls and edges", 
   // matched by vertex set and the edges numbered by first use: the same
   // cells, another numbering.
   const std::string old = dir.file("old.vtu");
-  io::testing::tamper(path, old, [](vtkUnstructuredGrid* grid) {
-    vtkFieldData* field = grid->GetFieldData();
-    for (int i = field->GetNumberOfArrays() - 1; i >= 0; --i)
-      if (std::string(field->GetArrayName(i)).rfind("tessella_topology:", 0) == 0)
-        field->RemoveArray(field->GetArrayName(i));
-  });
+  io::testing::withoutLayoutArrays(path, old);
   const Tissue from_old = readTissueVtu(old);
   requireSameTissue(t, from_old);
   CHECK_FALSE(from_old.topology().layout() == t.topology().layout());
