@@ -98,8 +98,9 @@ void run(const char* label, const Domain& domain, std::size_t n, MakePoint make_
   for (char& ch : name) ch = ch == ' ' ? '_' : static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
   const bool three_d = dual == 0;
   // issue #19: 3D within 2.5x of CGAL's Delaunay; issue #3: 2D 10^6 cells under 2 s
+  const double target = three_d && n >= 10000 ? 2.5 : tessella::bench::kNoTarget;
   tessella::bench::printFigure("generation." + name, voronoi, "s", three_d ? delaunay : dual,
-                               three_d ? "cgal_delaunay" : "cgal_delaunay_dual", three_d && n >= 10000 ? 2.5 : tessella::bench::kNoTarget);
+                               three_d ? "cgal_delaunay" : "cgal_delaunay_dual", target);
   if (!three_d && n == 1000000) tessella::bench::printFigure("generation." + name + ".time", voronoi, "s", 2.0);
 }
 

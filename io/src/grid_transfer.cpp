@@ -126,7 +126,8 @@ bool sendArray(Sender& out, vtkAbstractArray* array) {
   out.word(static_cast<std::uint64_t>(data->GetDataTypeSize()));
   out.word(static_cast<std::uint64_t>(data->GetNumberOfComponents()));
   out.word(static_cast<std::uint64_t>(data->GetNumberOfTuples()));
-  const std::size_t n = static_cast<std::size_t>(data->GetNumberOfValues()) * static_cast<std::size_t>(data->GetDataTypeSize());
+  const std::size_t n =
+      static_cast<std::size_t>(data->GetNumberOfValues()) * static_cast<std::size_t>(data->GetDataTypeSize());
   if (n > 0) out.payload(data->GetVoidPointer(0), n);
   return true;
 }
@@ -275,8 +276,8 @@ Received receiveArray(Receiver& in, Role role = Role::Any) {
   if (!data || !data->HasStandardMemoryLayout() || static_cast<std::uint64_t>(data->GetDataTypeSize()) != size)
     return {};
   data->SetNumberOfComponents(static_cast<int>(components));
-  if (!in.payload(data, static_cast<std::size_t>(tuples * components), static_cast<std::size_t>(tuples * components * size)))
-    return {};
+  const auto values = static_cast<std::size_t>(tuples * components);
+  if (!in.payload(data, values, values * static_cast<std::size_t>(size))) return {};
   if (!name.empty()) data->SetName(name.c_str());
   return {true, data};
 }
@@ -289,12 +290,14 @@ vtkSmartPointer<A> as(vtkAbstractArray* array) {
   if (auto* same = A::SafeDownCast(array)) return same;
   auto* data = vtkDataArray::SafeDownCast(array);
   vtkNew<A> probe;
-  if (!data || data->GetDataTypeSize() != probe->GetDataTypeSize() || floating(data->GetDataType()) != floating(probe->GetDataType()))
+  if (!data || data->GetDataTypeSize() != probe->GetDataTypeSize() ||
+      floating(data->GetDataType()) != floating(probe->GetDataType()))
     return nullptr;
   auto out = vtkSmartPointer<A>::New();
   out->SetNumberOfComponents(data->GetNumberOfComponents());
   out->SetNumberOfTuples(data->GetNumberOfTuples());
-  const std::size_t n = static_cast<std::size_t>(data->GetNumberOfValues()) * static_cast<std::size_t>(data->GetDataTypeSize());
+  const std::size_t n =
+      static_cast<std::size_t>(data->GetNumberOfValues()) * static_cast<std::size_t>(data->GetDataTypeSize());
   if (n > 0) std::memcpy(out->GetVoidPointer(0), data->GetVoidPointer(0), n);
   out->SetName(data->GetName());
   return out;

@@ -171,7 +171,8 @@ std::uint32_t zlibCrc(std::uint32_t crc, const void* bytes, std::size_t n) {
   return static_cast<std::uint32_t>(crc32_z(crc, static_cast<const Bytef*>(bytes), n));
 }
 
-std::uint32_t zlibCrcWord(std::uint32_t crc, std::uint64_t v) { return zlibCrc(crc, &v, sizeof v); }  // little-endian host
+// (a little-endian host, as the test machines are)
+std::uint32_t zlibCrcWord(std::uint32_t crc, std::uint64_t v) { return zlibCrc(crc, &v, sizeof v); }
 
 }  // namespace
 
