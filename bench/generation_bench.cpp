@@ -8,6 +8,7 @@
 //   generation_bench            2D: 1e4 1e5 1e6 cells, 3D: 1e3 1e4 1e5 cells
 //   generation_bench --quick    2D: 1e4 1e5,           3D: 1e3 1e4
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -23,6 +24,7 @@
 
 #include "tessella/generators/voronoi.hpp"
 #include "bench_args.hpp"
+#include "bench_figure.hpp"
 
 using namespace tessella;
 
@@ -92,6 +94,14 @@ void run(const char* label, const Domain& domain, std::size_t n, MakePoint make_
   if (dual > 0) std::printf("  (CGAL Delaunay + dual cells %7.3f s, ratio %5.2f)", dual, voronoi / dual);
   std::printf("\n");
   std::fflush(stdout);
+  std::string name = std::string(label) + "." + std::to_string(t.numCells()) + "cells";
+  for (char& ch : name) ch = ch == ' ' ? '_' : static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  const bool three_d = dual == 0;
+  // issue #19: 3D within 2.5x of CGAL's Delaunay; issue #3: 2D 10^6 cells under 2 s
+  const double target = three_d && n >= 10000 ? 2.5 : tessella::bench::kNoTarget;
+  tessella::bench::printFigure("generation." + name, voronoi, "s", three_d ? delaunay : dual,
+                               three_d ? "cgal_delaunay" : "cgal_delaunay_dual", target);
+  if (!three_d && n == 1000000) tessella::bench::printFigure("generation." + name + ".time", voronoi, "s", 2.0);
 }
 
 }  // namespace

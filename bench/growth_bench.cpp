@@ -13,6 +13,7 @@
 
 #include <omp.h>
 
+#include <cctype>
 #include <chrono>
 #include <ctime>
 #include <cmath>
@@ -20,6 +21,7 @@
 #include <cstring>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "tessella/growth/division_scheduler.hpp"
@@ -30,6 +32,7 @@
 #include "tessella/generators/grids.hpp"
 #include "tessella/generators/voronoi.hpp"
 #include "bench_args.hpp"
+#include "bench_figure.hpp"
 
 using namespace tessella;
 using namespace tessella::growth;
@@ -71,7 +74,8 @@ StepTime growthStepMs(const Tissue& start, IntegrationScheme scheme, int threads
 
 // Growth and division together: steps per second while cells divide
 // (Euler growth step + division of every cell over its noisy threshold).
-void growthWithDivision(const char* label, const Tissue& start, int threads, int steps) {
+/// Milliseconds per step of growth and division.
+double growthWithDivision(const char* label, const Tissue& start, int threads, int steps) {
   omp_set_num_threads(threads);
   Tissue t = start;
   const double mean = totalMeasure(t) / static_cast<double>(t.numCells());
@@ -89,6 +93,7 @@ void growthWithDivision(const char* label, const Tissue& start, int threads, int
   const double sec = seconds(a, Clock::now());
   std::printf("  %-14s %d thr: %8.2f steps/s  (%6.1f ms/step), %zu divisions (%zu -> %zu cells)\n", label,
               threads, steps / sec, 1e3 * sec / steps, divisions, start.numCells(), t.numCells());
+  return 1e3 * sec / steps;
 }
 
 // CPU time of the calling thread: on a shared machine the wall clock also
@@ -133,6 +138,12 @@ void divisionCost(const char* label, const Tissue& start, const std::string& rul
   if (std::strcmp(label, "2D") == 0) std::printf("  target < 10 us: %s", 1e6 * cpu / n < 10 ? "met" : "NOT met");
   if (failed) std::printf("  [%zu cuts refused]", failed);
   std::printf("\n");
+  // issue #4: 2D under 10 us; issue #19: 3D shortest wall and Besson-Dumais under 50 us
+  const bool searched = rule_name == "shortest_wall" || rule_name == "besson_dumais";
+  const double target = std::strcmp(label, "2D") == 0 ? 10.0 : searched ? 50.0 : tessella::bench::kNoTarget;
+  std::string name = std::string("growth.division.") + label + "." + rule_name;
+  for (char& ch : name) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  tessella::bench::printFigure(name, 1e6 * cpu / n, "us_cpu", target);
 }
 
 void divisionCosts() {
@@ -178,18 +189,30 @@ int main(int argc, char** argv) {
         std::printf("   target < %.0f ms with 2 threads: %s", c.target_ms_2thr,
                     two.best_ms < c.target_ms_2thr ? "met" : "NOT met");
       std::printf("\n");
+      if (c.target_ms_2thr > 0)
+        tessella::bench::printFigure(std::string("growth.step.") + std::to_string(c.tissue.numCells()) + "cells." +
+                                         schemeName(scheme) + ".2threads",
+                                     two.best_ms, "ms", c.target_ms_2thr);
     }
   }
 
   if (steps_only) return 0;
 
   std::printf("\nGrowth + division (uniform expansion, main axis, noisy threshold)\n");
+  std::vector<std::pair<std::string, double>> ms[2];  // per thread count: label, ms per step
   for (int threads : {1, 2}) {
-    growthWithDivision("2D 1e4 cells", rectangularGrid(100, 100), threads, 20);
-    growthWithDivision("2D 1e5 cells", rectangularGrid(316, 316), threads, 10);
-    if (!quick) growthWithDivision("2D 1e6 cells", rectangularGrid(1000, 1000), threads, 5);
-    growthWithDivision("3D 1e4 cells", boxGrid(22, 22, 21), threads, 10);
+    auto& out = ms[threads - 1];
+    out.emplace_back("2d.1e4cells", growthWithDivision("2D 1e4 cells", rectangularGrid(100, 100), threads, 20));
+    out.emplace_back("2d.1e5cells", growthWithDivision("2D 1e5 cells", rectangularGrid(316, 316), threads, 10));
+    if (!quick)
+      out.emplace_back("2d.1e6cells", growthWithDivision("2D 1e6 cells", rectangularGrid(1000, 1000), threads, 5));
+    out.emplace_back("3d.1e4cells", growthWithDivision("3D 1e4 cells", boxGrid(22, 22, 21), threads, 10));
   }
+  // issue #19: with 2 threads at least 1.7x faster than with 1 (2D): time ratio <= 1 / 1.7
+  for (std::size_t i = 0; i < ms[0].size(); ++i)
+    tessella::bench::printFigure("growth.grow_divide." + ms[1][i].first + ".2threads", ms[1][i].second, "ms/step",
+                                 ms[0][i].second, "1_thread",
+                                 ms[0][i].first[0] == '2' ? 1.0 / 1.7 : tessella::bench::kNoTarget);
 
   divisionCosts();
   return 0;

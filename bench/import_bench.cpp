@@ -18,6 +18,7 @@
 
 #include "../tests/io/mgx_fixture.hpp"
 #include "bench_args.hpp"
+#include "bench_figure.hpp"
 #include "tessella/generators/voronoi.hpp"
 #include "tessella/io/cell_complex_ply.hpp"
 #include "tessella/io/import.hpp"
@@ -68,6 +69,8 @@ int main(int argc, char** argv) {
     const double import = bestOf(runs, [&] { imported = io::importTissue(path).tissue.numCells(); });
     std::printf("%-22s %10.1f %10.3f %10.3f %8.2f   (%zu cells)\n", binary ? "binary_little_endian" : "ascii", mb,
                 parse, import, import / parse, imported);
+    bench::printFigure(std::string("import.mgx_ply.") + (binary ? "binary" : "ascii") + "." + std::to_string(imported) +
+                           "cells", import, "s", parse, "ply_parse", 2.0);
   }
 
   // A 3D cell complex: a Voronoi tissue in a box, written as OpenAlea writes one.
@@ -88,6 +91,8 @@ int main(int argc, char** argv) {
     const double import = bestOf(runs, [&] { imported = io::importTissue(path).tissue.numCells(); });
     std::printf("%-22s %10.1f %10.3f %10.3f %8.2f   (%zu cells)\n", binary ? "binary_little_endian" : "ascii", mb,
                 parse, import, import / parse, imported);
+    bench::printFigure(std::string("import.cell_complex_ply.") + (binary ? "binary" : "ascii") + "." +
+                           std::to_string(imported) + "cells", import, "s", parse, "ply_parse", 2.0);
   }
   std::filesystem::remove_all(dir);
 

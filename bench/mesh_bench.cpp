@@ -40,6 +40,7 @@
 
 #include "../mesh/src/tetgen_support.hpp"  // the meshers' switch string and facet filling (internal)
 #include "bench_args.hpp"
+#include "bench_figure.hpp"
 #include "tessella/mesh/mesh_measures.hpp"
 #include "tessella/mesh/mesh_tissue.hpp"
 #include "tessella/generators/dome.hpp"
@@ -169,14 +170,19 @@ std::string tetQuality(const FeMesh& mesh, double ratio_bound) {
   return text;
 }
 
+/// One row; `figure` names its FIGURE line (none when empty), with the
+/// target of its overhead over the mesher alone.
 void row(const char* kind, std::size_t cells, std::size_t elements, double t_tessella, double t_alone,
-         std::size_t alone_elements) {
+         std::size_t alone_elements, const std::string& figure = "", double target_overhead = bench::kNoTarget) {
   std::printf("%-8s %8zu cells %10zu elements  tessella %8.3f s (%9.0f el/s)", kind, cells, elements, t_tessella,
               static_cast<double>(elements) / t_tessella);
   if (t_alone > 0)
     std::printf("  alone %8.3f s (%9zu el)  overhead x%.2f", t_alone, alone_elements, t_tessella / t_alone);
   std::printf("\n");
   std::fflush(stdout);
+  if (!figure.empty() && t_alone > 0)
+    bench::printFigure(figure + "." + std::to_string(cells) + "cells", t_tessella, "s", t_alone, "mesher_alone",
+                       target_overhead);
 }
 
 }  // namespace
@@ -201,7 +207,9 @@ int main(int argc, char** argv) {
     auto b = Clock::now();
     const std::size_t alone = cgalAlone(t, o);
     auto c = Clock::now();
-    row("2D", t.numCells(), static_cast<std::size_t>(mesh.numElements()), seconds(a, b), seconds(b, c), alone);
+    // issue #19: within 1.3x of CGAL alone
+    row("2D", t.numCells(), static_cast<std::size_t>(mesh.numElements()), seconds(a, b), seconds(b, c), alone,
+        "mesh.2d", 1.3);
   }
   for (std::size_t n = 1000; n <= std::min<std::size_t>(max2d, 10000); n *= 10) {
     const double radius = std::sqrt(static_cast<double>(n) / M_PI);
@@ -245,7 +253,9 @@ int main(int argc, char** argv) {
       const std::size_t alone = by_cell ? tetgenPerCellAlone(t, mesh, o) : tetgenAlone(t, o);
       auto c = Clock::now();
       row(by_cell ? "3D cells" : "3D whole", t.numCells(), static_cast<std::size_t>(mesh.numElements()), seconds(a, b),
-          seconds(b, c), alone);
+          seconds(b, c), alone, by_cell ? "mesh.3d_cell_by_cell" : "mesh.3d_whole");
+      // issue #19: 10^4 cells cell by cell within 60 s
+      if (by_cell && n == 10000) bench::printFigure("mesh.3d_cell_by_cell.10000cells.time", seconds(a, b), "s", 60.0);
       std::printf("         %s\n", tetQuality(mesh, o.radius_edge_ratio).c_str());
     }
   }

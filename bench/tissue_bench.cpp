@@ -19,6 +19,7 @@
 #include "tessella/generators/grids.hpp"
 #include "tessella/tissue/tissue.hpp"
 #include "bench_args.hpp"
+#include "bench_figure.hpp"
 
 using namespace tessella;
 using Clock = std::chrono::steady_clock;
@@ -104,9 +105,14 @@ void recompute2D(std::size_t side, double limit1, double limit2) {
                 n, threads, s * 1e3, s * 1e9 / n, b * 1e3, s / b);
     if (limit > 0) std::printf(" | target < %.0f ms: %s", limit, s * 1e3 < limit ? "met" : "NOT met");
     std::printf("\n");
+    // issue #19: within 1.3x of the flat loop
+    bench::printFigure("tissue.recompute2d." + std::to_string(n) + "cells." + std::to_string(threads) + "threads", s,
+                       "s", b, "flat_loop", 1.3);
   }
-  if (side >= 1000)
+  if (side >= 1000) {
     std::printf("  2D memory: %.0f bytes/cell (target < 1024)\n", double(t.bytes()) / n);
+    bench::printFigure("tissue.memory2d", double(t.bytes()) / n, "bytes/cell", 1024);
+  }
 }
 
 void recompute3D(std::size_t side) {
@@ -121,6 +127,7 @@ void recompute3D(std::size_t side) {
                 s * 1e9 / n);
   }
   std::printf("  3D memory: %.0f bytes/cell (target < 4096)\n", double(t.bytes()) / n);
+  bench::printFigure("tissue.memory3d", double(t.bytes()) / n, "bytes/cell", 4096);
 }
 
 void divisions(int dim) {
@@ -145,6 +152,7 @@ void divisions(int dim) {
   const double target = dim == 2 ? 1e5 : 1e4;
   std::printf("  %dD divisions: %zu in %.3f s = %.0f /s (%.2f us each) | target >= %.0f /s: %s\n", dim, done, s, rate,
               1e6 / rate, target, rate >= target ? "met" : "NOT met");
+  bench::printFigure("tissue.divisions" + std::to_string(dim) + "d", rate, "/s", target, bench::Better::Higher);
 }
 
 }  // namespace

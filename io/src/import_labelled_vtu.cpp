@@ -62,8 +62,8 @@ bool isLabelledVtu(const std::string& path) {
 
 ImportResult importLabelledVtu(const std::string& path, const ImportOptions& options) {
   detail::checkImportOptions(options);
-  vtkSmartPointer<vtkUnstructuredGrid> grid = detail::readGridFile(path);
-  detail::checkCellArrays(grid, path);
+  vtkSmartPointer<vtkUnstructuredGrid> grid =
+      detail::readGridFile(path, [&](vtkUnstructuredGrid* parsed) { detail::checkCellArrays(parsed, path); });
   const std::string file = "'" + path + "'";
   vtkDataArray* labels = nullptr;
   std::string label_name;

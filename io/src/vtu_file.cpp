@@ -14,6 +14,7 @@
 #include <new>
 #include <regex>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <SMP/Common/vtkSMPToolsAPI.h>  // vtkSMPTools.h itself does not compile as C++20
@@ -26,7 +27,10 @@
 #include <vtkXMLUnstructuredGridReader.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include <sys/mman.h>
+
 #include "atomic_file.hpp"
+#include "grid_transfer.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "vtk_error_capture.hpp"
 #include "worker_process.hpp"
@@ -221,8 +225,25 @@ FileIdentity identityOf(const std::string& path) {
 
 namespace {
 
+/// A file of this process's memory the worker hands a parsed grid over in.
+struct MemoryFile {
+  int fd = -1;
+  MemoryFile() : fd(::memfd_create("tessella-grid", MFD_CLOEXEC)) {}
+  ~MemoryFile() {
+    if (fd >= 0) ::close(fd);
+  }
+  MemoryFile(const MemoryFile&) = delete;
+  MemoryFile& operator=(const MemoryFile&) = delete;
+};
+
+constexpr const char* kHandedOver = "handed over";
+
+/// `check`, when given, runs on the parsed grid in the worker, which then
+/// writes the grid to a memory file that this process reads it back from.
 template <typename Reader>
-auto readXmlFile(const std::string& path, const char* kind) {
+auto readXmlFile(const std::string& path, const char* kind,
+                 const std::function<void(vtkUnstructuredGrid*)>& check = {}) {
+  using Output = std::remove_pointer_t<decltype(std::declval<Reader&>().GetOutput())>;
   std::error_code ec;
   if (!fs::exists(path, ec)) throw InputError("cannot read '" + path + "': no such file");
   if (!fs::is_regular_file(path, ec)) throw InputError("cannot read '" + path + "': not a regular file");
@@ -238,6 +259,7 @@ auto readXmlFile(const std::string& path, const char* kind) {
   // first, with a memory and a time limit; this process parses it only when
   // the worker could.
   const std::size_t size = static_cast<std::size_t>(before.size);
+  const MemoryFile memory;
   const std::size_t memory_budget = (std::size_t{2} << 30) + 32 * size;
   const double timeout_seconds = 60.0 + static_cast<double>(size) / 1e6;
   const WorkerOutcome outcome = runInWorker(
@@ -246,7 +268,13 @@ auto readXmlFile(const std::string& path, const char* kind) {
         // process does not exist in the worker: run sequentially.
         vtk::detail::smp::vtkSMPToolsAPI::GetInstance().SetBackend("Sequential");
         try {
-          parseXml<Reader>(path, kind);
+          auto parsed = parseXml<Reader>(path, kind);
+          if constexpr (std::is_same_v<Output, vtkUnstructuredGrid>) {
+            if (check) {
+              check(parsed);
+              if (memory.fd >= 0 && sendGrid(parsed, memory.fd)) return std::string(kHandedOver);
+            }
+          }
         } catch (const std::bad_alloc&) {
           throw;
         } catch (const InputError&) {
@@ -265,7 +293,14 @@ auto readXmlFile(const std::string& path, const char* kind) {
   if (const std::string errors = printedVtkErrors(outcome.printed); !errors.empty())
     throw InputError("cannot read '" + path + "': " + errors + "; the file is corrupted");
 
-  auto grid = parseXml<Reader>(path, kind);
+  vtkSmartPointer<Output> grid;
+  if constexpr (std::is_same_v<Output, vtkUnstructuredGrid>)
+    if (outcome.output == kHandedOver) grid = receiveGrid(memory.fd);
+  if (!grid) {
+    grid = parseXml<Reader>(path, kind);
+    if constexpr (std::is_same_v<Output, vtkUnstructuredGrid>)
+      if (check) check(grid);
+  }
   if (!(identityOf(path) == before))
     throw InputError("cannot read '" + path + "': the file changed while it was being read");
   return grid;
@@ -275,6 +310,11 @@ auto readXmlFile(const std::string& path, const char* kind) {
 
 vtkSmartPointer<vtkUnstructuredGrid> readGridFile(const std::string& path) {
   return readXmlFile<vtkXMLUnstructuredGridReader>(path, kVtuKind);
+}
+
+vtkSmartPointer<vtkUnstructuredGrid> readGridFile(const std::string& path,
+                                                  const std::function<void(vtkUnstructuredGrid*)>& check) {
+  return readXmlFile<vtkXMLUnstructuredGridReader>(path, kVtuKind, check);
 }
 
 vtkSmartPointer<vtkPolyData> readPolyDataFile(const std::string& path) {

@@ -5,6 +5,7 @@
 // (appended raw binary, 64-bit headers, the chosen compressor), atomic
 // replacement, and VTK errors turned into InputError.
 
+#include <functional>
 #include <string>
 
 #include <vtkPolyData.h>
@@ -23,6 +24,13 @@ void writeGridFile(vtkUnstructuredGrid* grid, const std::string& path, const Vtu
 /// first in a worker process, so a file that crashes VTK's reader, or makes
 /// it allocate without bound or hang, is an InputError too.
 vtkSmartPointer<vtkUnstructuredGrid> readGridFile(const std::string& path);
+
+/// The same, and `check` (which throws InputError for a grid it refuses)
+/// runs on the grid in the worker, which then hands the grid over: the file
+/// is parsed once. (When the grid holds an array that cannot be handed over,
+/// this process parses the file again and runs `check` here.)
+vtkSmartPointer<vtkUnstructuredGrid> readGridFile(const std::string& path,
+                                                  const std::function<void(vtkUnstructuredGrid*)>& check);
 
 /// The same for a VTK XML PolyData (.vtp) file.
 vtkSmartPointer<vtkPolyData> readPolyDataFile(const std::string& path);

@@ -11,6 +11,7 @@
 #include <string>
 #include <unordered_map>
 #include <unordered_set>
+#include <utility>
 #include <vector>
 
 #include <vtkCellArray.h>
@@ -62,6 +63,12 @@ std::vector<std::string> stringList(vtkFieldData* field, const char* name, const
 
 std::vector<Vec3> positionsOf(vtkUnstructuredGrid* grid) {
   std::vector<Vec3> positions(static_cast<std::size_t>(grid->GetNumberOfPoints()));
+  vtkDataArray* data = grid->GetPoints()->GetData();
+  if (data->GetDataType() == VTK_DOUBLE && data->HasStandardMemoryLayout() && data->GetNumberOfComponents() == 3) {
+    const auto* xyz = static_cast<const double*>(data->GetVoidPointer(0));  // x0 y0 z0 x1 ...: Vec3 by Vec3
+    for (std::size_t i = 0; i < positions.size(); ++i) positions[i] = Vec3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]);
+    return positions;
+  }
   vtkPoints* points = grid->GetPoints();
   for (vtkIdType i = 0; i < grid->GetNumberOfPoints(); ++i) points->GetPoint(i, positions[static_cast<std::size_t>(i)].data());
   return positions;
@@ -79,9 +86,12 @@ std::vector<Index> pointList(vtkIdType n, const vtkIdType* ids, vtkIdType num_po
   return out;
 }
 
-std::vector<std::vector<Index>> polygonsOf(vtkUnstructuredGrid* grid, const Source& src) {
+/// Calls visit(c, n, ids) for every cell of a 2D file, after checking that
+/// it is a polygon whose points exist.
+template <typename Visit>
+void forEachPolygon(vtkUnstructuredGrid* grid, const Source& src, Visit visit) {
   const vtkIdType n = grid->GetNumberOfCells();
-  std::vector<std::vector<Index>> polygons(static_cast<std::size_t>(n));
+  const vtkIdType num_points = grid->GetNumberOfPoints();
   vtkCellArray* cells = grid->GetCells();
   vtkIdType npts = 0;
   const vtkIdType* pts = nullptr;
@@ -91,8 +101,19 @@ std::vector<std::vector<Index>> polygonsOf(vtkUnstructuredGrid* grid, const Sour
       src.fail("cell " + std::to_string(c) + " has VTK cell type " + std::to_string(type) +
                " but a 2D tissue needs polygons");
     cells->GetCellAtId(c, npts, pts);
-    polygons[static_cast<std::size_t>(c)] = pointList(npts, pts, grid->GetNumberOfPoints(), c, src);
+    for (vtkIdType k = 0; k < npts; ++k)
+      if (pts[k] < 0 || pts[k] >= num_points)
+        src.fail("cell " + std::to_string(c) + " refers to point " + std::to_string(pts[k]) + " but there are " +
+                 std::to_string(num_points) + " points");
+    visit(c, npts, pts);
   }
+}
+
+std::vector<std::vector<Index>> polygonsOf(vtkUnstructuredGrid* grid, const Source& src) {
+  std::vector<std::vector<Index>> polygons(static_cast<std::size_t>(grid->GetNumberOfCells()));
+  forEachPolygon(grid, src, [&](vtkIdType c, vtkIdType n, const vtkIdType* ids) {
+    polygons[static_cast<std::size_t>(c)].assign(ids, ids + n);
+  });
   return polygons;
 }
 
@@ -234,11 +255,18 @@ void restoreLineage(Tissue& tissue, vtkCellData* data, vtkIdType num_cells, cons
   const auto lineage = detail::integerValues(lineageArray(data, Tissue::kLineageName, num_cells, src));
   const auto parent = detail::integerValues(lineageArray(data, Tissue::kParentName, num_cells, src));
   const auto birth = detail::doubleValues(lineageArray(data, Tissue::kBirthTimeName, num_cells, src));
+  // Ids seen so far: one flag per id when the ids are at most a few times
+  // the cells (as a run numbers them), else a hash set.
+  const std::int64_t largest = lineage.empty() ? 0 : *std::max_element(lineage.begin(), lineage.end());
+  const bool dense = largest < 4 * static_cast<std::int64_t>(lineage.size()) + 1024;
+  std::vector<std::uint8_t> seen_flags(dense ? static_cast<std::size_t>(std::max<std::int64_t>(largest, 0)) + 1 : 0, 0);
   std::unordered_set<std::int64_t> seen;
-  seen.reserve(lineage.size());
+  if (!dense) seen.reserve(lineage.size());
   for (std::size_t c = 0; c < lineage.size(); ++c) {
     if (lineage[c] < 0) src.fail("cell " + std::to_string(c) + " has the negative lineage id " + std::to_string(lineage[c]));
-    if (!seen.insert(lineage[c]).second)
+    const bool repeated = dense ? std::exchange(seen_flags[static_cast<std::size_t>(lineage[c])], std::uint8_t{1}) != 0
+                                : !seen.insert(lineage[c]).second;
+    if (repeated)
       src.fail("lineage id " + std::to_string(lineage[c]) + " is used by more than one cell (cell " + std::to_string(c) + ")");
     tissue.restoreLineage(CellId(static_cast<Index>(c)), lineage[c], parent[c], birth[c]);
   }
@@ -270,17 +298,22 @@ std::optional<CellComplex> storedComplex(vtkFieldData* field, int dim, std::size
   }
 }
 
-// The polygons of a 2D file must be the stored complex's faces, vertex by
-// vertex from where each loop starts (as the writer lists them).
-void requireSamePolygons(const std::vector<std::vector<Index>>& polygons, const CellComplex& complex,
-                         const Source& src) {
-  if (complex.count(2) != polygons.size())
+// The polygons of a 2D file (checked by forEachPolygon) must be the stored
+// complex's faces, vertex by vertex from where each loop starts (as the
+// writer lists them).
+void requireSamePolygons(vtkUnstructuredGrid* grid, const CellComplex& complex, const Source& src) {
+  const auto num_cells = static_cast<std::size_t>(grid->GetNumberOfCells());
+  if (complex.count(2) != num_cells)
     src.fail("the topology arrays list " + std::to_string(complex.count(2)) + " cells, the file has " +
-             std::to_string(polygons.size()));
-  for (std::size_t c = 0; c < polygons.size(); ++c) {
+             std::to_string(num_cells));
+  vtkCellArray* cells = grid->GetCells();
+  vtkIdType npts = 0;
+  const vtkIdType* pts = nullptr;
+  for (std::size_t c = 0; c < num_cells; ++c) {
     const auto loop = complex.faceVertices(FaceId(static_cast<Index>(c)));
-    bool same = loop.size() == polygons[c].size();
-    for (std::size_t i = 0; same && i < loop.size(); ++i) same = loop[i].index() == polygons[c][i];
+    cells->GetCellAtId(static_cast<vtkIdType>(c), npts, pts);
+    bool same = loop.size() == static_cast<std::size_t>(npts);
+    for (std::size_t i = 0; same && i < loop.size(); ++i) same = static_cast<vtkIdType>(loop[i].index()) == pts[i];
     if (!same)
       src.fail("cell " + std::to_string(c) + " has another vertex loop than the topology arrays " +
                detail::kTopologyPrefix + "* give it");
@@ -333,9 +366,12 @@ Tissue readTissueVtu(const std::string& path) { return readSnapshot(path).tissue
 
 Snapshot readSnapshot(const std::string& path) {
   const Source src{path};
-  vtkSmartPointer<vtkUnstructuredGrid> grid = detail::readGridFile(path);
-  detail::verifyChecksums(grid, path);  // first: "the file is corrupted" says most
-  detail::checkCellArrays(grid, path);
+  // In the worker that parses the file: the checksums first ("the file is
+  // corrupted" says most), then what the walks below rely on.
+  vtkSmartPointer<vtkUnstructuredGrid> grid = detail::readGridFile(path, [&](vtkUnstructuredGrid* parsed) {
+    detail::verifyChecksums(parsed, path);
+    detail::checkCellArrays(parsed, path);
+  });
   vtkFieldData* field = grid->GetFieldData();
 
   const int version = static_cast<int>(requiredField(field, detail::kFormatVersionArray, src)->GetComponent(0, 0));
@@ -361,12 +397,13 @@ Snapshot readSnapshot(const std::string& path) {
   Tissue tissue = [&] {
     try {
       if (dim == 2) {
-        const std::vector<std::vector<Index>> polygons = polygonsOf(grid, src);
-        if (std::optional<CellComplex> complex = storedComplex(field, 2, positions.size(), src)) {
-          requireSamePolygons(polygons, *complex, src);
+        if (field->GetAbstractArray((std::string(detail::kTopologyPrefix) + "edge_vertices").c_str())) {
+          forEachPolygon(grid, src, [](vtkIdType, vtkIdType, const vtkIdType*) {});
+          std::optional<CellComplex> complex = storedComplex(field, 2, positions.size(), src);
+          requireSamePolygons(grid, *complex, src);
           return Tissue(std::move(*complex), positions, *embedding);
         }
-        return buildPolygonTissue(positions, polygons, *embedding);
+        return buildPolygonTissue(positions, polygonsOf(grid, src), *embedding);
       }
       std::vector<std::vector<Index>> faces;
       std::vector<std::vector<CellFace>> cells;
