@@ -12,7 +12,7 @@ packages=(
   catch2
   libsuitesparse-dev libhypre-dev
   python3-dev pybind11-dev python3-numpy python3-pytest python3-pil
-  libcairo2-dev snakemake python3-matplotlib chromium
+  libcairo2-dev snakemake python3-matplotlib chromium libdeflate-dev
 )
 
 missing=()
