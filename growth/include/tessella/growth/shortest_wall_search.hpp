@@ -21,12 +21,16 @@
 // from 13 starts (the directions of a cube's faces, edges and corners, so
 // every orientation is within 28 degrees of a start), lowest area first. A
 // descent stops when the quadratic model predicts less than
-// `area_tolerance` (relative) of further decrease; the point is then probed
-// 1e-3 rad away in six directions, whose second differences give the
-// Hessian: it is kept only when no probe is lower and no curvature is
-// negative (below -1e-6 A), else the descent leaves the saddle and goes on.
+// `area_tolerance` (relative) of further decrease and the gradient step
+// |g| / A is below 1e-10 rad, or when no step lowers A above rounding; the
+// point is then probed 1e-3 rad away in six directions, whose second
+// differences give the Hessian: it is kept only when no probe is lower and
+// no curvature is negative (below -1e-6 A), else the descent leaves the
+// saddle and goes on.
 // A descent that comes within 0.05 rad of a minimum found before, heading
-// towards it, joins it; minima closer than `merge_angle` merge.
+// towards it, joins it; minima closer than `merge_angle` merge. A minimum
+// within 1e-7 rad of a start whose area is no larger to rounding is that
+// start exactly (near a symmetry plane the gradient is ill-conditioned).
 
 #include <vector>
 
