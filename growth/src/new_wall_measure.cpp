@@ -58,7 +58,7 @@ double NewWallMeasure::measure(const Vec3& normal) const {
     const Chord c = chord(normal.dot(frame_.e1), normal.dot(frame_.e2));
     return c.hi - c.lo;
   }
-  return section(normal.normalized());
+  return section<false>(normal.normalized(), nullptr);
 }
 
 NewWallMeasure::Chord NewWallMeasure::chord(double nx, double ny) const {
@@ -108,7 +108,49 @@ NewWallMeasure::Chord NewWallMeasure::chord(double nx, double ny) const {
   return out;
 }
 
-double NewWallMeasure::section(const Vec3& n) const {
+double NewWallMeasure::measureAndGradient(const Vec3& n, Vec3& gradient) const {
+  const double area = section<true>(n, &gradient);
+  gradient -= n.dot(gradient) * n;  // tangent part (the radial part is the area itself)
+  return area;
+}
+
+namespace {
+
+// A crossing x = p + t (q - p) of the plane {n . x = 0} with the edge p -> q,
+// t = s_p / (s_p - s_q) (s = n . vertex), and for the gradient the edge
+// vector d = q - p and dt/dn = (s_p q - s_q p) / (s_p - s_q)^2.
+struct Crossing {
+  Vec3 x = Vec3::Zero(), d, dt;
+};
+
+template <bool kGradient>
+Crossing crossing(const Vec3& p, const Vec3& q, double sp, double sq) {
+  const double inv = 1.0 / (sp - sq);
+  const Vec3 d = q - p;
+  Crossing c;
+  c.x = p + (sp * inv) * d;
+  if constexpr (kGradient) {
+    c.d = d;
+    c.dt = (inv * inv) * (sp * q - sq * p);
+  }
+  return c;
+}
+
+// Twice the chord's area term n . (b x a) and, for the gradient, its
+// derivative in n: (b x a) + db/dn^T (a x n) + da/dn^T (n x b), where
+// dx/dn^T v = dt/dn (d . v) (b and a move along their edges as n turns).
+template <bool kGradient>
+double chordTerm(const Vec3& n, const Crossing& b, const Crossing& a, Vec3& gradient) {
+  const Vec3 ba = b.x.cross(a.x);
+  if constexpr (kGradient)
+    gradient += ba + b.d.dot(a.x.cross(n)) * b.dt + a.d.dot(n.cross(b.x)) * a.dt;
+  return n.dot(ba);
+}
+
+}  // namespace
+
+template <bool kGradient>
+double NewWallMeasure::section(const Vec3& n, Vec3* gradient) const {
   // Section area = sum over walls of (1/2) n . (b x a), where on each outward
   // wall loop b is a crossing from the positive to the negative side and a
   // the next crossing back: the chord b -> a is the section's boundary
@@ -124,13 +166,12 @@ double NewWallMeasure::section(const Vec3& n) const {
   }
   for (std::size_t v = 0; v < points_.size(); ++v) s[v] = n.dot(points_[v]);
   double twice_area = 0.0;
+  Vec3 twice_gradient = Vec3::Zero();
   for (std::size_t f = 0; f + 1 < loop_start_.size(); ++f) {
     const std::uint32_t* q = loops_.data() + loop_start_[f];
     const std::size_t m = loop_start_[f + 1] - loop_start_[f];
-    bool have_b = false;
-    Vec3 first_b = Vec3::Zero(), b = Vec3::Zero();
-    bool pending_a_before_b = false;
-    Vec3 first_a = Vec3::Zero();
+    bool have_b = false, pending_a_before_b = false;
+    Crossing b, first_a;
     double sj = s[q[0]];
     for (std::size_t i = 0; i < m; ++i) {
       const std::size_t j = i + 1 == m ? 0 : i + 1;
@@ -138,24 +179,20 @@ double NewWallMeasure::section(const Vec3& n) const {
       sj = s[q[j]];
       const bool pi = si > 0, pj = sj > 0;
       if (pi == pj) continue;
-      const Vec3& qi = points_[q[i]];
-      const Vec3 x = qi + (si / (si - sj)) * (points_[q[j]] - qi);
+      const Crossing x = crossing<kGradient>(points_[q[i]], points_[q[j]], si, sj);
       if (pi) {  // + -> -: start of a section boundary segment
         b = x;
-        if (!have_b) first_b = x;
         have_b = true;
-      } else {   // - -> +: end of the segment that started at the last b
-        if (have_b) {
-          twice_area += n.dot(b.cross(x));
-        } else {
-          pending_a_before_b = true;  // pairs with the loop's last b (wrap-around)
-          first_a = x;
-        }
+      } else if (have_b) {  // - -> +: end of the segment that started at the last b
+        twice_area += chordTerm<kGradient>(n, b, x, twice_gradient);
+      } else {
+        pending_a_before_b = true;  // pairs with the loop's last b (wrap-around)
+        first_a = x;
       }
     }
-    if (pending_a_before_b && have_b) twice_area += n.dot(b.cross(first_a));
-    (void)first_b;
+    if (pending_a_before_b && have_b) twice_area += chordTerm<kGradient>(n, b, first_a, twice_gradient);
   }
+  if constexpr (kGradient) *gradient = 0.5 * twice_gradient;
   return 0.5 * twice_area;
 }
 

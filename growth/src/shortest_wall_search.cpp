@@ -214,69 +214,223 @@ std::vector<WallCandidate> minima2D(const NewWallMeasure& m, const ShortestWallS
   return minima2DSampled(m, o);
 }
 
-// Nelder-Mead in the chart n(u, v) = normalise(n0 + u e1 + v e2) around n0,
-// from a simplex of edge `step`, until the simplex is smaller than
-// `size_tol` and the values agree to `spread_tol` (relative).
-WallCandidate nelderMead(const NewWallMeasure& m, const Vec3& n0, double step, double size_tol,
-                         double spread_tol, int max_iterations) {
-  Vec3 e1 = n0.unitOrthogonal(), e2 = n0.cross(e1);
-  auto normal = [&](const Eigen::Vector2d& p) { return (n0 + p[0] * e1 + p[1] * e2).normalized(); };
-  auto f = [&](const Eigen::Vector2d& p) { return m.measure(normal(p)); };
-  std::array<Eigen::Vector2d, 3> s = {Eigen::Vector2d(0, 0), Eigen::Vector2d(step, 0),
-                                      Eigen::Vector2d(0, step)};
-  std::array<double, 3> fs = {f(s[0]), f(s[1]), f(s[2])};
-  for (int it = 0; it < max_iterations; ++it) {
-    // Order best (0) .. worst (2).
-    std::array<int, 3> idx = {0, 1, 2};
-    std::sort(idx.begin(), idx.end(), [&](int a, int b) { return fs[a] < fs[b]; });
-    s = {s[idx[0]], s[idx[1]], s[idx[2]]};
-    fs = {fs[idx[0]], fs[idx[1]], fs[idx[2]]};
-    const double size = std::max((s[1] - s[0]).norm(), (s[2] - s[0]).norm());
-    if (fs[2] - fs[0] <= spread_tol * std::max(std::abs(fs[0]), 1e-300) && size < size_tol) break;
-    if (size < 1e-12) break;
-    const Eigen::Vector2d centroid = 0.5 * (s[0] + s[1]);
-    const Eigen::Vector2d xr = centroid + (centroid - s[2]);
-    const double fr = f(xr);
-    if (fr < fs[0]) {
-      const Eigen::Vector2d xe = centroid + 2.0 * (centroid - s[2]);
-      const double fe = f(xe);
-      if (fe < fr) { s[2] = xe; fs[2] = fe; } else { s[2] = xr; fs[2] = fr; }
-    } else if (fr < fs[1]) {
-      s[2] = xr; fs[2] = fr;
-    } else {
-      const bool outside = fr < fs[2];
-      const Eigen::Vector2d xc = outside ? Eigen::Vector2d(centroid + 0.5 * (xr - centroid))
-                                         : Eigen::Vector2d(centroid + 0.5 * (s[2] - centroid));
-      const double fc = f(xc);
-      if (fc < (outside ? fr : fs[2])) {
-        s[2] = xc; fs[2] = fc;
-      } else {  // shrink towards the best vertex
-        for (int k = 1; k < 3; ++k) {
-          s[k] = s[0] + 0.5 * (s[k] - s[0]);
-          fs[k] = f(s[k]);
-        }
-      }
-    }
-  }
-  const int best = static_cast<int>(std::min_element(fs.begin(), fs.end()) - fs.begin());
-  return WallCandidate{normal(s[best]), fs[best]};
+// 3D: descent on the sphere of normals with the exact gradient of the section
+// area (NewWallMeasure::measureAndGradient) by a Riemannian BFGS: a tangent
+// frame (n, e1, e2) moves with the iterate (retraction n' = normalise(n + v),
+// the frame turned by the rotation taking n to n' about n x v), steps are
+// taken in the frame's coordinates, and the 2 x 2 inverse Hessian estimate
+// is carried over unchanged (the rotation is the vector transport).
+struct Frame {
+  Vec3 n, e1, e2;
+};
+
+Frame frameAt(const Vec3& n) {
+  const Vec3 e1 = n.unitOrthogonal();
+  return Frame{n, e1, n.cross(e1)};
 }
 
-// Two phases: a coarse descent from every start (most starts fall into the
-// same few basins), then the distinct coarse minima refined to the full
-// tolerance from a small simplex. Coarse minima within kBasinAngle are one.
-std::vector<WallCandidate> minima3D(const NewWallMeasure& m,
-                                    const std::vector<Vec3>& starts,
+Frame moved(const Frame& f, const Eigen::Vector2d& c) {
+  const Vec3 v = c[0] * f.e1 + c[1] * f.e2;
+  const double r = v.norm();
+  if (!(r > 0)) return f;
+  const Vec3 d = v / r;
+  const double cs = 1.0 / std::sqrt(1.0 + r * r), sn = r * cs;  // of the turn atan(r)
+  Frame g;
+  g.n = ((f.n + v) * cs).normalized();
+  Vec3 e1 = f.e1 + f.e1.dot(d) * ((cs - 1.0) * d - sn * f.n);
+  e1 = (e1 - g.n.dot(e1) * g.n).normalized();
+  g.e1 = e1;
+  g.e2 = g.n.cross(e1);
+  return g;
+}
+
+struct Iterate {
+  Frame f;
+  double a;           // section area
+  Eigen::Vector2d g;  // its gradient in the frame's coordinates
+};
+
+Iterate evaluate(const NewWallMeasure& m, const Frame& f) {
+  Vec3 gradient;
+  const double a = m.measureAndGradient(f.n, gradient);
+  return Iterate{f, a, Eigen::Vector2d(gradient.dot(f.e1), gradient.dot(f.e2))};
+}
+
+// A descent that comes within kBasinAngle of a minimum already found, heading
+// towards it (or within merge_angle of it), ends there. Steps are at most
+// kMaxStep (tangent of the turn), so a descent follows its basin rather than
+// jumping across the sphere. A point where the quadratic model predicts less
+// than `area_tolerance` (relative) of further decrease, or where no step
+// decreases the area above rounding, is checked by probes kProbeAngle away
+// (descentDirection): at a saddle or a maximum (e.g. a start on a symmetry
+// axis, where the gradient vanishes) the descent leaves along the direction
+// they show, by the longest of kMaxStep, kMaxStep / 4, ... that lowers the
+// area, and goes on.
+constexpr double kBasinAngle = 0.05, kMaxStep = 0.25, kProbeAngle = 1e-3, kNegativeCurvature = 1e-6,
+                 kStepTolerance = 1e-10, kSnapAngle = 1e-7;
+constexpr int kProbes = 6, kMaxEscapes = 8;
+
+// At a point where the descent stops: kProbes = 6 probes kProbeAngle away,
+// in three antipodal pairs 60 degrees apart. Their second differences give
+// the Hessian's curvature along three directions, hence the whole 2 x 2
+// Hessian; a probe below the point, or a curvature below
+// -kNegativeCurvature * A, shows a direction of descent (the lowest probe's,
+// else the eigenvector of the negative curvature turned downhill).
+bool descentDirection(const NewWallMeasure& m, const Iterate& x, Eigen::Vector2d& dir) {
+  std::array<double, kProbes> f;
+  std::array<Eigen::Vector2d, kProbes> d;
+  int lowest = 0;
+  for (int k = 0; k < kProbes; ++k) {
+    const double phi = std::numbers::pi * k / 3;
+    d[k] = Eigen::Vector2d(std::cos(phi), std::sin(phi));
+    f[k] = m.measure(moved(x.f, kProbeAngle * d[k]).n);
+    if (f[k] < f[lowest]) lowest = k;
+  }
+  if (f[lowest] < x.a * (1.0 - 1e-14)) {
+    dir = d[lowest];
+    return true;
+  }
+  // d^T H d along (1, 0), (1/2, sqrt(3)/2), (-1/2, sqrt(3)/2).
+  const double h2 = kProbeAngle * kProbeAngle;
+  const double c0 = (f[0] + f[3] - 2 * x.a) / h2, c1 = (f[1] + f[4] - 2 * x.a) / h2,
+               c2 = (f[2] + f[5] - 2 * x.a) / h2;
+  const double a = c0, b = (c1 - c2) / std::sqrt(3.0), c = (2 * (c1 + c2) - a) / 3;
+  const double mean = 0.5 * (a + c), radius = std::hypot(0.5 * (a - c), b);
+  const double lambda = mean - radius;
+  if (!(lambda < -kNegativeCurvature * x.a)) return false;
+  // Eigenvector of lambda: (b, lambda - a) or (lambda - c, b), the better conditioned.
+  Eigen::Vector2d v = std::abs(lambda - a) > std::abs(lambda - c) ? Eigen::Vector2d(b, lambda - a)
+                                                                 : Eigen::Vector2d(lambda - c, b);
+  v.normalize();
+  dir = x.g.dot(v) > 0 ? Eigen::Vector2d(-v) : v;
+  return true;
+}
+
+bool headsTo(const Iterate& x, const Eigen::Vector2d& p, const std::vector<WallCandidate>& found,
+             double merge_angle) {
+  const double cos_basin = std::cos(kBasinAngle), cos_same = std::cos(merge_angle);
+  for (const WallCandidate& w : found) {
+    const double c = w.normal.dot(x.f.n);
+    if (std::abs(c) < cos_basin) continue;
+    const Vec3 to = (c < 0 ? -w.normal : w.normal) - x.f.n;  // opposite normals are the same plane
+    if (to.dot(x.f.e1) * p[0] + to.dot(x.f.e2) * p[1] > 0 || std::abs(c) >= cos_same) return true;
+  }
+  return false;
+}
+
+// The local minimum the descent from n0 ends in, or false when it joins a
+// minimum in `found`.
+bool descend(const NewWallMeasure& m, const Vec3& n0, const std::vector<WallCandidate>& found,
+             const ShortestWallSearchOptions& o, WallCandidate& out) {
+  const Eigen::Matrix2d identity = Eigen::Matrix2d::Identity();
+  Iterate x = evaluate(m, frameAt(n0));
+  // The area's curvature at a minimum is of the order of the area (1 / cos
+  // for a prism): the first step is the gradient scaled by 1 / A.
+  Eigen::Matrix2d h = identity / x.a;
+  bool scaled = false;
+  int escapes = 0;
+  for (int it = 0; it < o.max_iterations; ++it) {
+    Eigen::Vector2d p = -h * x.g;
+    double slope = x.g.dot(p);
+    if (!(slope < 0)) {  // not a descent direction: restart from the scaled gradient
+      h = identity / x.a;
+      scaled = false;
+      p = -x.g / x.a;
+      slope = x.g.dot(p);
+    }
+    if (headsTo(x, p, found, o.merge_angle)) return false;
+    // Go on while the model predicts more than the tolerance or the gradient
+    // step |g| / A is above kStepTolerance: a minimum on a symmetry plane of
+    // the cell (a box's axis) is then found to 1e-10 rad, and its plane meets
+    // the vertices that lie on it within splitCell's snap tolerance (1e-9)
+    // rather than 1e-8 beside them.
+    if (-slope > 2.0 * o.area_tolerance * x.a || x.g.norm() > kStepTolerance * x.a) {
+      const double len = p.norm();
+      if (len > kMaxStep) {
+        p *= kMaxStep / len;
+        slope *= kMaxStep / len;
+      }
+      // Backtracking (Armijo) by quadratic interpolation, kept in [0.1, 0.5] of the last step.
+      double alpha = 1.0;
+      bool accepted = false;
+      while (alpha * p.norm() > 1e-14) {
+        const Eigen::Vector2d step = alpha * p;
+        Iterate y = evaluate(m, moved(x.f, step));
+        const double rise = y.a - x.a - alpha * slope;
+        // Armijo; or, where area differences are rounding, a smaller gradient.
+        const bool armijo = y.a <= x.a + 1e-4 * alpha * slope;
+        if (armijo || (std::abs(y.a - x.a) <= 1e-15 * x.a && y.g.norm() < x.g.norm())) {
+          // BFGS on the transported step (its geodesic length) and gradients.
+          const double r = step.norm();
+          const Eigen::Vector2d s = step * (std::atan(r) / r), yv = y.g - x.g;
+          const double sy = s.dot(yv);
+          if (sy > 1e-12 * s.norm() * yv.norm()) {
+            if (!scaled) h = identity * (sy / yv.squaredNorm());  // Nocedal & Wright (6.20)
+            scaled = true;
+            const double rho = 1.0 / sy;
+            const Eigen::Matrix2d v = identity - rho * yv * s.transpose();
+            h = v.transpose() * h * v + rho * s * s.transpose();
+          }
+          x = y;
+          accepted = true;
+          break;
+        }
+        alpha *= std::clamp(-slope * alpha / (2.0 * rise), 0.1, 0.5);
+      }
+      if (accepted) continue;
+    }
+    // Converged, or no decrease above rounding: a local minimum unless the
+    // probes around it show otherwise.
+    Eigen::Vector2d dir;
+    if (escapes == kMaxEscapes || !descentDirection(m, x, dir)) break;
+    ++escapes;
+    // Leave along it: the longest step (kMaxStep, then quartered) that lowers the area.
+    bool left = false;
+    for (double t = kMaxStep; t >= 0.5 * kProbeAngle && !left; t *= 0.25) {
+      const Frame f = moved(x.f, t * dir);
+      if (m.measure(f.n) < x.a) {
+        x = evaluate(m, f);
+        left = true;
+      }
+    }
+    if (!left) break;
+    h = identity / x.a;
+    scaled = false;
+  }
+  out = WallCandidate{x.f.n, x.a};
+  return true;
+}
+
+// Descents from the starts, lowest area first (the first usually ends in
+// the global minimum and later ones join it early); minima within
+// merge_angle are one.
+std::vector<WallCandidate> minima3D(const NewWallMeasure& m, const std::vector<Vec3>& starts,
                                     const ShortestWallSearchOptions& o) {
-  constexpr double kCoarseSize = 1e-2, kBasinAngle = 0.05, kRefineStep = 0.05;
-  std::vector<WallCandidate> coarse;
-  for (const Vec3& n0 : starts)
-    addCandidate(coarse, nelderMead(m, n0.normalized(), 0.25, kCoarseSize, 1e-6, o.max_iterations),
-                 kBasinAngle);
+  std::vector<std::pair<double, Vec3>> order;
+  order.reserve(starts.size());
+  for (const Vec3& s : starts) {
+    const Vec3 n = s.normalized();
+    order.emplace_back(m.measure(n), n);
+  }
+  std::stable_sort(order.begin(), order.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<WallCandidate> out;
-  for (const WallCandidate& c : coarse)
-    addCandidate(out, nelderMead(m, c.normal, kRefineStep, 1e-6, o.area_tolerance, o.max_iterations),
-                 o.merge_angle);
+  WallCandidate c;
+  for (const auto& [a, n] : order)
+    if (descend(m, n, out, o, c)) addCandidate(out, c, o.merge_angle);
+  // Near a plane of symmetry the gradient is resolved only to ~1e-8 rad (edges
+  // lying in the plane make the crossings ill-conditioned) while the area is
+  // flat to rounding: a minimum within kSnapAngle of a start whose area is no
+  // larger (to rounding) is that start, exactly. A box's minima are then its
+  // axes, and their planes meet the vertices on them within splitCell's snap
+  // tolerance rather than 1e-8 beside them.
+  const double cos_snap = std::cos(kSnapAngle);
+  for (WallCandidate& w : out)
+    for (const auto& [a, n] : order)
+      if (std::abs(w.normal.dot(n)) >= cos_snap && a <= w.measure * (1 + 1e-15)) {
+        w = WallCandidate{w.normal.dot(n) < 0 ? Vec3(-n) : n, a};
+        break;
+      }
   return out;
 }
 

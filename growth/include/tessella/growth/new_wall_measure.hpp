@@ -10,7 +10,8 @@
 // more than twice, the piece through the point, as Tissue::splitCell cuts).
 // 3D: the area of the polyhedron's section by the plane (all pieces of the
 // section of a non-convex cell), from the divergence theorem over the
-// boundary segments where the plane crosses each wall.
+// boundary segments where the plane crosses each wall, and its exact
+// gradient as the normal turns (for the 3D search's descent).
 
 #include <cstdint>
 #include <span>
@@ -37,6 +38,11 @@ class NewWallMeasure {
   double length(double theta) const;
   /// 2D and 3D: measure of the new wall for the plane with this normal.
   double measure(const Vec3& normal) const;
+  /// 3D: section area for the unit normal n and, in `gradient`, its exact
+  /// derivative as n turns (tangent to the sphere at n): wherever the plane
+  /// passes through no vertex, A(n + dn) = A(n) + gradient . dn + O(|dn|^2)
+  /// for tangent dn.
+  double measureAndGradient(const Vec3& n, Vec3& gradient) const;
 
   /// 2D: the chord of the line through the point with in-plane normal
   /// (nx, ny): its ends as abscissae along the direction (-ny, nx), the loop
@@ -59,7 +65,8 @@ class NewWallMeasure {
   Plane plane(double theta) const { return Plane{point_, frame_.direction(theta)}; }
 
  private:
-  double section(const Vec3& n) const;
+  template <bool kGradient>
+  double section(const Vec3& n, Vec3* gradient) const;
 
   int dim_;
   CellFrame frame_;

@@ -14,10 +14,23 @@
 // directions, O(n) pieces per cell. For a point outside some chord (very
 // concave cells) L is sampled at `samples` angles and each sampled minimum
 // refined by Brent's method.
-// 3D: the section area A(n) over the sphere of normals is minimised by
-// Nelder-Mead from 13 starts (the directions of a cube's faces, edges and
-// corners, so every orientation is within 28 degrees of a start), each run in
-// a local chart around its start; minima closer than `merge_angle` merge.
+// 3D: the section area A(n) over the sphere of normals is C1 where the cell
+// is convex and smooth between the great circles where the plane passes
+// through a vertex; it is minimised by descents with its exact gradient
+// (NewWallMeasure::measureAndGradient), a Riemannian BFGS with backtracking,
+// from 13 starts (the directions of a cube's faces, edges and corners, so
+// every orientation is within 28 degrees of a start), lowest area first. A
+// descent stops when the quadratic model predicts less than
+// `area_tolerance` (relative) of further decrease and the gradient step
+// |g| / A is below 1e-10 rad, or when no step lowers A above rounding; the
+// point is then probed 1e-3 rad away in six directions, whose second
+// differences give the Hessian: it is kept only when no probe is lower and
+// no curvature is negative (below -1e-6 A), else the descent leaves the
+// saddle and goes on.
+// A descent that comes within 0.05 rad of a minimum found before, heading
+// towards it, joins it; minima closer than `merge_angle` merge. A minimum
+// within 1e-7 rad of a start whose area is no larger to rounding is that
+// start exactly (near a symmetry plane the gradient is ill-conditioned).
 
 #include <vector>
 
@@ -34,8 +47,8 @@ struct WallCandidate {
 struct ShortestWallSearchOptions {
   int samples = 36;                ///< 2D sampled fallback: angles over [0, pi)
   double angle_tolerance = 1e-12;  ///< 2D: Newton / Brent stop at this step (rad)
-  double area_tolerance = 1e-12;   ///< 3D: Nelder-Mead relative spread to stop
-  int max_iterations = 400;        ///< 3D: per Nelder-Mead run
+  double area_tolerance = 1e-12;   ///< 3D: relative decrease still predicted at a minimum
+  int max_iterations = 400;        ///< 3D: iterations per descent
   double merge_angle = 1e-3;       ///< minima within this angle (rad) are one
 };
 
