@@ -621,11 +621,9 @@ void checkLists(const char* name, std::span<const Index> offsets, std::size_t nu
 }
 
 template <typename H>
-std::vector<Oriented<H>> unpacked(std::span<const Index> items) {
-  std::vector<Oriented<H>> out;
-  out.reserve(items.size());
+void unpack(std::span<const Index> items, std::vector<Oriented<H>>& out) {
+  out.clear();
   for (Index packed : items) out.emplace_back(H(packed >> 1), (packed & 1u) != 0);
-  return out;
 }
 
 }  // namespace
@@ -656,16 +654,19 @@ CellComplex CellComplex::fromLayout(const ComplexLayout& layout) {
       throw TopologyError(id("edge", static_cast<Index>(e)) + ": " + error.what(), {1, static_cast<Index>(e)});
     }
   }
+  // (Scratch lists reused across elements: a snapshot of 1e6 cells has millions.)
+  std::vector<OrientedEdge> loop;
   for (std::size_t f = 0; f < nf; ++f) {
-    const auto loop = unpacked<EdgeId>(list(layout.face_edge_offsets, layout.face_edges, f));
+    unpack<EdgeId>(list(layout.face_edge_offsets, layout.face_edges, f), loop);
     try {
       c.addFace(loop);
     } catch (const TopologyError& error) {
       throw TopologyError(id("face", static_cast<Index>(f)) + ": " + error.what(), {2, static_cast<Index>(f)});
     }
   }
+  std::vector<OrientedFace> faces;
   for (std::size_t k = 0; k < nc; ++k) {
-    const auto faces = unpacked<FaceId>(list(layout.volume_face_offsets, layout.volume_faces, k));
+    unpack<FaceId>(list(layout.volume_face_offsets, layout.volume_faces, k), faces);
     try {
       c.addVolume(faces);
     } catch (const TopologyError& error) {
@@ -673,22 +674,23 @@ CellComplex CellComplex::fromLayout(const ComplexLayout& layout) {
     }
   }
   // Regions: the same elements the borders gave, in the listed order.
+  std::vector<Index> built, wanted;
   auto reorder = [&](int degree, auto& ragged, std::size_t count, const std::vector<Index>& offsets,
                      const std::vector<Index>& items, const char* what) {
     using Item = typename std::decay_t<decltype(ragged[0][0])>;
+    std::vector<Item> ordered;
     for (std::size_t i = 0; i < count; ++i) {
       const auto stored = list(offsets, items, i);
-      std::vector<Index> built;
+      built.clear();
       for (Item x : ragged[i]) built.push_back(x.index());
-      std::vector<Index> wanted(stored.begin(), stored.end());
+      wanted.assign(stored.begin(), stored.end());
       std::sort(built.begin(), built.end());
       std::sort(wanted.begin(), wanted.end());
       if (built != wanted)
         throw TopologyError(id(degreeName(degree), static_cast<Index>(i)) + ": its " + what +
                                 " list does not hold the elements its borders give",
                             {degree, static_cast<Index>(i)});
-      std::vector<Item> ordered;
-      ordered.reserve(stored.size());
+      ordered.clear();
       for (Index x : stored) ordered.emplace_back(x);
       ragged.assign(i, std::span<const Item>(ordered));
     }
