@@ -41,6 +41,21 @@ double bestOf(int runs, F&& f) {
   }
   return best;
 }
+
+// One table row: the file's size, the best of three parses (io::PlyFile::read)
+// and imports (parse included), their ratio, and its FIGURE line.
+void parseAndImportRow(const std::string& path, bool binary, const std::string& figure) {
+  const double mb = double(std::filesystem::file_size(path)) / 1e6;
+  const int runs = 3;
+  const double parse = bestOf(runs, [&] { io::PlyFile::read(path); });
+  std::size_t imported = 0;
+  const double import = bestOf(runs, [&] { imported = io::importTissue(path).tissue.numCells(); });
+  std::printf("%-22s %10.1f %10.3f %10.3f %8.2f   (%zu cells)\n", binary ? "binary_little_endian" : "ascii", mb,
+              parse, import, import / parse, imported);
+  bench::printFigure(figure + (binary ? "binary" : "ascii") + "." + std::to_string(imported) + "cells", import, "s",
+                     parse, "ply_parse", 2.0);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -62,15 +77,7 @@ int main(int argc, char** argv) {
     const bool binary = format != io::testing::MgxFixture::Format::Ascii;
     const std::string path = (dir / (binary ? "mesh_binary.ply" : "mesh_ascii.ply")).string();
     m.write(path, format);
-    const double mb = double(std::filesystem::file_size(path)) / 1e6;
-    const int runs = 3;
-    const double parse = bestOf(runs, [&] { io::PlyFile::read(path); });
-    std::size_t imported = 0;
-    const double import = bestOf(runs, [&] { imported = io::importTissue(path).tissue.numCells(); });
-    std::printf("%-22s %10.1f %10.3f %10.3f %8.2f   (%zu cells)\n", binary ? "binary_little_endian" : "ascii", mb,
-                parse, import, import / parse, imported);
-    bench::printFigure(std::string("import.mgx_ply.") + (binary ? "binary" : "ascii") + "." + std::to_string(imported) +
-                           "cells", import, "s", parse, "ply_parse", 2.0);
+    parseAndImportRow(path, binary, "import.mgx_ply.");
   }
 
   // A 3D cell complex: a Voronoi tissue in a box, written as OpenAlea writes one.
@@ -84,15 +91,7 @@ int main(int argc, char** argv) {
   for (bool binary : {true, false}) {
     const std::string path = (dir / (binary ? "complex_binary.ply" : "complex_ascii.ply")).string();
     io::writeCellComplexPly(voronoi, path, io::CellComplexPlyOptions{binary});
-    const double mb = double(std::filesystem::file_size(path)) / 1e6;
-    const int runs = 3;
-    const double parse = bestOf(runs, [&] { io::PlyFile::read(path); });
-    std::size_t imported = 0;
-    const double import = bestOf(runs, [&] { imported = io::importTissue(path).tissue.numCells(); });
-    std::printf("%-22s %10.1f %10.3f %10.3f %8.2f   (%zu cells)\n", binary ? "binary_little_endian" : "ascii", mb,
-                parse, import, import / parse, imported);
-    bench::printFigure(std::string("import.cell_complex_ply.") + (binary ? "binary" : "ascii") + "." +
-                           std::to_string(imported) + "cells", import, "s", parse, "ply_parse", 2.0);
+    parseAndImportRow(path, binary, "import.cell_complex_ply.");
   }
   std::filesystem::remove_all(dir);
 

@@ -16,6 +16,10 @@
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/tissue.hpp"
 
+namespace tessella::io {
+struct ImportReport;
+}
+
 namespace tessella::python {
 
 namespace py = pybind11;
@@ -36,6 +40,10 @@ void bindDiffusion(py::module_& m);
 void bindCompartments(py::module_& m);
 void bindElasticity(py::module_& m);
 void bindLabelImage(py::module_& m);
+
+/// An import's report as the dict every importer returns beside its tissue
+/// (path, format, file counts, simplified vertices, repairs, notes).
+py::dict importReportDict(const io::ImportReport& report);
 
 /// Python code names cells by their slot index; a dead or out-of-range one
 /// is bad input (ValueError), never undefined behaviour.

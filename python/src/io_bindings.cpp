@@ -20,6 +20,19 @@ io::VtuOptions vtuOptions(const std::string& compression, int level) {
 
 }  // namespace
 
+py::dict importReportDict(const io::ImportReport& r) {
+  py::dict report;
+  report["path"] = r.path;
+  report["format"] = r.format;
+  report["file_vertices"] = r.file_vertices;
+  report["file_faces"] = r.file_faces;
+  report["file_faces_noun"] = r.file_faces_noun;
+  report["simplified_vertices"] = r.simplified_vertices;
+  report["repairs"] = r.repairs;
+  report["notes"] = r.notes;
+  return report;
+}
+
 void bindIo(py::module_& m) {
   m.def("write_vtu",
         [](const Tissue& t, const std::string& path, const std::string& compression, int level) {
@@ -34,16 +47,7 @@ void bindIo(py::module_& m) {
            const std::string& label_array) {
           io::ImportResult r =
               io::importTissue(path, io::ImportOptions{format, scale, simplify, repair, label_array});
-          py::dict report;
-          report["path"] = r.report.path;
-          report["format"] = r.report.format;
-          report["file_vertices"] = r.report.file_vertices;
-          report["file_faces"] = r.report.file_faces;
-          report["file_faces_noun"] = r.report.file_faces_noun;
-          report["simplified_vertices"] = r.report.simplified_vertices;
-          report["repairs"] = r.report.repairs;
-          report["notes"] = r.report.notes;
-          return py::make_tuple(std::move(r.tissue), report);
+          return py::make_tuple(std::move(r.tissue), importReportDict(r.report));
         },
         py::arg("path"), py::arg("format") = "auto", py::arg("scale") = 1.0, py::arg("simplify") = 0.0,
         py::arg("repair") = false, py::arg("label_array") = "", R"doc(

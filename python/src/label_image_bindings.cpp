@@ -83,21 +83,13 @@ void bindLabelImage(py::module_& m) {
         if (py::isinstance<py::str>(image) || py::hasattr(image, "__fspath__")) {
           if (origin) throw InputError("origin applies to arrays; an image file gives its own");
           img = io::readLabelImage(py::str(image).cast<std::string>());
-          if (voxel_size) o.image.voxel_size = *voxel_size;
         } else {
           img = imageFromArray(py::array::ensure(image), voxel_size, origin);
-          if (voxel_size) o.image.voxel_size = *voxel_size;  // checked (and named) as an option
         }
+        if (voxel_size) o.image.voxel_size = *voxel_size;  // checked (and named) as an option
         io::ImportResult r = io::tissueFromLabelImage(img, o);
         r.report.format = "label_image";
-        py::dict report;
-        report["path"] = r.report.path;
-        report["format"] = r.report.format;
-        report["file_faces"] = r.report.file_faces;
-        report["file_faces_noun"] = r.report.file_faces_noun;
-        report["simplified_vertices"] = r.report.simplified_vertices;
-        report["notes"] = r.report.notes;
-        return py::make_tuple(std::move(r.tissue), report);
+        return py::make_tuple(std::move(r.tissue), importReportDict(r.report));
       },
       py::arg("image"), py::arg("voxel_size") = py::none(), py::arg("origin") = py::none(),
       py::arg("background") = std::vector<std::int64_t>{0, 1}, py::arg("drop_labels") = std::vector<std::int64_t>{},
