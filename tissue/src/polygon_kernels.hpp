@@ -309,44 +309,57 @@ FoldedSurface foldedSurface(std::size_t n, At at) {
   return out;
 }
 
-// Loop of n points read through `at(i)`. See geometry.hpp for the definition.
-template <typename At>
-inline void polygonKernel(std::size_t n, At at, bool planar, bool moments, double& area,
-                          Vec3& centroid, Vec3& normal, Mat3* second_moment, FoldedSurface* surface = nullptr) {
-  if (planar) {
-    // Shoelace in the z = 0 plane, one pass, about the first vertex (any
-    // origin gives the same exact result; a local one keeps it well conditioned).
-    const Vec3 o = at(0);
-    double a2 = 0, cx = 0, cy = 0, ixx = 0, iyy = 0, ixy = 0;
-    double px = at(n - 1).x() - o.x(), py = at(n - 1).y() - o.y();
-    for (std::size_t i = 0; i < n; ++i) {
-      const Vec3& qv = at(i);
-      const double qx = qv.x() - o.x(), qy = qv.y() - o.y();
-      const double cr = px * qy - qx * py;
-      a2 += cr;
-      cx += (px + qx) * cr;
-      cy += (py + qy) * cr;
-      if (moments) {
-        ixx += (px * px + px * qx + qx * qx) * cr;
-        iyy += (py * py + py * qy + qy * qy) * cr;
-        ixy += (px * qy + 2 * px * py + 2 * qx * qy + qx * py) * cr;
-      }
-      px = qx;
-      py = qy;
+// The planar (z = 0) case of polygonKernel: the shoelace in one pass, about
+// the first vertex (any origin gives the same exact result; a local one keeps
+// it well conditioned). Always inlined: the batched 2D recompute calls it
+// straight from its loop, which is bandwidth-bound only when nothing is called.
+template <bool Moments, typename At>
+[[gnu::always_inline]] inline void planarPolygonKernel(std::size_t n, At at, double& area, Vec3& centroid,
+                                                       Vec3& normal, Mat3* second_moment) {
+  const Vec3 o = at(0);
+  double a2 = 0, cx = 0, cy = 0, ixx = 0, iyy = 0, ixy = 0;
+  double px = at(n - 1).x() - o.x(), py = at(n - 1).y() - o.y();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3& qv = at(i);
+    const double qx = qv.x() - o.x(), qy = qv.y() - o.y();
+    const double cr = px * qy - qx * py;
+    a2 += cr;
+    cx += (px + qx) * cr;
+    cy += (py + qy) * cr;
+    if constexpr (Moments) {
+      ixx += (px * px + px * qx + qx * qx) * cr;
+      iyy += (py * py + py * qy + qy * qy) * cr;
+      ixy += (px * qy + 2 * px * py + 2 * qx * qy + qx * py) * cr;
     }
-    const double signed_area = 0.5 * a2;
-    const double s = signed_area < 0 ? -1.0 : 1.0;
-    area = s * signed_area;
-    normal = Vec3(0, 0, signed_area == 0 ? 0.0 : s);
-    const double gx = signed_area == 0 ? 0.0 : cx / (3 * a2), gy = signed_area == 0 ? 0.0 : cy / (3 * a2);
-    centroid = Vec3(o.x() + gx, o.y() + gy, o.z());
-    if (moments && second_moment) {
+    px = qx;
+    py = qy;
+  }
+  const double signed_area = 0.5 * a2;
+  const double s = signed_area < 0 ? -1.0 : 1.0;
+  area = s * signed_area;
+  normal = Vec3(0, 0, signed_area == 0 ? 0.0 : s);
+  const double gx = signed_area == 0 ? 0.0 : cx / (3 * a2), gy = signed_area == 0 ? 0.0 : cy / (3 * a2);
+  centroid = Vec3(o.x() + gx, o.y() + gy, o.z());
+  if constexpr (Moments) {
+    if (second_moment) {
       Mat3 m = Mat3::Zero();
       m(0, 0) = s * ixx / 12 - area * gx * gx;
       m(1, 1) = s * iyy / 12 - area * gy * gy;
       m(0, 1) = m(1, 0) = s * ixy / 24 - area * gx * gy;
       *second_moment = m;
     }
+  }
+}
+
+// Loop of n points read through `at(i)`. See geometry.hpp for the definition.
+template <typename At>
+inline void polygonKernel(std::size_t n, At at, bool planar, bool moments, double& area,
+                          Vec3& centroid, Vec3& normal, Mat3* second_moment, FoldedSurface* surface = nullptr) {
+  if (planar) {
+    if (moments)
+      planarPolygonKernel<true>(n, at, area, centroid, normal, second_moment);
+    else
+      planarPolygonKernel<false>(n, at, area, centroid, normal, second_moment);
     return;
   }
   // General (surface or 3D wall): signed fan from the vertex mean.
