@@ -193,7 +193,7 @@ int main(int argc, char** argv) {
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
   const std::size_t max2d = quick ? 1000 : bench::countArgument(argc, argv, 1, "max_cells_2d", 100000, 0, 10000000, usage);
   const std::size_t max3d = quick ? 100 : bench::countArgument(argc, argv, 2, "max_cells_3d", 10000, 0, 1000000, usage);
-  std::printf("mesh_bench: Voronoi tissues with unit mean cell size; times are wall-clock, single run\n");
+  std::printf("mesh_bench: Voronoi tissues with unit mean cell size; times are wall-clock, 2D rows below 10^5 cells best of 3 in turns, others single runs\n");
 
   for (std::size_t n = 1000; n <= max2d; n *= 10) {
     const double side = std::sqrt(static_cast<double>(n));
@@ -202,14 +202,23 @@ int main(int argc, char** argv) {
     MeshOptions o;
     o.min_angle_degrees = 20;
     o.max_edge_length = 0.25;  // about 30 triangles per cell
-    auto a = Clock::now();
-    const FeMesh mesh = meshTissue(t, o);
-    auto b = Clock::now();
-    const std::size_t alone = cgalAlone(t, o);
-    auto c = Clock::now();
+    // In turns, best of 3 below 10^5 cells: on a shared machine one run of
+    // each can differ by 1.5x from load alone.
+    const int runs = n < 100000 ? 3 : 1;
+    double mine = 1e300, theirs = 1e300;
+    FeMesh mesh;
+    std::size_t alone = 0;
+    for (int r = 0; r < runs; ++r) {
+      auto a = Clock::now();
+      mesh = meshTissue(t, o);
+      auto b = Clock::now();
+      alone = cgalAlone(t, o);
+      auto c = Clock::now();
+      mine = std::min(mine, seconds(a, b));
+      theirs = std::min(theirs, seconds(b, c));
+    }
     // issue #19: within 1.3x of CGAL alone
-    row("2D", t.numCells(), static_cast<std::size_t>(mesh.numElements()), seconds(a, b), seconds(b, c), alone,
-        "mesh.2d", 1.3);
+    row("2D", t.numCells(), static_cast<std::size_t>(mesh.numElements()), mine, theirs, alone, "mesh.2d", 1.3);
   }
   for (std::size_t n = 1000; n <= std::min<std::size_t>(max2d, 10000); n *= 10) {
     const double radius = std::sqrt(static_cast<double>(n) / M_PI);
