@@ -113,6 +113,8 @@ NetworkIntegrator::NetworkIntegrator(NetworkSystem& system, IntegratorOptions op
   if (!m.A) throw std::runtime_error("network integrator: SUNSparseMatrix failed");
   m.solver = SUNLinSol_KLU(m.y, m.A, m.context);
   if (!m.solver) throw std::runtime_error("network integrator: SUNLinSol_KLU failed");
+  // AMD: the Jacobian's pattern is symmetric (cell adjacency), where AMD fills in less than COLAMD.
+  check(SUNLinSol_KLUSetOrdering(m.solver, 0), "SUNLinSol_KLUSetOrdering");
   m.cvode = CVodeCreate(CV_BDF, m.context);
   if (!m.cvode) throw std::runtime_error("network integrator: CVodeCreate failed");
   check(CVodeSetErrHandlerFn(m.cvode, &Impl::errorHandler, &m), "CVodeSetErrHandlerFn");

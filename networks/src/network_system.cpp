@@ -31,8 +31,17 @@ void addAt(CsrMatrix& J, std::size_t r, std::size_t c, double v) {
 }
 }  // namespace
 
-NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph)
-    : model_(std::move(model)), graph_(std::move(graph)) {
+const EnumTable<JacobianKind>& jacobianKinds() {
+  static const EnumTable<JacobianKind> table(
+      "Jacobian", {{"exact", JacobianKind::Exact, "The exact derivative dF/dy."},
+                   {"neighbours", JacobianKind::Neighbours,
+                    "dF/dy without the second-neighbour terms of PIN transport: sparser, an approximation "
+                    "for the Newton iteration (conserves amounts all the same)."}});
+  return table;
+}
+
+NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKind jacobian)
+    : model_(std::move(model)), graph_(std::move(graph)), jacobian_kind_(jacobian) {
   model_.validate();
   graph_.validate();
   for (const std::string& p : model_.cell_properties)
@@ -63,7 +72,7 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph)
         for (std::size_t f : neighbours_[c]) {
           const auto j = static_cast<std::size_t>(other(graph_.interfaces[f], c));
           cols.push_back(index(j, s));
-          if (pinned)
+          if (pinned && jacobian_kind_ == JacobianKind::Exact)
             for (std::size_t g : neighbours_[j]) cols.push_back(index(static_cast<std::size_t>(other(graph_.interfaces[g], j)), s));
         }
       std::sort(cols.begin(), cols.end());
@@ -145,6 +154,11 @@ void NetworkSystem::rhs(double t, std::span<const double> y, std::span<double> y
   }
 }
 
+bool NetworkSystem::inPattern(std::size_t r, std::size_t c) const {
+  return std::binary_search(pattern_.column.begin() + static_cast<std::ptrdiff_t>(pattern_.row_start[r]),
+                            pattern_.column.begin() + static_cast<std::ptrdiff_t>(pattern_.row_start[r + 1]), c);
+}
+
 void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) {
   if (J.column.size() != pattern_.column.size()) J = pattern_;
   std::fill(J.value.begin(), J.value.end(), 0.0);
@@ -212,6 +226,8 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
         add(j, TP * ci * L * pin_weight_derivative_[j] / D);
         for (std::size_t g : neighbours_[i]) {
           const auto m = static_cast<std::size_t>(other(graph_.interfaces[g], i));
+          // Neighbours: leave out the pair of entries when the receiver's row lacks m (a second neighbour).
+          if (jacobian_kind_ == JacobianKind::Neighbours && !inPattern(rj, index(m, p))) continue;
           add(m, -TP * ci * L * pin_weight_[j] * graph_.interfaces[g].measure * pin_weight_derivative_[m] / (D * D));
         }
       }

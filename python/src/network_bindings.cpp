@@ -156,10 +156,11 @@ f(c) = base**c ("exponential") or c**exponent ("power"); the efflux from i into 
 The ODE system of a model on a graph: dy/dt = F(t, y) for the AMOUNTS y[cell * num_species + species]
 (concentration = amount / measure). Integrate with integrate() (CVODE BDF, sparse Newton with KLU).
 )doc")
-      .def(py::init([](const NetworkModel& model, const NetworkGraph& graph) {
-             return std::make_unique<NetworkSystem>(model, graph);
+      .def(py::init([](const NetworkModel& model, const NetworkGraph& graph, const std::string& jacobian) {
+             return std::make_unique<NetworkSystem>(model, graph, jacobianKinds().parse(jacobian));
            }),
-           py::arg("model"), py::arg("graph"))
+           py::arg("model"), py::arg("graph"), py::arg("jacobian") = "exact",
+           "jacobian: 'exact', or 'neighbours' (without the second-neighbour PIN terms; cheaper Newton matrices).")
       .def_property_readonly("size", &NetworkSystem::size)
       .def_property_readonly("num_cells", &NetworkSystem::numCells)
       .def_property_readonly("num_species", &NetworkSystem::numSpecies)

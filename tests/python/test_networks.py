@@ -53,7 +53,7 @@ def reference_rhs(t, y):
     return out
 
 
-def make_system():
+def make_system(jacobian="exact"):
     model = tessella.NetworkModel(
         [
             tessella.NetworkSpecies("a", "v * a^2 / ((K^2 + a^2) * (1 + h)) + p - d * a", PERM_A),
@@ -63,7 +63,7 @@ def make_system():
         pin=tessella.PinTransport("a", base=PIN_BASE, rate=PIN_RATE, total=PIN_TOTAL, saturation=PIN_KAPPA),
     )
     graph = tessella.NetworkGraph(list(MEASURE), INTERFACES)
-    return tessella.NetworkSystem(model, graph)
+    return tessella.NetworkSystem(model, graph, jacobian)
 
 
 def initial_amounts():
@@ -80,9 +80,10 @@ def test_rhs_matches_the_equations_written_out():
     np.testing.assert_allclose(system.rhs(0.0, list(y)), reference_rhs(0.0, y), rtol=1e-12, atol=1e-12)
 
 
+@pytest.mark.parametrize("jacobian", ["exact", "neighbours"])
 @pytest.mark.parametrize("rtol", [1e-6, 1e-9])
-def test_ten_cell_nonlinear_network_matches_solve_ivp(rtol):
-    system = make_system()
+def test_ten_cell_nonlinear_network_matches_solve_ivp(rtol, jacobian):
+    system = make_system(jacobian)
     y0 = initial_amounts()
     T = 8.0
     ours = np.array(system.integrate(list(y0), 0.0, T, relative_tolerance=rtol, absolute_tolerance=rtol * 1e-3))

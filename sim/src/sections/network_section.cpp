@@ -48,6 +48,12 @@ void declareNetworkSection(Schema& s) {
   key("network.max_steps", ValueType::Int, "Most internal CVODE steps per solve interval.")
       .byDefault(std::int64_t{100000})
       .atLeast(1);
+  key("network.jacobian", ValueType::Enum,
+      "The Jacobian of CVODE's Newton iteration: `exact`, or `neighbours` (without the second-neighbour terms "
+      "of PIN transport: a sparser matrix, cheaper to factorise; an approximation that changes the work, not "
+      "the accuracy, which the tolerances control).")
+      .oneOf(networks::jacobianKinds().names())
+      .byDefault(std::string("exact"));
   key("network.parameters", ValueType::String,
       "Named constants of the reactions and initial values, \"name=value, ...\", e.g. \"p=1, d=0.1\".")
       .whenAbsent("none");
@@ -112,6 +118,7 @@ NetworkSpec readNetworkSection(const Config& c, std::uint64_t noise_seed) {
   n.integrator.relative_tolerance = c.getFloat("network.relative_tolerance");
   n.integrator.absolute_tolerance = c.getFloat("network.absolute_tolerance");
   n.integrator.max_steps = static_cast<long>(c.getInt("network.max_steps"));
+  n.jacobian = parseFromConfig(c, networks::jacobianKinds(), "network.jacobian");
   networks::NetworkModel& m = n.model;
   if (c.has("network.parameters"))
     for (const auto& [name, value] : detail::parseNamedItems(c, "network.parameters"))

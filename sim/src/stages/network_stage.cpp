@@ -107,7 +107,7 @@ void NetworkStage::apply(Tissue& tissue, const StepContext& context) {
         detail::doubleColumn(tissue, spec_.model.species[s].name + "_amount", DivisionPolicy::SplitByMeasure);
     for (std::size_t k = 0; k < cells.size(); ++k) y[k * S + s] = amount[cells[k]];
   }
-  networks::NetworkSystem system(spec_.model, std::move(graph));
+  networks::NetworkSystem system(spec_.model, std::move(graph), spec_.jacobian);
   if (elapsed > 0 && !cells.empty()) {
     networks::NetworkIntegrator integrator(system, spec_.integrator);
     const double t1 = context.time + context.dt;

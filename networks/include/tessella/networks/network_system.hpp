@@ -18,6 +18,7 @@
 
 #include "tessella/networks/network_graph.hpp"
 #include "tessella/networks/network_model.hpp"
+#include "tessella/tissue/enum_table.hpp"
 
 namespace tessella::networks {
 
@@ -41,11 +42,21 @@ struct PinSides {
 
 class ReactionSet;
 
+/// What jacobian() computes: `Exact`, dF/dy; `Neighbours`, dF/dy without the
+/// entries that couple a cell with the neighbours of its neighbours (the
+/// derivatives of a neighbour's PIN denominator), a sparser matrix (7 instead
+/// of 19 entries per row on a hexagonal grid) that CVODE's Newton iteration
+/// uses as an approximation. Both have zero column sums in the transport
+/// part, so each conserves amounts.
+enum class JacobianKind { Exact, Neighbours };
+/// "exact", "neighbours".
+const EnumTable<JacobianKind>& jacobianKinds();
+
 class NetworkSystem {
  public:
   /// Validates both, compiles the reactions (InputError naming the species
   /// and muparser's message), and builds the Jacobian's pattern.
-  NetworkSystem(NetworkModel model, NetworkGraph graph);
+  NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKind jacobian = JacobianKind::Exact);
   ~NetworkSystem();
   NetworkSystem(const NetworkSystem&) = delete;
   NetworkSystem& operator=(const NetworkSystem&) = delete;
@@ -62,10 +73,11 @@ class NetworkSystem {
   void rhs(double t, std::span<const double> y, std::span<double> ydot);
   /// The pattern of dF/dy (values zero): the species of a cell couple with
   /// each other (reactions), a transported species with its neighbours, and
-  /// the PIN species with the neighbours of its neighbours.
+  /// the PIN species with the neighbours of its neighbours (JacobianKind::Exact).
   const CsrMatrix& pattern() const { return pattern_; }
   /// dF/dy at (t, y) on pattern(): transport and PIN exactly, reactions by
-  /// central differences per cell (each reaction depends on its own cell only).
+  /// central differences per cell (each reaction depends on its own cell
+  /// only); with JacobianKind::Neighbours without the second-neighbour terms.
   void jacobian(double t, std::span<const double> y, CsrMatrix& J);
 
   /// PIN on both sides of every interface at state y (zeros without PIN transport).
@@ -78,6 +90,7 @@ class NetworkSystem {
   double totalAmount(std::span<const double> y, std::size_t s) const;
 
  private:
+  bool inPattern(std::size_t r, std::size_t c) const;
   void evaluateReactions(double t, std::size_t cell, std::span<const double> conc, std::span<double> rate);
 
   NetworkModel model_;
@@ -85,6 +98,7 @@ class NetworkSystem {
   std::unique_ptr<ReactionSet> reactions_;
   std::vector<std::vector<std::size_t>> neighbours_;       // per cell: interface indices
   CsrMatrix pattern_;
+  JacobianKind jacobian_kind_ = JacobianKind::Exact;
   int pin_species_ = -1;
   std::vector<double> pin_denominator_, pin_weight_, pin_weight_derivative_, conc_;
 };

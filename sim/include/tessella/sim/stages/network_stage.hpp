@@ -16,6 +16,7 @@
 
 #include "tessella/networks/network_integrator.hpp"
 #include "tessella/networks/network_model.hpp"
+#include "tessella/networks/network_system.hpp"
 #include "tessella/sim/stages/coupling_stages.hpp"
 #include "tessella/sim/stages/stage.hpp"
 
@@ -31,6 +32,8 @@ struct NetworkSpec {
   /// Seed of the initial noise (the run's rng_seed in a YAML run).
   std::uint64_t noise_seed = 0;
   networks::IntegratorOptions integrator;
+  /// The Newton matrix's Jacobian (networks::JacobianKind).
+  networks::JacobianKind jacobian = networks::JacobianKind::Exact;
   std::size_t every = 1;  ///< integrate every `every` steps, over the time since the last solve
 
   bool enabled() const { return !model.species.empty(); }
