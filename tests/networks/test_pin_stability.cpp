@@ -187,3 +187,58 @@ TEST_CASE("From noise, runs just below the threshold stay uniform and just above
     }
   }
 }
+
+namespace {
+// |q| of the torus mode (k1, k2) for hexagon centres a = sqrt(3) apart
+// (circumradius 1): q . a1 = theta1, q . a2 = theta2 with a1 = a (1, 0),
+// a2 = a (1/2, sqrt(3)/2), each theta taken in (-pi, pi].
+double waveNumber(int k1, int k2) {
+  auto wrap = [](int k) {
+    double t = 2 * std::numbers::pi * k / N;
+    return t > std::numbers::pi ? t - 2 * std::numbers::pi : t;
+  };
+  const double a = std::sqrt(3.0), t1 = wrap(k1), t2 = wrap(k2);
+  const double qx = t1 / a, qy = (t2 - t1 / 2) / (a * std::sqrt(3.0) / 2);
+  return std::hypot(qx, qy);
+}
+}  // namespace
+
+TEST_CASE("Just above the threshold, the pattern's wavelength is that of the fastest-growing mode", "[networks]") {
+  const double x = 1.05 * criticalLogBase();
+  NetworkSystem system(model(std::exp(x)), torus());
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> noise(-1e-7 * kC0, 1e-7 * kC0);
+  std::vector<double> y(N * N);
+  for (double& v : y) v = kV * (kC0 + noise(rng));
+  IntegratorOptions o;
+  o.relative_tolerance = 1e-12;
+  o.absolute_tolerance = 1e-14;
+  const Mode fastest = fastestMode(x);
+  const double rate = sigma(fastest.g, x);
+  // Growth by e^10: still linear (amplitude ~ 1e-3 c0), the spectrum gathered near the fastest modes.
+  NetworkIntegrator(system, o).advance(y, 0.0, 10.0 / rate);
+  // Power spectrum of the deviation; its power-weighted mean wave number.
+  double weighted = 0, total = 0, largest = 0;
+  for (int k1 = 0; k1 < N; ++k1)
+    for (int k2 = 0; k2 < N; ++k2) {
+      if (k1 == 0 && k2 == 0) continue;
+      double re = 0, im = 0;
+      for (int i = 0; i < N; ++i)
+        for (int j = 0; j < N; ++j) {
+          const double phase = 2 * std::numbers::pi * (k1 * i + k2 * j) / N;
+          const double d = y[cell(i, j)] / kV - kC0;
+          re += d * std::cos(phase);
+          im -= d * std::sin(phase);
+        }
+      const double power = re * re + im * im;
+      weighted += power * waveNumber(k1, k2);
+      total += power;
+      largest = std::max(largest, std::sqrt(power) * 2 / (N * N));
+    }
+  const double measured = 2 * std::numbers::pi / (weighted / total);
+  const double predicted = 2 * std::numbers::pi / waveNumber(fastest.k1, fastest.k2);
+  INFO("wavelength " << measured << ", fastest-growing mode " << predicted << ", largest mode amplitude "
+                     << largest);
+  CHECK(largest < 1e-2 * kC0);  // still linear
+  CHECK(measured == Approx(predicted).epsilon(0.15));
+}
