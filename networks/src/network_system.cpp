@@ -20,6 +20,7 @@ double CsrMatrix::at(std::size_t r, std::size_t c) const {
 
 namespace {
 int other(const NetworkInterface& f, std::size_t c) { return f.cell_i == static_cast<int>(c) ? f.cell_j : f.cell_i; }
+std::size_t otherCell(const NetworkInterface& f, std::size_t c) { return static_cast<std::size_t>(other(f, c)); }
 
 // J(r, c) += v on a fixed pattern.
 void addAt(CsrMatrix& J, std::size_t r, std::size_t c, double v) {
@@ -48,6 +49,8 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
     if (!graph_.properties.count(p))
       throw InputError("network: the cell property '" + p + "' the reactions read is not in the graph");
   reactions_ = std::make_unique<ReactionSet>(model_);
+  for (const std::string& name : model_.cell_properties) property_columns_.push_back(&graph_.properties.at(name));
+  property_values_.assign(property_columns_.size(), 0.0);
   pin_species_ = model_.pin.enabled() ? model_.speciesIndex(model_.pin.species) : -1;
   const std::size_t n = numCells(), S = numSpecies();
   neighbours_.assign(n, {});
@@ -73,7 +76,7 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
           const auto j = static_cast<std::size_t>(other(graph_.interfaces[f], c));
           cols.push_back(index(j, s));
           if (pinned && jacobian_kind_ == JacobianKind::Exact)
-            for (std::size_t g : neighbours_[j]) cols.push_back(index(static_cast<std::size_t>(other(graph_.interfaces[g], j)), s));
+            for (std::size_t g : neighbours_[j]) cols.push_back(index(otherCell(graph_.interfaces[g], j), s));
         }
       std::sort(cols.begin(), cols.end());
       cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
@@ -91,18 +94,8 @@ NetworkSystem::~NetworkSystem() = default;
 
 void NetworkSystem::evaluateReactions(double t, std::size_t cell, std::span<const double> conc,
                                       std::span<double> rate) {
-  double props[64];
-  std::vector<double> many;
-  std::span<double> p(props, 0);
-  if (model_.cell_properties.size() > 64) {
-    many.resize(model_.cell_properties.size());
-    p = many;
-  } else {
-    p = std::span<double>(props, model_.cell_properties.size());
-  }
-  for (std::size_t k = 0; k < model_.cell_properties.size(); ++k)
-    p[k] = graph_.properties.at(model_.cell_properties[k])[cell];
-  reactions_->evaluate(t, cell, graph_.measure[cell], graph_.centroid[cell], p, conc, rate);
+  for (std::size_t k = 0; k < property_columns_.size(); ++k) property_values_[k] = (*property_columns_[k])[cell];
+  reactions_->evaluate(t, cell, graph_.measure[cell], graph_.centroid[cell], property_values_, conc, rate);
 }
 
 void NetworkSystem::rhs(double t, std::span<const double> y, std::span<double> ydot) {
@@ -136,11 +129,7 @@ void NetworkSystem::rhs(double t, std::span<const double> y, std::span<double> y
     const auto p = static_cast<std::size_t>(pin_species_);
     const PinTransport& pin = model_.pin;
     for (std::size_t c = 0; c < n; ++c) pin_weight_[c] = pin.weight(conc_[index(c, p)]);
-    for (std::size_t c = 0; c < n; ++c) {
-      double d = pin.saturation;
-      for (std::size_t f : neighbours_[c]) d += graph_.interfaces[f].measure * pin_weight_[static_cast<std::size_t>(other(graph_.interfaces[f], c))];
-      pin_denominator_[c] = d;
-    }
+    pinDenominators();
     for (std::size_t c = 0; c < n; ++c) {
       if (!(pin_denominator_[c] > 0)) continue;
       const double out = pin.rate * pin.total * conc_[index(c, p)] / pin_denominator_[c];
@@ -151,6 +140,15 @@ void NetworkSystem::rhs(double t, std::span<const double> y, std::span<double> y
         ydot[index(j, p)] += J;
       }
     }
+  }
+}
+
+void NetworkSystem::pinDenominators() {
+  for (std::size_t c = 0; c < numCells(); ++c) {
+    double d = model_.pin.saturation;
+    for (std::size_t f : neighbours_[c])
+      d += graph_.interfaces[f].measure * pin_weight_[otherCell(graph_.interfaces[f], c)];
+    pin_denominator_[c] = d;
   }
 }
 
@@ -202,11 +200,7 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
       pin_weight_[c] = pin.weight(conc_[index(c, p)]);
       pin_weight_derivative_[c] = pin.weightDerivative(conc_[index(c, p)]);
     }
-    for (std::size_t c = 0; c < n; ++c) {
-      double d = pin.saturation;
-      for (std::size_t f : neighbours_[c]) d += graph_.interfaces[f].measure * pin_weight_[static_cast<std::size_t>(other(graph_.interfaces[f], c))];
-      pin_denominator_[c] = d;
-    }
+    pinDenominators();
     const double TP = pin.rate * pin.total;
     for (std::size_t i = 0; i < n; ++i) {
       const double D = pin_denominator_[i];

@@ -106,7 +106,8 @@ f(c) = base**c ("exponential") or c**exponent ("power"); the efflux from i into 
              for (NetworkInterface& f : g.interfaces)
                if (f.cell_i >= 0 && f.cell_j >= 0 && static_cast<std::size_t>(f.cell_i) < g.centroid.size() &&
                    static_cast<std::size_t>(f.cell_j) < g.centroid.size()) {
-                 const Vec3 d = g.centroid[static_cast<std::size_t>(f.cell_j)] - g.centroid[static_cast<std::size_t>(f.cell_i)];
+                 const auto i = static_cast<std::size_t>(f.cell_i), j = static_cast<std::size_t>(f.cell_j);
+                 const Vec3 d = g.centroid[j] - g.centroid[i];
                  if (d.norm() > 0) f.normal = d.normalized();
                }
              g.properties = std::move(properties);
@@ -196,7 +197,10 @@ The ODE system of a model on a graph: dy/dt = F(t, y) for the AMOUNTS y[cell * n
              return out;
            },
            py::arg("y"), "PIN per interface: column 0 on cell_i's side (toward j), column 1 on cell_j's side.")
-      .def("polarity", [](const NetworkSystem& s, const std::vector<double>& y) { return vec3Array(s.polarity(checkedState(s, y))); },
+      .def("polarity",
+           [](const NetworkSystem& s, const std::vector<double>& y) {
+             return vec3Array(s.polarity(checkedState(s, y)));
+           },
            py::arg("y"), "Per cell, the sum of PIN times the outward unit normal of each interface, (n, 3).")
       .def("total_amount", [](const NetworkSystem& s, const std::vector<double>& y, std::size_t species) {
              return s.totalAmount(checkedState(s, y), species);

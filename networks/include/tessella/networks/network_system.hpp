@@ -91,6 +91,7 @@ class NetworkSystem {
 
  private:
   bool inPattern(std::size_t r, std::size_t c) const;
+  void pinDenominators();  // pin_denominator_ from pin_weight_
   void evaluateReactions(double t, std::size_t cell, std::span<const double> conc, std::span<double> rate);
 
   NetworkModel model_;
@@ -101,6 +102,8 @@ class NetworkSystem {
   JacobianKind jacobian_kind_ = JacobianKind::Exact;
   int pin_species_ = -1;
   std::vector<double> pin_denominator_, pin_weight_, pin_weight_derivative_, conc_;
+  std::vector<const std::vector<double>*> property_columns_;  // the model's cell properties in the graph
+  std::vector<double> property_values_;                       // one cell's values of them
 };
 
 }  // namespace tessella::networks
