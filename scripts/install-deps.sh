@@ -13,6 +13,7 @@ packages=(
   libsuitesparse-dev libhypre-dev
   python3-dev pybind11-dev python3-numpy python3-pytest python3-pil
   libcairo2-dev snakemake python3-matplotlib chromium libdeflate-dev
+  libsundials-dev python3-scipy
 )
 
 missing=()

@@ -38,6 +38,7 @@ void bindFieldTransfer(py::module_& m);
 void bindLinearSolver(py::module_& m);
 void bindDiffusion(py::module_& m);
 void bindCompartments(py::module_& m);
+void bindNetworks(py::module_& m);
 void bindElasticity(py::module_& m);
 void bindLabelImage(py::module_& m);
 

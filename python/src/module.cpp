@@ -24,5 +24,6 @@ PYBIND11_MODULE(tessella, m) {
   bindLinearSolver(m);  // before the solvers: their options default to LinearSolverOptions()
   bindDiffusion(m);     // before compartments and elasticity, which use TimeScheme
   bindCompartments(m);
+  bindNetworks(m);
   bindElasticity(m);
 }

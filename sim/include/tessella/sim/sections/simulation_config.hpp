@@ -17,6 +17,7 @@
 #include "tessella/sim/sections/coupling_section.hpp"
 #include "tessella/sim/sections/growth_section.hpp"
 #include "tessella/sim/sections/mesh_section.hpp"
+#include "tessella/sim/sections/network_section.hpp"
 #include "tessella/sim/sections/output_section.hpp"
 #include "tessella/sim/sections/section_unit.hpp"
 #include "tessella/sim/sections/time_section.hpp"
@@ -41,6 +42,7 @@ struct SimulationConfig {
   DiffusionSpec diffusion;
   CompartmentSpec compartments;
   ElasticitySpec elasticity;
+  NetworkSpec network;
 };
 
 /// The sections after the frame, in the order of their keys in docs/config.md
@@ -62,6 +64,9 @@ inline const std::vector<SectionUnit>& sectionUnits() {
       {"compartments", declareCompartmentSection,
        [](const Config& c, S& s) { s.compartments = readCompartmentSection(c); },
        [](const S& s, StageList& stages) { addCompartmentStage(s.compartments, stages); }},
+      {"network", declareNetworkSection,
+       [](const Config& c, S& s) { s.network = readNetworkSection(c, s.rng_seed); },
+       [](const S& s, StageList& stages) { addNetworkStage(s.network, stages); }},
       // Read on demand (meshOptionsFromConfig, readMeshSection) by the stages and the run.
       {"mesh", declareMeshSection, {}, {}},
   };

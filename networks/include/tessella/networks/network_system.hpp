@@ -1,0 +1,109 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// NetworkSystem: the ODE system of a NetworkModel on a NetworkGraph,
+// dy/dt = F(t, y), and its Jacobian. The state is the AMOUNT of every species
+// in every cell, y[c * S + s] (S species); the concentration is
+// c = y / measure. Transport moves amount from one cell to another, so every
+// transport term leaves the sum of a species' amounts unchanged (the
+// Jacobian's transport part has zero column sums). Equations: docs/networks.md.
+//
+// Not thread-safe (the reactions' muparser variables are members).
+
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "tessella/networks/network_graph.hpp"
+#include "tessella/networks/network_model.hpp"
+#include "tessella/tissue/enum_table.hpp"
+
+namespace tessella::networks {
+
+/// A sparse matrix in compressed rows: row r holds the entries
+/// [row_start[r], row_start[r + 1]) of `column` and `value`, columns ascending.
+struct CsrMatrix {
+  std::size_t rows = 0;
+  std::vector<std::size_t> row_start;
+  std::vector<std::size_t> column;
+  std::vector<double> value;
+  /// The entry (r, c), 0 when outside the pattern.
+  double at(std::size_t r, std::size_t c) const;
+};
+
+/// PIN on both sides of an interface: on cell_i's side toward cell_j (ij) and
+/// on cell_j's side toward cell_i (ji).
+struct PinSides {
+  double ij = 0.0;
+  double ji = 0.0;
+};
+
+class ReactionSet;
+
+/// What jacobian() computes: `Exact`, dF/dy; `Neighbours`, dF/dy without the
+/// entries that couple a cell with the neighbours of its neighbours (the
+/// derivatives of a neighbour's PIN denominator), a sparser matrix (7 instead
+/// of 19 entries per row on a hexagonal grid) that CVODE's Newton iteration
+/// uses as an approximation. Both have zero column sums in the transport
+/// part, so each conserves amounts.
+enum class JacobianKind { Exact, Neighbours };
+/// "exact", "neighbours".
+const EnumTable<JacobianKind>& jacobianKinds();
+
+class NetworkSystem {
+ public:
+  /// Validates both, compiles the reactions (InputError naming the species
+  /// and muparser's message), and builds the Jacobian's pattern.
+  NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKind jacobian = JacobianKind::Exact);
+  ~NetworkSystem();
+  NetworkSystem(const NetworkSystem&) = delete;
+  NetworkSystem& operator=(const NetworkSystem&) = delete;
+
+  const NetworkModel& model() const { return model_; }
+  const NetworkGraph& graph() const { return graph_; }
+  std::size_t numSpecies() const { return model_.species.size(); }
+  std::size_t numCells() const { return graph_.numCells(); }
+  std::size_t size() const { return numSpecies() * numCells(); }
+  std::size_t index(std::size_t cell, std::size_t species) const { return cell * numSpecies() + species; }
+
+  /// dy/dt at (t, y) into ydot (both of size()). A reaction rate that is not
+  /// finite is an InputError naming the species, the cell and the values.
+  void rhs(double t, std::span<const double> y, std::span<double> ydot);
+  /// The pattern of dF/dy (values zero): the species of a cell couple with
+  /// each other (reactions), a transported species with its neighbours, and
+  /// the PIN species with the neighbours of its neighbours (JacobianKind::Exact).
+  const CsrMatrix& pattern() const { return pattern_; }
+  /// dF/dy at (t, y) on pattern(): transport and PIN exactly, reactions by
+  /// central differences per cell (each reaction depends on its own cell
+  /// only); with JacobianKind::Neighbours without the second-neighbour terms.
+  void jacobian(double t, std::span<const double> y, CsrMatrix& J);
+
+  /// PIN on both sides of every interface at state y (zeros without PIN transport).
+  std::vector<PinSides> pin(std::span<const double> y) const;
+  /// Per cell, sum over its interfaces of PIN (its side) times the unit
+  /// normal pointing out of it: the cell's polarity vector.
+  std::vector<Vec3> polarity(std::span<const double> y) const;
+
+  /// sum over cells of the amounts of species s.
+  double totalAmount(std::span<const double> y, std::size_t s) const;
+
+ private:
+  bool inPattern(std::size_t r, std::size_t c) const;
+  void pinDenominators();  // pin_denominator_ from pin_weight_
+  void evaluateReactions(double t, std::size_t cell, std::span<const double> conc, std::span<double> rate);
+
+  NetworkModel model_;
+  NetworkGraph graph_;
+  std::unique_ptr<ReactionSet> reactions_;
+  std::vector<std::vector<std::size_t>> neighbours_;       // per cell: interface indices
+  CsrMatrix pattern_;
+  JacobianKind jacobian_kind_ = JacobianKind::Exact;
+  int pin_species_ = -1;
+  std::vector<double> pin_denominator_, pin_weight_, pin_weight_derivative_, conc_;
+  std::vector<const std::vector<double>*> property_columns_;  // the model's cell properties in the graph
+  std::vector<double> property_values_;                       // one cell's values of them
+};
+
+}  // namespace tessella::networks

@@ -1,0 +1,51 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// ReactionSet: the reactions of a NetworkModel compiled once to muparser
+// bytecode and evaluated cell by cell. Variables: the species (the cell's
+// concentrations), the model's parameters, `measure`, `x`, `y`, `z` (the
+// cell's centroid), `t` and the cell properties the model names. Not
+// thread-safe (the variables are members).
+
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "tessella/networks/network_model.hpp"
+#include "tessella/tissue/vec3.hpp"
+
+namespace mu {
+class Parser;
+}
+
+namespace tessella::networks {
+
+class ReactionSet {
+ public:
+  /// Parses every reaction: a syntax error or an unknown name is an
+  /// InputError naming the species, the expression and muparser's message.
+  explicit ReactionSet(const NetworkModel& model);
+  ~ReactionSet();
+  ReactionSet(const ReactionSet&) = delete;
+  ReactionSet& operator=(const ReactionSet&) = delete;
+
+  bool empty() const { return parsers_.empty(); }
+  /// Sets the cell's values (concentrations `conc`, one per species; its
+  /// properties in model.cell_properties order), then the rates of all
+  /// species into `rate` (0 for a species without a reaction). A rate that is
+  /// not finite is an InputError naming the species, `cell` and the values.
+  void evaluate(double t, std::size_t cell, double measure, const Vec3& centroid, std::span<const double> properties,
+                std::span<const double> conc, std::span<double> rate);
+
+ private:
+  std::vector<std::string> species_, expressions_, properties_;
+  std::vector<double> conc_, props_;
+  double t_ = 0, measure_ = 0, x_ = 0, y_ = 0, z_ = 0;
+  std::vector<double> params_;
+  std::vector<std::unique_ptr<mu::Parser>> parsers_;
+  std::vector<std::size_t> target_;
+};
+
+}  // namespace tessella::networks

@@ -1,0 +1,270 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tessella/networks/network_system.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "tessella/networks/reaction_set.hpp"
+#include "tessella/tissue/errors.hpp"
+
+namespace tessella::networks {
+
+double CsrMatrix::at(std::size_t r, std::size_t c) const {
+  const auto first = column.begin() + static_cast<std::ptrdiff_t>(row_start[r]);
+  const auto last = column.begin() + static_cast<std::ptrdiff_t>(row_start[r + 1]);
+  const auto it = std::lower_bound(first, last, c);
+  return it != last && *it == c ? value[static_cast<std::size_t>(it - column.begin())] : 0.0;
+}
+
+namespace {
+int other(const NetworkInterface& f, std::size_t c) { return f.cell_i == static_cast<int>(c) ? f.cell_j : f.cell_i; }
+std::size_t otherCell(const NetworkInterface& f, std::size_t c) { return static_cast<std::size_t>(other(f, c)); }
+
+// J(r, c) += v on a fixed pattern.
+void addAt(CsrMatrix& J, std::size_t r, std::size_t c, double v) {
+  const auto first = J.column.begin() + static_cast<std::ptrdiff_t>(J.row_start[r]);
+  const auto last = J.column.begin() + static_cast<std::ptrdiff_t>(J.row_start[r + 1]);
+  const auto it = std::lower_bound(first, last, c);
+  if (it == last || *it != c) throw std::logic_error("network Jacobian: entry outside the pattern");
+  J.value[static_cast<std::size_t>(it - J.column.begin())] += v;
+}
+}  // namespace
+
+const EnumTable<JacobianKind>& jacobianKinds() {
+  static const EnumTable<JacobianKind> table(
+      "Jacobian", {{"exact", JacobianKind::Exact, "The exact derivative dF/dy."},
+                   {"neighbours", JacobianKind::Neighbours,
+                    "dF/dy without the second-neighbour terms of PIN transport: sparser, an approximation "
+                    "for the Newton iteration (conserves amounts all the same)."}});
+  return table;
+}
+
+NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKind jacobian)
+    : model_(std::move(model)), graph_(std::move(graph)), jacobian_kind_(jacobian) {
+  model_.validate();
+  graph_.validate();
+  for (const std::string& p : model_.cell_properties)
+    if (!graph_.properties.count(p))
+      throw InputError("network: the cell property '" + p + "' the reactions read is not in the graph");
+  reactions_ = std::make_unique<ReactionSet>(model_);
+  for (const std::string& name : model_.cell_properties) property_columns_.push_back(&graph_.properties.at(name));
+  property_values_.assign(property_columns_.size(), 0.0);
+  pin_species_ = model_.pin.enabled() ? model_.speciesIndex(model_.pin.species) : -1;
+  const std::size_t n = numCells(), S = numSpecies();
+  neighbours_.assign(n, {});
+  for (std::size_t f = 0; f < graph_.interfaces.size(); ++f) {
+    neighbours_[static_cast<std::size_t>(graph_.interfaces[f].cell_i)].push_back(f);
+    neighbours_[static_cast<std::size_t>(graph_.interfaces[f].cell_j)].push_back(f);
+  }
+  // The pattern, row by row.
+  pattern_.rows = size();
+  pattern_.row_start.assign(size() + 1, 0);
+  std::vector<std::size_t> cols;
+  for (std::size_t c = 0; c < n; ++c)
+    for (std::size_t s = 0; s < S; ++s) {
+      cols.clear();
+      if (reactions_->empty())
+        cols.push_back(index(c, s));
+      else
+        for (std::size_t q = 0; q < S; ++q) cols.push_back(index(c, q));
+      const bool passive = model_.species[s].permeability > 0;
+      const bool pinned = static_cast<int>(s) == pin_species_;
+      if (passive || pinned)
+        for (std::size_t f : neighbours_[c]) {
+          const auto j = static_cast<std::size_t>(other(graph_.interfaces[f], c));
+          cols.push_back(index(j, s));
+          if (pinned && jacobian_kind_ == JacobianKind::Exact)
+            for (std::size_t g : neighbours_[j]) cols.push_back(index(otherCell(graph_.interfaces[g], j), s));
+        }
+      std::sort(cols.begin(), cols.end());
+      cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
+      pattern_.column.insert(pattern_.column.end(), cols.begin(), cols.end());
+      pattern_.row_start[index(c, s) + 1] = pattern_.column.size();
+    }
+  pattern_.value.assign(pattern_.column.size(), 0.0);
+  pin_denominator_.assign(n, 0.0);
+  pin_weight_.assign(n, 0.0);
+  pin_weight_derivative_.assign(n, 0.0);
+  conc_.assign(size(), 0.0);
+}
+
+NetworkSystem::~NetworkSystem() = default;
+
+void NetworkSystem::evaluateReactions(double t, std::size_t cell, std::span<const double> conc,
+                                      std::span<double> rate) {
+  for (std::size_t k = 0; k < property_columns_.size(); ++k) property_values_[k] = (*property_columns_[k])[cell];
+  reactions_->evaluate(t, cell, graph_.measure[cell], graph_.centroid[cell], property_values_, conc, rate);
+}
+
+void NetworkSystem::rhs(double t, std::span<const double> y, std::span<double> ydot) {
+  const std::size_t n = numCells(), S = numSpecies();
+  for (std::size_t c = 0; c < n; ++c)
+    for (std::size_t s = 0; s < S; ++s) conc_[index(c, s)] = y[index(c, s)] / graph_.measure[c];
+  // Reactions: the amount changes at measure * rate.
+  if (!reactions_->empty()) {
+    for (std::size_t c = 0; c < n; ++c) {
+      std::span<const double> conc(&conc_[index(c, 0)], S);
+      std::span<double> rate(&ydot[index(c, 0)], S);
+      evaluateReactions(t, c, conc, rate);
+      for (std::size_t s = 0; s < S; ++s) rate[s] *= graph_.measure[c];
+    }
+  } else {
+    std::fill(ydot.begin(), ydot.end(), 0.0);
+  }
+  // Passive exchange: P L (c_i - c_j) from i to j.
+  for (std::size_t s = 0; s < S; ++s) {
+    const double P = model_.species[s].permeability;
+    if (!(P > 0)) continue;
+    for (const NetworkInterface& f : graph_.interfaces) {
+      const auto i = static_cast<std::size_t>(f.cell_i), j = static_cast<std::size_t>(f.cell_j);
+      const double J = P * f.measure * (conc_[index(i, s)] - conc_[index(j, s)]);
+      ydot[index(i, s)] -= J;
+      ydot[index(j, s)] += J;
+    }
+  }
+  // PIN efflux: T PIN_ij c_i from i to j, both directions of every interface.
+  if (pin_species_ >= 0) {
+    const auto p = static_cast<std::size_t>(pin_species_);
+    const PinTransport& pin = model_.pin;
+    for (std::size_t c = 0; c < n; ++c) pin_weight_[c] = pin.weight(conc_[index(c, p)]);
+    pinDenominators();
+    for (std::size_t c = 0; c < n; ++c) {
+      if (!(pin_denominator_[c] > 0)) continue;
+      const double out = pin.rate * pin.total * conc_[index(c, p)] / pin_denominator_[c];
+      for (std::size_t f : neighbours_[c]) {
+        const auto j = static_cast<std::size_t>(other(graph_.interfaces[f], c));
+        const double J = out * graph_.interfaces[f].measure * pin_weight_[j];
+        ydot[index(c, p)] -= J;
+        ydot[index(j, p)] += J;
+      }
+    }
+  }
+}
+
+void NetworkSystem::pinDenominators() {
+  for (std::size_t c = 0; c < numCells(); ++c) {
+    double d = model_.pin.saturation;
+    for (std::size_t f : neighbours_[c])
+      d += graph_.interfaces[f].measure * pin_weight_[otherCell(graph_.interfaces[f], c)];
+    pin_denominator_[c] = d;
+  }
+}
+
+bool NetworkSystem::inPattern(std::size_t r, std::size_t c) const {
+  return std::binary_search(pattern_.column.begin() + static_cast<std::ptrdiff_t>(pattern_.row_start[r]),
+                            pattern_.column.begin() + static_cast<std::ptrdiff_t>(pattern_.row_start[r + 1]), c);
+}
+
+void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) {
+  if (J.column.size() != pattern_.column.size()) J = pattern_;
+  std::fill(J.value.begin(), J.value.end(), 0.0);
+  const std::size_t n = numCells(), S = numSpecies();
+  for (std::size_t c = 0; c < n; ++c)
+    for (std::size_t s = 0; s < S; ++s) conc_[index(c, s)] = y[index(c, s)] / graph_.measure[c];
+  // Reactions: d(V r_s)/dy_q = dr_s/dc_q, by central differences in the cell's concentrations.
+  if (!reactions_->empty()) {
+    std::vector<double> cc(S), up(S), down(S);
+    const double root = std::cbrt(std::numeric_limits<double>::epsilon());
+    for (std::size_t c = 0; c < n; ++c) {
+      for (std::size_t q = 0; q < S; ++q) cc[q] = conc_[index(c, q)];
+      for (std::size_t q = 0; q < S; ++q) {
+        const double h = root * std::max(std::abs(cc[q]), 1.0);
+        const double keep = cc[q];
+        cc[q] = keep + h;
+        evaluateReactions(t, c, cc, up);
+        cc[q] = keep - h;
+        evaluateReactions(t, c, cc, down);
+        cc[q] = keep;
+        for (std::size_t s = 0; s < S; ++s) addAt(J, index(c, s), index(c, q), (up[s] - down[s]) / (2 * h));
+      }
+    }
+  }
+  for (std::size_t s = 0; s < S; ++s) {
+    const double P = model_.species[s].permeability;
+    if (!(P > 0)) continue;
+    for (const NetworkInterface& f : graph_.interfaces) {
+      const auto i = static_cast<std::size_t>(f.cell_i), j = static_cast<std::size_t>(f.cell_j);
+      const double di = P * f.measure / graph_.measure[i], dj = -P * f.measure / graph_.measure[j];
+      addAt(J, index(i, s), index(i, s), -di);
+      addAt(J, index(j, s), index(i, s), di);
+      addAt(J, index(i, s), index(j, s), -dj);
+      addAt(J, index(j, s), index(j, s), dj);
+    }
+  }
+  if (pin_species_ >= 0) {
+    const auto p = static_cast<std::size_t>(pin_species_);
+    const PinTransport& pin = model_.pin;
+    for (std::size_t c = 0; c < n; ++c) {
+      pin_weight_[c] = pin.weight(conc_[index(c, p)]);
+      pin_weight_derivative_[c] = pin.weightDerivative(conc_[index(c, p)]);
+    }
+    pinDenominators();
+    const double TP = pin.rate * pin.total;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double D = pin_denominator_[i];
+      if (!(D > 0)) continue;
+      const double ci = conc_[index(i, p)];
+      for (std::size_t f : neighbours_[i]) {
+        const auto j = static_cast<std::size_t>(other(graph_.interfaces[f], i));
+        const double L = graph_.interfaces[f].measure;
+        const std::size_t ri = index(i, p), rj = index(j, p);
+        // J_ij = TP c_i L w_j / D_i.
+        auto add = [&](std::size_t m, double dJ_dc_m) {
+          const double d = dJ_dc_m / graph_.measure[m];
+          addAt(J, ri, index(m, p), -d);
+          addAt(J, rj, index(m, p), d);
+        };
+        add(i, TP * L * pin_weight_[j] / D);
+        add(j, TP * ci * L * pin_weight_derivative_[j] / D);
+        for (std::size_t g : neighbours_[i]) {
+          const auto m = static_cast<std::size_t>(other(graph_.interfaces[g], i));
+          // Neighbours: leave out the pair of entries when the receiver's row lacks m (a second neighbour).
+          if (jacobian_kind_ == JacobianKind::Neighbours && !inPattern(rj, index(m, p))) continue;
+          add(m, -TP * ci * L * pin_weight_[j] * graph_.interfaces[g].measure * pin_weight_derivative_[m] / (D * D));
+        }
+      }
+    }
+  }
+}
+
+std::vector<PinSides> NetworkSystem::pin(std::span<const double> y) const {
+  std::vector<PinSides> out(graph_.interfaces.size());
+  if (pin_species_ < 0) return out;
+  const auto p = static_cast<std::size_t>(pin_species_);
+  const PinTransport& pin = model_.pin;
+  const std::size_t n = numCells();
+  std::vector<double> w(n), D(n, pin.saturation);
+  for (std::size_t c = 0; c < n; ++c) w[c] = pin.weight(y[index(c, p)] / graph_.measure[c]);
+  for (const NetworkInterface& f : graph_.interfaces) {
+    D[static_cast<std::size_t>(f.cell_i)] += f.measure * w[static_cast<std::size_t>(f.cell_j)];
+    D[static_cast<std::size_t>(f.cell_j)] += f.measure * w[static_cast<std::size_t>(f.cell_i)];
+  }
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const NetworkInterface& f = graph_.interfaces[k];
+    const auto i = static_cast<std::size_t>(f.cell_i), j = static_cast<std::size_t>(f.cell_j);
+    if (D[i] > 0) out[k].ij = pin.total * f.measure * w[j] / D[i];
+    if (D[j] > 0) out[k].ji = pin.total * f.measure * w[i] / D[j];
+  }
+  return out;
+}
+
+std::vector<Vec3> NetworkSystem::polarity(std::span<const double> y) const {
+  std::vector<Vec3> out(numCells(), Vec3::Zero());
+  const std::vector<PinSides> sides = pin(y);
+  for (std::size_t k = 0; k < sides.size(); ++k) {
+    const NetworkInterface& f = graph_.interfaces[k];
+    out[static_cast<std::size_t>(f.cell_i)] += sides[k].ij * f.normal;
+    out[static_cast<std::size_t>(f.cell_j)] -= sides[k].ji * f.normal;
+  }
+  return out;
+}
+
+double NetworkSystem::totalAmount(std::span<const double> y, std::size_t s) const {
+  double sum = 0.0;
+  for (std::size_t c = 0; c < numCells(); ++c) sum += y[index(c, s)];
+  return sum;
+}
+
+}  // namespace tessella::networks

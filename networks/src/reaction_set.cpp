@@ -1,0 +1,78 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tessella/networks/reaction_set.hpp"
+
+#include <muParser.h>
+
+#include <cmath>
+#include <sstream>
+
+#include "tessella/tissue/errors.hpp"
+
+namespace tessella::networks {
+
+ReactionSet::ReactionSet(const NetworkModel& model)
+    : properties_(model.cell_properties),
+      conc_(model.species.size(), 0.0),
+      props_(model.cell_properties.size(), 0.0),
+      params_(model.parameters.size(), 0.0) {
+  for (const NetworkSpecies& s : model.species) {
+    species_.push_back(s.name);
+    expressions_.push_back(s.reaction);
+  }
+  std::size_t p = 0;
+  for (const auto& [name, value] : model.parameters) params_[p++] = value;
+  for (std::size_t s = 0; s < model.species.size(); ++s) {
+    if (model.species[s].reaction.empty()) continue;
+    auto parser = std::make_unique<mu::Parser>();
+    try {
+      for (std::size_t v = 0; v < species_.size(); ++v) parser->DefineVar(species_[v], &conc_[v]);
+      std::size_t k = 0;
+      for (const auto& [name, value] : model.parameters) parser->DefineVar(name, &params_[k++]);
+      for (std::size_t v = 0; v < properties_.size(); ++v) parser->DefineVar(properties_[v], &props_[v]);
+      parser->DefineVar("measure", &measure_);
+      parser->DefineVar("x", &x_);
+      parser->DefineVar("y", &y_);
+      parser->DefineVar("z", &z_);
+      parser->DefineVar("t", &t_);
+      parser->SetExpr(model.species[s].reaction);
+      parser->Eval();  // forces the parse: syntax errors and unknown names surface here
+    } catch (const mu::Parser::exception_type& e) {
+      const std::string token = e.GetToken().empty() ? "" : "near '" + e.GetToken() + "', ";
+      throw InputError("network: reaction of species '" + species_[s] + "', \"" + model.species[s].reaction +
+                       "\": " + e.GetMsg() + " (" + token + "at position " + std::to_string(e.GetPos()) +
+                       "; the variables are the species, the parameters, the cell properties named, measure, x, "
+                       "y, z and t)");
+    }
+    parsers_.push_back(std::move(parser));
+    target_.push_back(s);
+  }
+}
+
+ReactionSet::~ReactionSet() = default;
+
+void ReactionSet::evaluate(double t, std::size_t cell, double measure, const Vec3& centroid,
+                           std::span<const double> properties, std::span<const double> conc, std::span<double> rate) {
+  for (std::size_t v = 0; v < conc_.size(); ++v) conc_[v] = conc[v];
+  for (std::size_t v = 0; v < props_.size(); ++v) props_[v] = properties[v];
+  t_ = t;
+  measure_ = measure;
+  x_ = centroid.x();
+  y_ = centroid.y();
+  z_ = centroid.z();
+  for (std::size_t s = 0; s < rate.size(); ++s) rate[s] = 0.0;
+  for (std::size_t k = 0; k < parsers_.size(); ++k) {
+    const double r = parsers_[k]->Eval();
+    if (!std::isfinite(r)) {
+      const std::size_t s = target_[k];
+      std::ostringstream msg;
+      msg << "network: reaction of species '" << species_[s] << "', \"" << expressions_[s] << "\", gave " << r
+          << " in cell " << cell << " at t = " << t << " with";
+      for (std::size_t v = 0; v < species_.size(); ++v) msg << (v ? ", " : " ") << species_[v] << " = " << conc_[v];
+      throw InputError(msg.str());
+    }
+    rate[target_[k]] = r;
+  }
+}
+
+}  // namespace tessella::networks

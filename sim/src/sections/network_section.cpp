@@ -1,0 +1,197 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tessella/sim/sections/network_section.hpp"
+
+#include <set>
+#include <sstream>
+
+#include "coupling_values.hpp"
+#include "tessella/networks/initial_values.hpp"
+#include "tessella/networks/reaction_set.hpp"
+#include "tessella/sim/config/registry_config.hpp"
+#include "tessella/sim/sections/section_unit.hpp"
+
+namespace tessella::sim {
+
+namespace {
+const std::string kSpecies = "network.species";
+
+std::string trimmed(const std::string& s) {
+  const auto a = s.find_first_not_of(" \t");
+  if (a == std::string::npos) return "";
+  return s.substr(a, s.find_last_not_of(" \t") - a + 1);
+}
+}  // namespace
+
+void declareNetworkSection(Schema& s) {
+  s.section("network",
+            "A cell-level regulatory network: species in every cell with reactions (muparser expressions), "
+            "passive exchange across walls and PIN-mediated efflux with up-the-gradient polarity, integrated "
+            "by CVODE (BDF, sparse Newton with KLU) over each solve interval. The amount of each species is the "
+            "cell property <species>_amount (split by measure at division: conserved), its concentration "
+            "<species>; with PIN transport each cell's polarity (PIN-weighted sum of outward wall normals) is "
+            "the vector cell property <species>_polarity. Off unless `mode` is set. See docs/networks.md.");
+  s.key("network.mode", ValueType::Enum, "`transient`: advance in time with the simulation.")
+      .oneOf({"none", "transient"})
+      .byDefault(std::string("none"));
+  const Condition on{"network.mode", {"transient"}};
+  auto key = [&](const std::string& path, ValueType type, const std::string& doc) -> KeySpec& {
+    return s.key(path, type, doc).activeWhen(on.key, on.values);
+  };
+  key("network.every", ValueType::Int, "Integrate every `every` steps, over the time since the previous solve.")
+      .byDefault(std::int64_t{1})
+      .atLeast(1);
+  key("network.relative_tolerance", ValueType::Float, "CVODE's relative tolerance.").byDefault(1e-6).above(0);
+  key("network.absolute_tolerance", ValueType::Float, "CVODE's absolute tolerance, on amounts.")
+      .byDefault(1e-9)
+      .above(0);
+  key("network.max_steps", ValueType::Int, "Most internal CVODE steps per solve interval.")
+      .byDefault(std::int64_t{100000})
+      .atLeast(1);
+  key("network.jacobian", ValueType::Enum,
+      "The Jacobian of CVODE's Newton iteration: `exact`, or `neighbours` (without the second-neighbour terms "
+      "of PIN transport: a sparser matrix, cheaper to factorise; an approximation that changes the work, not "
+      "the accuracy, which the tolerances control).")
+      .oneOf(networks::jacobianKinds().names())
+      .byDefault(std::string("exact"));
+  key("network.parameters", ValueType::String,
+      "Named constants of the reactions and initial values, \"name=value, ...\", e.g. \"p=1, d=0.1\".")
+      .whenAbsent("none");
+  key("network.properties", ValueType::String,
+      "Double cell properties the reactions read, \"name, name\" (their values at the start of each solve).")
+      .whenAbsent("none");
+  s.section(kSpecies,
+            "The species: a map from each species' name (letters, digits, '_', not starting with a digit; it "
+            "names its cell properties and its variable in reactions) to its keys.")
+      .activeWhen(on.key, on.values)
+      .entryMap("species");
+  const std::string e = kSpecies + "." + kEntryPlaceholder;
+  s.section(e, "One species; every key is optional.");
+  s.key(e + ".initial", ValueType::String,
+        "Initial concentration: a number or an expression over x, y, z (the cell's centroid), measure and the "
+        "parameters, e.g. \"1 + 0.1 * x\".")
+      .byDefault(std::string("0"));
+  s.key(e + ".noise", ValueType::Float,
+        "Amplitude of uniform noise added to the initial concentration (a draw in [0, noise) per cell, from "
+        "a stream seeded by the run's rng_seed).")
+      .byDefault(0.0)
+      .atLeast(0);
+  s.key(e + ".reaction", ValueType::String,
+        "Rate of change of the concentration inside a cell: a muparser expression over the species, the "
+        "parameters, the properties named in network.properties, measure, x, y, z and t, e.g. "
+        "\"p - d * auxin\".")
+      .whenAbsent("no reaction");
+  s.key(e + ".permeability", ValueType::Float,
+        "Passive permeability P: a wall of length (2D) or area (3D) L between cells i and j carries "
+        "P L (c_i - c_j) of amount per unit time.")
+      .byDefault(0.0)
+      .atLeast(0);
+  s.section("network.pin",
+            "Carrier-mediated efflux of one species by PIN. up_the_gradient: PIN_ij = total L_ij f(c_j) / "
+            "(saturation + sum_k L_ik f(c_k)) on cell i's side of its wall to neighbour j, and the efflux from i "
+            "into j is rate PIN_ij c_i (docs/networks.md).")
+      .activeWhen(on.key, on.values);
+  s.key("network.pin.species", ValueType::String, "The transported species.").whenAbsent("no PIN transport");
+  s.key("network.pin.model", ValueType::Enum, "How PIN is allocated to the walls.")
+      .oneOf(networks::pinModels().names())
+      .byDefault(std::string("up_the_gradient"));
+  s.key("network.pin.function", ValueType::Enum,
+        "The weight f of a neighbour's concentration: exponential f(c) = base^c, power f(c) = c^exponent.")
+      .oneOf(networks::pinFunctions().names())
+      .byDefault(std::string("exponential"));
+  s.key("network.pin.base", ValueType::Float, "b of f(c) = b^c.").byDefault(3.0).above(0);
+  s.key("network.pin.exponent", ValueType::Float, "n of f(c) = c^n.").byDefault(1.0).above(0);
+  s.key("network.pin.rate", ValueType::Float, "T: efflux per unit PIN and unit concentration.")
+      .byDefault(1.0)
+      .atLeast(0);
+  s.key("network.pin.total", ValueType::Float, "PIN per cell (P_i, the same in every cell).").byDefault(1.0).atLeast(0);
+  s.key("network.pin.saturation", ValueType::Float, "kappa: added to the denominator, in units of wall measure.")
+      .byDefault(0.0)
+      .atLeast(0);
+}
+
+NetworkSpec readNetworkSection(const Config& c, std::uint64_t noise_seed) {
+  NetworkSpec n;
+  if (c.getString("network.mode") == "none") return n;
+  n.noise_seed = noise_seed;
+  n.every = static_cast<std::size_t>(c.getInt("network.every"));
+  n.integrator.relative_tolerance = c.getFloat("network.relative_tolerance");
+  n.integrator.absolute_tolerance = c.getFloat("network.absolute_tolerance");
+  n.integrator.max_steps = static_cast<long>(c.getInt("network.max_steps"));
+  n.jacobian = parseFromConfig(c, networks::jacobianKinds(), "network.jacobian");
+  networks::NetworkModel& m = n.model;
+  if (c.has("network.parameters"))
+    for (const auto& [name, value] : detail::parseNamedItems(c, "network.parameters"))
+      m.parameters[name] = detail::parseNumber(c, "network.parameters", name, value);
+  if (c.has("network.properties")) {
+    std::stringstream all(c.getString("network.properties"));
+    std::string item;
+    while (std::getline(all, item, ',')) {
+      item = trimmed(item);
+      if (!item.empty()) m.cell_properties.push_back(item);
+    }
+  }
+  const std::vector<std::string> names = c.entryNames(kSpecies);
+  if (names.empty()) throw c.errorAt("network.mode", "a network needs species: give " + kSpecies + ".<name>");
+  for (const std::string& name : names) {
+    const std::string p = kSpecies + "." + name;
+    networks::NetworkSpecies sp;
+    sp.name = name;
+    sp.permeability = c.getFloat(p + ".permeability");
+    if (c.has(p + ".reaction")) {
+      sp.reaction = c.getString(p + ".reaction");
+      if (trimmed(sp.reaction).empty())
+        throw c.errorAt(p + ".reaction", "empty expression; leave the key out for no reaction");
+    }
+    m.species.push_back(sp);
+    n.initial.push_back(c.getString(p + ".initial"));
+    n.noise.push_back(c.getFloat(p + ".noise"));
+  }
+  if (c.has("network.pin.species")) {
+    m.pin.species = c.getString("network.pin.species");
+    if (m.speciesIndex(m.pin.species) < 0) {
+      std::string known;
+      for (const auto& s : m.species) known += (known.empty() ? "" : ", ") + s.name;
+      throw c.errorAt("network.pin.species", "'" + m.pin.species + "' is not a species (species: " + known + ")");
+    }
+    m.pin.model = parseFromConfig(c, networks::pinModels(), "network.pin.model");
+    m.pin.function = parseFromConfig(c, networks::pinFunctions(), "network.pin.function");
+    m.pin.base = c.getFloat("network.pin.base");
+    m.pin.exponent = c.getFloat("network.pin.exponent");
+    m.pin.rate = c.getFloat("network.pin.rate");
+    m.pin.total = c.getFloat("network.pin.total");
+    m.pin.saturation = c.getFloat("network.pin.saturation");
+  }
+  // Names: a parameter or property that clashes with a species or a reserved name.
+  try {
+    m.validate();
+  } catch (const InputError& e) {
+    throw c.errorAt(c.has("network.parameters") ? "network.parameters" : "network.mode", e.what());
+  }
+  // Each reaction and initial value compiles now, so a bad one is an error at its key.
+  for (std::size_t s = 0; s < m.species.size(); ++s) {
+    const std::string p = kSpecies + "." + m.species[s].name;
+    if (!m.species[s].reaction.empty()) {
+      networks::NetworkModel one = m;
+      for (std::size_t q = 0; q < one.species.size(); ++q)
+        if (q != s) one.species[q].reaction.clear();
+      try {
+        networks::ReactionSet check(one);
+      } catch (const InputError& e) {
+        throw c.errorAt(p + ".reaction", e.what());
+      }
+    }
+    try {
+      networks::checkInitialExpression(n.initial[s], m.parameters);
+    } catch (const InputError& e) {
+      throw c.errorAt(p + ".initial", e.what());
+    }
+  }
+  return n;
+}
+
+void addNetworkStage(const NetworkSpec& network, StageList& stages) {
+  if (network.enabled()) stages.add(std::make_unique<NetworkStage>(network));
+}
+
+}  // namespace tessella::sim

@@ -1,0 +1,113 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+#include "tessella/generators/grids.hpp"
+#include "tessella/networks/network_integrator.hpp"
+
+using namespace tessella;
+using namespace tessella::networks;
+
+namespace {
+void compareWithDifferences(NetworkSystem& system, const std::vector<double>& y) {
+  CsrMatrix J;
+  system.jacobian(0.0, y, J);
+  const std::size_t n = system.size();
+  double largest = 0.0;
+  for (double v : J.value) largest = std::max(largest, std::abs(v));
+  REQUIRE(largest > 0.0);
+  std::vector<double> yp = y, fp(n), fm(n);
+  std::size_t outside = 0;
+  for (std::size_t col = 0; col < n; ++col) {
+    const double h = 1e-6 * std::max(1.0, std::abs(y[col]));
+    yp[col] = y[col] + h;
+    system.rhs(0.0, yp, fp);
+    yp[col] = y[col] - h;
+    system.rhs(0.0, yp, fm);
+    yp[col] = y[col];
+    for (std::size_t row = 0; row < n; ++row) {
+      const double fd = (fp[row] - fm[row]) / (2 * h);
+      const double an = J.at(row, col);
+      INFO("row " << row << " column " << col);
+      CHECK(std::abs(an - fd) <= 1e-6 * largest);
+      if (std::abs(fd) > 1e-9 * largest) {
+        // A non-zero derivative must be inside the pattern.
+        const auto first = J.column.begin() + static_cast<std::ptrdiff_t>(J.row_start[row]);
+        const auto last = J.column.begin() + static_cast<std::ptrdiff_t>(J.row_start[row + 1]);
+        if (!std::binary_search(first, last, col)) ++outside;
+      }
+    }
+  }
+  CHECK(outside == 0);
+}
+}  // namespace
+
+TEST_CASE("The Jacobian matches central differences: reactions, passive transport, PIN", "[networks]") {
+  Tissue t = hexagonalGrid(5, 4, 1.0);
+  GeometryCache geometry;
+  NetworkModel m;
+  m.species = {{"a", "p - d * a + a * b / (1 + a^2)", 0.3}, {"b", "a^2 - b", 0.1}};
+  m.parameters = {{"p", 1.0}, {"d", 0.5}};
+  m.pin.species = "a";
+  m.pin.rate = 1.5;
+  m.pin.saturation = 0.2;
+  SECTION("exponential") { m.pin.function = PinFunction::Exponential; }
+  SECTION("power") {
+    m.pin.function = PinFunction::Power;
+    m.pin.exponent = 2.0;
+  }
+  NetworkSystem system(m, networkGraph(t, geometry, {}));
+  std::mt19937_64 rng(3);
+  std::uniform_real_distribution<double> u(0.2, 2.0);
+  std::vector<double> y(system.size());
+  for (double& v : y) v = u(rng);
+  compareWithDifferences(system, y);
+}
+
+TEST_CASE("The neighbours Jacobian is sparser, keeps zero column sums and integrates to the same result",
+          "[networks]") {
+  Tissue t = hexagonalGrid(6, 5, 1.0);
+  GeometryCache geometry;
+  NetworkModel m;
+  m.species = {{"a", "", 0.3}};
+  m.pin.species = "a";
+  m.pin.rate = 1.5;
+  m.pin.base = 2.0;
+  const NetworkGraph graph = networkGraph(t, geometry, {});
+  NetworkSystem exact(m, graph, JacobianKind::Exact), near(m, graph, JacobianKind::Neighbours);
+  CHECK(near.pattern().column.size() < exact.pattern().column.size());
+  // Every row of the neighbours pattern: the cell and its neighbours only.
+  for (std::size_t c = 0; c < graph.numCells(); ++c) {
+    std::size_t neighbours = 0;
+    for (const NetworkInterface& f : graph.interfaces) neighbours += (f.cell_i == int(c) || f.cell_j == int(c));
+    CHECK(near.pattern().row_start[c + 1] - near.pattern().row_start[c] == neighbours + 1);
+  }
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(0.5, 3.0);
+  std::vector<double> y(exact.size());
+  for (double& v : y) v = u(rng);
+  for (NetworkSystem* s : {&exact, &near}) {
+    CsrMatrix J;
+    s->jacobian(0.0, y, J);
+    std::vector<double> column_sum(s->size(), 0.0);
+    double largest = 0.0;
+    for (std::size_t k = 0; k < J.column.size(); ++k) {
+      column_sum[J.column[k]] += J.value[k];
+      largest = std::max(largest, std::abs(J.value[k]));
+    }
+    for (double v : column_sum) CHECK(std::abs(v) <= 1e-14 * largest * 20);
+  }
+  IntegratorOptions o;
+  o.relative_tolerance = 1e-9;
+  o.absolute_tolerance = 1e-12;
+  std::vector<double> ye = y, yn = y;
+  NetworkIntegrator(exact, o).advance(ye, 0.0, 5.0);
+  NetworkIntegrator(near, o).advance(yn, 0.0, 5.0);
+  const double total = exact.totalAmount(y, 0);
+  CHECK(std::abs(near.totalAmount(yn, 0) - total) <= 1e-12 * total);
+  for (std::size_t k = 0; k < y.size(); ++k) CHECK(yn[k] == Approx(ye[k]).epsilon(1e-6));
+}
