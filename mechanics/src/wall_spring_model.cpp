@@ -45,7 +45,8 @@ WallSpringModel::WallSpringModel(std::size_t num_points, std::vector<WallSpring>
     if (c.loop.size() < 3) throw InputError(name + ": a loop needs at least 3 points");
     for (Index p : c.loop)
       if (p >= num_points_) throw InputError(name + ": point " + std::to_string(p) + " out of range");
-    if (!std::isfinite(c.pressure)) throw InputError(name + ": pressure " + formatNumber(c.pressure) + " is not finite");
+    if (!std::isfinite(c.pressure))
+      throw InputError(name + ": pressure " + formatNumber(c.pressure) + " is not finite");
   }
   spring_element_.resize(springs_.size());
   for (std::size_t i = 0; i < springs_.size(); ++i) spring_element_[i] = static_cast<Index>(i);

@@ -1,0 +1,66 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// The `mechanics:` section (docs/mechanics.md): turgor-driven growth of a
+// planar 2D tissue. Every step the walls (edges) are linear elastic springs
+// with a rest length, the cells push with their turgor pressure, the
+// quasi-static equilibrium is solved by Newton (mechanics/equilibrium.hpp) and
+// the tissue moves there; then the rest lengths grow where the walls are
+// strained beyond a threshold (Lockhart-Ortega). Per wall the tissue keeps
+// rest_length, wall_strain and wall_tension (wall properties); per cell
+// turgor_pressure and the length-weighted means of its walls' strain and
+// tension (mean_wall_strain, mean_wall_tension), which reach the VTU output.
+// The `elasticity:` section (a linear solve that moves nothing) is separate
+// and unchanged.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "tessella/mechanics/turgor_growth_step.hpp"
+#include "tessella/sim/config/config.hpp"
+#include "tessella/sim/config/schema.hpp"
+#include "tessella/sim/sections/section_unit.hpp"
+#include "tessella/sim/stages/stage.hpp"
+
+namespace tessella::sim {
+
+/// How the tissue is held against rigid motions.
+enum class MechanicsSupport { Point, Region };
+
+struct MechanicsSpec {
+  bool enabled = false;
+  /// Material, pressure, growth law and solver options (params.supports is
+  /// filled by the stage from the fields below, for the tissue of each step).
+  mechanics::TurgorGrowthParams params{};
+  MechanicsSupport support = MechanicsSupport::Point;
+  /// The pinned point; absent: the tissue's centroid when the run starts.
+  std::optional<Vec3> pin_point;
+  /// With Region: the side of the bounding box whose vertices are fixed:
+  /// 0 x_min, 1 x_max, 2 y_min, 3 y_max.
+  int fixed_side = 0;
+};
+
+class MechanicsStage final : public Stage {
+ public:
+  explicit MechanicsStage(MechanicsSpec spec);
+  std::string name() const override { return "mechanics"; }
+  void prepare(Tissue& tissue, double time) override;
+  void apply(Tissue& tissue, const StepContext& context) override;
+  std::vector<std::string> cellPropertiesWritten() const override;
+  /// The last step's report (Newton iterations, residuals, strains).
+  const mechanics::TurgorStepReport& lastReport() const { return report_; }
+  static constexpr const char* kMeanStrainName = "mean_wall_strain";
+  static constexpr const char* kMeanTensionName = "mean_wall_tension";
+
+ private:
+  void writeCellMeans(Tissue& tissue) const;
+  MechanicsSpec spec_;
+  mechanics::TurgorStepReport report_;
+};
+
+void declareMechanicsSection(Schema& schema);
+MechanicsSpec readMechanicsSection(const Config& config);
+void addMechanicsStage(const MechanicsSpec& spec, StageList& stages);
+
+}  // namespace tessella::sim
