@@ -102,6 +102,13 @@ EquilibriumReport solveEquilibrium(const EnergyModel& model, Eigen::VectorXd& x,
     double diag_max = 0.0;
     for (Eigen::Index k = 0; k < m; ++k) diag_max = std::max(diag_max, std::abs(K.coeff(k, k)));
     if (!(diag_max > 0.0)) diag_max = 1.0;
+    // Positions are known to eps |x|, so forces only to about that times the
+    // stiffness: a residual below this floor is round-off (an unloaded body
+    // has a force scale near zero, and no Newton step can do better).
+    report.roundoff_floor = 16.0 * std::numeric_limits<double>::epsilon() * diag_max *
+                            std::max(x.lpNorm<Eigen::Infinity>(), 1e-300) * std::sqrt(static_cast<double>(m));
+    report.tolerance = std::max(report.tolerance, report.roundoff_floor);
+    if (report.residual <= report.tolerance) break;
 
     // Newton direction, with a shift when K is not positive definite or the
     // step does not descend.
@@ -160,7 +167,8 @@ EquilibriumReport solveEquilibrium(const EnergyModel& model, Eigen::VectorXd& x,
     report.energy = energy;
     report.residual = g.norm();
     report.force_scale = model.forceScale(x);
-    report.tolerance = options.relative_tolerance * report.force_scale + options.absolute_tolerance;
+    report.tolerance = std::max(options.relative_tolerance * report.force_scale + options.absolute_tolerance,
+                                report.roundoff_floor);
     report.residuals.push_back(report.residual);
     report.energies.push_back(energy);
     report.shifts.push_back(tau);

@@ -5,6 +5,9 @@
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
 
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -91,13 +94,40 @@ MembraneModel::MembraneModel(std::vector<Vec3> reference, std::vector<std::array
     const Vec3 e2 = n.cross(e1);
     Eigen::Matrix2d D;
     D << e1.dot(d1), e1.dot(d2), e2.dot(d1), e2.dot(d2);
-    const Eigen::Matrix2d Dinv = D.inverse();
-    Element& el = elements_[e];
-    el.g[1] = Dinv.row(0).transpose();
-    el.g[2] = Dinv.row(1).transpose();
-    el.g[0] = -el.g[1] - el.g[2];
-    el.area = 0.5 * twice_area;
+    elements_[e].setRestShape(D);
   }
+}
+
+void MembraneModel::Element::setRestShape(const Eigen::Matrix2d& edges) {
+  D = edges;
+  const Eigen::Matrix2d Dinv = D.inverse();
+  g[1] = Dinv.row(0).transpose();
+  g[2] = Dinv.row(1).transpose();
+  g[0] = -g[1] - g[2];
+  area = 0.5 * std::abs(D.determinant());
+}
+
+void MembraneModel::setPressure(double pressure) {
+  if (!std::isfinite(pressure)) throw InputError("membrane: pressure " + formatNumber(pressure) + " is not finite");
+  pressure_ = pressure;
+}
+
+double MembraneModel::growRestShape(const Eigen::VectorXd& x, const StrainGrowthLaw& law, double dt) {
+  law.check();
+  if (!(dt >= 0.0 && std::isfinite(dt))) throw InputError("membrane growth: dt " + formatNumber(dt) + " must be >= 0");
+  double fastest = 0.0;
+  for (std::size_t e = 0; e < triangles_.size(); ++e) {
+    const Mat32 F = deformationGradient(x, e);
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(F.transpose() * F);
+    Eigen::Matrix2d G = Eigen::Matrix2d::Zero();
+    for (int i = 0; i < 2; ++i) {
+      const double rate = law.relativeRate(std::sqrt(std::max(eig.eigenvalues()[i], 0.0)) - 1.0);
+      fastest = std::max(fastest, rate);
+      G += std::exp(rate * dt) * eig.eigenvectors().col(i) * eig.eigenvectors().col(i).transpose();
+    }
+    elements_[e].setRestShape(G * elements_[e].D);
+  }
+  return fastest;
 }
 
 Eigen::VectorXd MembraneModel::referenceDofs() const {

@@ -22,7 +22,8 @@
 namespace tessella::mechanics {
 
 struct EquilibriumOptions {
-  /// Converged when ||g_free|| <= relative_tolerance * forceScale(x) + absolute_tolerance.
+  /// Converged when ||g_free|| <= relative_tolerance * forceScale(x) + absolute_tolerance,
+  /// or below the round-off floor of the forces (EquilibriumReport::roundoff_floor).
   double relative_tolerance = 1e-10;
   double absolute_tolerance = 0.0;
   int max_iterations = 50;
@@ -44,7 +45,12 @@ struct EquilibriumReport {
   double energy = 0.0;      ///< E at the returned x
   double residual = 0.0;    ///< ||g_free|| at the returned x
   double force_scale = 0.0; ///< forceScale(x) at the returned x
-  double tolerance = 0.0;   ///< the residual the test required
+  /// The residual the test required: max(relative_tolerance * force_scale +
+  /// absolute_tolerance, roundoff_floor).
+  double tolerance = 0.0;
+  /// 16 eps max|K_ii| |x|_inf sqrt(free dofs): the force error of positions
+  /// rounded to eps |x| (from the last tangent; 0 before the first).
+  double roundoff_floor = 0.0;
   /// Per iterate, starting with the initial x: ||g_free||, E, and (from the
   /// first step on) the shift tau and the step length a used to get there.
   std::vector<double> residuals;

@@ -16,6 +16,7 @@
 #include <Eigen/Core>
 
 #include "tessella/mechanics/energy_model.hpp"
+#include "tessella/mechanics/strain_growth.hpp"
 #include "tessella/tissue/handles.hpp"
 #include "tessella/tissue/vec3.hpp"
 
@@ -62,11 +63,25 @@ class MembraneModel final : public EnergyModel {
   Eigen::Matrix3d tension(const Eigen::VectorXd& x, std::size_t e) const;
   const std::vector<std::array<Index, 3>>& triangles() const { return triangles_; }
   double pressure() const { return pressure_; }
+  void setPressure(double pressure);
+
+  /// Lockhart-Ortega growth of every triangle's rest shape over dt at the
+  /// strains of x: along each principal direction of its stretch (the
+  /// eigenvectors of C = F^T F in the reference), with principal stretch
+  /// lambda_i, the rest shape grows by exp(law.relativeRate(lambda_i - 1) dt)
+  /// (the strain of the 2D walls, (L - L0) / L0, taken along the principal
+  /// directions). After growth the rest shapes need not fit together:
+  /// referenceDofs() stays the initial shape. Returns the largest relative rate.
+  double growRestShape(const Eigen::VectorXd& x, const StrainGrowthLaw& law, double dt);
+  /// Reference (rest) area of triangle e.
+  double restArea(std::size_t e) const { return elements_[e].area; }
 
  private:
   struct Element {
-    std::array<Eigen::Vector2d, 3> g;  // gradients of the shape functions in the reference fibre frame
+    Eigen::Matrix2d D;                 // reference edge vectors (x1 - x0, x2 - x0) in the fibre frame
+    std::array<Eigen::Vector2d, 3> g;  // gradients of the shape functions in that frame
     double area = 0.0;                 // reference area A0
+    void setRestShape(const Eigen::Matrix2d& edges);
   };
   Eigen::Matrix<double, 3, 2> deformationGradient(const Eigen::VectorXd& x, std::size_t e) const;
 
