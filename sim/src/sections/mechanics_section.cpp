@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tessella/sim/sections/mechanics_section.hpp"
 
+#include "../config/exact_text.hpp"
+
 #include "tessella/mechanics/errors.hpp"
 #include "tessella/mechanics/planar_dofs.hpp"
 #include "tessella/mechanics/wall_state.hpp"
@@ -11,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace tessella::sim {
 namespace {
@@ -31,7 +34,8 @@ std::vector<std::string> MechanicsStage::cellPropertiesWritten() const {
 void MechanicsStage::prepare(Tissue& tissue, double /*time*/) {
   mechanics::requirePlanar(tissue, "the mechanics section");
   mechanics::prepareTurgorState(tissue, spec_.params);
-  mechanics::initialiseRestLengths(tissue);  // the starting shape is at rest
+  if (restart_) restore(tissue);
+  mechanics::initialiseRestLengths(tissue);  // the starting shape is at rest (walls not restored)
   mechanics::cellOutput(tissue, kMeanStrainName);
   mechanics::cellOutput(tissue, kMeanTensionName);
   if (spec_.support == MechanicsSupport::Point && !spec_.pin_point) {
@@ -39,6 +43,53 @@ void MechanicsStage::prepare(Tissue& tissue, double /*time*/) {
     for (VertexId v : tissue.vertices()) sum += tissue.position(v);
     spec_.pin_point = sum / static_cast<double>(std::max<std::size_t>(tissue.numVertices(), 1));
   }
+}
+
+void MechanicsStage::saveState(const Tissue& tissue, const std::string& /*snapshot_path*/,
+                               const io::VtuOptions& /*options*/, io::RunState& state) const {
+  std::string text;
+  if (tissue.wallProperties().has(mechanics::kRestLengthName)) {
+    const auto& rest = tissue.wallProperties().get<double>(mechanics::kRestLengthName);
+    for (WallId w : tissue.walls()) text += (text.empty() ? "" : " ") + formatNumber(rest[w]);
+  }
+  state["mechanics.rest_length"] = text;
+  if (spec_.pin_point)
+    state["mechanics.pin_point"] = formatNumber(spec_.pin_point->x()) + " " + formatNumber(spec_.pin_point->y()) +
+                                   " " + formatNumber(spec_.pin_point->z());
+}
+
+void MechanicsStage::continueFrom(const std::string& snapshot_path, const io::RunState& state) {
+  restart_ = std::make_pair(snapshot_path, state);
+}
+
+void MechanicsStage::restore(Tissue& tissue) {
+  const auto& [snapshot, state] = *restart_;
+  auto numbers = [&](const std::string& key) {
+    std::vector<double> values;
+    std::istringstream in(state.at(key));
+    std::string word;
+    while (in >> word) {
+      double v = 0.0;
+      if (!detail::parseExact(word, v))
+        throw InputError("snapshot '" + snapshot + "': its run state " + key + " holds '" + word +
+                         "', not a number");
+      values.push_back(v);
+    }
+    return values;
+  };
+  if (state.count("mechanics.pin_point") && spec_.support == MechanicsSupport::Point) {
+    const std::vector<double> p = numbers("mechanics.pin_point");
+    if (p.size() != 3) throw InputError("snapshot '" + snapshot + "': mechanics.pin_point is not three numbers");
+    spec_.pin_point = Vec3(p[0], p[1], p[2]);
+  }
+  if (!state.count("mechanics.rest_length")) return;  // walls start at rest
+  const std::vector<double> values = numbers("mechanics.rest_length");
+  if (values.size() != tissue.numWalls())
+    throw InputError("snapshot '" + snapshot + "': its run state has " + std::to_string(values.size()) +
+                     " rest lengths (mechanics.rest_length) for " + std::to_string(tissue.numWalls()) + " walls");
+  auto& rest = mechanics::restLengths(tissue);
+  std::size_t i = 0;
+  for (WallId w : tissue.walls()) rest[w] = values[i++];
 }
 
 void MechanicsStage::apply(Tissue& tissue, const StepContext& context) {

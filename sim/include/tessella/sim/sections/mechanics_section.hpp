@@ -14,6 +14,7 @@
 // and unchanged.
 
 #include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,15 @@ class MechanicsStage final : public Stage {
   void prepare(Tissue& tissue, double time) override;
   void apply(Tissue& tissue, const StepContext& context) override;
   std::vector<std::string> cellPropertiesWritten() const override;
+  /// The walls' rest lengths (live walls in slot order, exact text) and the
+  /// pinned point, in the run state as mechanics.rest_length and
+  /// mechanics.pin_point: VTU snapshots hold no wall properties, and a
+  /// restart continues from them bit for bit.
+  void saveState(const Tissue& tissue, const std::string& snapshot_path, const io::VtuOptions& options,
+                 io::RunState& state) const override;
+  /// A snapshot without that state (an initial tissue, or a run without the
+  /// section) starts with its walls at rest in its shape.
+  void continueFrom(const std::string& snapshot_path, const io::RunState& state) override;
   /// The last step's report (Newton iterations, residuals, strains).
   const mechanics::TurgorStepReport& lastReport() const { return report_; }
   static constexpr const char* kMeanStrainName = "mean_wall_strain";
@@ -55,8 +65,10 @@ class MechanicsStage final : public Stage {
 
  private:
   void writeCellMeans(Tissue& tissue) const;
+  void restore(Tissue& tissue);
   MechanicsSpec spec_;
   mechanics::TurgorStepReport report_;
+  std::optional<std::pair<std::string, io::RunState>> restart_;  // snapshot path, its run state
 };
 
 void declareMechanicsSection(Schema& schema);
