@@ -7,6 +7,7 @@
 #include "tessella/mechanics/errors.hpp"
 #include "tessella/mechanics/planar_dofs.hpp"
 #include "tessella/mechanics/wall_state.hpp"
+#include "tessella/mechanics/wall_stress.hpp"
 #include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"
 
@@ -28,7 +29,8 @@ const std::vector<std::string>& sideNames() {
 MechanicsStage::MechanicsStage(MechanicsSpec spec) : spec_(std::move(spec)) { spec_.params.check(); }
 
 std::vector<std::string> MechanicsStage::cellPropertiesWritten() const {
-  return {mechanics::kTurgorPressureName, kMeanStrainName, kMeanTensionName};
+  return {mechanics::kTurgorPressureName, kMeanStrainName, kMeanTensionName, mechanics::kStressMaxName,
+          mechanics::kStressMinName};
 }
 
 void MechanicsStage::prepare(Tissue& tissue, double /*time*/) {
@@ -38,6 +40,8 @@ void MechanicsStage::prepare(Tissue& tissue, double /*time*/) {
   mechanics::initialiseRestLengths(tissue);  // the starting shape is at rest (walls not restored)
   mechanics::cellOutput(tissue, kMeanStrainName);
   mechanics::cellOutput(tissue, kMeanTensionName);
+  // Zero before the first equilibrium (a restart keeps the snapshot's values).
+  if (!tissue.cellProperties().has(mechanics::kWallStressName)) mechanics::writeCellWallStress(tissue);
   if (spec_.support == MechanicsSupport::Point && !spec_.pin_point) {
     Vec3 sum = Vec3::Zero();
     for (VertexId v : tissue.vertices()) sum += tissue.position(v);
@@ -117,6 +121,7 @@ void MechanicsStage::apply(Tissue& tissue, const StepContext& context) {
   }
   report_ = mechanics::turgorGrowthStep(tissue, params, context.dt);
   writeCellMeans(tissue);
+  mechanics::writeCellWallStress(tissue);
 }
 
 void MechanicsStage::writeCellMeans(Tissue& tissue) const {
@@ -142,8 +147,9 @@ void declareMechanicsSection(Schema& s) {
             "Turgor-driven growth of a planar 2D tissue: walls are linear elastic springs (tension E t "
             "(L - L0) / L0), cells push with their turgor pressure, the quasi-static equilibrium is solved "
             "by Newton every step and the tissue moves there; rest lengths then grow where the wall strain "
-            "exceeds `threshold` (Lockhart-Ortega). Writes turgor_pressure, mean_wall_strain and "
-            "mean_wall_tension per cell (and rest_length, wall_strain, wall_tension per wall). Off unless "
+            "exceeds `threshold` (Lockhart-Ortega). Writes turgor_pressure, mean_wall_strain, "
+            "mean_wall_tension and the walls' stress (wall_stress, stress_max, stress_min, stress_direction) "
+            "per cell (and rest_length, wall_strain, wall_tension per wall). Off unless "
             "`model` is set. See docs/mechanics.md.");
   s.key("mechanics.model", ValueType::Enum,
         "The mechanical model. `wall_springs`: walls as springs, cells under turgor (planar 2D tissues).")

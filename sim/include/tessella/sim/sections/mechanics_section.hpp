@@ -8,8 +8,10 @@
 // the tissue moves there; then the rest lengths grow where the walls are
 // strained beyond a threshold (Lockhart-Ortega). Per wall the tissue keeps
 // rest_length, wall_strain and wall_tension (wall properties); per cell
-// turgor_pressure and the length-weighted means of its walls' strain and
-// tension (mean_wall_strain, mean_wall_tension), which reach the VTU output.
+// turgor_pressure, the length-weighted means of its walls' strain and
+// tension (mean_wall_strain, mean_wall_tension) and the stress its walls carry
+// (wall_stress, stress_max, stress_min, stress_direction; wall_stress.hpp),
+// which reach the VTU output.
 // The `elasticity:` section (a linear solve that moves nothing) is separate
 // and unchanged.
 
