@@ -16,6 +16,7 @@
 #include "tessella/sim/config/config.hpp"
 #include "tessella/sim/sections/coupling_section.hpp"
 #include "tessella/sim/sections/growth_section.hpp"
+#include "tessella/sim/sections/mechanics_section.hpp"
 #include "tessella/sim/sections/mesh_section.hpp"
 #include "tessella/sim/sections/network_section.hpp"
 #include "tessella/sim/sections/output_section.hpp"
@@ -39,6 +40,7 @@ struct SimulationConfig {
   OutputSpec output;
   GrowthSpec growth;
   DivisionSpec division;
+  MechanicsSpec mechanics;
   DiffusionSpec diffusion;
   CompartmentSpec compartments;
   ElasticitySpec elasticity;
@@ -46,8 +48,8 @@ struct SimulationConfig {
 };
 
 /// The sections after the frame, in the order of their keys in docs/config.md
-/// and of their stages in a step: growth, division, then the solvers (which
-/// share the mesh the mesh section describes).
+/// and of their stages in a step: growth, division, mechanics (turgor-driven
+/// growth), then the solvers (which share the mesh the mesh section describes).
 inline const std::vector<SectionUnit>& sectionUnits() {
   using S = SimulationConfig;
   static const std::vector<SectionUnit> units = {
@@ -55,6 +57,8 @@ inline const std::vector<SectionUnit>& sectionUnits() {
        [](const S& s, StageList& stages) { addGrowthStage(s.growth, stages); }},
       {"division", declareDivisionSection, [](const Config& c, S& s) { s.division = readDivisionSection(c); },
        [](const S& s, StageList& stages) { addDivisionStage(s.division, stages); }},
+      {"mechanics", declareMechanicsSection, [](const Config& c, S& s) { s.mechanics = readMechanicsSection(c); },
+       [](const S& s, StageList& stages) { addMechanicsStage(s.mechanics, stages); }},
       {"output", declareOutputSection, [](const Config& c, S& s) { s.output = readOutputSection(c); }, {}},
       {"diffusion", declareDiffusionSection, [](const Config& c, S& s) { s.diffusion = readDiffusionSection(c); },
        [](const S& s, StageList& stages) { addDiffusionStage(s.diffusion, stages); }},

@@ -1,0 +1,39 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tessella/mechanics/wall_state.hpp"
+
+#include "tessella/tissue/geometry.hpp"
+#include "tessella/tissue/tissue.hpp"
+
+namespace tessella::mechanics {
+
+PropertyColumn<double>& restLengths(Tissue& tissue) {
+  PropertyStore& walls = tissue.wallProperties();
+  if (!walls.has(kRestLengthName)) return walls.add<double>(kRestLengthName, 0.0, DivisionPolicy::SplitByMeasure);
+  return walls.get<double>(kRestLengthName);
+}
+
+PropertyColumn<double>& wallOutput(Tissue& tissue, const char* name) {
+  PropertyStore& walls = tissue.wallProperties();
+  if (!walls.has(name)) return walls.add<double>(name, 0.0, DivisionPolicy::Copy);
+  return walls.get<double>(name);
+}
+
+PropertyColumn<double>& cellOutput(Tissue& tissue, const char* name, double value) {
+  PropertyStore& cells = tissue.cellProperties();
+  if (!cells.has(name)) return cells.add<double>(name, value, DivisionPolicy::Copy);
+  return cells.get<double>(name);
+}
+
+std::size_t initialiseRestLengths(Tissue& tissue) {
+  PropertyColumn<double>& rest = restLengths(tissue);
+  std::size_t count = 0;
+  for (WallId w : tissue.walls())
+    if (!(rest[w] > 0.0)) {
+      rest[w] = wallMeasure(tissue, w);
+      ++count;
+    }
+  return count;
+}
+
+}  // namespace tessella::mechanics

@@ -1,0 +1,238 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tessella/sim/sections/mechanics_section.hpp"
+
+#include "../config/exact_text.hpp"
+
+#include "tessella/mechanics/errors.hpp"
+#include "tessella/mechanics/planar_dofs.hpp"
+#include "tessella/mechanics/wall_state.hpp"
+#include "tessella/mechanics/wall_stress.hpp"
+#include "tessella/tissue/format.hpp"
+#include "tessella/tissue/geometry.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace tessella::sim {
+namespace {
+
+const std::vector<std::string>& sideNames() {
+  static const std::vector<std::string> names = {"x_min", "x_max", "y_min", "y_max"};
+  return names;
+}
+
+}  // namespace
+
+MechanicsStage::MechanicsStage(MechanicsSpec spec) : spec_(std::move(spec)) { spec_.params.check(); }
+
+std::vector<std::string> MechanicsStage::cellPropertiesWritten() const {
+  return {mechanics::kTurgorPressureName, kMeanStrainName, kMeanTensionName, mechanics::kStressMaxName,
+          mechanics::kStressMinName};
+}
+
+void MechanicsStage::prepare(Tissue& tissue, double /*time*/) {
+  mechanics::requirePlanar(tissue, "the mechanics section");
+  mechanics::prepareTurgorState(tissue, spec_.params);
+  if (restart_) restore(tissue);
+  mechanics::initialiseRestLengths(tissue);  // the starting shape is at rest (walls not restored)
+  mechanics::cellOutput(tissue, kMeanStrainName);
+  mechanics::cellOutput(tissue, kMeanTensionName);
+  // Zero before the first equilibrium (a restart keeps the snapshot's values).
+  if (!tissue.cellProperties().has(mechanics::kWallStressName)) mechanics::writeCellWallStress(tissue);
+  if (spec_.support == MechanicsSupport::Point && !spec_.pin_point) {
+    Vec3 sum = Vec3::Zero();
+    for (VertexId v : tissue.vertices()) sum += tissue.position(v);
+    spec_.pin_point = sum / static_cast<double>(std::max<std::size_t>(tissue.numVertices(), 1));
+  }
+}
+
+void MechanicsStage::saveState(const Tissue& tissue, const std::string& /*snapshot_path*/,
+                               const io::VtuOptions& /*options*/, io::RunState& state) const {
+  std::string text;
+  if (tissue.wallProperties().has(mechanics::kRestLengthName)) {
+    const auto& rest = tissue.wallProperties().get<double>(mechanics::kRestLengthName);
+    for (WallId w : tissue.walls()) text += (text.empty() ? "" : " ") + formatNumber(rest[w]);
+  }
+  state["mechanics.rest_length"] = text;
+  if (spec_.pin_point)
+    state["mechanics.pin_point"] = formatNumber(spec_.pin_point->x()) + " " + formatNumber(spec_.pin_point->y()) +
+                                   " " + formatNumber(spec_.pin_point->z());
+}
+
+void MechanicsStage::continueFrom(const std::string& snapshot_path, const io::RunState& state) {
+  restart_ = std::make_pair(snapshot_path, state);
+}
+
+void MechanicsStage::restore(Tissue& tissue) {
+  const auto& [snapshot, state] = *restart_;
+  auto numbers = [&](const std::string& key) {
+    std::vector<double> values;
+    std::istringstream in(state.at(key));
+    std::string word;
+    while (in >> word) {
+      double v = 0.0;
+      if (!detail::parseExact(word, v))
+        throw InputError("snapshot '" + snapshot + "': its run state " + key + " holds '" + word +
+                         "', not a number");
+      values.push_back(v);
+    }
+    return values;
+  };
+  if (state.count("mechanics.pin_point") && spec_.support == MechanicsSupport::Point) {
+    const std::vector<double> p = numbers("mechanics.pin_point");
+    if (p.size() != 3) throw InputError("snapshot '" + snapshot + "': mechanics.pin_point is not three numbers");
+    spec_.pin_point = Vec3(p[0], p[1], p[2]);
+  }
+  if (!state.count("mechanics.rest_length")) return;  // walls start at rest
+  const std::vector<double> values = numbers("mechanics.rest_length");
+  if (values.size() != tissue.numWalls())
+    throw InputError("snapshot '" + snapshot + "': its run state has " + std::to_string(values.size()) +
+                     " rest lengths (mechanics.rest_length) for " + std::to_string(tissue.numWalls()) + " walls");
+  auto& rest = mechanics::restLengths(tissue);
+  std::size_t i = 0;
+  for (WallId w : tissue.walls()) rest[w] = values[i++];
+}
+
+void MechanicsStage::apply(Tissue& tissue, const StepContext& context) {
+  mechanics::TurgorGrowthParams params = spec_.params;
+  params.solver.context = "mechanics, step " + std::to_string(context.clock_step + 1) + ", time " +
+                          formatNumber(context.time);
+  if (spec_.support == MechanicsSupport::Point) {
+    params.supports.pin = true;
+    params.supports.pin_point = *spec_.pin_point;
+  } else {
+    // The side of the current bounding box, within 1e-6 of its diagonal.
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (VertexId v : tissue.vertices()) {
+      lo = lo.cwiseMin(tissue.position(v));
+      hi = hi.cwiseMax(tissue.position(v));
+    }
+    const double tol = 1e-6 * (hi - lo).norm();
+    const int axis = spec_.fixed_side / 2;
+    const double bound = spec_.fixed_side % 2 == 0 ? lo[axis] : hi[axis];
+    params.supports.box = true;
+    params.supports.box_lo = lo - Vec3::Constant(1.0);
+    params.supports.box_hi = hi + Vec3::Constant(1.0);
+    params.supports.box_lo[axis] = bound - tol;
+    params.supports.box_hi[axis] = bound + tol;
+  }
+  report_ = mechanics::turgorGrowthStep(tissue, params, context.dt);
+  writeCellMeans(tissue);
+  mechanics::writeCellWallStress(tissue);
+}
+
+void MechanicsStage::writeCellMeans(Tissue& tissue) const {
+  const auto& strain = tissue.wallProperties().get<double>(mechanics::kWallStrainName);
+  const auto& tension = tissue.wallProperties().get<double>(mechanics::kWallTensionName);
+  auto& mean_strain = mechanics::cellOutput(tissue, kMeanStrainName);
+  auto& mean_tension = mechanics::cellOutput(tissue, kMeanTensionName);
+  for (CellId c : tissue.cells()) {
+    double length = 0.0, s = 0.0, t = 0.0;
+    for (WallId w : tissue.cellWalls(c)) {
+      const double l = wallMeasure(tissue, w);
+      length += l;
+      s += l * strain[w];
+      t += l * tension[w];
+    }
+    mean_strain[c] = length > 0.0 ? s / length : 0.0;
+    mean_tension[c] = length > 0.0 ? t / length : 0.0;
+  }
+}
+
+void declareMechanicsSection(Schema& s) {
+  s.section("mechanics",
+            "Turgor-driven growth of a planar 2D tissue: walls are linear elastic springs (tension E t "
+            "(L - L0) / L0), cells push with their turgor pressure, the quasi-static equilibrium is solved "
+            "by Newton every step and the tissue moves there; rest lengths then grow where the wall strain "
+            "exceeds `threshold` (Lockhart-Ortega). Writes turgor_pressure, mean_wall_strain, "
+            "mean_wall_tension and the walls' stress (wall_stress, stress_max, stress_min, stress_direction) "
+            "per cell (and rest_length, wall_strain, wall_tension per wall). Off unless "
+            "`model` is set. See docs/mechanics.md.");
+  s.key("mechanics.model", ValueType::Enum,
+        "The mechanical model. `wall_springs`: walls as springs, cells under turgor (planar 2D tissues).")
+      .oneOf({"none", "wall_springs"})
+      .byDefault(std::string("none"));
+  const std::vector<std::string> on = {"wall_springs"};
+  s.key("mechanics.pressure", ValueType::Float,
+        "Turgor pressure P of every cell (the cell property turgor_pressure; a model may change it per cell).")
+      .byDefault(0.1)
+      .atLeast(0)
+      .activeWhen("mechanics.model", on);
+  s.key("mechanics.young", ValueType::Float, "Young's modulus E of the walls.")
+      .byDefault(1.0)
+      .above(0)
+      .activeWhen("mechanics.model", on);
+  s.key("mechanics.thickness", ValueType::Float, "Wall thickness t: a wall's stiffness is E t.")
+      .byDefault(1.0)
+      .above(0)
+      .activeWhen("mechanics.model", on);
+  s.key("mechanics.extensibility", ValueType::Float,
+        "Wall extensibility phi: dL0/dt = phi L0 max(strain - threshold, 0). 0: no growth.")
+      .byDefault(0.0)
+      .atLeast(0)
+      .activeWhen("mechanics.model", on);
+  s.key("mechanics.threshold", ValueType::Float, "Yield strain below which walls do not grow.")
+      .byDefault(0.0)
+      .atLeast(0)
+      .activeWhen("mechanics.model", on);
+  s.key("mechanics.support", ValueType::Enum,
+        "What holds the tissue against rigid motions. `point`: the vertex nearest `pin_point` is fixed and "
+        "the rotation about it removed; `region`: the vertices on one side of the bounding box are fixed.")
+      .oneOf({"point", "region"})
+      .byDefault(std::string("point"))
+      .activeWhen("mechanics.model", on);
+  s.key("mechanics.pin_point", ValueType::Vec3, "The pinned point.")
+      .whenAbsent("the mean of the vertex positions when the run starts")
+      .activeWhen("mechanics.support", {"point"});
+  s.key("mechanics.fixed_region", ValueType::Enum,
+        "The side of the bounding box (as it is at each step) whose vertices are fixed.")
+      .oneOf(sideNames())
+      .byDefault(std::string("x_min"))
+      .activeWhen("mechanics.support", {"region"});
+  s.key("mechanics.tolerance", ValueType::Float,
+        "Newton stops when the out-of-balance force is below tolerance times the force scale.")
+      .byDefault(1e-10)
+      .above(0)
+      .activeWhen("mechanics.model", on);
+  s.key("mechanics.max_iterations", ValueType::Int, "Newton iterations before the step fails.")
+      .byDefault(std::int64_t{50})
+      .atLeast(1)
+      .atMost(10000)
+      .activeWhen("mechanics.model", on);
+}
+
+MechanicsSpec readMechanicsSection(const Config& c) {
+  MechanicsSpec m;
+  if (c.getString("mechanics.model") == "none") return m;
+  m.enabled = true;
+  m.params.pressure = c.getFloat("mechanics.pressure");
+  m.params.youngs_modulus = c.getFloat("mechanics.young");
+  m.params.thickness = c.getFloat("mechanics.thickness");
+  m.params.growth.extensibility = c.getFloat("mechanics.extensibility");
+  m.params.growth.threshold = c.getFloat("mechanics.threshold");
+  m.params.solver.relative_tolerance = c.getFloat("mechanics.tolerance");
+  m.params.solver.max_iterations = static_cast<int>(c.getInt("mechanics.max_iterations"));
+  if (c.getString("mechanics.support") == "point") {
+    m.support = MechanicsSupport::Point;
+    if (c.has("mechanics.pin_point")) {
+      m.pin_point = c.getVec("mechanics.pin_point");
+      if (m.pin_point->z() != 0.0)
+        throw c.errorAt("mechanics.pin_point",
+                        "a planar tissue's point has z = 0, got " + formatNumber(m.pin_point->z()));
+    }
+  } else {
+    m.support = MechanicsSupport::Region;
+    const std::string side = c.getString("mechanics.fixed_region");
+    m.fixed_side = static_cast<int>(std::find(sideNames().begin(), sideNames().end(), side) - sideNames().begin());
+  }
+  return m;
+}
+
+void addMechanicsStage(const MechanicsSpec& spec, StageList& stages) {
+  if (spec.enabled) stages.add(std::make_unique<MechanicsStage>(spec));
+}
+
+}  // namespace tessella::sim

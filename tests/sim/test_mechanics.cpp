@@ -1,0 +1,157 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
+// The mechanics section: its stage against the pressurised ring's closed
+// form, configs/turgor_tissue_2d.yaml (valid, positive areas, growing), the
+// region support, and errors at their keys.
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numbers>
+
+#include "tessella/mechanics/errors.hpp"
+#include "tessella/mechanics/wall_state.hpp"
+#include "tessella/sim/sections/simulation_config.hpp"
+#include "tessella/sim/simulation.hpp"
+#include "tessella/tissue/builders.hpp"
+#include "tessella/tissue/geometry.hpp"
+#include "test_support.hpp"
+
+using namespace tessella;
+using namespace tessella::sim;
+using tessella::sim::test::configErrorOf;
+using tessella::sim::test::sourcePath;
+
+namespace {
+
+const char* kBase = R"(
+tissue:
+  generator: hexagonal_grid
+time:
+  end: 1.0
+  dt: 0.1
+)";
+
+Tissue ring(int n, double side) {
+  const double radius = side / (2.0 * std::sin(std::numbers::pi / n));
+  std::vector<Vec3> points;
+  std::vector<Index> loop;
+  for (int i = 0; i < n; ++i) {
+    const double angle = 2.0 * std::numbers::pi * i / n;
+    points.emplace_back(3.0 + radius * std::cos(angle), 1.0 + radius * std::sin(angle), 0.0);
+    loop.push_back(static_cast<Index>(i));
+  }
+  return buildPolygonTissue(points, {loop});
+}
+
+}  // namespace
+
+TEST_CASE("mechanics section: its stage inflates a ring of walls to the closed-form side", "[sim][mechanics]") {
+  const SimulationConfig config = loadSimulationConfigString(std::string(kBase) + R"(
+mechanics:
+  model: wall_springs
+  pressure: 0.3
+  young: 20.0
+  thickness: 0.05
+  tolerance: 1e-13
+)");
+  REQUIRE(config.mechanics.enabled);
+  const int n = 7;
+  const double L0 = 0.8, S = 20.0 * 0.05, P = 0.3;
+  Tissue tissue = ring(n, L0);
+  MechanicsStage stage(config.mechanics);
+  stage.prepare(tissue, 0.0);
+  stage.apply(tissue, StepContext{.dt = 0.1});
+  // Force balance of the regular N-gon: S (L - L0) / L0 = P L / (2 tan(pi/N)).
+  const double a = P * L0 / (2 * S * std::tan(std::numbers::pi / n));
+  const double L = L0 / (1 - a);
+  for (EdgeId e : tissue.edges()) CHECK(std::abs(edgeLength(tissue, e) - L) < 1e-10 * L);
+  const auto& strain = tissue.wallProperties().get<double>(mechanics::kWallStrainName);
+  const auto& tension = tissue.wallProperties().get<double>(mechanics::kWallTensionName);
+  for (EdgeId e : tissue.edges()) {
+    CHECK(strain[e] == Approx(a / (1 - a)).epsilon(1e-9));
+    CHECK(tension[e] == Approx(P * L / (2 * std::tan(std::numbers::pi / n))).epsilon(1e-9));
+  }
+  const CellId cell = *tissue.cells().begin();
+  CHECK(tissue.cellProperties().get<double>(mechanics::kTurgorPressureName)[cell] == P);
+  CHECK(tissue.cellProperties().get<double>(MechanicsStage::kMeanStrainName)[cell] == Approx(a / (1 - a)));
+  CHECK(stage.lastReport().equilibrium.iterations >= 2);
+  // No growth by default (extensibility 0): rest lengths stay.
+  for (EdgeId e : tissue.edges())
+    CHECK(tissue.wallProperties().get<double>(mechanics::kRestLengthName)[e] == Approx(L0).epsilon(1e-14));
+}
+
+TEST_CASE("configs/turgor_tissue_2d.yaml grows by turgor: valid tissue, positive areas, area rising",
+          "[sim][mechanics][configs]") {
+  Simulation sim = Simulation::fromFile(sourcePath("configs/turgor_tissue_2d.yaml"));
+  const std::size_t cells_before = sim.tissue().numCells();
+  double area = totalMeasure(sim.tissue());
+  const double area_start = area;
+  tessella::sim::test::validateEveryStep(sim);
+  sim.onStep([&](const Simulation& s) {
+    for (CellId c : s.tissue().cells()) REQUIRE(cellMeasure(s.tissue(), c) > 0.0);
+    const double now = totalMeasure(s.tissue());
+    INFO("t = " << s.time());
+    CHECK(now > area);  // rest lengths only grow, the pressure stays: every step inflates
+    area = now;
+  });
+  sim.run();
+  CHECK(area > 1.5 * area_start);
+  CHECK(sim.tissue().numCells() > cells_before);  // and the cells divide
+  // Every wall has a rest length, new walls included.
+  const auto& rest = sim.tissue().wallProperties().get<double>(mechanics::kRestLengthName);
+  for (WallId w : sim.tissue().walls()) CHECK(rest[w] > 0.0);
+}
+
+TEST_CASE("mechanics section: a fixed side stays where it is", "[sim][mechanics]") {
+  Simulation sim = Simulation::fromYaml(std::string(kBase) + R"(
+mechanics:
+  model: wall_springs
+  pressure: 0.05
+  extensibility: 1.0
+  support: region
+  fixed_region: x_min
+)");
+  double x_min = std::numeric_limits<double>::infinity();
+  for (VertexId v : sim.tissue().vertices()) x_min = std::min(x_min, sim.tissue().position(v).x());
+  std::vector<std::pair<VertexId, Vec3>> side;
+  for (VertexId v : sim.tissue().vertices())
+    if (sim.tissue().position(v).x() <= x_min + 1e-9) side.emplace_back(v, sim.tissue().position(v));
+  REQUIRE(side.size() >= 2);
+  const double area_start = totalMeasure(sim.tissue());
+  sim.run();
+  for (const auto& [v, p] : side) CHECK(sim.tissue().position(v) == p);
+  CHECK(totalMeasure(sim.tissue()) > area_start);
+}
+
+TEST_CASE("mechanics section: a pressure beyond the walls' limit load fails the step with positions restored",
+          "[sim][mechanics]") {
+  Simulation sim = Simulation::fromYaml(std::string(kBase) + R"(
+mechanics:
+  model: wall_springs
+  pressure: 50.0
+  max_iterations: 20
+)");
+  const std::vector<Vec3> before(sim.tissue().positions().begin(), sim.tissue().positions().end());
+  try {
+    sim.step();
+    FAIL("no error");
+  } catch (const SimulationError& e) {
+    CHECK_THAT(e.what(), Catch::Contains("stage 'mechanics'") && Catch::Contains("mechanics, step 1, time 0") &&
+                             Catch::Contains("residual"));
+  }
+  CHECK(std::vector<Vec3>(sim.tissue().positions().begin(), sim.tissue().positions().end()) == before);
+}
+
+TEST_CASE("mechanics section: errors at their keys", "[sim][mechanics]") {
+  CHECK(configErrorOf([] {
+          loadSimulationConfigString(std::string(kBase) +
+                                     "mechanics:\n  model: wall_springs\n  pin_point: [1, 1, 2]\n");
+        }).keyPath() == "mechanics.pin_point");
+  CHECK(configErrorOf([] {
+          loadSimulationConfigString(std::string(kBase) + "mechanics:\n  model: wall_springs\n  young: -1\n");
+        }).keyPath() == "mechanics.young");
+  CHECK(configErrorOf([] {
+          loadSimulationConfigString(
+              "tissue:\n  generator: box_grid\ntime:\n  end: 1\n  dt: 0.1\nmechanics:\n  model: wall_springs\n");
+        }).keyPath() == "mechanics.model");
+}
