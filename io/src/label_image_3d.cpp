@@ -753,38 +753,36 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       simplifyPolyline(pl, pos, keep);
     }
   }
+  std::vector<double> six_volume(n_cells, 0);  // of each cell's wall polygons, in voxels
+  const double voxel_volume = s[0] * s[1] * s[2];
   for (int round = 0;; ++round) {
     std::vector<char> redo(polylines.size(), 0);
     bool any = false;
     auto redoWall = [&](std::size_t p) {
       for (const std::int32_t pl : wall_polylines[p]) redo[static_cast<std::size_t>(pl)] = 1, any = true;
     };
-    std::vector<double> six_volume(n_cells, 0);
+    std::fill(six_volume.begin(), six_volume.end(), 0.0);
     std::vector<Vec3> loop_points;
     for (std::size_t p = 0; p < n_walls; ++p) {
-      Vec3 centre = Vec3::Zero();
-      std::size_t kept = 0;
-      for (const std::int32_t u : loops[p])
-        if (keep[u]) centre += pos[u], ++kept;
-      if (kept < 3) {
-        redoWall(p);
-        continue;
-      }
-      centre /= static_cast<double>(kept);
-      // A loop crossing itself in its best-fit plane cannot be meshed: simplify it less.
       loop_points.clear();
       for (const std::int32_t u : loops[p])
         if (keep[u]) loop_points.emplace_back(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
-      if (polygonDefect(loop_points)) redoWall(p);
-      double vol = 0;
-      std::int32_t first = -1, prev = -1;
-      for (const std::int32_t u : loops[p]) {
-        if (!keep[u]) continue;
-        if (first < 0) first = u;
-        else vol += centre.dot(pos[prev].cross(pos[u]));
-        prev = u;
+      if (loop_points.size() < 3) {
+        redoWall(p);
+        continue;
       }
-      vol += centre.dot(pos[prev].cross(pos[first]));
+      // A loop crossing itself in its best-fit plane cannot be meshed: simplify it less.
+      if (polygonDefect(loop_points)) redoWall(p);
+      // The cells' volumes as the tissue will measure them (tissue/geometry.hpp).
+      const PolygonTriangulation tri = polygonTriangulation(loop_points);
+      double vol = 0;
+      const std::size_t k = loop_points.size();
+      if (tri.fan())
+        for (std::size_t i = 0; i < k; ++i) vol += tri.center.dot(loop_points[i].cross(loop_points[(i + 1) % k]));
+      else
+        for (const auto& t : tri.triangles)
+          vol += loop_points[t[0]].dot(loop_points[t[1]].cross(loop_points[t[2]]));
+      vol /= voxel_volume;
       const Face& f = faces[patch_face[p]];
       six_volume[static_cast<std::size_t>(f.first)] += vol;
       if (f.second >= 0) six_volume[static_cast<std::size_t>(f.second)] -= vol;
@@ -802,6 +800,15 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
     }
     if (!changed || round > 64) break;  // every corner kept: the core's checks tell what is wrong
   }
+  // A wall is one polygon through its boundary loop: walls that bend around a small cell can flatten it.
+  for (std::size_t c = 0; c < n_cells; ++c)
+    if (six_volume[c] < 1.5 * static_cast<double>(pieces[order[c]].voxels))
+      throw InputError(file + ": " + labelName(static_cast<std::int32_t>(c)) + " (" +
+                       std::to_string(pieces[order[c]].voxels) + " voxels, one at " + voxelName(pieces[order[c]].first) +
+                       "): the polygons through its walls' boundary loops enclose " +
+                       formatNumber(six_volume[c] / 6) + " voxels, under a quarter of its own (its walls bend "
+                       "around it: a wall is one polygon through its junction lines); drop or merge it "
+                       "(min_cell_size, small_cells)");
 
   // The complex: kept corners in world coordinates, walls as loops, cells as wall lists.
   ComplexFile m;
