@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Tessella developers
 // SPDX-License-Identifier: AGPL-3.0-or-later
 // Label images from Python: a NumPy integer array (or an image file) with a
-// pixel size into a planar tissue (docs/import.md, "Label images").
+// pixel or voxel size into a planar or 3D tissue (docs/import.md, "Label images").
 #include <optional>
 
 #include <pybind11/numpy.h>

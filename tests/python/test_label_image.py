@@ -1,6 +1,6 @@
 # SPDX-FileCopyrightText: 2026 The Tessella developers
 # SPDX-License-Identifier: AGPL-3.0-or-later
-# Label images from Python: NumPy arrays and image files into planar tissues
+# Label images from Python: NumPy arrays and image files into planar and 3D tissues
 # (docs/import.md, "Label images"), checked against closed forms (rectangles
 # of pixels) and against the Voronoi tissue they were rasterised from.
 import numpy as np
