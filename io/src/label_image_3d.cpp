@@ -157,7 +157,9 @@ std::size_t makeWellComposed(Grid& g, const std::string& name, const std::functi
     work.pop_back();
     const auto l = block(c);
     if (blockDefects(l) == 0) continue;
-    int best_gain = 0;
+    // The change that removes the most defects; of equal ones, the voxel whose six face neighbours
+    // most favour the new label over its old one (so no speck of a label is made).
+    int best_gain = 0, best_agreement = 0;
     std::size_t best_voxel = 0;
     std::int32_t best_label = 0;
     for (int b = 0; b < 8; ++b) {
@@ -173,7 +175,12 @@ std::size_t makeWellComposed(Grid& g, const std::string& name, const std::functi
         g.cell[v] = l[e];
         const int gain = before - around(v);
         g.cell[v] = old;
-        if (gain > best_gain) best_gain = gain, best_voxel = v, best_label = l[e];
+        int agreement = 0;
+        for (int a = 0; a < 3; ++a)
+          for (const std::size_t nb : {v - g.stride[a], v + g.stride[a]})
+            agreement += (g.cell[nb] == l[e]) - (g.cell[nb] == old);
+        if (gain > best_gain || (gain == best_gain && gain > 0 && agreement > best_agreement))
+          best_gain = gain, best_agreement = agreement, best_voxel = v, best_label = l[e];
       }
     }
     if (best_gain <= 0) {
@@ -193,6 +200,25 @@ std::size_t makeWellComposed(Grid& g, const std::string& name, const std::functi
   }
   return changed;
 }
+
+// A set of indices below n with the position of each among them in O(1).
+struct RankedSet {
+  std::vector<std::uint64_t> bits;
+  std::vector<std::uint32_t> before;  // members in the words before, after finish()
+  explicit RankedSet(std::size_t n) : bits((n + 63) / 64, 0) {}
+  void insert(std::uint64_t i) { bits[i >> 6] |= std::uint64_t{1} << (i & 63); }
+  bool contains(std::uint64_t i) const { return (bits[i >> 6] >> (i & 63)) & 1; }
+  void finish() {
+    before.resize(bits.size());
+    std::uint32_t n = 0;
+    for (std::size_t k = 0; k < bits.size(); ++k)
+      before[k] = n, n += static_cast<std::uint32_t>(std::popcount(bits[k]));
+  }
+  std::uint32_t rank(std::uint64_t i) const {
+    return before[i >> 6] +
+           static_cast<std::uint32_t>(std::popcount(bits[i >> 6] & ((std::uint64_t{1} << (i & 63)) - 1)));
+  }
+};
 
 struct Face {
   std::int32_t first, second;  // first: a cell (the larger id); the loop is oriented out of it
@@ -520,22 +546,24 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
   // Interface faces: key voxel * 3 + axis for the face between voxel and voxel + axis (ascending).
   std::vector<std::uint64_t> face_key;
   std::vector<Face> faces;
+  RankedSet face_set(3 * g.size());
   for (std::size_t v = 0; v + g.stride[2] < g.size(); ++v) {
     const std::int32_t a = g.cell[v];
     for (int ax = 0; ax < 3; ++ax) {
       const std::int32_t b = g.cell[v + g.stride[ax]];
       if (a == b || (a < 0 && b < 0)) continue;
       face_key.push_back(v * 3 + static_cast<std::uint64_t>(ax));
+      face_set.insert(face_key.back());
       faces.push_back(a > b ? Face{a, b, true} : Face{b, a, false});
     }
   }
-  auto faceIndex = [&](std::uint64_t key) {
-    return static_cast<Index>(std::lower_bound(face_key.begin(), face_key.end(), key) - face_key.begin());
-  };
+  face_set.finish();
+  auto faceIndex = [&](std::uint64_t key) { return static_cast<Index>(face_set.rank(key)); };
 
   // Voxel edges: junctions (three or more labels around) or a joint of two faces of one wall.
   UnionFind patches(faces.size());
   std::vector<std::uint64_t> junction_edges;  // corner * 3 + axis: from the corner along the axis
+  RankedSet junction_set(3 * g.size());
   for (std::int64_t k = 1; k < g.n[2]; ++k)
     for (std::int64_t j = 1; j < g.n[1]; ++j)
       for (std::int64_t i = 1; i < g.n[0]; ++i) {
@@ -555,6 +583,7 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
           int distinct = 1 + (l1 != l0) + (l2 != l0 && l2 != l1) + (l3 != l0 && l3 != l1 && l3 != l2);
           if (distinct >= 3) {
             junction_edges.push_back(c * 3 + static_cast<std::uint64_t>(ax));
+            junction_set.insert(junction_edges.back());
             continue;
           }
           if (n_faces != 2)
@@ -570,18 +599,18 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
         }
       }
   // Corners on junction lines (compact ids, ascending corner index), their degree and whether they are vertices.
+  junction_set.finish();
   std::vector<std::uint64_t> corners;
-  corners.reserve(junction_edges.size() * 2);
+  RankedSet corner_set(g.size());
   for (std::uint64_t e : junction_edges) {
-    const std::size_t c = e / 3;
-    corners.push_back(c);
-    corners.push_back(c + g.stride[e % 3]);
+    corner_set.insert(e / 3);
+    corner_set.insert(e / 3 + g.stride[e % 3]);
   }
-  std::sort(corners.begin(), corners.end());
-  corners.erase(std::unique(corners.begin(), corners.end()), corners.end());
-  auto cornerId = [&](std::uint64_t c) {
-    return static_cast<std::int32_t>(std::lower_bound(corners.begin(), corners.end(), c) - corners.begin());
-  };
+  corner_set.finish();
+  for (std::size_t w = 0; w < corner_set.bits.size(); ++w)
+    for (std::uint64_t word = corner_set.bits[w]; word != 0; word &= word - 1)
+      corners.push_back(w * 64 + static_cast<std::uint64_t>(std::countr_zero(word)));
+  auto cornerId = [&](std::uint64_t c) { return static_cast<std::int32_t>(corner_set.rank(c)); };
   const std::size_t n_corners = corners.size();
   std::vector<std::array<std::int32_t, 6>> incident(n_corners);  // junction edges at each corner
   std::vector<std::uint8_t> degree(n_corners, 0);
@@ -661,11 +690,10 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
     const std::uint64_t es[4] = {c0 * 3 + static_cast<std::uint64_t>(b), cs[1] * 3 + static_cast<std::uint64_t>(cc),
                                  cs[3] * 3 + static_cast<std::uint64_t>(b), c0 * 3 + static_cast<std::uint64_t>(cc)};
     for (int k = 0; k < 4; ++k) {
-      const auto it = std::lower_bound(junction_edges.begin(), junction_edges.end(), es[k]);
-      if (it == junction_edges.end() || *it != es[k]) continue;
+      if (!junction_set.contains(es[k])) continue;
       std::int32_t tail = cornerId(cs[k]), head = cornerId(cs[(k + 1) % 4]);
       if (!faces[f].forward) std::swap(tail, head);
-      boundary.push_back({patch_of_face[f], tail, head, static_cast<std::int32_t>(it - junction_edges.begin())});
+      boundary.push_back({patch_of_face[f], tail, head, static_cast<std::int32_t>(junction_set.rank(es[k]))});
     }
   }
   std::sort(boundary.begin(), boundary.end());
@@ -804,9 +832,9 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
   for (std::size_t c = 0; c < n_cells; ++c)
     if (six_volume[c] < 1.5 * static_cast<double>(pieces[order[c]].voxels))
       throw InputError(file + ": " + labelName(static_cast<std::int32_t>(c)) + " (" +
-                       std::to_string(pieces[order[c]].voxels) + " voxels, one at " + voxelName(pieces[order[c]].first) +
-                       "): the polygons through its walls' boundary loops enclose " +
-                       formatNumber(six_volume[c] / 6) + " voxels, under a quarter of its own (its walls bend "
+                       std::to_string(pieces[order[c]].voxels) + " voxels, one at " +
+                       voxelName(pieces[order[c]].first) +
+                       "): the polygons through its walls' boundary loops enclose " + formatNumber(six_volume[c] / 6) + " voxels, under a quarter of its own (its walls bend "
                        "around it: a wall is one polygon through its junction lines); drop or merge it "
                        "(min_cell_size, small_cells)");
 
