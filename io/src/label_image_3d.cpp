@@ -834,9 +834,9 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       throw InputError(file + ": " + labelName(static_cast<std::int32_t>(c)) + " (" +
                        std::to_string(pieces[order[c]].voxels) + " voxels, one at " +
                        voxelName(pieces[order[c]].first) +
-                       "): the polygons through its walls' boundary loops enclose " + formatNumber(six_volume[c] / 6) + " voxels, under a quarter of its own (its walls bend "
-                       "around it: a wall is one polygon through its junction lines); drop or merge it "
-                       "(min_cell_size, small_cells)");
+                       "): the polygons through its walls' boundary loops enclose " + formatNumber(six_volume[c] / 6) +
+                       " voxels, under a quarter of its own (its walls bend around it: a wall is one polygon "
+                       "through its junction lines); drop or merge it (min_cell_size, small_cells)");
 
   // The complex: kept corners in world coordinates, walls as loops, cells as wall lists.
   ComplexFile m;

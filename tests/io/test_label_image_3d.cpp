@@ -131,7 +131,8 @@ Fit compare(const Tissue& original, const Tissue& imported, double resolved) {
   for (const auto& [cell, area] : want_b)
     if (!got_b.count(cell)) {
       ++fit.pairs_differing;
-      WARN("cell " << cell << " no longer on the boundary, its boundary area is " << area / resolved << " of the limit");
+      WARN("cell " << cell << " no longer on the boundary, its boundary area is " << area / resolved
+                   << " of the limit");
       CHECK(area < resolved);
     }
   for (const auto& [cell, area] : got_b)
