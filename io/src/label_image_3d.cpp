@@ -220,6 +220,50 @@ struct RankedSet {
   }
 };
 
+struct WallTriangle {
+  std::array<std::int32_t, 3> v;  // corners, or n_corners + wall for a wall's fan centre
+  std::int32_t wall;
+};
+
+// Whether segment pq meets triangle abc, touching included (within a relative
+// 1e-9); a segment in the triangle's plane is not detected.
+bool segmentMeetsTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
+  constexpr double eps = 1e-9;
+  const Vec3 d = q - p, e1 = b - a, e2 = c - a, h = d.cross(e2);
+  const double det = e1.dot(h);
+  if (std::abs(det) <= 1e-12 * d.norm() * e1.norm() * e2.norm()) return false;
+  const Vec3 w = p - a;
+  const double u = w.dot(h) / det;
+  if (u < -eps || u > 1 + eps) return false;
+  const Vec3 r = w.cross(e1);
+  const double v = d.dot(r) / det;
+  if (v < -eps || u + v > 1 + eps) return false;
+  const double t = e2.dot(r) / det;
+  return t >= -eps && t <= 1 + eps;
+}
+
+// Whether two triangles (corner ids into points) meet other than at what they
+// share, as the mesher's check counts it (mesh/src/geometry_check.cpp): two
+// sharing an edge never do; two sharing a corner do when the edge of either
+// opposite that corner meets the other; others when any edge meets the other.
+bool trianglesCross(const std::array<std::int32_t, 3>& A, const std::array<std::int32_t, 3>& B,
+                    const std::vector<Vec3>& points) {
+  std::int32_t common = -1;
+  int shared = 0;
+  for (const std::int32_t a : A)
+    if (a == B[0] || a == B[1] || a == B[2]) ++shared, common = a;
+  if (shared >= 2) return false;
+  auto edgesMeet = [&](const std::array<std::int32_t, 3>& S, const std::array<std::int32_t, 3>& T) {
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t u = S[k], w = S[(k + 1) % 3];
+      if (shared == 1 && (u == common || w == common)) continue;
+      if (segmentMeetsTriangle(points[u], points[w], points[T[0]], points[T[1]], points[T[2]])) return true;
+    }
+    return false;
+  };
+  return edgesMeet(A, B) || edgesMeet(B, A);
+}
+
 struct Face {
   std::int32_t first, second;  // first: a cell (the larger id); the loop is oriented out of it
   bool forward;                // the loop as the +axis normal (first is the lower voxel)
@@ -790,6 +834,9 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       for (const std::int32_t pl : wall_polylines[p]) redo[static_cast<std::size_t>(pl)] = 1, any = true;
     };
     std::fill(six_volume.begin(), six_volume.end(), 0.0);
+    const bool check_crossings = o.simplify > 0;  // the staircase (simplify 0) is left as it is
+    std::vector<WallTriangle> wall_tris;
+    std::vector<Vec3> points(check_crossings ? n_corners + n_walls : 0);
     std::vector<Vec3> loop_points;
     for (std::size_t p = 0; p < n_walls; ++p) {
       loop_points.clear();
@@ -814,6 +861,53 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       const Face& f = faces[patch_face[p]];
       six_volume[static_cast<std::size_t>(f.first)] += vol;
       if (f.second >= 0) six_volume[static_cast<std::size_t>(f.second)] -= vol;
+      if (check_crossings) {  // the wall's triangles, as the tissue and the mesher make them
+        std::vector<std::int32_t> ids;
+        for (const std::int32_t u : loops[p])
+          if (keep[u]) ids.push_back(u);
+        if (tri.fan()) {
+          const auto centre = static_cast<std::int32_t>(n_corners + p);
+          points[static_cast<std::size_t>(centre)] = tri.center;
+          for (std::size_t i = 0; i < k; ++i)
+            wall_tris.push_back({{centre, ids[i], ids[(i + 1) % k]}, static_cast<std::int32_t>(p)});
+        } else {
+          for (const auto& t : tri.triangles)
+            wall_tris.push_back({{ids[t[0]], ids[t[1]], ids[t[2]]}, static_cast<std::int32_t>(p)});
+        }
+        for (std::size_t i = 0; i < k; ++i) points[static_cast<std::size_t>(ids[i])] = loop_points[i];
+      }
+    }
+    if (check_crossings) {
+      // Triangles of two walls that cross (away from shared corners): both walls are simplified less.
+      std::vector<std::pair<std::uint64_t, std::int32_t>> buckets;
+      const double size = 8 * std::max({s[0], s[1], s[2]});
+      for (std::size_t t = 0; t < wall_tris.size(); ++t) {
+        Vec3 lo_p = points[wall_tris[t].v[0]], hi_p = lo_p;
+        for (const std::int32_t u : wall_tris[t].v) lo_p = lo_p.cwiseMin(points[u]), hi_p = hi_p.cwiseMax(points[u]);
+        std::array<std::int64_t, 3> b0, b1;
+        for (int a = 0; a < 3; ++a)
+          b0[a] = static_cast<std::int64_t>(std::floor(lo_p[a] / size)),
+          b1[a] = static_cast<std::int64_t>(std::floor(hi_p[a] / size));
+        for (std::int64_t z = b0[2]; z <= b1[2]; ++z)
+          for (std::int64_t y = b0[1]; y <= b1[1]; ++y)
+            for (std::int64_t x = b0[0]; x <= b1[0]; ++x)
+              buckets.emplace_back((static_cast<std::uint64_t>(z & 0x1FFFFF) << 42) |
+                                       (static_cast<std::uint64_t>(y & 0x1FFFFF) << 21) |
+                                       static_cast<std::uint64_t>(x & 0x1FFFFF),
+                                   static_cast<std::int32_t>(t));
+      }
+      std::sort(buckets.begin(), buckets.end());
+      for (std::size_t i = 0; i < buckets.size();) {
+        std::size_t j = i;
+        while (j < buckets.size() && buckets[j].first == buckets[i].first) ++j;
+        for (std::size_t a = i; a < j; ++a)
+          for (std::size_t b = a + 1; b < j; ++b) {
+            const WallTriangle &ta = wall_tris[buckets[a].second], &tb = wall_tris[buckets[b].second];
+            if (ta.wall == tb.wall) continue;
+            if (trianglesCross(ta.v, tb.v, points)) redoWall(ta.wall), redoWall(tb.wall);
+          }
+        i = j;
+      }
     }
     for (std::size_t c = 0; c < n_cells; ++c)
       if (six_volume[c] < 3.0 * static_cast<double>(pieces[order[c]].voxels))  // lost more than half its volume
