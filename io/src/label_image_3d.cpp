@@ -826,6 +826,12 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
     }
   }
   std::vector<double> six_volume(n_cells, 0);  // of each cell's wall polygons, in voxels
+  // Walls changed since the last crossing test (two unchanged walls that did not meet still do not).
+  std::vector<char> wall_changed(n_walls, 1);
+  std::vector<std::vector<std::int32_t>> polyline_walls(polylines.size());
+  for (std::size_t p = 0; p < n_walls; ++p)
+    for (const std::int32_t pl : wall_polylines[p]) polyline_walls[static_cast<std::size_t>(pl)].push_back(
+        static_cast<std::int32_t>(p));
   const double voxel_volume = s[0] * s[1] * s[2];
   for (int round = 0;; ++round) {
     std::vector<char> redo(polylines.size(), 0);
@@ -879,31 +885,43 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
     }
     if (check_crossings) {
       // Triangles of two walls that cross (away from shared corners): both walls are simplified less.
+      // Pairs found through a grid of buckets; a pair is tested in the bucket holding the low corner
+      // of the overlap of their bounding boxes only.
       std::vector<std::pair<std::uint64_t, std::int32_t>> buckets;
-      const double size = 8 * std::max({s[0], s[1], s[2]});
+      const double size = 4 * std::max({s[0], s[1], s[2]});
+      std::vector<std::array<Vec3, 2>> box(wall_tris.size());
+      auto cellOf = [&](const Vec3& x) {
+        std::array<std::int64_t, 3> b;
+        for (int a = 0; a < 3; ++a) b[a] = static_cast<std::int64_t>(std::floor(x[a] / size));
+        return b;
+      };
+      auto key = [](const std::array<std::int64_t, 3>& b) {
+        return (static_cast<std::uint64_t>(b[2] & 0x1FFFFF) << 42) |
+               (static_cast<std::uint64_t>(b[1] & 0x1FFFFF) << 21) | static_cast<std::uint64_t>(b[0] & 0x1FFFFF);
+      };
       for (std::size_t t = 0; t < wall_tris.size(); ++t) {
         Vec3 lo_p = points[wall_tris[t].v[0]], hi_p = lo_p;
         for (const std::int32_t u : wall_tris[t].v) lo_p = lo_p.cwiseMin(points[u]), hi_p = hi_p.cwiseMax(points[u]);
-        std::array<std::int64_t, 3> b0, b1;
-        for (int a = 0; a < 3; ++a)
-          b0[a] = static_cast<std::int64_t>(std::floor(lo_p[a] / size)),
-          b1[a] = static_cast<std::int64_t>(std::floor(hi_p[a] / size));
+        box[t] = {lo_p, hi_p};
+        const auto b0 = cellOf(lo_p), b1 = cellOf(hi_p);
         for (std::int64_t z = b0[2]; z <= b1[2]; ++z)
           for (std::int64_t y = b0[1]; y <= b1[1]; ++y)
             for (std::int64_t x = b0[0]; x <= b1[0]; ++x)
-              buckets.emplace_back((static_cast<std::uint64_t>(z & 0x1FFFFF) << 42) |
-                                       (static_cast<std::uint64_t>(y & 0x1FFFFF) << 21) |
-                                       static_cast<std::uint64_t>(x & 0x1FFFFF),
-                                   static_cast<std::int32_t>(t));
+              buckets.emplace_back(key({x, y, z}), static_cast<std::int32_t>(t));
       }
       std::sort(buckets.begin(), buckets.end());
+      const double slack = 1e-9 * size;
       for (std::size_t i = 0; i < buckets.size();) {
         std::size_t j = i;
         while (j < buckets.size() && buckets[j].first == buckets[i].first) ++j;
         for (std::size_t a = i; a < j; ++a)
           for (std::size_t b = a + 1; b < j; ++b) {
-            const WallTriangle &ta = wall_tris[buckets[a].second], &tb = wall_tris[buckets[b].second];
-            if (ta.wall == tb.wall) continue;
+            const std::int32_t x = buckets[a].second, y = buckets[b].second;
+            const WallTriangle &ta = wall_tris[x], &tb = wall_tris[y];
+            if (ta.wall == tb.wall || !(wall_changed[ta.wall] || wall_changed[tb.wall])) continue;
+            const Vec3 lo_o = box[x][0].cwiseMax(box[y][0]), hi_o = box[x][1].cwiseMin(box[y][1]);
+            if ((lo_o.array() > hi_o.array() + slack).any()) continue;
+            if (key(cellOf(lo_o)) != buckets[i].first) continue;
             if (trianglesCross(ta.v, tb.v, points)) redoWall(ta.wall), redoWall(tb.wall);
           }
         i = j;
@@ -914,11 +932,13 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
         for (const Index p : cell_walls[c]) redoWall(p);
     if (!any) break;
     bool changed = false;
+    std::fill(wall_changed.begin(), wall_changed.end(), 0);
     for (std::size_t k = 0; k < polylines.size(); ++k) {
       if (!redo[k] || polylines[k].tol < 0) continue;
       polylines[k].tol = polylines[k].tol > 1.0 / 64 ? polylines[k].tol / 2 : -1;
       simplifyPolyline(polylines[k], pos, keep);
       changed = true;
+      for (const std::int32_t p : polyline_walls[k]) wall_changed[static_cast<std::size_t>(p)] = 1;
     }
     if (!changed || round > 64) break;  // every corner kept: the core's checks tell what is wrong
   }
