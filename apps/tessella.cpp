@@ -11,7 +11,7 @@
 //   tessella import FILE --out TISSUE.vtu [--format F] [--scale S] [--simplify TOL] [--repair]
 //                   [--label-array NAME]
 //                   [--voxel-size X,Y] [--background L,..] [--drop-labels L,..] [--min-cell-size N]
-//                   [--small-cells drop|merge] [--crop X0,Y0,X1,Y1] [--keep-pieces]   (label images)
+//                   [--small-cells drop|merge] [--crop X0,Y0,X1,Y1[,..]] [--keep-pieces]   (label images)
 //   tessella export SNAPSHOT.vtu --out FILE.ply [--binary]   (cell-complex PLY, docs/import.md)
 //   tessella render RUN_DIR|SERIES.pvd|SNAPSHOT.vtu [--property NAME] [--out DIR] [--size WxH] [--every N]
 //                   [--view X,Y,Z] [--range LOW,HIGH] [--no-movie]
@@ -404,7 +404,8 @@ int main(int argc, char** argv) {
   import->add_option("--small-cells", import_args.image.small_cells,
                      "Label images: drop (default) or merge (into the neighbour sharing the longest wall)")
       ->check(CLI::IsMember({"drop", "merge"}));
-  import->add_option("--crop", import_args.image.crop, "Label images: only the pixels X0 <= i < X1, Y0 <= j < Y1")
+  import->add_option("--crop", import_args.image.crop,
+                     "Label images: only the pixels X0 <= i < X1, Y0 <= j < Y1 (3D: X0,Y0,Z0,X1,Y1,Z1)")
       ->delimiter(',');
   import->add_flag("--keep-pieces", import_args.image.keep_pieces,
                    "Label images: a label in disconnected pieces becomes one cell per piece (else an error)");

@@ -41,8 +41,9 @@ const std::vector<ImportFormat>& importFormats() {
        &isLabelledVtu},
       {"label_image",
        {".tif", ".tiff", ".nrrd", ".nhdr", ".mha", ".mhd", ".vti"},
-       "segmented 2D label image (one integer label per pixel; TIFF, NRRD, MetaImage, VTK image data): each "
-       "label a cell of a planar tissue, walls along the pixel edges between labels",
+       "segmented 2D or 3D label image (one integer label per pixel or voxel; TIFF, NRRD, MetaImage, VTK image "
+       "data): each label a cell of a planar or a 3D tissue, walls along the pixel edges or voxel faces between "
+       "labels",
        &importLabelImage,
        nullptr},
   };

@@ -22,6 +22,7 @@
 #include <numeric>
 #include <unordered_map>
 
+#include "label_image_3d.hpp"
 #include "labelled_surface.hpp"
 #include "polyline_simplification.hpp"
 #include "tessella/io/label_image.hpp"
@@ -116,10 +117,7 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
       img.labels.size() != static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny) * static_cast<std::size_t>(nz))
     throw InputError(file + ": the image has dimensions " + std::to_string(nx) + " x " + std::to_string(ny) + " x " +
                      std::to_string(nz) + " but " + std::to_string(img.labels.size()) + " labels");
-  if (nz != 1)
-    throw InputError(file + ": a 3D image of " + std::to_string(nx) + " x " + std::to_string(ny) + " x " +
-                     std::to_string(nz) + " voxels; 3D label images are not supported yet (a 2D image, or a 3D "
-                     "one with a single z layer, is)");
+  if (nz != 1) return detail::tissueFromLabelImage3d(img, o);
   // Pixel size.
   double sx = img.spacing[0], sy = img.spacing[1];
   if (!io.voxel_size.empty()) {

@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Tessella developers
 // SPDX-License-Identifier: AGPL-3.0-or-later
 // Label images from Python: a NumPy integer array (or an image file) with a
-// pixel size into a planar tissue (docs/import.md, "Label images").
+// pixel or voxel size into a planar or 3D tissue (docs/import.md, "Label images").
 #include <optional>
 
 #include <pybind11/numpy.h>
@@ -50,8 +50,8 @@ io::LabelImage imageFromArray(const py::array& array, const std::optional<std::v
     for (std::size_t k = 0; k < voxel_size->size(); ++k)
       if (!(img.spacing[k] > 0)) img.spacing[k] = 1;  // the option's own check names the bad value
   }
-  // Default origin: the image spans [0, nx * sx] x [0, ny * sy].
-  for (int k = 0; k < 3; ++k) img.origin[k] = k < 2 ? img.spacing[k] / 2 : 0.0;
+  // Default origin: the image spans [0, nx * sx] x [0, ny * sy] (x [0, nz * sz] in 3D).
+  for (int k = 0; k < 3; ++k) img.origin[k] = k < 2 || img.dims[2] > 1 ? img.spacing[k] / 2 : 0.0;
   if (origin) {
     if (origin->size() != 2 && origin->size() != 3)
       throw InputError("label image array: origin needs 2 or 3 numbers, got " + std::to_string(origin->size()));
@@ -95,19 +95,22 @@ void bindLabelImage(py::module_& m) {
       py::arg("background") = std::vector<std::int64_t>{0, 1}, py::arg("drop_labels") = std::vector<std::int64_t>{},
       py::arg("min_cell_size") = 0, py::arg("small_cells") = "drop", py::arg("crop") = py::none(),
       py::arg("keep_pieces") = false, py::arg("simplify") = 0.0, py::arg("scale") = 1.0, R"doc(
-A planar tissue from a 2D label image (docs/import.md, "Label images") and a
-report dict (path, format, file_faces = pixels, simplified_vertices, notes).
-image: a NumPy integer array indexed [y, x] (or [z, y, x] with one z layer),
+A tissue from a label image (docs/import.md, "Label images") and a report
+dict (path, format, file_faces = pixels or voxels, simplified_vertices,
+notes): a planar tissue from a 2D image, a 3D tissue from a 3D one.
+image: a NumPy integer array indexed [y, x] or [z, y, x] (one z layer: 2D),
 or the path of an image file (.tif, .nrrd, .mha, .mhd, .vti). voxel_size:
-(sx, sy) in x, y order (an array: default (1, 1); a file: overrides the
-file's). origin (arrays only): the centre of pixel [0, 0]; by default half a
-pixel, so the image spans [0, nx*sx] x [0, ny*sy]. background: labels that are
-no cell; drop_labels: labels made background; min_cell_size (pixels) with
-small_cells "drop" or "merge"; crop: (x0, y0, x1, y1), the pixels
-x0 <= x < x1, y0 <= y < y1; keep_pieces: one cell per disconnected piece of a
-label instead of an error; simplify: wall tolerance in pixels. Cells keep
-their label as the cell property "label". Raises InputError naming the image,
-the label and the value.
+(sx, sy) or, for a 3D image, (sx, sy, sz), in x, y, z order (an array:
+default 1 each; a file: overrides the file's). origin (arrays only): the
+centre of voxel [0, 0(, 0)]; by default half a voxel, so the image spans
+[0, nx*sx] x [0, ny*sy] (x [0, nz*sz]). background: labels that are no cell;
+drop_labels: labels made background; min_cell_size (pixels or voxels) with
+small_cells "drop" or "merge"; crop: (x0, y0, x1, y1), or in 3D
+(x0, y0, z0, x1, y1, z1), the voxels x0 <= x < x1, ...; keep_pieces: one cell
+per disconnected piece of a label instead of an error; simplify: tolerance in
+pixels (voxels) for the wall polylines (2D) or junction lines (3D). Cells
+keep their label as the cell property "label". Raises InputError naming the
+image, the label and the value.
 )doc");
   m.def(
       "tissue_from_label_image",

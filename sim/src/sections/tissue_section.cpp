@@ -119,7 +119,8 @@ const Registry<FileSourceReader>& tissueFileSources() {
                    "else the pair `label_front`, `label_back`.")
              .byDefault(std::string("")),
          ParamSpec("voxel_size", ParamType::Vec2,
-                   "Label images: the pixel size [x, y], overriding the file's (docs/import.md, \"Label images\").")
+                   "Label images: the pixel size [x, y], overriding the file's (docs/import.md, \"Label images\"); "
+                   "a 3D image read here takes its voxel size from the file.")
              .whenAbsent("the pixel size the file gives (1 where it gives none)"),
          ParamSpec("background", ParamType::String,
                    "Label images: the labels that are no cell, integers separated by commas (PlantSeg and MARS "
@@ -139,8 +140,8 @@ const Registry<FileSourceReader>& tissueFileSources() {
              .oneOf({"drop", "merge"})
              .byDefault(std::string("drop")),
          ParamSpec("crop", ParamType::String,
-                   "Label images: `x0, y0, x1, y1` keeps the pixels x0 <= i < x1, y0 <= j < y1 only; empty keeps "
-                   "the whole image.")
+                   "Label images: `x0, y0, x1, y1` keeps the pixels x0 <= i < x1, y0 <= j < y1 only (3D images: "
+                   "`x0, y0, z0, x1, y1, z1`); empty keeps the whole image.")
              .byDefault(std::string("")),
          ParamSpec("keep_pieces", ParamType::Bool,
                    "Label images: a label in several disconnected pieces becomes one cell per piece (each keeping "

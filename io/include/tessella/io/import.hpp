@@ -172,12 +172,15 @@ ImportResult importLabelledMesh(const std::string& path, const ImportOptions& op
 bool isLabelledMesh(const std::string& path);
 // --- label images -----------------------------------------------------------------
 
-/// A segmented 2D label image (TIFF, NRRD, MetaImage .mha/.mhd, VTK .vti; a
+/// A segmented label image (TIFF, NRRD, MetaImage .mha/.mhd, VTK .vti). 2D (a
 /// 3D file with one z layer counts as 2D): each label not in
 /// options.image.background a cell of a planar tissue, walls along the pixel
 /// edges between labels, simplified (options.simplify, in pixels) with
-/// junctions fixed. Cell property `label` (int64). label_image.hpp holds the
-/// in-memory form (a NumPy array from Python).
+/// junctions fixed. 3D: each label a closed cell of a 3D tissue, one wall per
+/// connected interface between two labels, bounded by the junction lines
+/// where three or more labels meet (docs/import.md, "3D label images").
+/// Cell property `label` (int64). label_image.hpp holds the in-memory form (a
+/// NumPy array from Python).
 ImportResult importLabelImage(const std::string& path, const ImportOptions& options = {});
 
 /// A MorphoGraphX cell graph (cellGraph_*.ply): one vertex per cell with its

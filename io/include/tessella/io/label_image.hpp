@@ -3,8 +3,8 @@
 #pragma once
 // Segmented label images (one integer label per pixel) as Tessella tissues:
 // the image itself (read from TIFF, NRRD, MetaImage or VTK image files, or
-// given as an array from Python) and the 2D conversion (docs/import.md,
-// "Label images"). 3D images with more than one z layer are not supported yet.
+// given as an array from Python) and the conversion, 2D or 3D (docs/import.md,
+// "Label images", "3D label images").
 
 #include <array>
 #include <cstdint>
@@ -30,7 +30,9 @@ struct LabelImage {
 /// not an integer, more than one component per pixel.
 LabelImage readLabelImage(const std::string& path);
 
-/// The planar tissue of a 2D label image (dims[2] == 1). options.image holds
+/// The planar tissue of a 2D label image (dims[2] == 1), or the 3D tissue of
+/// a 3D one (dims[2] > 1: voxel_size then has 3 numbers, crop 6; simplify
+/// smooths and simplifies the junction lines). options.image holds
 /// the background labels, labels to drop, the minimum cell size, the crop box
 /// and voxel_size (overriding image.spacing); options.simplify is a tolerance
 /// in pixels; options.scale multiplies positions. InputError naming

@@ -1,0 +1,992 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
+// 3D label images as 3D tissues (docs/import.md, "3D label images"). On the
+// voxel grid, padded by one layer of outside voxels: interfaces are the voxel
+// faces between two labels, at least one of them a cell; junction lines are
+// the voxel edges around which three or more labels meet; vertices are the
+// voxel corners on a junction line where four or more labels meet or where
+// junction lines branch. The background inside the image is one outside
+// label, and the padding beyond each of the six image faces another, so a
+// cell cut by the image border gets one flat wall per side it touches.
+//
+// First the labels are made well-composed (every label's voxels bound a
+// 2-manifold surface): where one label's voxels touch only along an edge or
+// at a corner, a neighbouring voxel takes that label, until none does. Then
+// each wall (a patch of interface faces between one pair of labels, connected
+// across voxel edges that are no junction) becomes one face whose boundary
+// loop is its chain of junction polylines, each simplified by Douglas-Peucker
+// with its ends fixed (shared by every wall along it); the cells go to the
+// cell-complex core (cell_complex_core.hpp), which orients and checks them.
+
+#include "label_image_3d.hpp"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <numeric>
+#include <unordered_map>
+
+#include "cell_complex_core.hpp"
+#include "labelled_surface.hpp"
+#include "polyline_simplification.hpp"
+#include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
+#include "tessella/tissue/geometry.hpp"
+
+namespace tessella::io::detail {
+
+namespace {
+
+constexpr std::int32_t kBackground = -1;  // outside inside the image; -2 - side beyond image side 0..5
+constexpr std::size_t kMaxNotes = 20;
+
+bool isPadding(std::int32_t l) { return l < kBackground; }
+
+std::string numberList(const std::vector<std::int64_t>& v) {
+  std::string out;
+  for (std::size_t i = 0; i < v.size(); ++i) out += (i ? ", " : "") + std::to_string(v[i]);
+  return out;
+}
+
+// The padded voxel grid: voxel (i, j, k), 0 <= i < n[0] ..., at i + n[0] * (j + n[1] * k);
+// corner (i, j, k) is the corner shared by voxels i - 1 and i along each axis, indexed the same way.
+struct Grid {
+  std::array<std::int64_t, 3> n;
+  std::array<std::size_t, 3> stride;
+  std::vector<std::int32_t> cell;
+  Grid(std::int64_t w, std::int64_t h, std::int64_t d)
+      : n{w, h, d}, stride{1, static_cast<std::size_t>(w), static_cast<std::size_t>(w * h)} {}
+  std::size_t size() const { return stride[2] * static_cast<std::size_t>(n[2]); }
+  std::size_t at(std::int64_t i, std::int64_t j, std::int64_t k) const {
+    return static_cast<std::size_t>(i) + stride[1] * static_cast<std::size_t>(j) +
+           stride[2] * static_cast<std::size_t>(k);
+  }
+  std::array<std::int64_t, 3> coords(std::size_t v) const {
+    return {static_cast<std::int64_t>(v % stride[1]), static_cast<std::int64_t>((v / stride[1]) % n[1]),
+            static_cast<std::int64_t>(v / stride[2])};
+  }
+  // The 8 voxels around corner c (bit 0: +x, 1: +y, 2: +z).
+  std::size_t blockVoxel(std::size_t c, int bit) const {
+    return c - stride[0] - stride[1] - stride[2] + ((bit & 1) ? stride[0] : 0) + ((bit & 2) ? stride[1] : 0) +
+           ((bit & 4) ? stride[2] : 0);
+  }
+  bool interiorCorner(std::size_t c) const {
+    const auto p = coords(c);
+    for (int a = 0; a < 3; ++a)
+      if (p[a] < 1 || p[a] > n[a] - 1) return false;
+    return true;
+  }
+};
+
+// The defects of the 8 voxels around a corner (bit 0: +x, 1: +y, 2: +z)
+// that keep a label's voxels from bounding a 2-manifold: each half of the
+// block (the four voxels around an edge from the corner) where one label
+// holds two diagonal voxels and not the other two; each label, and each
+// label's complement, in several face-connected parts of the block.
+int blockDefects(const std::array<std::int32_t, 8>& l) {
+  int defects = 0;
+  for (int a = 0; a < 3; ++a)
+    for (int side = 0; side < 2; ++side) {
+      const int b1 = 1 << ((a + 1) % 3), b2 = 1 << ((a + 2) % 3), s = side << a;
+      const int q[4] = {s, s | b1, s | b1 | b2, s | b2};
+      for (int r = 0; r < 2; ++r)
+        defects += l[q[r]] == l[q[r + 2]] && l[q[r + 1]] != l[q[r]] && l[q[(r + 3) % 4]] != l[q[r]];
+    }
+  for (int b = 0; b < 8; ++b) {
+    bool seen_before = false;
+    for (int e = 0; e < b; ++e) seen_before = seen_before || l[e] == l[b];
+    if (seen_before) continue;
+    for (int complement = 0; complement < 2; ++complement) {
+      unsigned mask = 0;
+      for (int e = 0; e < 8; ++e)
+        if ((l[e] == l[b]) != (complement == 1)) mask |= 1u << e;
+      if (mask == 0) continue;
+      unsigned part = mask & (~mask + 1), grown = 0;
+      while (grown != part) {
+        grown = part;
+        for (int e = 0; e < 8; ++e)
+          if (part & (1u << e))
+            for (const int nb : {e ^ 1, e ^ 2, e ^ 4})
+              if (mask & (1u << nb)) part |= 1u << nb;
+      }
+      defects += part != mask;
+    }
+  }
+  return defects;
+}
+
+// Makes every label's voxels well-composed (no block defect anywhere): at a
+// defect, of all the changes of one voxel of the block (never a padding
+// voxel) to another label of the block, the one that removes the most
+// defects from the 8 blocks around that voxel is made, so the total number
+// of defects falls with every change. Returns the voxels changed; an
+// InputError naming a voxel where no change helps.
+std::size_t makeWellComposed(Grid& g, const std::string& name, const std::function<std::string(std::size_t)>& where,
+                             const std::function<std::string(std::int32_t)>& labelName) {
+  auto block = [&](std::size_t c) {
+    std::array<std::int32_t, 8> l;
+    for (int b = 0; b < 8; ++b) l[b] = g.cell[g.blockVoxel(c, b)];
+    return l;
+  };
+  auto cornerOf = [&](std::size_t v, int b) {  // the corner of voxel v at the block bit b away
+    return v + ((b & 1) ? g.stride[0] : 0) + ((b & 2) ? g.stride[1] : 0) + ((b & 4) ? g.stride[2] : 0);
+  };
+  // Defects in the blocks around voxel v (every corner of an interior voxel is an interior corner).
+  auto around = [&](std::size_t v) {
+    int n = 0;
+    for (int b = 0; b < 8; ++b) n += blockDefects(block(cornerOf(v, b)));
+    return n;
+  };
+  std::vector<std::size_t> work;
+  for (std::int64_t k = 1; k < g.n[2]; ++k)
+    for (std::int64_t j = 1; j < g.n[1]; ++j)
+      for (std::int64_t i = 1; i < g.n[0]; ++i) {
+        const std::size_t c = g.at(i, j, k);
+        const std::int32_t first = g.cell[g.blockVoxel(c, 0)];
+        bool mixed = false;
+        for (int b = 1; b < 8 && !mixed; ++b) mixed = g.cell[g.blockVoxel(c, b)] != first;
+        if (mixed && blockDefects(block(c)) > 0) work.push_back(c);
+      }
+  std::reverse(work.begin(), work.end());  // worked from the back: the first corner first
+  std::size_t changed = 0;
+  while (!work.empty()) {
+    const std::size_t c = work.back();
+    work.pop_back();
+    const auto l = block(c);
+    if (blockDefects(l) == 0) continue;
+    // The change that removes the most defects; of equal ones, the voxel whose six face neighbours
+    // most favour the new label over its old one (so no speck of a label is made).
+    int best_gain = 0, best_agreement = 0;
+    std::size_t best_voxel = 0;
+    std::int32_t best_label = 0;
+    for (int b = 0; b < 8; ++b) {
+      const std::size_t v = g.blockVoxel(c, b);
+      const std::int32_t old = l[b];
+      if (isPadding(old)) continue;
+      const int before = around(v);
+      for (int e = 0; e < 8; ++e) {
+        if (isPadding(l[e]) || l[e] == old) continue;
+        bool tried = false;
+        for (int f = 0; f < e; ++f) tried = tried || l[f] == l[e];
+        if (tried) continue;
+        g.cell[v] = l[e];
+        const int gain = before - around(v);
+        g.cell[v] = old;
+        int agreement = 0;
+        for (int a = 0; a < 3; ++a)
+          for (const std::size_t nb : {v - g.stride[a], v + g.stride[a]})
+            agreement += (g.cell[nb] == l[e]) - (g.cell[nb] == old);
+        if (gain > best_gain || (gain == best_gain && gain > 0 && agreement > best_agreement))
+          best_gain = gain, best_agreement = agreement, best_voxel = v, best_label = l[e];
+      }
+    }
+    if (best_gain <= 0) {
+      std::string labels;
+      for (int b = 0; b < 8; ++b) {
+        bool listed = false;
+        for (int e = 0; e < b; ++e) listed = listed || l[e] == l[b];
+        if (!listed) labels += (labels.empty() ? "" : ", ") + labelName(l[b]);
+      }
+      throw InputError("'" + name + "': the voxels around the corner of voxel " + where(g.blockVoxel(c, 7)) +
+                       " (" + labels + ") touch only along an edge or at a corner, and no change of one voxel's "
+                       "label makes them bound manifold surfaces; drop or merge one of the labels");
+    }
+    g.cell[best_voxel] = best_label;
+    ++changed;
+    for (int b = 0; b < 8; ++b) work.push_back(cornerOf(best_voxel, b));
+  }
+  return changed;
+}
+
+// A set of indices below n with the position of each among them in O(1).
+struct RankedSet {
+  std::vector<std::uint64_t> bits;
+  std::vector<std::uint32_t> before;  // members in the words before, after finish()
+  explicit RankedSet(std::size_t n) : bits((n + 63) / 64, 0) {}
+  void insert(std::uint64_t i) { bits[i >> 6] |= std::uint64_t{1} << (i & 63); }
+  bool contains(std::uint64_t i) const { return (bits[i >> 6] >> (i & 63)) & 1; }
+  void finish() {
+    before.resize(bits.size());
+    std::uint32_t n = 0;
+    for (std::size_t k = 0; k < bits.size(); ++k)
+      before[k] = n, n += static_cast<std::uint32_t>(std::popcount(bits[k]));
+  }
+  std::uint32_t rank(std::uint64_t i) const {
+    return before[i >> 6] +
+           static_cast<std::uint32_t>(std::popcount(bits[i >> 6] & ((std::uint64_t{1} << (i & 63)) - 1)));
+  }
+};
+
+struct WallTriangle {
+  std::array<std::int32_t, 3> v;  // corners, or n_corners + wall for a wall's fan centre
+  std::int32_t wall;
+};
+
+// Whether segment pq meets triangle abc, touching included (within a relative
+// 1e-9); a segment in the triangle's plane is not detected.
+bool segmentMeetsTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
+  constexpr double eps = 1e-9;
+  const Vec3 d = q - p, e1 = b - a, e2 = c - a, h = d.cross(e2);
+  const double det = e1.dot(h);
+  if (std::abs(det) <= 1e-12 * d.norm() * e1.norm() * e2.norm()) return false;
+  const Vec3 w = p - a;
+  const double u = w.dot(h) / det;
+  if (u < -eps || u > 1 + eps) return false;
+  const Vec3 r = w.cross(e1);
+  const double v = d.dot(r) / det;
+  if (v < -eps || u + v > 1 + eps) return false;
+  const double t = e2.dot(r) / det;
+  return t >= -eps && t <= 1 + eps;
+}
+
+// Whether two triangles (corner ids into points) meet other than at what they
+// share, as the mesher's check counts it (mesh/src/geometry_check.cpp): two
+// sharing an edge never do; two sharing a corner do when the edge of either
+// opposite that corner meets the other; others when any edge meets the other.
+bool trianglesCross(const std::array<std::int32_t, 3>& A, const std::array<std::int32_t, 3>& B,
+                    const std::vector<Vec3>& points) {
+  std::int32_t common = -1;
+  int shared = 0;
+  for (const std::int32_t a : A)
+    if (a == B[0] || a == B[1] || a == B[2]) ++shared, common = a;
+  if (shared >= 2) return false;
+  auto edgesMeet = [&](const std::array<std::int32_t, 3>& S, const std::array<std::int32_t, 3>& T) {
+    for (int k = 0; k < 3; ++k) {
+      const std::int32_t u = S[k], w = S[(k + 1) % 3];
+      if (shared == 1 && (u == common || w == common)) continue;
+      if (segmentMeetsTriangle(points[u], points[w], points[T[0]], points[T[1]], points[T[2]])) return true;
+    }
+    return false;
+  };
+  return edgesMeet(A, B) || edgesMeet(B, A);
+}
+
+struct Face {
+  std::int32_t first, second;  // first: a cell (the larger id); the loop is oriented out of it
+  bool forward;                // the loop as the +axis normal (first is the lower voxel)
+};
+
+struct Polyline {
+  std::vector<std::int32_t> chain;  // corners (compact ids), vertex to vertex (closed: first == last)
+  double tol;
+  bool keep_one = false;
+};
+
+void simplifyPolyline(const Polyline& p, const std::vector<Vec3>& pos, std::vector<char>& keep) {
+  const auto& ch = p.chain;
+  const std::size_t last = ch.size() - 1;
+  for (std::size_t i = 1; i < last; ++i) keep[ch[i]] = p.tol < 0;
+  if (p.tol < 0) return;
+  if (ch.front() == ch.back()) {  // a loop: split at the corner farthest from its start, one more on each side
+    std::size_t far = 1;
+    for (std::size_t i = 1; i < last; ++i)
+      if ((pos[ch[i]] - pos[ch[0]]).squaredNorm() > (pos[ch[far]] - pos[ch[0]]).squaredNorm()) far = i;
+    if (last < 2) return;
+    keep[ch[far]] = 1;
+    douglasPeucker(ch, 0, far, pos, p.tol, far > 1, keep);
+    douglasPeucker(ch, far, last, pos, p.tol, last - far > 1, keep);
+    return;
+  }
+  douglasPeucker(ch, 0, last, pos, p.tol, p.keep_one, keep);
+}
+
+}  // namespace
+
+ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& o) {
+  const LabelImageOptions& io = o.image;
+  const std::string file = "'" + img.name + "'";
+  const auto [nx, ny, nz] = img.dims;
+  const std::string dims_text = std::to_string(nx) + " x " + std::to_string(ny) + " x " + std::to_string(nz);
+  // Voxel size.
+  std::array<double, 3> s = img.spacing;
+  if (!io.voxel_size.empty()) {
+    if (io.voxel_size.size() != 3)
+      throw InputError(file + ": a 3D image of " + dims_text + " voxels needs voxel_size of 3 numbers (x, y, z), got " +
+                       std::to_string(io.voxel_size.size()));
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (!(std::isfinite(io.voxel_size[k]) && io.voxel_size[k] > 0))
+        throw InputError(file + ": voxel_size " + std::string("xyz").substr(k, 1) + " = " +
+                         formatNumber(io.voxel_size[k]) + " must be a positive finite number");
+      s[k] = io.voxel_size[k];
+    }
+  } else {
+    for (int k = 0; k < 3; ++k)
+      if (!(std::isfinite(img.spacing[k]) && img.spacing[k] > 0))
+        throw InputError(file + ": the file's voxel size in " + std::string("xyz").substr(k, 1) + " is " +
+                         formatNumber(img.spacing[k]) + ", not a positive number; give voxel_size (--voxel-size)");
+  }
+  if (io.min_cell_size < 0)
+    throw InputError(file + ": min_cell_size must be >= 0, got " + std::to_string(io.min_cell_size));
+  if (io.small_cells != "drop" && io.small_cells != "merge")
+    throw InputError(file + ": small_cells must be drop or merge, got '" + io.small_cells + "'");
+  std::array<std::int64_t, 3> lo{0, 0, 0}, hi{nx, ny, nz};
+  if (!io.crop.empty()) {
+    if (io.crop.size() != 6)
+      throw InputError(file + ": a 3D image of " + dims_text + " voxels needs crop of 6 numbers x0, y0, z0, x1, y1, "
+                       "z1, got " + std::to_string(io.crop.size()));
+    for (int a = 0; a < 3; ++a) lo[a] = io.crop[a], hi[a] = io.crop[a + 3];
+    for (int a = 0; a < 3; ++a)
+      if (!(0 <= lo[a] && lo[a] < hi[a] && hi[a] <= img.dims[a]))
+        throw InputError(file + ": crop " + numberList(io.crop) + " is not a box 0 <= x0 < x1 <= " +
+                         std::to_string(nx) + ", 0 <= y0 < y1 <= " + std::to_string(ny) + ", 0 <= z0 < z1 <= " +
+                         std::to_string(nz) + " inside the image");
+  }
+  const std::int64_t w = hi[0] - lo[0], h = hi[1] - lo[1], d = hi[2] - lo[2];
+  Grid g(w + 2, h + 2, d + 2);
+  auto voxelName = [&](std::size_t v) {
+    const auto p = g.coords(v);
+    return "(" + std::to_string(p[0] - 1 + lo[0]) + ", " + std::to_string(p[1] - 1 + lo[1]) + ", " +
+           std::to_string(p[2] - 1 + lo[2]) + ")";
+  };
+
+  ImportResult result{Tissue(3, Embedding::Volume), {}};
+  ImportReport report;
+  report.path = img.name;
+  report.file_faces = img.labels.size();
+  report.file_faces_noun = "voxels";
+  report.notes.push_back("image " + dims_text + " voxels" +
+                         (io.crop.empty() ? std::string()
+                                          : ", cropped to x " + std::to_string(lo[0]) + ".." +
+                                                std::to_string(hi[0] - 1) + ", y " + std::to_string(lo[1]) + ".." +
+                                                std::to_string(hi[1] - 1) + ", z " + std::to_string(lo[2]) + ".." +
+                                                std::to_string(hi[2] - 1)) +
+                         ", voxel size " + formatNumber(s[0]) + " x " + formatNumber(s[1]) + " x " +
+                         formatNumber(s[2]) + (io.voxel_size.empty() ? " (from the file)" : " (given)"));
+
+  // Labels to compact ids (background and dropped labels: kBackground), padding by side.
+  std::vector<Label> id_label;
+  {
+    auto source = [&](std::int64_t i, std::int64_t j, std::int64_t k) {
+      return img.labels[static_cast<std::size_t>((i + lo[0]) + nx * ((j + lo[1]) + ny * (k + lo[2])))];
+    };
+    std::unordered_map<Label, std::int32_t> id;
+    auto excluded = [&](Label l) {
+      return std::find(io.background.begin(), io.background.end(), l) != io.background.end() ||
+             std::find(io.drop_labels.begin(), io.drop_labels.end(), l) != io.drop_labels.end();
+    };
+    const Label first = source(0, 0, 0);
+    bool several = false;
+    {
+      Label last = first;
+      bool last_in = false;
+      for (std::int64_t k = 0; k < d; ++k)
+        for (std::int64_t j = 0; j < h; ++j)
+          for (std::int64_t i = 0; i < w; ++i) {
+            const Label l = source(i, j, k);
+            if (l == last && last_in) continue;
+            several = several || l != first;
+            last = l;
+            last_in = true;
+            if (!excluded(l)) id.emplace(l, 0);
+          }
+    }
+    if (!several)
+      throw InputError(file + ": the image" + std::string(io.crop.empty() ? "" : " (cropped)") +
+                       " holds one label only (" + std::to_string(first) + " in every voxel): no cells to tell apart");
+    for (const auto& [l, unused] : id) id_label.push_back(l);
+    std::sort(id_label.begin(), id_label.end());
+    for (std::size_t k = 0; k < id_label.size(); ++k) id[id_label[k]] = static_cast<std::int32_t>(k);
+    g.cell.assign(g.size(), kBackground);
+    for (std::int64_t k = 0; k < g.n[2]; ++k)
+      for (std::int64_t j = 0; j < g.n[1]; ++j) {
+        Label last = 0;
+        std::int32_t last_id = kBackground;
+        bool have = false;
+        for (std::int64_t i = 0; i < g.n[0]; ++i) {
+          std::int32_t& c = g.cell[g.at(i, j, k)];
+          if (i == 0) c = -2;
+          else if (i == g.n[0] - 1) c = -3;
+          else if (j == 0) c = -4;
+          else if (j == g.n[1] - 1) c = -5;
+          else if (k == 0) c = -6;
+          else if (k == g.n[2] - 1) c = -7;
+          else {
+            const Label l = source(i - 1, j - 1, k - 1);
+            if (!have || l != last) {
+              const auto it = id.find(l);
+              last_id = it == id.end() ? kBackground : it->second;
+              last = l, have = true;
+            }
+            c = last_id;
+          }
+        }
+      }
+  }
+  std::vector<std::int64_t> size(id_label.size(), 0);
+  for (std::int32_t c : g.cell)
+    if (c >= 0) ++size[static_cast<std::size_t>(c)];
+
+  // Small labels: dropped, or merged into the neighbour sharing the most voxel faces.
+  std::vector<std::string> small_notes;
+  if (io.min_cell_size > 0) {
+    std::vector<std::pair<std::int64_t, std::int32_t>> small;
+    for (std::size_t l = 0; l < size.size(); ++l)
+      if (size[l] < io.min_cell_size) small.emplace_back(size[l], static_cast<std::int32_t>(l));
+    std::sort(small.begin(), small.end());
+    std::vector<std::int32_t> into(size.size());
+    std::iota(into.begin(), into.end(), 0);
+    auto find = [&](std::int32_t l) {
+      while (l >= 0 && into[static_cast<std::size_t>(l)] != l) l = into[static_cast<std::size_t>(l)];
+      return l;
+    };
+    std::vector<char> is_small(size.size(), 0);
+    for (const auto& [n, l] : small) is_small[static_cast<std::size_t>(l)] = 1;
+    if (io.small_cells == "merge" && !small.empty()) {
+      std::map<std::int32_t, std::map<std::int32_t, std::int64_t>> shared;
+      for (std::size_t v = 0; v < g.size(); ++v) {
+        const std::int32_t a = g.cell[v];
+        if (a < 0) continue;
+        for (int ax = 0; ax < 3; ++ax) {
+          const std::int32_t b = g.cell[v + g.stride[ax]];  // a cell is never in the last padding layer
+          if (b < 0 || b == a || !(is_small[static_cast<std::size_t>(a)] || is_small[static_cast<std::size_t>(b)]))
+            continue;
+          ++shared[a][b], ++shared[b][a];
+        }
+      }
+      for (const auto& [n0, l] : small) {
+        if (find(l) != l || size[static_cast<std::size_t>(l)] >= io.min_cell_size) continue;
+        std::map<std::int32_t, std::int64_t> by_root;
+        for (const auto& [b, n] : shared[l])
+          if (const std::int32_t r = find(b); r != l && r >= 0) by_root[r] += n;
+        std::int32_t best = kBackground;
+        std::int64_t most = 0;
+        for (const auto& [r, n] : by_root)
+          if (n > most) best = r, most = n;  // ties: the smaller label
+        into[static_cast<std::size_t>(l)] = best;
+        const std::string what = "label " + std::to_string(id_label[static_cast<std::size_t>(l)]) + " (" +
+                                 std::to_string(size[static_cast<std::size_t>(l)]) + " voxels < min_cell_size)";
+        if (best < 0) {
+          small_notes.push_back(what + " dropped: it touches no other cell");
+          continue;
+        }
+        small_notes.push_back(what + " merged into label " + std::to_string(id_label[static_cast<std::size_t>(best)]) +
+                              " (they share " + std::to_string(most) + " voxel faces)");
+        size[static_cast<std::size_t>(best)] += size[static_cast<std::size_t>(l)];
+        for (const auto& [b, n] : shared[l]) shared[best][b] += n;
+      }
+    } else {
+      for (const auto& [n, l] : small) {
+        into[static_cast<std::size_t>(l)] = kBackground;
+        small_notes.push_back("label " + std::to_string(id_label[static_cast<std::size_t>(l)]) + " (" +
+                              std::to_string(n) + " voxels < min_cell_size) dropped");
+      }
+    }
+    if (!small.empty()) {
+      for (std::int32_t& c : g.cell)
+        if (c >= 0 && into[static_cast<std::size_t>(c)] != c) c = find(c);
+      std::fill(size.begin(), size.end(), 0);
+      for (std::int32_t c : g.cell)
+        if (c >= 0) ++size[static_cast<std::size_t>(c)];
+    }
+  }
+  for (std::size_t k = 0; k < small_notes.size() && k < kMaxNotes; ++k) report.notes.push_back(small_notes[k]);
+  if (small_notes.size() > kMaxNotes)
+    report.notes.push_back("and " + std::to_string(small_notes.size() - kMaxNotes) + " more small labels");
+
+  {
+    auto name = [&](std::int32_t c) {
+      if (c == kBackground) return std::string("the background");
+      if (c < kBackground) return std::string("the image border");
+      return "label " + std::to_string(id_label[static_cast<std::size_t>(c)]);
+    };
+    if (const std::size_t changed = makeWellComposed(g, img.name, voxelName, name); changed > 0)
+      report.notes.push_back(std::to_string(changed) +
+                             " voxel(s) relabelled where voxels of one label touched only along an edge or at a "
+                             "corner (each took the label of a voxel beside it)");
+  }
+  // Pieces: voxels of one label joined through faces; cells are pieces sorted by label, then first voxel.
+  struct Piece {
+    std::int32_t id;  // compact label id
+    std::size_t first, voxels = 0;
+  };
+  std::vector<Piece> pieces;
+  {
+    std::vector<std::uint64_t> visited((g.size() + 63) / 64, 0);
+    auto seen = [&](std::size_t v) { return (visited[v >> 6] >> (v & 63)) & 1; };
+    auto mark = [&](std::size_t v) { visited[v >> 6] |= std::uint64_t{1} << (v & 63); };
+    std::vector<std::size_t> stack;
+    for (std::size_t v0 = 0; v0 < g.size(); ++v0) {
+      const std::int32_t l = g.cell[v0];
+      if (l < 0 || seen(v0)) continue;
+      const auto p = static_cast<std::int32_t>(pieces.size());
+      pieces.push_back({l, v0});
+      stack.assign(1, v0);
+      mark(v0);
+      while (!stack.empty()) {
+        const std::size_t v = stack.back();
+        stack.pop_back();
+        ++pieces.back().voxels;
+        g.cell[v] = p;  // piece ids for now
+        for (int ax = 0; ax < 3; ++ax)
+          for (const std::size_t nb : {v - g.stride[ax], v + g.stride[ax]})
+            if (!seen(nb) && g.cell[nb] == l) {
+              // g.cell[nb] == l only for not-yet-visited voxels of the label (visited ones hold piece ids,
+              // which may equal l: hence the visited bit first).
+              mark(nb);
+              stack.push_back(nb);
+            }
+      }
+    }
+  }
+  if (pieces.empty())
+    throw InputError(file + ": no cells: every voxel is background (" + numberList(io.background) + ")" +
+                     (io.drop_labels.empty() && io.min_cell_size == 0 ? ""
+                                                                      : ", dropped or smaller than min_cell_size"));
+  std::vector<std::size_t> order(pieces.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&](std::size_t p, std::size_t q) {
+    return pieces[p].id != pieces[q].id ? pieces[p].id < pieces[q].id : pieces[p].first < pieces[q].first;
+  });
+  std::size_t split_labels = 0;
+  for (std::size_t k = 0; k < order.size();) {
+    std::size_t e = k;
+    while (e < order.size() && pieces[order[e]].id == pieces[order[k]].id) ++e;
+    if (e - k > 1 && !io.keep_pieces && split_labels == 0) {
+      std::string sizes, where;
+      for (std::size_t q = k; q < e && q < k + 5; ++q) {
+        sizes += (q > k ? ", " : "") + std::to_string(pieces[order[q]].voxels);
+        where += (q > k ? ", " : "") + voxelName(pieces[order[q]].first);
+      }
+      if (e - k > 5) sizes += ", ...", where += ", ...";
+      std::size_t others = 0;
+      for (std::size_t r = e, f = e; r < order.size(); r = f) {
+        f = r;
+        while (f < order.size() && pieces[order[f]].id == pieces[order[r]].id) ++f;
+        others += f - r > 1;
+      }
+      throw InputError(file + ": label " + std::to_string(id_label[static_cast<std::size_t>(pieces[order[k]].id)]) +
+                       " is made of " + std::to_string(e - k) + " disconnected pieces (of " + sizes +
+                       " voxels; a voxel of each: " + where + ")" +
+                       (others > 0 ? "; " + std::to_string(others) + " other label(s) are split too" : "") +
+                       "; keep_pieces: true (--keep-pieces) makes each piece a cell");
+    }
+    if (e - k > 1) ++split_labels;
+    k = e;
+  }
+  if (split_labels)
+    report.notes.push_back(std::to_string(split_labels) +
+                           " label(s) in several disconnected pieces, each piece a cell (keep_pieces)");
+  const std::size_t n_cells = pieces.size();
+  std::vector<Label> cell_label(n_cells);
+  {
+    std::vector<std::int32_t> cell_of_piece(n_cells);
+    for (std::size_t c = 0; c < n_cells; ++c) {
+      cell_of_piece[order[c]] = static_cast<std::int32_t>(c);
+      cell_label[c] = id_label[static_cast<std::size_t>(pieces[order[c]].id)];
+    }
+    for (std::int32_t& c : g.cell)
+      if (c >= 0) c = cell_of_piece[static_cast<std::size_t>(c)];
+  }
+  auto labelName = [&](std::int32_t c) {
+    static const char* sides[6] = {"x = 0", "x = max", "y = 0", "y = max", "z = 0", "z = max"};
+    if (c == kBackground) return std::string("the background");
+    if (c < kBackground) return "the image border (" + std::string(sides[-2 - c]) + " side)";
+    return "label " + std::to_string(cell_label[static_cast<std::size_t>(c)]);
+  };
+
+  // Interface faces: key voxel * 3 + axis for the face between voxel and voxel + axis (ascending).
+  std::vector<std::uint64_t> face_key;
+  std::vector<Face> faces;
+  RankedSet face_set(3 * g.size());
+  for (std::size_t v = 0; v + g.stride[2] < g.size(); ++v) {
+    const std::int32_t a = g.cell[v];
+    for (int ax = 0; ax < 3; ++ax) {
+      const std::int32_t b = g.cell[v + g.stride[ax]];
+      if (a == b || (a < 0 && b < 0)) continue;
+      face_key.push_back(v * 3 + static_cast<std::uint64_t>(ax));
+      face_set.insert(face_key.back());
+      faces.push_back(a > b ? Face{a, b, true} : Face{b, a, false});
+    }
+  }
+  face_set.finish();
+  auto faceIndex = [&](std::uint64_t key) { return static_cast<Index>(face_set.rank(key)); };
+
+  // Voxel edges: junctions (three or more labels around) or a joint of two faces of one wall.
+  UnionFind patches(faces.size());
+  std::vector<std::uint64_t> junction_edges;  // corner * 3 + axis: from the corner along the axis
+  RankedSet junction_set(3 * g.size());
+  for (std::int64_t k = 1; k < g.n[2]; ++k)
+    for (std::int64_t j = 1; j < g.n[1]; ++j)
+      for (std::int64_t i = 1; i < g.n[0]; ++i) {
+        const std::size_t c = g.at(i, j, k);
+        const std::array<std::int64_t, 3> p{i, j, k};
+        for (int ax = 0; ax < 3; ++ax) {
+          if (p[ax] > g.n[ax] - 2) continue;  // the edge would run in the last padding layer
+          const int b = (ax + 1) % 3, cc = (ax + 2) % 3;
+          // The four voxels around the edge, in turn: q0 (-b, -c), q1 (+b, -c), q2 (+b, +c), q3 (-b, +c).
+          const std::size_t q1 = c - g.stride[cc], q3 = c - g.stride[b], q0 = q1 - g.stride[b], q2 = c;
+          const std::int32_t l0 = g.cell[q0], l1 = g.cell[q1], l2 = g.cell[q2], l3 = g.cell[q3];
+          if (l0 == l1 && l1 == l2 && l2 == l3) continue;
+          auto iface = [](std::int32_t x, std::int32_t y) { return x != y && (x >= 0 || y >= 0); };
+          const bool f01 = iface(l0, l1), f12 = iface(l1, l2), f32 = iface(l3, l2), f03 = iface(l0, l3);
+          const int n_faces = f01 + f12 + f32 + f03;
+          if (n_faces == 0) continue;
+          int distinct = 1 + (l1 != l0) + (l2 != l0 && l2 != l1) + (l3 != l0 && l3 != l1 && l3 != l2);
+          if (distinct >= 3) {
+            junction_edges.push_back(c * 3 + static_cast<std::uint64_t>(ax));
+            junction_set.insert(junction_edges.back());
+            continue;
+          }
+          if (n_faces != 2)
+            throw InputError(file + ": voxels " + voxelName(q0) + " and " + voxelName(q2) +
+                             " touch along an edge only (an internal error: they should have been joined)");
+          std::array<Index, 2> two{};
+          int m = 0;
+          if (f01) two[m++] = faceIndex(q0 * 3 + static_cast<std::uint64_t>(b));
+          if (f12) two[m++] = faceIndex(q1 * 3 + static_cast<std::uint64_t>(cc));
+          if (f32) two[m++] = faceIndex(q3 * 3 + static_cast<std::uint64_t>(b));
+          if (f03) two[m++] = faceIndex(q0 * 3 + static_cast<std::uint64_t>(cc));
+          patches.unite(two[0], two[1]);
+        }
+      }
+  // Corners on junction lines (compact ids, ascending corner index), their degree and whether they are vertices.
+  junction_set.finish();
+  std::vector<std::uint64_t> corners;
+  RankedSet corner_set(g.size());
+  for (std::uint64_t e : junction_edges) {
+    corner_set.insert(e / 3);
+    corner_set.insert(e / 3 + g.stride[e % 3]);
+  }
+  corner_set.finish();
+  for (std::size_t w = 0; w < corner_set.bits.size(); ++w)
+    for (std::uint64_t word = corner_set.bits[w]; word != 0; word &= word - 1)
+      corners.push_back(w * 64 + static_cast<std::uint64_t>(std::countr_zero(word)));
+  auto cornerId = [&](std::uint64_t c) { return static_cast<std::int32_t>(corner_set.rank(c)); };
+  const std::size_t n_corners = corners.size();
+  std::vector<std::array<std::int32_t, 6>> incident(n_corners);  // junction edges at each corner
+  std::vector<std::uint8_t> degree(n_corners, 0);
+  std::vector<std::array<std::int32_t, 2>> edge_ends(junction_edges.size());
+  for (std::size_t e = 0; e < junction_edges.size(); ++e) {
+    const std::size_t c = junction_edges[e] / 3;
+    edge_ends[e] = {cornerId(c), cornerId(c + g.stride[junction_edges[e] % 3])};
+    for (const std::int32_t u : edge_ends[e]) incident[u][degree[u]++] = static_cast<std::int32_t>(e);
+  }
+  std::vector<char> is_vertex(n_corners, 0);
+  std::vector<Vec3> pos(n_corners);  // in voxels, padded corner coordinates
+  for (std::size_t u = 0; u < n_corners; ++u) {
+    const auto p = g.coords(corners[u]);
+    pos[u] = Vec3(static_cast<double>(p[0]), static_cast<double>(p[1]), static_cast<double>(p[2]));
+    if (degree[u] != 2) {
+      is_vertex[u] = 1;
+      continue;
+    }
+    std::array<std::int32_t, 8> l;
+    for (int b = 0; b < 8; ++b) l[b] = g.cell[g.blockVoxel(corners[u], b)];
+    std::sort(l.begin(), l.end());
+    is_vertex[u] = std::unique(l.begin(), l.end()) - l.begin() >= 4;
+  }
+
+  // Junction polylines: chains of junction edges between vertices; a closed one without a vertex starts anywhere.
+  std::vector<Polyline> polylines;
+  std::vector<std::int32_t> edge_polyline(junction_edges.size(), -1);
+  auto walk = [&](std::int32_t start, std::int32_t e0) {
+    Polyline pl{{start}, o.simplify};
+    std::int32_t u = start, e = e0;
+    for (;;) {
+      edge_polyline[e] = static_cast<std::int32_t>(polylines.size());
+      u = edge_ends[e][0] == u ? edge_ends[e][1] : edge_ends[e][0];
+      pl.chain.push_back(u);
+      if (is_vertex[u]) break;
+      e = incident[u][0] == e ? incident[u][1] : incident[u][0];
+    }
+    polylines.push_back(std::move(pl));
+  };
+  for (std::size_t u = 0; u < n_corners; ++u)
+    if (is_vertex[u])
+      for (int k = 0; k < degree[u]; ++k)
+        if (edge_polyline[incident[u][k]] < 0) walk(static_cast<std::int32_t>(u), incident[u][k]);
+  for (std::size_t e = 0; e < junction_edges.size(); ++e)
+    if (edge_polyline[e] < 0) {
+      is_vertex[edge_ends[e][0]] = 1;
+      walk(edge_ends[e][0], static_cast<std::int32_t>(e));
+    }
+
+  // Walls: the patches; each one's boundary (its faces' junction edges, run out of its first cell) as one loop.
+  std::vector<Index> patch_of_face(faces.size());
+  std::vector<Index> patch_face;  // a face of each patch
+  {
+    std::vector<Index> id_of_root(faces.size(), kInvalidIndex);
+    for (Index f = 0; f < faces.size(); ++f) {
+      Index& id = id_of_root[patches.find(f)];
+      if (id == kInvalidIndex) {
+        id = static_cast<Index>(patch_face.size());
+        patch_face.push_back(f);
+      }
+      patch_of_face[f] = id;
+    }
+  }
+  const std::size_t n_walls = patch_face.size();
+  struct Boundary {
+    Index patch;
+    std::int32_t tail, head, edge;
+    bool operator<(const Boundary& b) const { return patch != b.patch ? patch < b.patch : tail < b.tail; }
+  };
+  std::vector<Boundary> boundary;
+  for (std::size_t f = 0; f < faces.size(); ++f) {
+    const std::size_t v = face_key[f] / 3;
+    const int ax = static_cast<int>(face_key[f] % 3), b = (ax + 1) % 3, cc = (ax + 2) % 3;
+    const std::size_t c0 = v + g.stride[0] + g.stride[1] + g.stride[2] - g.stride[b] - g.stride[cc];
+    // corners in turn about +axis: c0, c0 + b, c0 + b + c, c0 + c; edges: from the corner along the axis.
+    const std::size_t cs[4] = {c0, c0 + g.stride[b], c0 + g.stride[b] + g.stride[cc], c0 + g.stride[cc]};
+    const std::uint64_t es[4] = {c0 * 3 + static_cast<std::uint64_t>(b), cs[1] * 3 + static_cast<std::uint64_t>(cc),
+                                 cs[3] * 3 + static_cast<std::uint64_t>(b), c0 * 3 + static_cast<std::uint64_t>(cc)};
+    for (int k = 0; k < 4; ++k) {
+      if (!junction_set.contains(es[k])) continue;
+      std::int32_t tail = cornerId(cs[k]), head = cornerId(cs[(k + 1) % 4]);
+      if (!faces[f].forward) std::swap(tail, head);
+      boundary.push_back({patch_of_face[f], tail, head, static_cast<std::int32_t>(junction_set.rank(es[k]))});
+    }
+  }
+  std::sort(boundary.begin(), boundary.end());
+  std::vector<std::size_t> boundary_start(n_walls + 1, 0);
+  for (const Boundary& bd : boundary) ++boundary_start[bd.patch + 1];
+  for (std::size_t p = 0; p < n_walls; ++p) boundary_start[p + 1] += boundary_start[p];
+  std::vector<std::vector<std::int32_t>> loops(n_walls);          // corners, in turn
+  std::vector<std::vector<std::int32_t>> wall_polylines(n_walls);  // the polylines along each loop
+  for (std::size_t p = 0; p < n_walls; ++p) {
+    const Face& f = faces[patch_face[p]];
+    const std::string pair = labelName(f.first) + " and " + labelName(f.second);
+    const std::string at = " (at voxel " + voxelName(face_key[patch_face[p]] / 3) + ")";
+    const std::size_t b0 = boundary_start[p], b1 = boundary_start[p + 1];
+    if (b0 == b1)
+      throw InputError(file + ": the interface between " + pair + at +
+                       " is a closed surface, met by no third label (one cell enclosed by the other): a wall needs a "
+                       "boundary of junction lines; drop or merge the inner label");
+    for (std::size_t k = b0 + 1; k < b1; ++k)
+      if (boundary[k].tail == boundary[k - 1].tail)
+        throw InputError(file + ": the wall between " + pair + at + " is pinched: its boundary passes twice through "
+                         "the voxel corner " + fmtPoint(pos[boundary[k].tail]) +
+                         " (padded voxel coordinates); a wall is a disc");
+    std::size_t walked = 0;
+    std::int32_t u = boundary[b0].tail;
+    std::vector<char> used(b1 - b0, 0);
+    do {
+      const auto it = std::lower_bound(boundary.begin() + static_cast<std::ptrdiff_t>(b0),
+                                       boundary.begin() + static_cast<std::ptrdiff_t>(b1),
+                                       Boundary{static_cast<Index>(p), u, 0, 0});
+      const auto at_k = static_cast<std::size_t>(it - boundary.begin());
+      if (at_k >= b1 || it->tail != u || used[at_k - b0])
+        throw InputError(file + ": the boundary of the wall between " + pair + at +
+                         " is not a closed loop (an internal error)");
+      used[at_k - b0] = 1;
+      loops[p].push_back(u);
+      const std::int32_t pl = edge_polyline[it->edge];
+      if (wall_polylines[p].empty() || wall_polylines[p].back() != pl) wall_polylines[p].push_back(pl);
+      u = it->head;
+      ++walked;
+    } while (u != boundary[b0].tail);
+    if (walked != b1 - b0)
+      throw InputError(file + ": the interface between " + pair + at + " is not a disc: its boundary is " +
+                       "several loops of junction lines (an annulus, e.g. one cell wrapped around another); " +
+                       "merge or drop one of the labels");
+    std::sort(wall_polylines[p].begin(), wall_polylines[p].end());
+    wall_polylines[p].erase(std::unique(wall_polylines[p].begin(), wall_polylines[p].end()), wall_polylines[p].end());
+  }
+  std::vector<std::vector<Index>> cell_walls(n_cells);
+  for (std::size_t p = 0; p < n_walls; ++p) {
+    const Face& f = faces[patch_face[p]];
+    cell_walls[static_cast<std::size_t>(f.first)].push_back(static_cast<Index>(p));
+    if (f.second >= 0) cell_walls[static_cast<std::size_t>(f.second)].push_back(static_cast<Index>(p));
+  }
+
+  // With simplify > 0, smooth each junction polyline first (its ends fixed): repeated [1/4, 1/2, 1/4]
+  // averaging along it, ceil(8 * simplify) times (up to 32), takes the voxel staircase to a curve near the
+  // junction it samples, whose best-fit-plane projection no longer zigzags.
+  if (o.simplify > 0) {
+    const int passes = static_cast<int>(std::min(32.0, std::ceil(8 * o.simplify)));
+    std::vector<Vec3> next;
+    for (const Polyline& pl : polylines) {
+      const auto& ch = pl.chain;
+      if (ch.size() < 3) continue;
+      for (int pass = 0; pass < passes; ++pass) {
+        next.resize(ch.size());
+        for (std::size_t i = 1; i + 1 < ch.size(); ++i)
+          next[i] = 0.25 * pos[ch[i - 1]] + 0.5 * pos[ch[i]] + 0.25 * pos[ch[i + 1]];
+        for (std::size_t i = 1; i + 1 < ch.size(); ++i) pos[ch[i]] = next[i];
+      }
+    }
+  }
+  // Simplify, then make sure every wall keeps three corners and no cell loses much of its volume.
+  std::vector<char> keep(n_corners, 0);
+  for (std::size_t u = 0; u < n_corners; ++u) keep[u] = is_vertex[u];
+  for (const Polyline& pl : polylines) simplifyPolyline(pl, pos, keep);
+  {
+    std::map<std::pair<std::int32_t, std::int32_t>, int> straight;
+    for (Polyline& pl : polylines) {
+      if (pl.chain.front() == pl.chain.back() || pl.chain.size() < 3) continue;
+      bool inner = false;
+      for (std::size_t k = 1; k + 1 < pl.chain.size(); ++k) inner = inner || keep[pl.chain[k]];
+      if (inner) continue;
+      if (straight[std::minmax(pl.chain.front(), pl.chain.back())]++ == 0) continue;
+      pl.keep_one = true;
+      simplifyPolyline(pl, pos, keep);
+    }
+  }
+  std::vector<double> six_volume(n_cells, 0);  // of each cell's wall polygons, in voxels
+  // Walls changed since the last crossing test (two unchanged walls that did not meet still do not).
+  std::vector<char> wall_changed(n_walls, 1);
+  std::vector<std::vector<std::int32_t>> polyline_walls(polylines.size());
+  for (std::size_t p = 0; p < n_walls; ++p)
+    for (const std::int32_t pl : wall_polylines[p]) polyline_walls[static_cast<std::size_t>(pl)].push_back(
+        static_cast<std::int32_t>(p));
+  const double voxel_volume = s[0] * s[1] * s[2];
+  for (int round = 0;; ++round) {
+    std::vector<char> redo(polylines.size(), 0);
+    bool any = false;
+    auto redoWall = [&](std::size_t p) {
+      for (const std::int32_t pl : wall_polylines[p]) redo[static_cast<std::size_t>(pl)] = 1, any = true;
+    };
+    std::fill(six_volume.begin(), six_volume.end(), 0.0);
+    const bool check_crossings = o.simplify > 0;  // the staircase (simplify 0) is left as it is
+    std::vector<WallTriangle> wall_tris;
+    std::vector<Vec3> points(check_crossings ? n_corners + n_walls : 0);
+    std::vector<Vec3> loop_points;
+    for (std::size_t p = 0; p < n_walls; ++p) {
+      loop_points.clear();
+      for (const std::int32_t u : loops[p])
+        if (keep[u]) loop_points.emplace_back(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
+      if (loop_points.size() < 3) {
+        redoWall(p);
+        continue;
+      }
+      // A loop crossing itself in its best-fit plane cannot be meshed: simplify it less.
+      if (polygonDefect(loop_points)) redoWall(p);
+      // The cells' volumes as the tissue will measure them (tissue/geometry.hpp).
+      const PolygonTriangulation tri = polygonTriangulation(loop_points);
+      double vol = 0;
+      const std::size_t k = loop_points.size();
+      if (tri.fan())
+        for (std::size_t i = 0; i < k; ++i) vol += tri.center.dot(loop_points[i].cross(loop_points[(i + 1) % k]));
+      else
+        for (const auto& t : tri.triangles)
+          vol += loop_points[t[0]].dot(loop_points[t[1]].cross(loop_points[t[2]]));
+      vol /= voxel_volume;
+      const Face& f = faces[patch_face[p]];
+      six_volume[static_cast<std::size_t>(f.first)] += vol;
+      if (f.second >= 0) six_volume[static_cast<std::size_t>(f.second)] -= vol;
+      if (check_crossings) {  // the wall's triangles, as the tissue and the mesher make them
+        std::vector<std::int32_t> ids;
+        for (const std::int32_t u : loops[p])
+          if (keep[u]) ids.push_back(u);
+        if (tri.fan()) {
+          const auto centre = static_cast<std::int32_t>(n_corners + p);
+          points[static_cast<std::size_t>(centre)] = tri.center;
+          for (std::size_t i = 0; i < k; ++i)
+            wall_tris.push_back({{centre, ids[i], ids[(i + 1) % k]}, static_cast<std::int32_t>(p)});
+        } else {
+          for (const auto& t : tri.triangles)
+            wall_tris.push_back({{ids[t[0]], ids[t[1]], ids[t[2]]}, static_cast<std::int32_t>(p)});
+        }
+        for (std::size_t i = 0; i < k; ++i) points[static_cast<std::size_t>(ids[i])] = loop_points[i];
+      }
+    }
+    if (check_crossings) {
+      // Triangles of two walls that cross (away from shared corners): both walls are simplified less.
+      // Pairs found through a grid of buckets; a pair is tested in the bucket holding the low corner
+      // of the overlap of their bounding boxes only.
+      std::vector<std::pair<std::uint64_t, std::int32_t>> buckets;
+      const double size = 4 * std::max({s[0], s[1], s[2]});
+      std::vector<std::array<Vec3, 2>> box(wall_tris.size());
+      auto cellOf = [&](const Vec3& x) {
+        std::array<std::int64_t, 3> b;
+        for (int a = 0; a < 3; ++a) b[a] = static_cast<std::int64_t>(std::floor(x[a] / size));
+        return b;
+      };
+      auto key = [](const std::array<std::int64_t, 3>& b) {
+        return (static_cast<std::uint64_t>(b[2] & 0x1FFFFF) << 42) |
+               (static_cast<std::uint64_t>(b[1] & 0x1FFFFF) << 21) | static_cast<std::uint64_t>(b[0] & 0x1FFFFF);
+      };
+      for (std::size_t t = 0; t < wall_tris.size(); ++t) {
+        Vec3 lo_p = points[wall_tris[t].v[0]], hi_p = lo_p;
+        for (const std::int32_t u : wall_tris[t].v) lo_p = lo_p.cwiseMin(points[u]), hi_p = hi_p.cwiseMax(points[u]);
+        box[t] = {lo_p, hi_p};
+        const auto b0 = cellOf(lo_p), b1 = cellOf(hi_p);
+        for (std::int64_t z = b0[2]; z <= b1[2]; ++z)
+          for (std::int64_t y = b0[1]; y <= b1[1]; ++y)
+            for (std::int64_t x = b0[0]; x <= b1[0]; ++x)
+              buckets.emplace_back(key({x, y, z}), static_cast<std::int32_t>(t));
+      }
+      std::sort(buckets.begin(), buckets.end());
+      const double slack = 1e-9 * size;
+      for (std::size_t i = 0; i < buckets.size();) {
+        std::size_t j = i;
+        while (j < buckets.size() && buckets[j].first == buckets[i].first) ++j;
+        for (std::size_t a = i; a < j; ++a)
+          for (std::size_t b = a + 1; b < j; ++b) {
+            const std::int32_t x = buckets[a].second, y = buckets[b].second;
+            const WallTriangle &ta = wall_tris[x], &tb = wall_tris[y];
+            if (ta.wall == tb.wall || !(wall_changed[ta.wall] || wall_changed[tb.wall])) continue;
+            const Vec3 lo_o = box[x][0].cwiseMax(box[y][0]), hi_o = box[x][1].cwiseMin(box[y][1]);
+            if ((lo_o.array() > hi_o.array() + slack).any()) continue;
+            if (key(cellOf(lo_o)) != buckets[i].first) continue;
+            if (trianglesCross(ta.v, tb.v, points)) redoWall(ta.wall), redoWall(tb.wall);
+          }
+        i = j;
+      }
+    }
+    for (std::size_t c = 0; c < n_cells; ++c)
+      if (six_volume[c] < 3.0 * static_cast<double>(pieces[order[c]].voxels))  // lost more than half its volume
+        for (const Index p : cell_walls[c]) redoWall(p);
+    if (!any) break;
+    bool changed = false;
+    std::fill(wall_changed.begin(), wall_changed.end(), 0);
+    for (std::size_t k = 0; k < polylines.size(); ++k) {
+      if (!redo[k] || polylines[k].tol < 0) continue;
+      polylines[k].tol = polylines[k].tol > 1.0 / 64 ? polylines[k].tol / 2 : -1;
+      simplifyPolyline(polylines[k], pos, keep);
+      changed = true;
+      for (const std::int32_t p : polyline_walls[k]) wall_changed[static_cast<std::size_t>(p)] = 1;
+    }
+    if (!changed || round > 64) break;  // every corner kept: the core's checks tell what is wrong
+  }
+  // A wall is one polygon through its boundary loop: walls that bend around a small cell can flatten it.
+  for (std::size_t c = 0; c < n_cells; ++c)
+    if (six_volume[c] < 1.5 * static_cast<double>(pieces[order[c]].voxels))
+      throw InputError(file + ": " + labelName(static_cast<std::int32_t>(c)) + " (" +
+                       std::to_string(pieces[order[c]].voxels) + " voxels, one at " +
+                       voxelName(pieces[order[c]].first) +
+                       "): the polygons through its walls' boundary loops enclose " + formatNumber(six_volume[c] / 6) +
+                       " voxels, under a quarter of its own (its walls bend around it: a wall is one polygon "
+                       "through its junction lines); drop or merge it (min_cell_size, small_cells)");
+
+  // The complex: kept corners in world coordinates, walls as loops, cells as wall lists.
+  ComplexFile m;
+  m.path = img.name;
+  m.volume_noun = "cell";
+  m.face_noun = "wall";
+  std::vector<Index> new_index(n_corners, kInvalidIndex);
+  for (std::size_t u = 0; u < n_corners; ++u)
+    if (keep[u]) {
+      new_index[u] = static_cast<Index>(m.positions.size());
+      Vec3 x;
+      for (int a = 0; a < 3; ++a) x[a] = img.origin[a] + (pos[u][a] - 1.0 + static_cast<double>(lo[a]) - 0.5) * s[a];
+      m.positions.push_back(x);
+    }
+  m.face_offsets = {0};
+  for (std::size_t p = 0; p < n_walls; ++p) {
+    for (const std::int32_t u : loops[p])
+      if (keep[u]) m.face_vertices.push_back(new_index[u]);
+    m.face_offsets.push_back(m.face_vertices.size());
+  }
+  m.volume_offsets = {0};
+  for (std::size_t c = 0; c < n_cells; ++c) {
+    m.volume_faces.insert(m.volume_faces.end(), cell_walls[c].begin(), cell_walls[c].end());
+    m.volume_offsets.push_back(m.volume_faces.size());
+    m.volume_label.push_back(cell_label[c]);
+  }
+  report.file_vertices = 0;
+  report.simplified_vertices = n_corners - m.positions.size();
+  report.notes.push_back(std::to_string(n_cells) + " cells, " + std::to_string(n_walls) + " walls, " +
+                         std::to_string(polylines.size()) + " junction lines; " + std::to_string(m.positions.size()) +
+                         " of " + std::to_string(n_corners) + " junction-line voxel corners kept (simplify " +
+                         formatNumber(o.simplify) + " voxels)");
+  ImportOptions core = o;
+  core.simplify = 0;  // done above, in voxels
+  result = importComplex(m, core, std::move(report));
+  return result;
+}
+
+}  // namespace tessella::io::detail

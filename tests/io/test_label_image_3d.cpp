@@ -1,0 +1,316 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
+// 3D label images into 3D tissues: Tessella's own 3D Voronoi tissue
+// rasterised (each voxel labelled by the seed nearest its centre, the
+// definition of a Voronoi cell) and imported back must give the same
+// adjacency but for walls of a few voxel faces, volumes converging as the
+// voxels shrink, a valid tissue that meshes; each bad input a clear error.
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include <catch2/catch.hpp>
+#include <vtkImageData.h>
+#include <vtkMetaImageWriter.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnsignedShortArray.h>
+
+#include "io_test_support.hpp"
+#include "tessella/generators/voronoi.hpp"
+#include "tessella/io/import.hpp"
+#include "tessella/io/label_image.hpp"
+#include "tessella/mesh/mesh_tissue.hpp"
+#include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/geometry.hpp"
+#include "tessella/tissue/validate.hpp"
+
+using namespace tessella;
+using namespace tessella::io;
+using tessella::io::testing::TempDir;
+using Catch::Matchers::Contains;
+
+namespace {
+
+constexpr std::int64_t kLabelOffset = 2;  // cell c gets label c + 2 (0 and 1 are background by default)
+
+struct VoronoiCase {
+  std::vector<Vec3> seeds;
+  Tissue tissue;
+};
+
+VoronoiCase voronoi3d(std::size_t cells, std::uint64_t rng_seed) {
+  VoronoiCase v{randomSeeds(Box{}, cells, rng_seed), Tissue(3, Embedding::Volume)};
+  v.tissue = voronoiTissue(v.seeds, Box{});
+  return v;
+}
+
+std::size_t nearestSeed(const std::vector<Vec3>& seeds, const Vec3& p) {
+  std::size_t best = 0;
+  for (std::size_t s = 1; s < seeds.size(); ++s)
+    if ((seeds[s] - p).squaredNorm() < (seeds[best] - p).squaredNorm()) best = s;
+  return best;
+}
+
+// n^3 voxels over the unit cube, voxel (i, j, k) = [i/n, (i+1)/n] x ...: the label of the nearest seed's cell.
+LabelImage rasterise(const std::vector<Vec3>& seeds, std::int64_t n) {
+  LabelImage img;
+  img.name = "voronoi rasterised at " + std::to_string(n);
+  img.dims = {n, n, n};
+  img.spacing = {1.0 / n, 1.0 / n, 1.0 / n};
+  img.origin = {0.5 / n, 0.5 / n, 0.5 / n};  // voxel centres
+  img.labels.resize(static_cast<std::size_t>(n * n * n));
+  for (std::int64_t k = 0; k < n; ++k)
+    for (std::int64_t j = 0; j < n; ++j)
+      for (std::int64_t i = 0; i < n; ++i) {
+        const Vec3 p((i + 0.5) / n, (j + 0.5) / n, (k + 0.5) / n);
+        img.labels[static_cast<std::size_t>(i + n * (j + n * k))] =
+            static_cast<std::int64_t>(nearestSeed(seeds, p)) + kLabelOffset;
+      }
+  return img;
+}
+
+// Neighbour pairs (by label) and the area of the wall(s) they share.
+std::map<std::pair<std::int64_t, std::int64_t>, double> neighbourPairs(const Tissue& t, bool use_label) {
+  const auto* label = use_label ? &t.cellProperties().get<std::int64_t>("label") : nullptr;
+  auto id = [&](CellId c) { return label ? (*label)[c] : static_cast<std::int64_t>(c.index()) + kLabelOffset; };
+  std::map<std::pair<std::int64_t, std::int64_t>, double> pairs;
+  for (WallId w : t.walls()) {
+    const auto cs = t.wallCells(w);
+    if (cs.size() == 2) pairs[std::minmax(id(cs[0]), id(cs[1]))] += wallMeasure(t, w);
+  }
+  return pairs;
+}
+
+// The area of each cell's walls on the tissue's boundary (cells touching it).
+std::map<std::int64_t, double> boundaryCells(const Tissue& t, bool use_label) {
+  const auto* label = use_label ? &t.cellProperties().get<std::int64_t>("label") : nullptr;
+  std::map<std::int64_t, double> out;
+  for (WallId w : t.walls())
+    if (t.isBoundaryWall(w)) {
+      const CellId c = t.wallCells(w)[0];
+      out[label ? (*label)[c] : static_cast<std::int64_t>(c.index()) + kLabelOffset] += wallMeasure(t, w);
+    }
+  return out;
+}
+
+struct Fit {
+  double mean_volume_error = 0, max_volume_error = 0, total_volume = 0;
+  std::size_t pairs_differing = 0;
+};
+
+// The imported tissue against the original: the same neighbour pairs but for
+// walls of area below `resolved` (in the original when the pair is lost, in
+// the import when it is new: cells meeting within a voxel or two cannot be
+// told apart), each reported; the same boundary cells; volumes measured.
+Fit compare(const Tissue& original, const Tissue& imported, double resolved) {
+  const auto report = validate(imported);
+  INFO(report.message);
+  REQUIRE(report.ok);
+  REQUIRE(imported.numCells() == original.numCells());
+  const auto want = neighbourPairs(original, false), got = neighbourPairs(imported, true);
+  Fit fit;
+  for (const auto& [pair, area] : want)
+    if (!got.count(pair)) {
+      ++fit.pairs_differing;
+      WARN("pair " << pair.first << "-" << pair.second << " lost, its wall's area is " << area / resolved
+                   << " of the limit");
+      CHECK(area < resolved);
+    }
+  for (const auto& [pair, area] : got)
+    if (!want.count(pair)) {
+      ++fit.pairs_differing;
+      WARN("pair " << pair.first << "-" << pair.second << " appears, its wall's area is " << area / resolved
+                   << " of the limit");
+      CHECK(area < resolved);
+    }
+  // The same for the cells on the boundary (a pair with the outside).
+  const auto want_b = boundaryCells(original, false), got_b = boundaryCells(imported, true);
+  for (const auto& [cell, area] : want_b)
+    if (!got_b.count(cell)) {
+      ++fit.pairs_differing;
+      WARN("cell " << cell << " no longer on the boundary, its boundary area is " << area / resolved
+                   << " of the limit");
+      CHECK(area < resolved);
+    }
+  for (const auto& [cell, area] : got_b)
+    if (!want_b.count(cell)) {
+      ++fit.pairs_differing;
+      WARN("cell " << cell << " now on the boundary, its boundary area is " << area / resolved << " of the limit");
+      CHECK(area < resolved);
+    }
+  const auto& label = imported.cellProperties().get<std::int64_t>("label");
+  std::map<std::int64_t, double> volumes;
+  for (CellId c : imported.cells()) volumes[label[c]] = cellMeasure(imported, c);
+  for (CellId c : original.cells()) {
+    const double v = cellMeasure(original, c);
+    const double err = std::abs(volumes.at(c.index() + kLabelOffset) - v) / v;
+    fit.mean_volume_error += err / static_cast<double>(original.numCells());
+    fit.max_volume_error = std::max(fit.max_volume_error, err);
+  }
+  fit.total_volume = totalMeasure(imported);
+  return fit;
+}
+
+ImportOptions withImage(const LabelImageOptions& image, double simplify = 0) {
+  ImportOptions o;
+  o.image = image;
+  o.simplify = simplify;
+  return o;
+}
+
+// A small image drawn by layers (z), rows (y) and characters (x), each digit a label.
+LabelImage drawn(const std::vector<std::vector<std::string>>& layers) {
+  LabelImage img;
+  img.name = "drawn";
+  img.dims = {static_cast<std::int64_t>(layers[0][0].size()), static_cast<std::int64_t>(layers[0].size()),
+              static_cast<std::int64_t>(layers.size())};
+  for (const auto& layer : layers)
+    for (const auto& row : layer)
+      for (char ch : row) img.labels.push_back(ch - '0');
+  return img;
+}
+
+void checkAgainstVoronoi(std::size_t cells, std::uint64_t rng_seed, std::int64_t n0, bool mesh) {
+  const VoronoiCase v = voronoi3d(cells, rng_seed);
+  REQUIRE(v.tissue.numCells() == cells);
+  // The cells are the seeds' in order: each cell's centroid is nearest its own seed.
+  for (CellId c : v.tissue.cells()) REQUIRE(nearestSeed(v.seeds, cellCentroid(v.tissue, c)) == c.index());
+  std::map<double, std::vector<Fit>> fits;  // by simplify
+  for (const std::int64_t n : {n0, 2 * n0}) {
+    const double h = 1.0 / static_cast<double>(n);
+    const LabelImage img = rasterise(v.seeds, n);
+    for (const double simplify : {0.0, 1.0}) {
+      INFO("n " << n << " simplify " << simplify);
+      const ImportResult r = tissueFromLabelImage(img, withImage({}, simplify));
+      const Fit fit = compare(v.tissue, r.tissue, 6 * h * h);  // "a few voxel faces": six
+      // The outer walls lie on the box faces exactly: the cells fill the cube.
+      CHECK(fit.total_volume == Approx(1.0).epsilon(simplify == 0 ? 1e-9 : 0.02));
+      fits[simplify].push_back(fit);
+      WARN("n " << n << " simplify " << simplify << ": volume error mean " << fit.mean_volume_error << " max "
+                << fit.max_volume_error << ", " << fit.pairs_differing << " pairs differ, "
+                << r.tissue.numVertices() << " vertices, " << r.tissue.numWalls() << " walls");
+      if (mesh && simplify > 0) {  // docs/import.md: the staircase (simplify 0) does not mesh
+        mesh::MeshOptions mo;
+        mo.radius_edge_ratio = 2.0;  // proven to terminate; quick
+        mo.min_angle_degrees = 0;
+        const mesh::FeMesh m = mesh::meshTissue(r.tissue, mo);
+        CHECK(m.dim == 3);
+        CHECK(m.numElements() > static_cast<int>(cells));
+      }
+    }
+  }
+  // Volumes converge: the staircase walls are within a voxel of the planes, so the error falls at least like h.
+  for (const auto& [simplify, f] : fits) {
+    const double order = std::log2(f[0].mean_volume_error / f[1].mean_volume_error);
+    WARN("simplify " << simplify << ": observed order of the mean volume error " << order << ", of the max "
+                     << std::log2(f[0].max_volume_error / f[1].max_volume_error));
+    CHECK(order >= 0.5);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("a rasterised 40-cell 3D Voronoi tissue imports back with the same adjacency", "[io][label_image]") {
+  checkAgainstVoronoi(40, 11, 24, true);
+}
+
+TEST_CASE("a rasterised 100-cell 3D Voronoi tissue imports back with the same adjacency", "[io][label_image][slow]") {
+  checkAgainstVoronoi(100, 5, 48, false);  // does not mesh at 48^3, simplify 1 (docs/import.md)
+}
+
+TEST_CASE("3D label images: options and files", "[io][label_image]") {
+  // Two cells side by side on a background layer: 4 x 2 x 3 voxels. (Flat walls only: a wall that bends
+  // is one polygon through its boundary loop, whose volume is not the voxels'.)
+  const LabelImage img = drawn({{"2223", "2223"}, {"2223", "2223"}, {"0000", "0000"}});
+  SECTION("two boxes") {
+    const ImportResult r = tissueFromLabelImage(img, {});
+    REQUIRE(validate(r.tissue).ok);
+    REQUIRE(r.tissue.numCells() == 2);
+    CHECK(cellMeasure(r.tissue, CellId(0)) == Approx(12.0));
+    CHECK(cellMeasure(r.tissue, CellId(1)) == Approx(4.0));
+    // One shared wall of 2 x 2 voxel faces.
+    double shared = 0;
+    for (WallId w : r.tissue.walls())
+      if (r.tissue.wallCells(w).size() == 2) shared += wallMeasure(r.tissue, w);
+    CHECK(shared == Approx(4.0));
+  }
+  SECTION("voxel size, crop, drop, background") {
+    LabelImageOptions o;
+    o.voxel_size = {0.5, 2, 1};
+    ImportResult r = tissueFromLabelImage(img, withImage(o));
+    CHECK(cellMeasure(r.tissue, CellId(0)) == Approx(12.0));
+    o.crop = {1, 0, 0, 4, 2, 2};  // x 1..3, z 0..1: 8 voxels of label 2, 4 of label 3
+    r = tissueFromLabelImage(img, withImage(o));
+    REQUIRE(r.tissue.numCells() == 2);
+    CHECK(cellMeasure(r.tissue, CellId(0)) == Approx(8 * 1.0));  // voxels of 0.5 x 2 x 1
+    CHECK(cellMeasure(r.tissue, CellId(1)) == Approx(4 * 1.0));
+    LabelImageOptions drop;
+    drop.drop_labels = {3};
+    r = tissueFromLabelImage(drawn({{"23"}, {"23"}}), withImage(drop));
+    REQUIRE(r.tissue.numCells() == 1);
+    CHECK(cellMeasure(r.tissue, CellId(0)) == Approx(2.0));
+    drop.min_cell_size = 5;  // label 3 (4 voxels) is merged into label 2
+    drop.drop_labels = {};
+    drop.small_cells = "merge";
+    r = tissueFromLabelImage(img, withImage(drop));
+    REQUIRE(r.tissue.numCells() == 1);
+    CHECK(cellMeasure(r.tissue, CellId(0)) == Approx(16.0));
+  }
+  SECTION("pieces kept") {
+    LabelImageOptions o;
+    o.keep_pieces = true;
+    const ImportResult r = tissueFromLabelImage(drawn({{"232"}, {"232"}}), withImage(o));
+    REQUIRE(r.tissue.numCells() == 3);
+    const auto& label = r.tissue.cellProperties().get<std::int64_t>("label");
+    CHECK(label[CellId(0)] == 2);
+    CHECK(label[CellId(1)] == 2);
+    CHECK(label[CellId(2)] == 3);
+  }
+  SECTION("a file") {
+    TempDir dir;
+    auto data = vtkSmartPointer<vtkImageData>::New();
+    data->SetDimensions(4, 2, 3);
+    const double spacing[3] = {0.5, 0.25, 2.0};
+    data->SetSpacing(spacing);
+    auto values = vtkSmartPointer<vtkUnsignedShortArray>::New();
+    values->SetNumberOfTuples(24);
+    for (vtkIdType k = 0; k < 24; ++k) values->SetTuple1(k, static_cast<double>(img.labels[k]));
+    data->GetPointData()->SetScalars(values);
+    const std::string path = dir.file("cells.mha");
+    auto writer = vtkSmartPointer<vtkMetaImageWriter>::New();
+    writer->SetFileName(path.c_str());
+    writer->SetInputData(data);
+    writer->Write();
+    const ImportResult r = importTissue(path);
+    REQUIRE(r.tissue.numCells() == 2);
+    CHECK(r.tissue.dim() == 3);
+    CHECK(cellMeasure(r.tissue, CellId(1)) == Approx(4 * 0.5 * 0.25 * 2.0));
+  }
+}
+
+TEST_CASE("3D label image errors name the file, the label and the value", "[io][label_image]") {
+  const LabelImage img = drawn({{"2233", "2233"}, {"2233", "2233"}});
+  LabelImageOptions o;
+  o.voxel_size = {1.0, 1.0};
+  CHECK_THROWS_WITH(tissueFromLabelImage(img, withImage(o)),
+                    Contains("'drawn': a 3D image of 4 x 2 x 2 voxels needs voxel_size of 3 numbers (x, y, z), got 2"));
+  o.voxel_size = {1.0, 0.0, 1.0};
+  CHECK_THROWS_WITH(tissueFromLabelImage(img, withImage(o)), Contains("'drawn': voxel_size y = 0 must be a positive"));
+  o.voxel_size = {};
+  o.crop = {0, 0, 2, 2};
+  CHECK_THROWS_WITH(tissueFromLabelImage(img, withImage(o)), Contains("needs crop of 6 numbers") && Contains("got 4"));
+  LabelImage flat = img;
+  flat.spacing = {1, 1, 0};
+  CHECK_THROWS_WITH(tissueFromLabelImage(flat, {}), Contains("'drawn': the file's voxel size in z is 0"));
+  CHECK_THROWS_WITH(tissueFromLabelImage(drawn({{"232"}, {"232"}}), {}),
+                    Contains("'drawn': label 2 is made of 2 disconnected pieces (of 2, 2 voxels; a voxel of each: "
+                             "(0, 0, 0), (2, 0, 0))"));
+  CHECK_THROWS_WITH(tissueFromLabelImage(drawn({{"333", "333", "333"}, {"333", "323", "333"},
+                                                {"333", "333", "333"}}),
+                                         {}),
+                    Contains("'drawn': the interface between label 3 and label 2") && Contains("closed surface"));
+}
+
