@@ -41,6 +41,8 @@ struct ComplexFile {
   std::string volume_noun = "volume";
   std::string face_noun = "face";
   std::vector<Index> face_element;  ///< when set, face f is a side of element face_element[f]
+  /// What each face is in the file, for the layout note (without face_element).
+  std::string face_origin = "a face of the file";
   std::string volumeRef(std::size_t v) const {
     return volume_noun + " " + std::to_string(v) + " (label " + std::to_string(volume_label[v]) + ")";
   }

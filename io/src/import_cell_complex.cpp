@@ -512,7 +512,7 @@ ImportResult importClosedVolumes(const ComplexFile& m, const std::vector<VolumeS
   auto& label = result.tissue.cellProperties().add<std::int64_t>("label", 0);
   for (std::size_t c = 0; c < order.size(); ++c) label[CellId(static_cast<Index>(c))] = m.volume_label[order[c]];
   report.notes.push_back("layout: closed " + m.volume_noun + "s, a 3D tissue (" + std::to_string(num_walls) +
-                         " walls, each " + (m.face_element.empty() ? "a face of the file" : "a side of a tetrahedron") +
+                         " walls, each " + (m.face_element.empty() ? m.face_origin : "a side of a tetrahedron") +
                          ": " + std::to_string(shared) + " between two cells, " +
                          std::to_string(num_walls - shared) + " on the boundary)");
   if (unlisted > 0)

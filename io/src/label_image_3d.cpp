@@ -957,6 +957,7 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
   m.path = img.name;
   m.volume_noun = "cell";
   m.face_noun = "wall";
+  m.face_origin = "the interface of two labels";
   std::vector<Index> new_index(n_corners, kInvalidIndex);
   for (std::size_t u = 0; u < n_corners; ++u)
     if (keep[u]) {

@@ -23,7 +23,8 @@ inline ParamValue paramValueFromPython(const ParamSpec& spec, py::handle value) 
       case ParamType::Enum:
       case ParamType::Path: return value.cast<std::string>();
       case ParamType::Vec2:
-      case ParamType::Vec3: return value.cast<std::vector<double>>();
+      case ParamType::Vec3:
+      case ParamType::Vec2or3: return value.cast<std::vector<double>>();
     }
   } catch (const py::cast_error&) {
   }

@@ -280,3 +280,32 @@ def test_random_3d_label_images_give_valid_tissues_or_a_clear_error():
             valid += 1
             assert sorted(set(labels_of(t))) <= sorted(set(np.unique(a)) - {0})
     assert valid > 0
+
+
+def write_metaimage(path, a):
+    """A [z, y, x] uint16 array as an uncompressed MetaImage file (no spacing given)."""
+    header = (f"ObjectType = Image\nNDims = 3\nDimSize = {a.shape[2]} {a.shape[1]} {a.shape[0]}\n"
+              "BinaryData = True\nBinaryDataByteOrderMSB = False\nElementType = MET_USHORT\n"
+              "ElementDataFile = LOCAL\n")
+    with open(path, "wb") as f:
+        f.write(header.encode())
+        f.write(np.ascontiguousarray(a, dtype="<u2").tobytes())
+
+
+def test_3d_image_from_yaml_takes_three_voxel_sizes(tmp_path):
+    # tissue.import.voxel_size takes [x, y, z] for a 3D image; the volumes follow it.
+    a = np.zeros((3, 2, 4), dtype=np.uint16)
+    a[:, :, 0:1] = 5
+    a[:, :, 1:4] = 7
+    write_metaimage(tmp_path / "boxes.mha", a)
+    config = (f"tissue:\n  generator: import\n  import:\n    file: {tmp_path / 'boxes.mha'}\n"
+              "    voxel_size: [0.5, 2.0, 3.0]\ntime:\n  end: 1.0\n  dt: 1.0\n")
+    sim = tessella.Simulation.from_yaml(config)
+    voxel = 0.5 * 2.0 * 3.0
+    np.testing.assert_allclose(sorted(sim.tissue.cell_measures()), [6 * voxel, 18 * voxel], rtol=1e-12)
+    # Two numbers for a 3D image: the importer's error, naming the file and the sizes.
+    with pytest.raises(Exception, match=r"boxes\.mha.*(3D|three|voxel)"):
+        tessella.Simulation.from_yaml(config.replace("[0.5, 2.0, 3.0]", "[0.5, 2.0]"))
+    # Four numbers: the schema's error at the key.
+    with pytest.raises(Exception, match=r"voxel_size.*2 or 3 numbers"):
+        tessella.Simulation.from_yaml(config.replace("[0.5, 2.0, 3.0]", "[0.5, 2.0, 3.0, 4.0]"))

@@ -17,6 +17,7 @@ const char* paramTypeName(ParamType type) {
     case ParamType::Enum: return "enum";
     case ParamType::Vec2: return "vec2";
     case ParamType::Vec3: return "vec3";
+    case ParamType::Vec2or3: return "vec2 or vec3";
     case ParamType::Path: return "path";
   }
   return "?";
@@ -159,10 +160,12 @@ ParamValue checked(const ParamSpec& spec, const ParamValue& value, const std::st
       throw fail("one of " + names);
     }
     case ParamType::Vec2:
-    case ParamType::Vec3: {
+    case ParamType::Vec3:
+    case ParamType::Vec2or3: {
       const std::size_t n = spec.type == ParamType::Vec2 ? 2 : 3;
       const auto* v = std::get_if<std::vector<double>>(&value);
-      if (!v || v->size() != n) throw fail("a list of " + std::to_string(n) + " numbers");
+      const bool sized = v && (v->size() == n || (spec.type == ParamType::Vec2or3 && v->size() == 2));
+      if (!sized) throw fail(spec.type == ParamType::Vec2or3 ? "a list of 2 or 3 numbers" : "a list of " + std::to_string(n) + " numbers");
       for (double x : *v)
         if (!std::isfinite(x)) throw fail("a list of finite numbers");
       return value;

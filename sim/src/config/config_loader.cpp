@@ -305,8 +305,12 @@ class Loader {
         throw fail(problem);
       }
       case ValueType::Vec2:
-      case ValueType::Vec3: {
-        const std::size_t n = spec.type == ValueType::Vec2 ? 2 : 3;
+      case ValueType::Vec3:
+      case ValueType::Vec2or3: {
+        const std::size_t n =
+            spec.type == ValueType::Vec2 || (spec.type == ValueType::Vec2or3 && node.IsSequence() && node.size() == 2)
+                ? 2
+                : 3;
         if (!node.IsSequence() || node.size() != n) {
           std::string got = describe(node);
           if (node.IsSequence()) got = "a sequence of " + std::to_string(node.size());

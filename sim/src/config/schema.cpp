@@ -42,6 +42,7 @@ std::string KeySpec::expectation() const {
     case ValueType::Path: return "a file path";
     case ValueType::Vec2: return "a sequence of 2 numbers, e.g. [0, 1]";
     case ValueType::Vec3: return "a sequence of 3 numbers, e.g. [0, 1, 2]";
+    case ValueType::Vec2or3: return "a sequence of 2 or 3 numbers, e.g. [0.5, 0.5] or [0.5, 0.5, 1]";
     case ValueType::Enum: {
       s = "one of ";
       for (std::size_t i = 0; i < choices.size(); ++i) s += (i ? ", " : "") + choices[i];

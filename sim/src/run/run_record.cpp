@@ -27,6 +27,7 @@ void emitValue(YAML::Emitter& out, const KeySpec& spec, const ConfigValue& value
     case ValueType::Path: out << YAML::DoubleQuoted << std::get<std::string>(value); break;
     case ValueType::Vec2:
     case ValueType::Vec3:
+    case ValueType::Vec2or3:
       out << YAML::Flow << YAML::BeginSeq;
       for (double x : std::get<std::vector<double>>(value)) out << formatValue(x);
       out << YAML::EndSeq;

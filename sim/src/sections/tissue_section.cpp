@@ -118,9 +118,9 @@ const Registry<FileSourceReader>& tissueFileSources() {
                    "either side of each face (a 3D tissue). Empty: the first of `label`, `cell_label`, `cell_id`, "
                    "else the pair `label_front`, `label_back`.")
              .byDefault(std::string("")),
-         ParamSpec("voxel_size", ParamType::Vec2,
-                   "Label images: the pixel size [x, y], overriding the file's (docs/import.md, \"Label images\"); "
-                   "a 3D image read here takes its voxel size from the file.")
+         ParamSpec("voxel_size", ParamType::Vec2or3,
+                   "Label images: the pixel size [x, y] of a 2D image or the voxel size [x, y, z] of a 3D one, "
+                   "overriding the file's (docs/import.md, \"Label images\").")
              .whenAbsent("the pixel size the file gives (1 where it gives none)"),
          ParamSpec("background", ParamType::String,
                    "Label images: the labels that are no cell, integers separated by commas (PlantSeg and MARS "

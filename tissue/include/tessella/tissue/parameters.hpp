@@ -27,7 +27,8 @@ namespace tessella {
 
 // In a scope of its own: the enumerator Vec3 would shadow the type tessella::Vec3.
 namespace param_types {
-enum class ParamType { Bool, Int, Float, String, Enum, Vec2, Vec3, Path };
+/// Vec2or3: a list of 2 or 3 numbers (a pixel or voxel size, as the image is 2D or 3D).
+enum class ParamType { Bool, Int, Float, String, Enum, Vec2, Vec3, Vec2or3, Path };
 }
 using param_types::ParamType;
 
