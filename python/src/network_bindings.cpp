@@ -3,13 +3,16 @@
 // Cell-level regulatory networks from Python (networks/): the model as code
 // (species, parameters, reactions, transport, PIN), its graph (from a tissue
 // or from arrays), and the system: right-hand side, Jacobian, PIN, polarity,
-// and integration by CVODE. States are AMOUNTS per cell and species, laid
+// and integration by CVODE; primordium detection on a dome (primordia.hpp). States are AMOUNTS per cell and species, laid
 // out cell by cell: y[cell * num_species + species].
+#include <array>
+
 #include "bindings.hpp"
 #include "tessella/networks/initial_values.hpp"
 #include "tessella/networks/network_graph.hpp"
 #include "tessella/networks/network_integrator.hpp"
 #include "tessella/networks/network_system.hpp"
+#include "tessella/networks/primordia.hpp"
 
 namespace tessella::python {
 
@@ -222,6 +225,41 @@ The ODE system of a model on a graph: dy/dt = F(t, y) for the AMOUNTS y[cell * n
            py::arg("absolute_tolerance") = 1e-9, py::arg("max_steps") = 100000,
            "The amounts at t1 from y at t0 (a new list); tessella.Error naming the time, CVODE's flag, the "
            "species and the cell when CVODE fails.");
+
+  using Point = std::array<double, 3>;
+  auto vec = [](const Point& p) { return Vec3(p[0], p[1], p[2]); };
+  m.def("axial_position",
+        [vec](const Point& point, const Point& apex, const Point& axis) {
+          const AxialPosition a = axialPosition(vec(point), vec(apex), vec(axis));
+          return py::make_tuple(a.angle_deg, a.radius, a.distance);
+        },
+        py::arg("point"), py::arg("apex") = Point{0, 0, 0}, py::arg("axis") = Point{0, 0, 1},
+        "(angle_deg in [0, 360) counterclockwise about the axis from the projected x axis, distance from the "
+        "axis, distance from the apex).");
+  m.def("divergence_deg", &divergenceDeg, py::arg("previous_angle_deg"), py::arg("angle_deg"),
+        "(angle - previous) reduced to [0, 360).");
+  m.def("find_primordia",
+        [vec](const NetworkGraph& graph, const std::vector<double>& concentration, double threshold,
+              double min_radius, double max_radius, double min_separation, const Point& apex, const Point& axis,
+              const std::vector<Point>& existing) {
+          PrimordiumOptions o;
+          o.threshold = threshold;
+          o.min_radius = min_radius;
+          o.max_radius = max_radius;
+          o.min_separation = min_separation;
+          o.apex = vec(apex);
+          o.axis = vec(axis);
+          o.validate();
+          std::vector<Vec3> e;
+          for (const Point& p : existing) e.push_back(vec(p));
+          return findPrimordia(graph, concentration, o, e);
+        },
+        py::arg("graph"), py::arg("concentration"), py::arg("threshold"), py::arg("min_radius") = 0.0,
+        py::arg("max_radius") = 1e300, py::arg("min_separation") = 0.0, py::arg("apex") = Point{0, 0, 0},
+        py::arg("axis") = Point{0, 0, 1}, py::arg("existing") = std::vector<Point>{},
+        "Cells (graph indices) that start primordia: strict local maxima above the threshold, at a distance from "
+        "the apex in [min_radius, max_radius], at least min_separation from the existing primordia and from "
+        "each other (taken by decreasing concentration). docs/networks.md.");
 }
 
 }  // namespace tessella::python

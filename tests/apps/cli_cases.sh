@@ -258,10 +258,11 @@ case "$case_name" in
     # A run stopped half way (killed outright in 2D, SIGTERM in 3D) and resumed with --resume ends with the
     # directory of the uninterrupted run: the same .pvd, the same stats.csv rows, every snapshot byte for
     # byte (positions, properties, random stream), and no temporary left. With transient diffusion, the
-    # solver fields' state beside each snapshot and the fields series are identical too.
+    # solver fields' state beside each snapshot and the fields series are identical too; with primordium
+    # detection, primordia.csv.
     set -m
     for spec in "voronoi_growth.yaml KILL time.end=20" "box_growth_3d.yaml TERM time.end=8" \
-                "morphogen_gradient_2d.yaml KILL time.end=10"; do
+                "morphogen_gradient_2d.yaml KILL time.end=10" "phyllotaxis_dome.yaml KILL time.end=6"; do
       read -r config sig end <<<"$spec"
       whole="$tmp/whole_${config%.yaml}"; part="$tmp/part_${config%.yaml}"
       "$tessella" run "$src/configs/$config" --out "$whole" -q --set output.every=1 --set "$end" \
@@ -285,6 +286,9 @@ case "$case_name" in
       grep -Eq "^resuming from .*tissue_[0-9]+\.vtu \(step [0-9]+, t = " "$tmp/stderr" || fail "$config: no resume line"
       cmp "$whole/tissue.pvd" "$part/tissue.pvd" || fail "$config: the .pvd differs"
       cmp "$whole/stats.csv" "$part/stats.csv" || fail "$config: stats.csv differs"
+      if [ -e "$whole/primordia.csv" ]; then  # network.primordia: the records come back from the run state
+        cmp "$whole/primordia.csv" "$part/primordia.csv" || fail "$config: primordia.csv differs"
+      fi
       diff <(grep -v 'directory:' "$whole/run.yaml") <(grep -v 'directory:' "$part/run.yaml") \
         || fail "$config: run.yaml differs (beyond output.directory)"
       n=0

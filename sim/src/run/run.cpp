@@ -12,6 +12,7 @@
 #include "tessella/io/vtu.hpp"
 
 #include "tessella/sim/run/field_output.hpp"
+#include "tessella/sim/run/primordia_output.hpp"
 #include "tessella/sim/run/run_record.hpp"
 #include "tessella/tissue/format.hpp"
 #include "tessella/sim/run/statistics_output.hpp"
@@ -178,6 +179,7 @@ void PreparedRun::execute() {
   field_output_ = attachFieldOutput(simulation_, directory_, config_.output, resume_after_);
   statistics_ =
       attachStatisticsOutput(simulation_, directory_, solverFields(config_), config_.output.every, resume_after_);
+  attachPrimordiaOutput(simulation_, directory_);
   simulation_.run();
 }
 

@@ -108,6 +108,37 @@ void declareNetworkSection(Schema& s) {
   s.key("network.pin.saturation", ValueType::Float, "kappa: added to the denominator, in units of wall measure.")
       .byDefault(0.0)
       .atLeast(0);
+  s.section("network.primordia",
+            "Primordium detection after each solve: a cell whose concentration of `species` is above `threshold` "
+            "and above every neighbour's, at a distance from the apex in [min_radius, max_radius] and at "
+            "least min_separation from every existing primordium, starts a new one: its id goes to the int cell "
+            "property `primordium` (copied to daughters) and a row to <output directory>/primordia.csv (time, "
+            "lineage id, position, angle about the axis, distances from the axis and the apex, divergence from the "
+            "previous one). "
+            "docs/networks.md, \"Phyllotaxis on a growing dome\".")
+      .activeWhen(on.key, on.values);
+  s.key("network.primordia.species", ValueType::String, "The species whose peaks are primordia (e.g. auxin).")
+      .whenAbsent("no primordium detection");
+  s.key("network.primordia.threshold", ValueType::Float,
+        "Concentration a peak must exceed; required with `species`.")
+      .whenAbsent("required with species");
+  s.key("network.primordia.min_radius", ValueType::Float,
+        "Inner radius of the peripheral annulus: straight-line distance from the apex (not along the "
+        "surface, not from the axis: cells that flowed past the dome's base come closer to the axis again).")
+      .byDefault(0.0)
+      .atLeast(0);
+  s.key("network.primordia.max_radius", ValueType::Float, "Outer radius of the peripheral annulus.")
+      .whenAbsent("no outer limit");
+  s.key("network.primordia.min_separation", ValueType::Float,
+        "Least distance (straight line) of a new primordium's cell from every existing primordium, whose "
+        "position is the mean centroid of the cells carrying its id.")
+      .byDefault(0.0)
+      .atLeast(0);
+  s.key("network.primordia.apex", ValueType::Vec3, "A point on the dome's axis (its summit).")
+      .byDefault(std::vector<double>{0, 0, 0});
+  s.key("network.primordia.axis", ValueType::Vec3,
+        "The dome's axis; angles are counterclockwise about it from the x axis projected on its normal plane.")
+      .byDefault(std::vector<double>{0, 0, 1});
 }
 
 NetworkSpec readNetworkSection(const Config& c, std::uint64_t noise_seed) {
@@ -161,6 +192,26 @@ NetworkSpec readNetworkSection(const Config& c, std::uint64_t noise_seed) {
     m.pin.rate = c.getFloat("network.pin.rate");
     m.pin.total = c.getFloat("network.pin.total");
     m.pin.saturation = c.getFloat("network.pin.saturation");
+  }
+  if (c.has("network.primordia.species")) {
+    PrimordiaSpec& pr = n.primordia;
+    pr.species = c.getString("network.primordia.species");
+    if (m.speciesIndex(pr.species) < 0) throw c.errorAt("network.primordia.species", "'" + pr.species +
+                                                        "' is not a species of network.species");
+    if (!c.has("network.primordia.threshold"))
+      throw c.errorAt("network.primordia.species", "primordium detection needs network.primordia.threshold");
+    networks::PrimordiumOptions& o = pr.options;
+    o.threshold = c.getFloat("network.primordia.threshold");
+    o.min_radius = c.getFloat("network.primordia.min_radius");
+    if (c.has("network.primordia.max_radius")) o.max_radius = c.getFloat("network.primordia.max_radius");
+    o.min_separation = c.getFloat("network.primordia.min_separation");
+    o.apex = c.getVec("network.primordia.apex");
+    o.axis = c.getVec("network.primordia.axis");
+    try {
+      o.validate();
+    } catch (const InputError& e) {
+      throw c.errorAt(o.axis.norm() > 0 ? "network.primordia.max_radius" : "network.primordia.axis", e.what());
+    }
   }
   // Names: a parameter or property that clashes with a species or a reserved name.
   try {

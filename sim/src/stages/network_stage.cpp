@@ -2,12 +2,18 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tessella/sim/stages/network_stage.hpp"
 
+#include <cmath>
+#include <cstdlib>
+#include <limits>
 #include <random>
+#include <sstream>
 
 #include "coupling_cells.hpp"
 #include "tessella/networks/initial_values.hpp"
 #include "tessella/networks/network_graph.hpp"
 #include "tessella/networks/network_system.hpp"
+#include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::sim {
 
@@ -26,6 +32,113 @@ NetworkStage::NetworkStage(NetworkSpec spec) : spec_(std::move(spec)), schedule_
     }
   }
   if (spec_.every < 1) throw InputError("network: every must be >= 1");
+  if (spec_.primordia.enabled()) {
+    if (spec_.model.speciesIndex(spec_.primordia.species) < 0)
+      throw InputError("network: primordia species '" + spec_.primordia.species + "' is not a species");
+    spec_.primordia.options.validate();
+  }
+}
+
+namespace {
+const std::string kPrimordiaKey = "network.primordia";
+
+PropertyColumn<int>& primordiumColumn(Tissue& tissue) {
+  PropertyStore& store = tissue.cellProperties();
+  if (const PropertyColumnBase* c = store.find(kPrimordiumProperty); c && c->type() != std::type_index(typeid(int)))
+    throw InputError(std::string("cell property '") + kPrimordiumProperty + "' exists and does not hold ints");
+  if (!store.has(kPrimordiumProperty)) store.add<int>(kPrimordiumProperty, 0, DivisionPolicy::Copy);
+  return store.get<int>(kPrimordiumProperty);
+}
+}  // namespace
+
+void NetworkStage::detectPrimordia(Tissue& tissue, const std::vector<CellId>& cells,
+                                   const networks::NetworkSystem& system, const std::vector<double>& y, double time) {
+  const networks::NetworkGraph& graph = system.graph();
+  const std::size_t S = system.numSpecies();
+  const auto s = static_cast<std::size_t>(spec_.model.speciesIndex(spec_.primordia.species));
+  std::vector<double> c(cells.size());
+  for (std::size_t k = 0; k < cells.size(); ++k) c[k] = y[k * S + s] / graph.measure[k];
+  auto& id = primordiumColumn(tissue);
+  // Each existing primordium is where its cells are now: the mean centroid of
+  // the cells carrying its id (the first cell and its descendants).
+  std::vector<Vec3> sum(primordia_.size(), Vec3::Zero());
+  std::vector<int> count(primordia_.size(), 0);
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    const int p = id[cells[k]];
+    if (p < 1 || static_cast<std::size_t>(p) > primordia_.size()) continue;
+    sum[static_cast<std::size_t>(p) - 1] += graph.centroid[k];
+    ++count[static_cast<std::size_t>(p) - 1];
+  }
+  std::vector<Vec3> existing;
+  for (std::size_t p = 0; p < sum.size(); ++p)
+    if (count[p] > 0) existing.push_back(sum[p] / count[p]);
+  const networks::PrimordiumOptions& o = spec_.primordia.options;
+  for (int k : networks::findPrimordia(graph, c, o, existing)) {
+    const auto u = static_cast<std::size_t>(k);
+    PrimordiumRecord r;
+    r.id = static_cast<int>(primordia_.size()) + 1;
+    r.time = time;
+    r.lineage = tissue.lineageId(cells[u]);
+    r.position = graph.centroid[u];
+    const networks::AxialPosition a = networks::axialPosition(r.position, o.apex, o.axis);
+    r.angle_deg = a.angle_deg;
+    r.radius = a.radius;
+    r.distance = a.distance;
+    r.divergence_deg = primordia_.empty() ? std::numeric_limits<double>::quiet_NaN()
+                                          : networks::divergenceDeg(primordia_.back().angle_deg, a.angle_deg);
+    id[cells[u]] = r.id;
+    primordia_.push_back(r);
+  }
+}
+
+void NetworkStage::saveState(const Tissue& /*tissue*/, const std::string& /*snapshot_path*/,
+                             const io::VtuOptions& /*options*/, io::RunState& state) const {
+  if (!spec_.primordia.enabled()) return;
+  std::string text;
+  for (const PrimordiumRecord& r : primordia_) {
+    if (!text.empty()) text += ";";
+    text += std::to_string(r.id) + " " + formatNumber(r.time) + " " + std::to_string(r.lineage) + " " +
+            formatNumber(r.position.x()) + " " + formatNumber(r.position.y()) + " " + formatNumber(r.position.z()) +
+            " " + formatNumber(r.angle_deg) + " " + formatNumber(r.radius) + " " + formatNumber(r.distance) + " " +
+            (std::isnan(r.divergence_deg) ? std::string("nan") : formatNumber(r.divergence_deg));
+  }
+  state[kPrimordiaKey] = text;
+}
+
+void NetworkStage::continueFrom(const std::string& /*snapshot_path*/, const io::RunState& state) {
+  primordia_.clear();
+  if (!spec_.primordia.enabled()) return;
+  const auto it = state.find(kPrimordiaKey);
+  if (it == state.end()) return;  // a snapshot written without detection: start afresh
+  std::stringstream all(it->second);
+  std::string item;
+  while (std::getline(all, item, ';')) {
+    std::stringstream in(item);
+    std::string f[10];
+    std::size_t n = 0;
+    while (n < 10 && in >> f[n]) ++n;
+    std::string extra;
+    auto number = [&](const std::string& t) {
+      char* end = nullptr;
+      const double v = std::strtod(t.c_str(), &end);
+      if (t.empty() || *end != '\0') throw InputError("run state " + kPrimordiaKey + ": '" + t + "' in '" + item +
+                                                      "' is not a number");
+      return v;
+    };
+    if (n != 10 || (in >> extra))
+      throw InputError("run state " + kPrimordiaKey + ": '" + item + "' is not 10 values (id time lineage x y z "
+                       "angle radius distance divergence)");
+    PrimordiumRecord r;
+    r.id = static_cast<int>(number(f[0]));
+    r.time = number(f[1]);
+    r.lineage = static_cast<std::int64_t>(number(f[2]));
+    r.position = Vec3(number(f[3]), number(f[4]), number(f[5]));
+    r.angle_deg = number(f[6]);
+    r.radius = number(f[7]);
+    r.distance = number(f[8]);
+    r.divergence_deg = f[9] == "nan" ? std::numeric_limits<double>::quiet_NaN() : number(f[9]);
+    primordia_.push_back(r);
+  }
 }
 
 std::vector<std::string> NetworkStage::cellPropertiesWritten() const {
@@ -91,6 +204,7 @@ void NetworkStage::prepare(Tissue& tissue, double /*time*/) {
   }
   networks::NetworkSystem system(spec_.model, std::move(graph));
   writeOutputs(tissue, cells, system, y);
+  if (spec_.primordia.enabled()) primordiumColumn(tissue);  // in the first snapshot already
 }
 
 void NetworkStage::apply(Tissue& tissue, const StepContext& context) {
@@ -120,6 +234,7 @@ void NetworkStage::apply(Tissue& tissue, const StepContext& context) {
     stats_.error_test_failures += st.error_test_failures;
   }
   writeOutputs(tissue, cells, system, y);
+  if (spec_.primordia.enabled() && elapsed > 0) detectPrimordia(tissue, cells, system, y, context.end_time);
   schedule_.solved(context);
 }
 

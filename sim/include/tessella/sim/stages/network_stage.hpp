@@ -8,7 +8,11 @@
 // division, so divisions conserve it) and its concentration (<species>,
 // amount / measure after each solve; growth dilutes it). With PIN transport
 // the polarity of each cell (sum of PIN times outward wall normal) is the
-// Vec3 cell property <species>_polarity. docs/networks.md.
+// Vec3 cell property <species>_polarity. With primordium detection
+// (NetworkSpec::primordia) each new primordium's cell gets its id in the int
+// cell property `primordium` (0: none; copied to daughters) and a record
+// (time, lineage id, position, angle, radius, divergence) that the snapshot's
+// run state carries across restarts. docs/networks.md.
 
 #include <cstdint>
 #include <string>
@@ -17,10 +21,33 @@
 #include "tessella/networks/network_integrator.hpp"
 #include "tessella/networks/network_model.hpp"
 #include "tessella/networks/network_system.hpp"
+#include "tessella/networks/primordia.hpp"
 #include "tessella/sim/stages/coupling_stages.hpp"
 #include "tessella/sim/stages/stage.hpp"
 
 namespace tessella::sim {
+
+/// Primordium detection after each solve (networks/primordia.hpp).
+struct PrimordiaSpec {
+  std::string species;  ///< empty: off
+  networks::PrimordiumOptions options;
+  bool enabled() const { return !species.empty(); }
+};
+
+/// One primordium as it started.
+struct PrimordiumRecord {
+  int id = 0;                 ///< 1, 2, ... in order of appearance (the cell property's value)
+  double time = 0.0;          ///< end of the solve that found it
+  std::int64_t lineage = 0;   ///< the cell's lineage id
+  Vec3 position = Vec3::Zero();  ///< the cell's centroid
+  double angle_deg = 0.0;     ///< about the dome's axis, [0, 360)
+  double radius = 0.0;        ///< distance from the axis
+  double distance = 0.0;      ///< straight-line distance from the apex
+  double divergence_deg = 0.0;  ///< from the previous primordium, [0, 360); NaN for the first
+};
+
+/// The cell property holding each cell's primordium id.
+inline constexpr const char* kPrimordiumProperty = "primordium";
 
 struct NetworkSpec {
   networks::NetworkModel model;  ///< no species: the stage is off
@@ -34,6 +61,7 @@ struct NetworkSpec {
   networks::IntegratorOptions integrator;
   /// The Newton matrix's Jacobian (networks::JacobianKind).
   networks::JacobianKind jacobian = networks::JacobianKind::Exact;
+  PrimordiaSpec primordia;
   std::size_t every = 1;  ///< integrate every `every` steps, over the time since the last solve
 
   bool enabled() const { return !model.species.empty(); }
@@ -53,14 +81,24 @@ class NetworkStage final : public Stage {
   std::size_t solves() const { return schedule_.solves(); }
   const networks::IntegratorStatistics& statistics() const { return stats_; }
   const NetworkSpec& spec() const { return spec_; }
+  /// The primordia found so far, in order of appearance.
+  const std::vector<PrimordiumRecord>& primordia() const { return primordia_; }
+  /// The primordia records under "network.primordia" (exact numbers).
+  void saveState(const Tissue& tissue, const std::string& snapshot_path, const io::VtuOptions& options,
+                 io::RunState& state) const override;
+  /// Restores the records (InputError naming the key and the value when damaged).
+  void continueFrom(const std::string& snapshot_path, const io::RunState& state) override;
 
  private:
   void writeOutputs(Tissue& tissue, const std::vector<CellId>& cells, networks::NetworkSystem& system,
                     const std::vector<double>& y);
+  void detectPrimordia(Tissue& tissue, const std::vector<CellId>& cells, const networks::NetworkSystem& system,
+                       const std::vector<double>& y, double time);
 
   NetworkSpec spec_;
   SolveSchedule schedule_;
   networks::IntegratorStatistics stats_;
+  std::vector<PrimordiumRecord> primordia_;
 };
 
 }  // namespace tessella::sim
