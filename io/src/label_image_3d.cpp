@@ -651,9 +651,9 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
     corner_set.insert(e / 3 + g.stride[e % 3]);
   }
   corner_set.finish();
-  for (std::size_t w = 0; w < corner_set.bits.size(); ++w)
-    for (std::uint64_t word = corner_set.bits[w]; word != 0; word &= word - 1)
-      corners.push_back(w * 64 + static_cast<std::uint64_t>(std::countr_zero(word)));
+  for (std::size_t wi = 0; wi < corner_set.bits.size(); ++wi)
+    for (std::uint64_t word = corner_set.bits[wi]; word != 0; word &= word - 1)
+      corners.push_back(wi * 64 + static_cast<std::uint64_t>(std::countr_zero(word)));
   auto cornerId = [&](std::uint64_t c) { return static_cast<std::int32_t>(corner_set.rank(c)); };
   const std::size_t n_corners = corners.size();
   std::vector<std::array<std::int32_t, 6>> incident(n_corners);  // junction edges at each corner
@@ -888,11 +888,11 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       // Pairs found through a grid of buckets; a pair is tested in the bucket holding the low corner
       // of the overlap of their bounding boxes only.
       std::vector<std::pair<std::uint64_t, std::int32_t>> buckets;
-      const double size = 4 * std::max({s[0], s[1], s[2]});
+      const double bucket = 4 * std::max({s[0], s[1], s[2]});
       std::vector<std::array<Vec3, 2>> box(wall_tris.size());
       auto cellOf = [&](const Vec3& x) {
         std::array<std::int64_t, 3> b;
-        for (int a = 0; a < 3; ++a) b[a] = static_cast<std::int64_t>(std::floor(x[a] / size));
+        for (int a = 0; a < 3; ++a) b[a] = static_cast<std::int64_t>(std::floor(x[a] / bucket));
         return b;
       };
       auto key = [](const std::array<std::int64_t, 3>& b) {
@@ -910,7 +910,7 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
               buckets.emplace_back(key({x, y, z}), static_cast<std::int32_t>(t));
       }
       std::sort(buckets.begin(), buckets.end());
-      const double slack = 1e-9 * size;
+      const double slack = 1e-9 * bucket;
       for (std::size_t i = 0; i < buckets.size();) {
         std::size_t j = i;
         while (j < buckets.size() && buckets[j].first == buckets[i].first) ++j;

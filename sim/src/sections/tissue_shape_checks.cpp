@@ -67,11 +67,11 @@ void checkSnapshotAgainstGenerators(const Config& c, const TissueShape& shape) {
     if (!sectionGiven(c, section)) continue;
     // The shape its keys describe (defaults for the keys not given).
     const GeneratorSpec spec = describedGenerator(c, g.name);
-    const GeneratedShape shape = spec.shape();
-    described.push_back({shape.decided_by.empty() ? section
-                                                  : section + " (" + shape.decided_by + ": " +
-                                                        formatValue(spec.params.get(shape.decided_by)) + ")",
-                         shape.dim});
+    const GeneratedShape generated = spec.shape();
+    described.push_back({generated.decided_by.empty() ? section
+                                                      : section + " (" + generated.decided_by + ": " +
+                                                            formatValue(spec.params.get(generated.decided_by)) + ")",
+                         generated.dim});
   }
   std::set<int> dims;
   for (const Described& d : described) dims.insert(d.dim);
