@@ -6,8 +6,12 @@
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
 #include <sunlinsol/sunlinsol_klu.h>
+#include <sunlinsol/sunlinsol_spgmr.h>
+
+#include <Eigen/Dense>
 #include <sunmatrix/sunmatrix_sparse.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <exception>
@@ -16,6 +20,36 @@
 #include "tessella/tissue/format.hpp"
 
 namespace tessella::networks {
+
+IntegratorStatistics& IntegratorStatistics::operator+=(const IntegratorStatistics& o) {
+  steps += o.steps;
+  rhs_evaluations += o.rhs_evaluations;
+  jacobian_evaluations += o.jacobian_evaluations;
+  nonlinear_iterations += o.nonlinear_iterations;
+  error_test_failures += o.error_test_failures;
+  linear_setups += o.linear_setups;
+  linear_solves += o.linear_solves;
+  linear_iterations += o.linear_iterations;
+  rhs_seconds += o.rhs_seconds;
+  jacobian_seconds += o.jacobian_seconds;
+  setup_seconds += o.setup_seconds;
+  solve_seconds += o.solve_seconds;
+  return *this;
+}
+
+const EnumTable<LinearSolver>& linearSolvers() {
+  static const EnumTable<LinearSolver> table(
+      "linear solver",
+      {{"klu", LinearSolver::Klu, "Sparse LU (KLU) of the Newton matrix: exact solves."},
+       {"gmres", LinearSolver::Gmres,
+        "GMRES with a block-Jacobi preconditioner per cell: much cheaper per solve on large tissues."}});
+  return table;
+}
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point a) { return std::chrono::duration<double>(Clock::now() - a).count(); }
+}  // namespace
 
 struct NetworkIntegrator::Impl {
   SUNContext context = nullptr;
@@ -27,6 +61,16 @@ struct NetworkIntegrator::Impl {
   CsrMatrix J;
   std::exception_ptr failure;  // an exception thrown inside a callback
   std::string last_message;    // CVODE's last error message
+  std::size_t species = 0;     // S: the size of a preconditioner block
+  std::vector<std::size_t> conserved;  // GMRES: the species without reactions (their totals are kept)
+  std::vector<double> block_inverse;  // GMRES: per cell, the S x S inverse of I - gamma J's block (column-major)
+  bool timers = false;
+  IntegratorStatistics* stats = nullptr;  // where the timers add
+  // The linear solver's own setup and solve, wrapped by timedSetup / timedSolve (timers, conservation).
+  int (*inner_setup)(SUNLinearSolver, SUNMatrix) = nullptr;
+  int (*inner_solve)(SUNLinearSolver, SUNMatrix, N_Vector, N_Vector, realtype) = nullptr;
+  // The integrator whose linear solver runs (the wrappers receive only the solver).
+  static thread_local Impl* active;
 
   ~Impl() {
     if (cvode) CVodeFree(&cvode);
@@ -36,8 +80,108 @@ struct NetworkIntegrator::Impl {
     if (context) SUNContext_Free(&context);
   }
 
+  static int timedSetup(SUNLinearSolver S, SUNMatrix A) {
+    Impl* self = active;
+    const auto a = Clock::now();
+    const double jacobian_before = self->stats->jacobian_seconds;  // GMRES' setup evaluates the Jacobian
+    const int flag = self->inner_setup(S, A);
+    self->stats->setup_seconds += since(a) - (self->stats->jacobian_seconds - jacobian_before);
+    return flag;
+  }
+
+  // GMRES: J v with the Jacobian of the last preconditioner setup.
+  static int jtimes(N_Vector v, N_Vector Jv, realtype, N_Vector, N_Vector, void* data, N_Vector) {
+    const CsrMatrix& J = static_cast<Impl*>(data)->J;
+    const double* x = N_VGetArrayPointer_Serial(v);
+    double* out = N_VGetArrayPointer_Serial(Jv);
+    for (std::size_t r = 0; r < J.rows; ++r) {
+      double sum = 0.0;
+      for (std::size_t k = J.row_start[r]; k < J.row_start[r + 1]; ++k) sum += J.value[k] * x[J.column[k]];
+      out[r] = sum;
+    }
+    return 0;
+  }
+
+  // GMRES' preconditioner setup: a new Jacobian unless CVODE says the last is good (jok), then per cell
+  // the inverse of the species block of I - gamma J.
+  static int psetup(realtype t, N_Vector y, N_Vector fy, booleantype jok, booleantype* jcur, realtype gamma,
+                    void* data) {
+    auto* self = static_cast<Impl*>(data);
+    if (!jok) {
+      if (jac(t, y, fy, nullptr, data, nullptr, nullptr, nullptr) != 0) return -1;
+      ++self->stats->jacobian_evaluations;  // CVodeGetNumJacEvals counts matrix-based solvers' only
+      *jcur = SUNTRUE;
+    } else {
+      *jcur = SUNFALSE;
+    }
+    const std::size_t S = self->species, n = self->J.rows / S;
+    Eigen::MatrixXd block(S, S);
+    for (std::size_t c = 0; c < n; ++c) {
+      for (std::size_t a = 0; a < S; ++a)
+        for (std::size_t b = 0; b < S; ++b)
+          block(a, b) = (a == b ? 1.0 : 0.0) - gamma * self->J.at(c * S + a, c * S + b);
+      Eigen::PartialPivLU<Eigen::MatrixXd> lu(block);
+      if (!(std::abs(lu.determinant()) > 0)) return 1;  // recoverable: CVODE retries with a smaller step
+      Eigen::Map<Eigen::MatrixXd>(&self->block_inverse[c * S * S], static_cast<Eigen::Index>(S),
+                                  static_cast<Eigen::Index>(S)) = lu.inverse();
+    }
+    return 0;
+  }
+
+  static int psolve(realtype, N_Vector, N_Vector, N_Vector r, N_Vector z, realtype, realtype, int, void* data) {
+    auto* self = static_cast<Impl*>(data);
+    const std::size_t S = self->species, n = self->J.rows / S;
+    const double* in = N_VGetArrayPointer_Serial(r);
+    double* out = N_VGetArrayPointer_Serial(z);
+    for (std::size_t c = 0; c < n; ++c) {
+      const double* M = &self->block_inverse[c * S * S];
+      for (std::size_t a = 0; a < S; ++a) {
+        double sum = 0.0;
+        for (std::size_t b = 0; b < S; ++b) sum += M[b * S + a] * in[c * S + b];
+        out[c * S + a] = sum;
+      }
+    }
+    return 0;
+  }
+  static int timedSolve(SUNLinearSolver S, SUNMatrix A, N_Vector x, N_Vector b, realtype tol) {
+    Impl* self = active;
+    const auto a = self->timers ? Clock::now() : Clock::time_point{};
+    const int flag = self->inner_solve(S, A, x, b, tol);
+    if (flag == 0 && !self->conserved.empty()) self->conserve(x, b);
+    if (self->timers) {
+      self->stats->solve_seconds += since(a);
+      ++self->stats->linear_solves;
+    }
+    return flag;
+  }
+
+  // GMRES: for a species without reactions, the columns of I - gamma J sum to one over its rows (transport
+  // moves amounts), so an exact solve x of (I - gamma J) x = b has sum x = sum b over the cells: the Newton
+  // iteration keeps the total amount. GMRES' approximate x does not; adding the missing amount evenly to
+  // every cell restores the sum (a change within the linear solver's tolerance).
+  void conserve(N_Vector xv, N_Vector bv) const {
+    const double* bb = N_VGetArrayPointer_Serial(bv);
+    double* xx = N_VGetArrayPointer_Serial(xv);
+    const std::size_t S = species, n = J.rows / S;
+    for (std::size_t s : conserved) {
+      double missing = 0.0;
+      for (std::size_t c = 0; c < n; ++c) missing += bb[c * S + s] - xx[c * S + s];
+      const double each = missing / static_cast<double>(n);
+      for (std::size_t c = 0; c < n; ++c) xx[c * S + s] += each;
+    }
+  }
+
   static int rhs(realtype t, N_Vector y, N_Vector ydot, void* data) {
     auto* self = static_cast<Impl*>(data);
+    const auto start = self->timers ? Clock::now() : Clock::time_point{};
+    struct Timer {
+      Impl* self;
+      Clock::time_point start;
+      double IntegratorStatistics::*field;
+      ~Timer() {
+        if (self->timers) self->stats->*field += since(start);
+      }
+    } timer{self, start, &IntegratorStatistics::rhs_seconds};
     try {
       const auto n = static_cast<std::size_t>(N_VGetLength_Serial(y));
       self->system->rhs(t, std::span<const double>(N_VGetArrayPointer_Serial(y), n),
@@ -51,9 +195,18 @@ struct NetworkIntegrator::Impl {
 
   static int jac(realtype t, N_Vector y, N_Vector /*fy*/, SUNMatrix A, void* data, N_Vector, N_Vector, N_Vector) {
     auto* self = static_cast<Impl*>(data);
+    const auto start = self->timers ? Clock::now() : Clock::time_point{};
+    struct Timer {
+      Impl* self;
+      Clock::time_point start;
+      ~Timer() {
+        if (self->timers) self->stats->jacobian_seconds += since(start);
+      }
+    } timer{self, start};
     try {
       const auto n = static_cast<std::size_t>(N_VGetLength_Serial(y));
       self->system->jacobian(t, std::span<const double>(N_VGetArrayPointer_Serial(y), n), self->J);
+      if (!A) return 0;  // GMRES keeps the CsrMatrix only
       const CsrMatrix& J = self->J;
       sunindextype* rowptr = SUNSparseMatrix_IndexPointers(A);
       sunindextype* colidx = SUNSparseMatrix_IndexValues(A);
@@ -74,6 +227,8 @@ struct NetworkIntegrator::Impl {
     static_cast<Impl*>(data)->last_message = message ? message : "";
   }
 };
+
+thread_local NetworkIntegrator::Impl* NetworkIntegrator::Impl::active = nullptr;
 
 namespace {
 std::string flagName(int flag) {
@@ -98,23 +253,48 @@ NetworkIntegrator::NetworkIntegrator(NetworkSystem& system, IntegratorOptions op
   positive(options_.relative_tolerance, "relative_tolerance");
   positive(options_.absolute_tolerance, "absolute_tolerance");
   if (options_.max_steps < 1) throw InputError("network integrator: max_steps must be >= 1");
+  if (options_.setup_frequency < 0)
+    throw InputError("network integrator: setup_frequency " + std::to_string(options_.setup_frequency) +
+                     " must be >= 0");
+  if (options_.jacobian_frequency < 0)
+    throw InputError("network integrator: jacobian_frequency " + std::to_string(options_.jacobian_frequency) +
+                     " must be >= 0");
   if (!(std::isfinite(options_.max_step) && options_.max_step >= 0.0))
     throw InputError("network integrator: max_step " + formatNumber(options_.max_step) + " must be >= 0");
   if (system_.size() == 0) throw InputError("network integrator: the system has no cells");
   Impl& m = *impl_;
   m.system = &system_;
+  m.timers = options_.timers;
+  m.stats = &stats_;
   check(SUNContext_Create(nullptr, &m.context), "SUNContext_Create");
   const auto n = static_cast<sunindextype>(system_.size());
   m.y = N_VNew_Serial(n, m.context);
   if (!m.y) throw std::runtime_error("network integrator: N_VNew_Serial failed");
   m.J = system_.pattern();
-  m.A = SUNSparseMatrix(n, n, static_cast<sunindextype>(std::max<std::size_t>(m.J.column.size(), 1)), CSR_MAT,
-                        m.context);
-  if (!m.A) throw std::runtime_error("network integrator: SUNSparseMatrix failed");
-  m.solver = SUNLinSol_KLU(m.y, m.A, m.context);
-  if (!m.solver) throw std::runtime_error("network integrator: SUNLinSol_KLU failed");
-  // AMD: the Jacobian's pattern is symmetric (cell adjacency), where AMD fills in less than COLAMD.
-  check(SUNLinSol_KLUSetOrdering(m.solver, 0), "SUNLinSol_KLUSetOrdering");
+  m.species = system_.numSpecies();
+  const bool gmres = options_.linear_solver == LinearSolver::Gmres;
+  if (gmres) {
+    m.block_inverse.assign(system_.numCells() * m.species * m.species, 0.0);
+    m.solver = SUNLinSol_SPGMR(m.y, SUN_PREC_LEFT, 0, m.context);
+    if (!m.solver) throw std::runtime_error("network integrator: SUNLinSol_SPGMR failed");
+  } else {
+    m.A = SUNSparseMatrix(n, n, static_cast<sunindextype>(std::max<std::size_t>(m.J.column.size(), 1)), CSR_MAT,
+                          m.context);
+    if (!m.A) throw std::runtime_error("network integrator: SUNSparseMatrix failed");
+    m.solver = SUNLinSol_KLU(m.y, m.A, m.context);
+    if (!m.solver) throw std::runtime_error("network integrator: SUNLinSol_KLU failed");
+    // AMD: the Jacobian's pattern is symmetric (cell adjacency), where AMD fills in less than COLAMD.
+    check(SUNLinSol_KLUSetOrdering(m.solver, 0), "SUNLinSol_KLUSetOrdering");
+  }
+  if (gmres)
+    for (std::size_t s = 0; s < m.species; ++s)
+      if (system_.model().species[s].reaction.empty()) m.conserved.push_back(s);
+  if (m.timers || !m.conserved.empty()) {
+    m.inner_setup = m.solver->ops->setup;
+    m.inner_solve = m.solver->ops->solve;
+    if (m.timers) m.solver->ops->setup = &Impl::timedSetup;
+    m.solver->ops->solve = &Impl::timedSolve;
+  }
   m.cvode = CVodeCreate(CV_BDF, m.context);
   if (!m.cvode) throw std::runtime_error("network integrator: CVodeCreate failed");
   check(CVodeSetErrHandlerFn(m.cvode, &Impl::errorHandler, &m), "CVodeSetErrHandlerFn");
@@ -122,9 +302,18 @@ NetworkIntegrator::NetworkIntegrator(NetworkSystem& system, IntegratorOptions op
   check(CVodeSetUserData(m.cvode, &m), "CVodeSetUserData");
   check(CVodeSStolerances(m.cvode, options_.relative_tolerance, options_.absolute_tolerance), "CVodeSStolerances");
   check(CVodeSetLinearSolver(m.cvode, m.solver, m.A), "CVodeSetLinearSolver");
-  check(CVodeSetJacFn(m.cvode, &Impl::jac), "CVodeSetJacFn");
+  if (gmres) {
+    check(CVodeSetPreconditioner(m.cvode, &Impl::psetup, &Impl::psolve), "CVodeSetPreconditioner");
+    check(CVodeSetJacTimes(m.cvode, nullptr, &Impl::jtimes), "CVodeSetJacTimes");
+  } else {
+    check(CVodeSetJacFn(m.cvode, &Impl::jac), "CVodeSetJacFn");
+  }
   check(CVodeSetMaxNumSteps(m.cvode, options_.max_steps), "CVodeSetMaxNumSteps");
   if (options_.max_step > 0) check(CVodeSetMaxStep(m.cvode, options_.max_step), "CVodeSetMaxStep");
+  if (options_.setup_frequency > 0)
+    check(CVodeSetLSetupFrequency(m.cvode, options_.setup_frequency), "CVodeSetLSetupFrequency");
+  if (options_.jacobian_frequency > 0)
+    check(CVodeSetJacEvalFrequency(m.cvode, options_.jacobian_frequency), "CVodeSetJacEvalFrequency");
 }
 
 NetworkIntegrator::~NetworkIntegrator() = default;
@@ -141,7 +330,10 @@ void NetworkIntegrator::advance(std::span<double> y, double t0, double t1) {
   check(CVodeReInit(m.cvode, t0, m.y), "CVodeReInit");
   check(CVodeSetStopTime(m.cvode, t1), "CVodeSetStopTime");
   realtype t = t0;
+  Impl* const outer = Impl::active;
+  Impl::active = &m;
   const int flag = CVode(m.cvode, t1, m.y, &t, CV_NORMAL);
+  Impl::active = outer;
   long v = 0;
   auto add = [&](int (*get)(void*, long*), long& total) {
     if (get(m.cvode, &v) >= 0) total += v;
@@ -151,6 +343,8 @@ void NetworkIntegrator::advance(std::span<double> y, double t0, double t1) {
   add(CVodeGetNumJacEvals, stats_.jacobian_evaluations);
   add(CVodeGetNumNonlinSolvIters, stats_.nonlinear_iterations);
   add(CVodeGetNumErrTestFails, stats_.error_test_failures);
+  add(CVodeGetNumLinSolvSetups, stats_.linear_setups);
+  add(CVodeGetNumLinIters, stats_.linear_iterations);
   if (m.failure) std::rethrow_exception(m.failure);
   if (flag < 0) {
     // The worst component: largest |local error| * weight.

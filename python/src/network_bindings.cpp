@@ -158,7 +158,7 @@ f(c) = base**c ("exponential") or c**exponent ("power"); the efflux from i into 
 
   py::class_<NetworkSystem>(m, "NetworkSystem", R"doc(
 The ODE system of a model on a graph: dy/dt = F(t, y) for the AMOUNTS y[cell * num_species + species]
-(concentration = amount / measure). Integrate with integrate() (CVODE BDF, sparse Newton with KLU).
+(concentration = amount / measure). Integrate with integrate() (CVODE BDF, Newton with KLU or GMRES).
 )doc")
       .def(py::init([](const NetworkModel& model, const NetworkGraph& graph, const std::string& jacobian) {
              return std::make_unique<NetworkSystem>(model, graph, jacobianKinds().parse(jacobian));
@@ -211,20 +211,22 @@ The ODE system of a model on a graph: dy/dt = F(t, y) for the AMOUNTS y[cell * n
            py::arg("y"), py::arg("species"))
       .def("integrate",
            [](NetworkSystem& s, const std::vector<double>& y, double t0, double t1, double rtol, double atol,
-              long max_steps) {
+              long max_steps, const std::string& linear_solver) {
              std::vector<double> state = checkedState(s, y);
              IntegratorOptions o;
              o.relative_tolerance = rtol;
              o.absolute_tolerance = atol;
              o.max_steps = max_steps;
+             o.linear_solver = linearSolvers().parse(linear_solver);
              NetworkIntegrator integrator(s, o);
              integrator.advance(state, t0, t1);
              return state;
            },
            py::arg("y"), py::arg("t0"), py::arg("t1"), py::arg("relative_tolerance") = 1e-6,
-           py::arg("absolute_tolerance") = 1e-9, py::arg("max_steps") = 100000,
+           py::arg("absolute_tolerance") = 1e-9, py::arg("max_steps") = 100000, py::arg("linear_solver") = "klu",
            "The amounts at t1 from y at t0 (a new list); tessella.Error naming the time, CVODE's flag, the "
-           "species and the cell when CVODE fails.");
+           "species and the cell when CVODE fails. linear_solver: 'klu' (sparse LU) or 'gmres' (GMRES with a "
+           "block-Jacobi preconditioner per cell).");
 
   using Point = std::array<double, 3>;
   auto vec = [](const Point& p) { return Vec3(p[0], p[1], p[2]); };

@@ -61,6 +61,31 @@ TEST_CASE("auxin_network_2d.yaml: the total amount follows production and decay 
   CHECK(t.cellProperties().has("auxin_polarity"));
 }
 
+TEST_CASE("network.linear_solver: gmres gives KLU's accuracy on auxin_network_2d.yaml", "[sim][network][configs]") {
+  auto run = [](std::vector<std::string> overrides) {
+    overrides.push_back("time.end=10");
+    Simulation sim = Simulation::fromFile(sourcePath("configs/auxin_network_2d.yaml"), overrides);
+    sim.run();
+    std::vector<double> out;
+    const auto& a = sim.tissue().cellProperties().get<double>("auxin_amount");
+    for (CellId c : sim.tissue().cells()) out.push_back(a[c]);
+    return out;
+  };
+  // The reference: KLU, exact Jacobian, tolerances 1e4 times tighter than the config's (1e-6, 1e-9).
+  const std::vector<double> reference = run({"network.jacobian=exact", "network.relative_tolerance=1e-10",
+                                             "network.absolute_tolerance=1e-13"});
+  const std::vector<double> klu = run({"network.linear_solver=klu"});
+  const std::vector<double> gmres = run({"network.linear_solver=gmres"});
+  auto error = [&](const std::vector<double>& y) {
+    double e = 0;
+    for (std::size_t k = 0; k < y.size(); ++k) e = std::max(e, std::abs(y[k] - reference[k]) / reference[k]);
+    return e;
+  };
+  INFO("KLU error " << error(klu) << ", GMRES error " << error(gmres));
+  CHECK(error(klu) < 1e-3);
+  CHECK(error(gmres) < 3 * error(klu));
+}
+
 TEST_CASE("network amounts are conserved across growth and divisions", "[sim][network]") {
   Simulation sim = Simulation::fromYaml(R"(
 rng_seed: 3

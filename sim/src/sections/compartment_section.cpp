@@ -78,7 +78,9 @@ void declareCompartmentSection(Schema& s) {
   detail::declareSourceKeys(s, "compartments", on);
   s.section("compartments.polar",
             "Polar transport: a pumping cell moves rate * wall area * its concentration per unit time "
-            "across each wall to a neighbour whose centroid is downstream along `direction`.")
+            "across each wall to a neighbour whose centroid is downstream along `direction`. Superseded by "
+            "`network:` with PIN transport (polarity from the tissue's state, docs/networks.md); kept for "
+            "existing configs.")
       .activeWhen(on.key, on.values);
   s.key("compartments.polar.rate", ValueType::Float, "Pumping rate (per unit wall area).").byDefault(0.0).atLeast(0);
   s.key("compartments.polar.direction", ValueType::Vec3, "Direction of the pumping.")

@@ -226,12 +226,7 @@ void NetworkStage::apply(Tissue& tissue, const StepContext& context) {
     networks::NetworkIntegrator integrator(system, spec_.integrator);
     const double t1 = context.time + context.dt;
     integrator.advance(y, t1 - elapsed, t1);
-    const auto& st = integrator.statistics();
-    stats_.steps += st.steps;
-    stats_.rhs_evaluations += st.rhs_evaluations;
-    stats_.jacobian_evaluations += st.jacobian_evaluations;
-    stats_.nonlinear_iterations += st.nonlinear_iterations;
-    stats_.error_test_failures += st.error_test_failures;
+    stats_ += integrator.statistics();
   }
   writeOutputs(tissue, cells, system, y);
   if (spec_.primordia.enabled() && elapsed > 0) detectPrimordia(tissue, cells, system, y, context.end_time);

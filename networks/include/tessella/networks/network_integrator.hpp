@@ -12,15 +12,35 @@
 #include <string>
 
 #include "tessella/networks/network_system.hpp"
+#include "tessella/tissue/enum_table.hpp"
 #include "tessella/tissue/errors.hpp"
 
 namespace tessella::networks {
+
+/// The linear solver of CVODE's Newton iteration: `Klu`, a sparse LU
+/// factorisation of I - gamma J (exact solves, a cost that grows faster than
+/// the number of cells); `Gmres`, SPGMR with the products J v from the
+/// Jacobian of the last setup and a block-Jacobi preconditioner (per cell,
+/// the inverse of the species block of I - gamma J).
+enum class LinearSolver { Klu, Gmres };
+/// "klu", "gmres".
+const EnumTable<LinearSolver>& linearSolvers();
 
 struct IntegratorOptions {
   double relative_tolerance = 1e-6;
   double absolute_tolerance = 1e-9;  ///< on amounts
   long max_steps = 100000;           ///< per call of advance()
   double max_step = 0.0;             ///< largest internal step; 0: no limit
+  /// CVODE's linear solver setups (a new Newton matrix I - gamma J and its KLU
+  /// factorisation) happen at most every this many steps (CVodeSetLSetupFrequency);
+  /// 0: CVODE's default (20).
+  long setup_frequency = 0;
+  /// A new Jacobian at most every this many steps (CVodeSetJacEvalFrequency);
+  /// 0: CVODE's default (51).
+  long jacobian_frequency = 0;
+  LinearSolver linear_solver = LinearSolver::Klu;
+  /// Time the right-hand side, Jacobian and linear solver callbacks (statistics' seconds).
+  bool timers = false;
 };
 
 /// A CVODE failure: the time reached, CVODE's flag, and the species and cell
@@ -47,6 +67,15 @@ struct IntegratorStatistics {
   long jacobian_evaluations = 0;
   long nonlinear_iterations = 0;
   long error_test_failures = 0;
+  long linear_setups = 0;  ///< Newton matrix factorisations (CVodeGetNumLinSolvSetups)
+  long linear_solves = 0;  ///< linear solves (counted with IntegratorOptions::timers)
+  long linear_iterations = 0;  ///< GMRES iterations (CVodeGetNumLinIters; 0 with KLU)
+  /// With IntegratorOptions::timers: wall-clock seconds in the right-hand side, the Jacobian
+  /// (evaluation and copy into SUNDIALS' matrix), the linear solver's setups (KLU
+  /// (re)factorisation, or the preconditioner's blocks) and its solves.
+  double rhs_seconds = 0, jacobian_seconds = 0, setup_seconds = 0, solve_seconds = 0;
+  /// Adds `other`'s counters and seconds.
+  IntegratorStatistics& operator+=(const IntegratorStatistics& other);
 };
 
 class NetworkIntegrator {
