@@ -146,7 +146,7 @@ void MechanicsStage::applyMembranes(Tissue& tissue, const StepContext& context) 
       young[c] = spec_.soft_factor + (1.0 - spec_.soft_factor) * s * s;
     }
   }
-  membrane_report_ = mechanics::membraneGrowthStep(tissue, params, membrane_state_, context.dt);
+  membrane_report_ = mechanics::membraneGrowthStep(tissue, params, membrane_state_, context.dt, context.rng);
 }
 
 void MechanicsStage::apply(Tissue& tissue, const StepContext& context) {
@@ -278,6 +278,18 @@ void declareMechanicsSection(Schema& s) {
   s.key("mechanics.fibre_point", ValueType::Vec3, "A point on the circumferential fibres' axis.")
       .byDefault(std::vector<double>{0, 0, 0})
       .activeWhen("mechanics.model", membranes);
+  s.key("mechanics.feedback_rate", ValueType::Float,
+        "Stress feedback: each polygon's fibre turns toward its maximal principal tension, its angle decaying as "
+        "exp(-feedback_rate t) (docs/mechanics.md). 0: off.")
+      .byDefault(0.0)
+      .atLeast(0)
+      .activeWhen("mechanics.model", membranes);
+  s.key("mechanics.feedback_noise", ValueType::Float,
+        "Standard deviation of the fibre angle's random kick per square root of time (radians), drawn from the "
+        "run's random stream. 0: none.")
+      .byDefault(0.0)
+      .atLeast(0)
+      .activeWhen("mechanics.model", membranes);
   s.key("mechanics.base_distance", ValueType::Float,
         "Vertices within this distance above the lowest vertex (z) are fixed: the base ring of a dome or "
         "cylinder, the bottom of a 3D tissue.")
@@ -332,6 +344,8 @@ MechanicsSpec readMechanicsSection(const Config& c) {
     p.growth = m.params.growth;
     p.solver = m.params.solver;
     p.base_distance = c.getFloat("mechanics.base_distance");
+    p.feedback.rate = c.getFloat("mechanics.feedback_rate");
+    p.feedback.noise = c.getFloat("mechanics.feedback_noise");
     const std::string fibres = c.getString("mechanics.fibres");
     p.fibres.kind = fibres == "fixed"             ? mechanics::FibreRule::Kind::Fixed
                     : fibres == "circumferential" ? mechanics::FibreRule::Kind::Circumferential
