@@ -162,6 +162,9 @@ double FanMembraneModel::polygonTerms(const Eigen::VectorXd& x, std::size_t f, E
   const Eigen::Matrix3d Q = poly.young_scale * q_;
   const double p = poly.pressure;
   double energy = 0.0;
+  Eigen::Matrix3d apex_apex = Eigen::Matrix3d::Zero();  // sum_i w^2 H_00
+  // apex_row[l] = sum w H_0b over corners b at loop vertex l; apex_col[k] likewise for H_a0.
+  std::vector<Eigen::Matrix3d> apex_row(tangent ? n : 0, Eigen::Matrix3d::Zero()), apex_col = apex_row;
   // Corner a of triangle i maps to loop positions: the apex to all (weight 1/n), 1 to i, 2 to i + 1.
   auto scatter = [&](Eigen::VectorXd& v, int i, int a, const Eigen::Vector3d& value) {
     if (a == 0) {
@@ -206,26 +209,17 @@ double FanMembraneModel::polygonTerms(const Eigen::VectorXd& x, std::size_t f, E
       H[a][b] += p / 6.0 * cross(r[cc]);
       H[a][cc] -= p / 6.0 * cross(r[b]);
     }
-    // Chain rule: K_kl += sum_ab w_ak w_bl H_ab.
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b) {
-        if (a == 0 && b == 0) {
-          const Eigen::Matrix3d h = w_apex * w_apex * H[0][0];
-          for (int k = 0; k < n; ++k)
-            for (int l = 0; l < n; ++l) tangent->block<3, 3>(3 * k, 3 * l) += h;
-        } else if (a == 0) {
-          const int l = (i + b - 1) % n;
-          const Eigen::Matrix3d h = w_apex * H[0][b];
-          for (int k = 0; k < n; ++k) tangent->block<3, 3>(3 * k, 3 * l) += h;
-        } else if (b == 0) {
-          const int k = (i + a - 1) % n;
-          const Eigen::Matrix3d h = w_apex * H[a][0];
-          for (int l = 0; l < n; ++l) tangent->block<3, 3>(3 * k, 3 * l) += h;
-        } else {
-          tangent->block<3, 3>(3 * ((i + a - 1) % n), 3 * ((i + b - 1) % n)) += H[a][b];
-        }
-      }
+    // Chain rule: K_kl += sum_ab w_ak w_bl H_ab. The apex terms are summed
+    // over the fan first and spread once (below): O(n^2) blocks per polygon.
+    apex_apex += w_apex * w_apex * H[0][0];
+    for (int b = 1; b < 3; ++b) apex_row[(i + b - 1) % n] += w_apex * H[0][b];
+    for (int a = 1; a < 3; ++a) apex_col[(i + a - 1) % n] += w_apex * H[a][0];
+    for (int a = 1; a < 3; ++a)
+      for (int b = 1; b < 3; ++b) tangent->block<3, 3>(3 * ((i + a - 1) % n), 3 * ((i + b - 1) % n)) += H[a][b];
   }
+  if (tangent)
+    for (int k = 0; k < n; ++k)
+      for (int l = 0; l < n; ++l) tangent->block<3, 3>(3 * k, 3 * l) += apex_apex + apex_row[l] + apex_col[k];
   return energy;
 }
 

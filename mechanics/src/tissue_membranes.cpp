@@ -230,7 +230,13 @@ FanMembraneModel buildTissueMembranes(Tissue& tissue, const MembraneGrowthParams
       sum[r] += pressure[tissue.wallCells(w).front()];
       count[r] += 1.0;
     }
+    double zmin = std::numeric_limits<double>::infinity();
+    for (VertexId v : tissue.vertices()) zmin = std::min(zmin, tissue.position(v).z());
     for (std::size_t r = 0; r < lids.size(); ++r) {
+      // A rim on the fixed base (a dome's) adds a constant: left out.
+      bool fixed = true;
+      for (Index v : lids[r]) fixed = fixed && tissue.positions()[v].z() <= zmin + params.base_distance;
+      if (fixed) continue;
       MembranePolygon lid;
       lid.loop = lids[r];
       lid.elastic = false;

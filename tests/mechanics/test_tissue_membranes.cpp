@@ -133,8 +133,8 @@ TEST_CASE("tissue membranes: a single box cell under pressure reaches equilibriu
   const MembraneStepReport r = membraneGrowthStep(tissue, params, state, 0.0);
   CHECK(r.fixed_vertices == 4);  // the bottom face
   CHECK(r.equilibrium.iterations >= 2);
-  for (std::size_t k = 1; k < r.equilibrium.energies.size(); ++k)
-    CHECK(r.equilibrium.energies[k] <= r.equilibrium.energies[k - 1]);
+  for (std::size_t k = 1; k < r.equilibrium.energies.size(); ++k)  // up to round-off of E
+    CHECK(r.equilibrium.energies[k] <= r.equilibrium.energies[k - 1] + 1e-13 * std::abs(r.equilibrium.energies[k - 1]));
   CHECK(r.equilibrium.residual <= r.equilibrium.tolerance);
   // The box inflates: volume larger, still positive; the top rises above 1.
   CHECK(totalMeasure(tissue) > v0);
@@ -180,7 +180,8 @@ TEST_CASE("tissue membranes: a dome sheet with a fixed base converges quadratica
     }
   }
   CHECK(near >= 2);
-  for (std::size_t k = 1; k < r.energies.size(); ++k) CHECK(r.energies[k] <= r.energies[k - 1]);
+  for (std::size_t k = 1; k < r.energies.size(); ++k)  // up to round-off of E
+    CHECK(r.energies[k] <= r.energies[k - 1] + 1e-13 * std::abs(r.energies[k - 1]));
   double h = 0.0;
   for (VertexId v : tissue.vertices()) h = std::max(h, tissue.position(v).z());
   CHECK(h > h0);  // the dome inflates
