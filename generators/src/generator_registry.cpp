@@ -317,7 +317,10 @@ const GeneratorRegistry& generators() {
        {"cylinder",
         "A cylindrical sheet: `around` x `along` quad cells, a rectangular grid wrapped onto a cylinder about the "
         "vertical axis through `origin` (both ends open; a curved 2D tissue).",
-        {ParamSpec("around", ParamType::Int, "Number of cells around.").byDefault(std::int64_t{16}).atLeast(3).atMost(1e5),
+        {ParamSpec("around", ParamType::Int, "Number of cells around.")
+             .byDefault(std::int64_t{16})
+             .atLeast(3)
+             .atMost(1e5),
          gridCount("along", "Number of cells along the axis.", 8),
          ParamSpec("radius", ParamType::Float, "Radius of the cylinder.").byDefault(1.0).above(0),
          ParamSpec("length", ParamType::Float, "Length of the cylinder (along z).").byDefault(2.0).above(0),

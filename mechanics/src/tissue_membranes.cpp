@@ -31,8 +31,10 @@ double coneVolume(const Tissue& tissue, const std::vector<Index>& loop, const Ve
   for (Index v : loop) apex += tissue.positions()[v];
   apex /= static_cast<double>(loop.size());
   double v = 0.0;
-  for (std::size_t i = 0; i < loop.size(); ++i)
-    v += (apex - origin).dot((tissue.positions()[loop[i]] - origin).cross(tissue.positions()[loop[(i + 1) % loop.size()]] - origin));
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const Vec3 a = tissue.positions()[loop[i]] - origin, b = tissue.positions()[loop[(i + 1) % loop.size()]] - origin;
+    v += (apex - origin).dot(a.cross(b));
+  }
   return v / 6.0;
 }
 

@@ -107,7 +107,8 @@ TEST_CASE("tissue membranes: derivatives of a dome sheet and a 3D tissue against
     // At rest in its shape the elastic energy is zero: E = -sum p_f V_f.
     const Eigen::VectorXd x0 = spatialDofs(tissue);
     double pv = 0.0;
-    for (std::size_t f = 0; f < at_rest.numPolygons(); ++f) pv += at_rest.polygon(f).pressure * at_rest.coneVolume(x0, f);
+    for (std::size_t f = 0; f < at_rest.numPolygons(); ++f)
+      pv += at_rest.polygon(f).pressure * at_rest.coneVolume(x0, f);
     CHECK(at_rest.energy(x0) == Approx(-pv).epsilon(1e-12));
   }
 }
@@ -134,7 +135,8 @@ TEST_CASE("tissue membranes: a single box cell under pressure reaches equilibriu
   CHECK(r.fixed_vertices == 4);  // the bottom face
   CHECK(r.equilibrium.iterations >= 2);
   for (std::size_t k = 1; k < r.equilibrium.energies.size(); ++k)  // up to round-off of E
-    CHECK(r.equilibrium.energies[k] <= r.equilibrium.energies[k - 1] + 1e-13 * std::abs(r.equilibrium.energies[k - 1]));
+    CHECK(r.equilibrium.energies[k] <=
+          r.equilibrium.energies[k - 1] + 1e-13 * std::abs(r.equilibrium.energies[k - 1]));
   CHECK(r.equilibrium.residual <= r.equilibrium.tolerance);
   // The box inflates: volume larger, still positive; the top rises above 1.
   CHECK(totalMeasure(tissue) > v0);
@@ -169,7 +171,8 @@ TEST_CASE("tissue membranes: a dome sheet with a fixed base converges quadratica
   const MembraneStepReport rep = membraneGrowthStep(tissue, params, state, 0.0);
   const EquilibriumReport& r = rep.equilibrium;
   const double s = r.force_scale;
-  for (std::size_t k = 0; k < r.residuals.size(); ++k) UNSCOPED_INFO("relative residual " << k << ": " << r.residuals[k] / s);
+  for (std::size_t k = 0; k < r.residuals.size(); ++k)
+    UNSCOPED_INFO("relative residual " << k << ": " << r.residuals[k] / s);
   int near = 0;
   for (std::size_t k = 0; k + 1 < r.residuals.size(); ++k) {
     const double rk = r.residuals[k] / s, rn = r.residuals[k + 1] / s;
