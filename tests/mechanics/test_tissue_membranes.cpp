@@ -13,6 +13,7 @@
 #include "tessella/mechanics/errors.hpp"
 #include "tessella/mechanics/tissue_membranes.hpp"
 #include "tessella/mechanics/wall_state.hpp"
+#include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/validate.hpp"
 
@@ -243,6 +244,12 @@ TEST_CASE("tissue membranes: refused tissues and bad state", "[mechanics]") {
   Tissue planar = rectangularGrid(2, 2);
   MembraneRestState state;
   CHECK_THROWS_WITH(buildTissueMembranes(planar, MembraneGrowthParams{}, state), Catch::Contains("planar"));
+  // A U-shaped cell: its vertex mean (1.5, 1.5) lies in the notch, so the fan folds.
+  const std::vector<Vec3> u = {Vec3(0, 0, 0), Vec3(3, 0, 0), Vec3(3, 3, 0), Vec3(2, 3, 0),
+                               Vec3(2, 1, 0), Vec3(1, 1, 0), Vec3(1, 3, 0), Vec3(0, 3, 0)};
+  Tissue folded = buildPolygonTissue(u, {{0, 1, 2, 3, 4, 5, 6, 7}}, Embedding::Surface);
+  CHECK_THROWS_WITH(buildTissueMembranes(folded, MembraneGrowthParams{}, state),
+                    Catch::Contains("cell 0") && Catch::Contains("folds"));
   // The rest state reads back exactly from its text; a short text is refused.
   Tissue tissue = voronoiBox(5, 2);
   MembraneGrowthParams params;
