@@ -8,7 +8,13 @@
 //   solve of the same tangent (factorisation + solve: the floor of a Newton
 //   iteration).
 //   Membrane: a pressurised sphere of ~1e4 triangles (St Venant-Kirchhoff).
-// Usage: mechanics_bench [--quick]   (--quick: the 1e3-cell sheet and a small sphere)
+//   Membranes from a tissue (tissue_membranes.hpp): one membraneGrowthStep
+//   from rest of a dome sheet (1e3 and 1e4 cells, base ring fixed) and of a
+//   3D Voronoi tissue of 1e3 cells (bottom fixed), to a relative residual of
+//   1e-8, beside one linear solve of the same tangent. Figures (issue 16's
+//   targets): the 1e3-cell dome step under 1 s, the 3D 1e3-cell step under 10 s.
+// Usage: mechanics_bench [--quick | --tissue3d]   (--quick: the 1e3-cell sheet, a small sphere, a 1e3-cell
+//        dome and a 200-cell 3D tissue; --tissue3d: only the 1e3-cell 3D tissue)
 
 #include <chrono>
 #include <cmath>
@@ -18,6 +24,9 @@
 #include <vector>
 
 #include "bench_args.hpp"
+#include "bench_figure.hpp"
+#include "tessella/generators/dome.hpp"
+#include "tessella/mechanics/tissue_membranes.hpp"
 #include "tessella/generators/voronoi.hpp"
 #include "tessella/mechanics/boundary_conditions.hpp"
 #include "tessella/mechanics/membrane_model.hpp"
@@ -129,13 +138,73 @@ void sphere(int rings, int around) {
               step / solve);
 }
 
+// One membrane step from rest of a tissue (dome sheet or 3D), and one linear solve of its tangent.
+void membraneStep(Tissue tissue, const char* what, double pressure, const char* figure, double target,
+                  solvers::SolverMethod method = solvers::SolverMethod::Auto) {
+  MembraneGrowthParams params;
+  params.solver.linear.method = method;
+  params.material.young = 10.0;
+  params.material.thickness = 0.1;
+  params.pressure = pressure;
+  params.growth = {1.0, 0.0};
+  params.solver.relative_tolerance = 1e-8;
+  MembraneRestState state;
+  const auto t0 = Clock::now();
+  const MembraneStepReport report = membraneGrowthStep(tissue, params, state, 0.1);
+  const auto t1 = Clock::now();
+  const double step = seconds(t0, t1);
+  const FanMembraneModel model = buildTissueMembranes(tissue, params, state);
+  std::vector<std::uint8_t> fixed(3 * tissue.slots(0), 1);
+  double zmin = 1e300;
+  for (VertexId v : tissue.vertices()) zmin = std::min(zmin, tissue.position(v).z());
+  for (VertexId v : tissue.vertices())
+    for (int k = 0; k < 3; ++k) fixed[3 * v.index() + k] = tissue.position(v).z() <= zmin + params.base_distance;
+  const double solve = linearSolveSeconds(model, spatialDofs(tissue), fixed);
+  const int it = report.equilibrium.iterations;
+  std::printf("%s%s %6zu cells %7zu dofs: step %8.3f s, %2d Newton iterations (%d linear solves), %8.4f s per "
+              "iteration; one linear solve %8.4f s (step / solve %.1f)\n",
+              what, method == solvers::SolverMethod::Cholmod ? " (CHOLMOD)" : "", tissue.numCells(),
+              3 * tissue.numVertices(), step, it, report.equilibrium.linear_solves,
+              step / std::max(it, 1), solve, step / solve);
+  if (figure) bench::printFigure(figure, step, "s", target);
+}
+
+void dome(std::size_t cells, const char* figure, double target,
+          solvers::SolverMethod method = solvers::SolverMethod::Auto) {
+  const double r = std::sqrt(static_cast<double>(cells) / std::numbers::pi);  // cells of area ~1
+  Dome d;
+  d.base_radius = r;
+  d.height = 0.5 * r;
+  Tissue tissue = domeTissue(randomSeeds(Disk{Vec3::Zero(), r}, cells, 1), d, VoronoiOptions{.lloyd_iterations = 2});
+  membraneStep(std::move(tissue), "dome sheet", 0.1 / r, figure, target, method);  // strains of a few per cent
+}
+
+void tissue3d(std::size_t cells, const char* figure, double target,
+              solvers::SolverMethod method = solvers::SolverMethod::Auto) {
+  const double side = std::cbrt(static_cast<double>(cells));
+  const Box box{Vec3::Zero(), Vec3::Constant(side)};
+  Tissue tissue = voronoiTissue(randomSeeds(box, cells, 1), box, VoronoiOptions{.lloyd_iterations = 1});
+  membraneStep(std::move(tissue), "3D tissue", 0.2 / side, figure, target, method);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  const char* usage = "mechanics_bench [--quick]";
-  const bool quick = bench::flagArgument(argc, argv, {"--quick"}, usage) == "--quick";
+  const char* usage = "mechanics_bench [--quick | --tissue3d]";
+  const std::string flag = bench::flagArgument(argc, argv, {"--quick", "--tissue3d"}, usage);
+  const bool quick = flag == "--quick";
+  const bool cholmod = solvers::solverAvailable(solvers::SolverMethod::Cholmod);
+  if (flag == "--tissue3d") {
+    tissue3d(1000, cholmod ? nullptr : "tissue3d_1e3_step", 10.0);
+    if (cholmod) tissue3d(1000, "tissue3d_1e3_step", 10.0, solvers::SolverMethod::Cholmod);
+    return 0;
+  }
   sheet(1000);
   if (!quick) sheet(10000);
   sphere(quick ? 23 : 69, quick ? 48 : 144);
+  dome(1000, cholmod ? nullptr : "dome_1e3_step", 1.0);
+  if (cholmod) dome(1000, "dome_1e3_step", 1.0, solvers::SolverMethod::Cholmod);
+  if (!quick) dome(10000, nullptr, 0.0);
+  tissue3d(quick ? 200 : 1000, quick ? nullptr : "tissue3d_1e3_step", 10.0);
   return 0;
 }

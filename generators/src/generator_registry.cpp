@@ -314,6 +314,24 @@ const GeneratorRegistry& generators() {
              },
          .shape = [](const ParamValues&) { return GeneratedShape{3, Embedding::Volume, ""}; },
          .check = [](const ParamValues& p, const ParamNamer&) { checkCellCount(p, {"nx", "ny", "nz"}); }}},
+       {"cylinder",
+        "A cylindrical sheet: `around` x `along` quad cells, a rectangular grid wrapped onto a cylinder about the "
+        "vertical axis through `origin` (both ends open; a curved 2D tissue).",
+        {ParamSpec("around", ParamType::Int, "Number of cells around.")
+             .byDefault(std::int64_t{16})
+             .atLeast(3)
+             .atMost(1e5),
+         gridCount("along", "Number of cells along the axis.", 8),
+         ParamSpec("radius", ParamType::Float, "Radius of the cylinder.").byDefault(1.0).above(0),
+         ParamSpec("length", ParamType::Float, "Length of the cylinder (along z).").byDefault(2.0).above(0),
+         ParamSpec("origin", ParamType::Vec3, "Centre of the bottom ring.").byDefault(std::vector<double>{0, 0, 0})},
+        {.build =
+             [](const ParamValues& p, std::uint64_t) {
+               return cylinderGrid(count(p, "around"), count(p, "along"), p.getFloat("radius"),
+                                   p.getFloat("length"), p.getVec3("origin"));
+             },
+         .shape = [](const ParamValues&) { return GeneratedShape{2, Embedding::Surface, ""}; },
+         .check = [](const ParamValues& p, const ParamNamer&) { checkCellCount(p, {"around", "along"}); }}},
        {"voronoi",
         "Voronoi cells of seed points (the dual of their Delaunay triangulation, computed with CGAL), clipped to "
         "a domain: a rectangle or disk gives a flat 2D tissue, a box or ball a 3D one.",

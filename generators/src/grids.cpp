@@ -42,6 +42,29 @@ Tissue rectangularGrid(std::size_t nx, std::size_t ny, double dx, double dy, con
   return buildPolygonTissue(pos, polys, Embedding::Planar);
 }
 
+Tissue cylinderGrid(std::size_t around, std::size_t along, double radius, double length, const Vec3& origin) {
+  requireCount(around, "around");
+  requireCount(along, "along");
+  if (around < 3) throw InputError("cylinder: around = " + std::to_string(around) + " must be at least 3");
+  requireLength(radius, "radius");
+  requireLength(length, "length");
+  std::vector<Vec3> pos;
+  pos.reserve(around * (along + 1));
+  const double pi = std::acos(-1.0);
+  for (std::size_t j = 0; j <= along; ++j)
+    for (std::size_t i = 0; i < around; ++i) {
+      const double a = 2.0 * pi * static_cast<double>(i) / static_cast<double>(around);
+      pos.push_back(origin + Vec3(radius * std::cos(a), radius * std::sin(a),
+                                  length * static_cast<double>(j) / static_cast<double>(along)));
+    }
+  auto id = [&](std::size_t i, std::size_t j) { return static_cast<Index>(j * around + i % around); };
+  std::vector<std::vector<Index>> polys;
+  polys.reserve(around * along);
+  for (std::size_t j = 0; j < along; ++j)
+    for (std::size_t i = 0; i < around; ++i) polys.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  return buildPolygonTissue(pos, polys, Embedding::Surface);
+}
+
 Tissue hexagonalGrid(std::size_t nx, std::size_t ny, double radius, const Vec3& origin) {
   requireCount(nx, "nx");
   requireCount(ny, "ny");

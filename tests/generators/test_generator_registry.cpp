@@ -41,7 +41,7 @@ ParamValues completed(const std::string& name, const ParamValues& values) {
 
 TEST_CASE("every generator builds, from its defaults, the tissue its shape announces", "[generators][registry]") {
   CHECK(generators().names() ==
-        std::vector<std::string>{"rectangular_grid", "hexagonal_grid", "box_grid", "voronoi", "dome"});
+        std::vector<std::string>{"rectangular_grid", "hexagonal_grid", "box_grid", "cylinder", "voronoi", "dome"});
   for (const auto& g : generators().entries()) {
     INFO(g.name);
     const GeneratedShape shape = g.make.shape(completed(g.name, {}));

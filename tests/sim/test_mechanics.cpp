@@ -155,3 +155,111 @@ TEST_CASE("mechanics section: errors at their keys", "[sim][mechanics]") {
               "tissue:\n  generator: box_grid\ntime:\n  end: 1\n  dt: 0.1\nmechanics:\n  model: wall_springs\n");
         }).keyPath() == "mechanics.model");
 }
+
+namespace {
+
+double maxHeight(const Tissue& tissue) {
+  double h = -std::numeric_limits<double>::infinity();
+  for (VertexId v : tissue.vertices()) h = std::max(h, tissue.position(v).z());
+  return h;
+}
+
+}  // namespace
+
+TEST_CASE("configs/turgor_dome_2p5d.yaml: the dome rises and grows under turgor, cells divide, valid every step",
+          "[sim][mechanics][configs]") {
+  Simulation sim = Simulation::fromFile(sourcePath("configs/turgor_dome_2p5d.yaml"));
+  REQUIRE(sim.tissue().embedding() == Embedding::Surface);
+  const std::size_t cells_before = sim.tissue().numCells();
+  const double area_start = totalMeasure(sim.tissue()), height_start = maxHeight(sim.tissue());
+  double height = height_start;
+  // The base ring (z = 0) stays where it is.
+  std::vector<std::pair<VertexId, Vec3>> base;
+  for (VertexId v : sim.tissue().vertices())
+    if (sim.tissue().position(v).z() <= 1e-6) base.emplace_back(v, sim.tissue().position(v));
+  REQUIRE(base.size() >= 3);
+  tessella::sim::test::validateEveryStep(sim);
+  sim.onStep([&](const Simulation& s) {
+    for (CellId c : s.tissue().cells()) REQUIRE(cellMeasure(s.tissue(), c) > 0.0);
+    INFO("t = " << s.time());
+    CHECK(maxHeight(s.tissue()) >= height);  // the summit only rises
+    height = maxHeight(s.tissue());
+  });
+  sim.run();
+  CHECK(height > 1.1 * height_start);
+  CHECK(totalMeasure(sim.tissue()) > 1.1 * area_start);
+  CHECK(sim.tissue().numCells() > cells_before);
+  for (const auto& [v, p] : base) CHECK(sim.tissue().position(v) == p);
+  // The soft summit: young_scale 0.3 at the axis, 1 beyond radius 2.5.
+  const auto& young = sim.tissue().cellProperties().get<double>(mechanics::kYoungScaleName);
+  double lo = 1.0, hi = 0.0;
+  for (CellId c : sim.tissue().cells()) {
+    lo = std::min(lo, young[c]);
+    hi = std::max(hi, young[c]);
+  }
+  CHECK(lo < 0.5);
+  CHECK(hi == 1.0);
+}
+
+TEST_CASE("configs/turgor_tissue_3d.yaml: a 3D tissue grows under turgor, volumes positive and rising",
+          "[sim][mechanics][configs]") {
+  Simulation sim = Simulation::fromFile(sourcePath("configs/turgor_tissue_3d.yaml"));
+  REQUIRE(sim.tissue().dim() == 3);
+  CHECK(sim.tissue().numCells() >= 180);
+  double volume = totalMeasure(sim.tissue());
+  const double volume_start = volume;
+  tessella::sim::test::validateEveryStep(sim);
+  sim.onStep([&](const Simulation& s) {
+    for (CellId c : s.tissue().cells()) REQUIRE(cellMeasure(s.tissue(), c) > 0.0);
+    const double now = totalMeasure(s.tissue());
+    INFO("t = " << s.time());
+    CHECK(now > volume);
+    volume = now;
+  });
+  sim.run();
+  CHECK(volume > 1.01 * volume_start);
+}
+
+TEST_CASE("mechanics section: membranes refuse a planar tissue at mechanics.model", "[sim][mechanics]") {
+  const ConfigError e = configErrorOf(
+      [] { loadSimulationConfigString(std::string(kBase) + "mechanics:\n  model: membranes\n"); });
+  CHECK(e.keyPath() == "mechanics.model");
+  CHECK_THAT(std::string(e.what()), Catch::Contains("wall_springs"));
+  // A fibre rule needs a direction.
+  CHECK(configErrorOf([] {
+          loadSimulationConfigString(
+              "tissue:\n  generator: box_grid\ntime:\n  end: 1\n  dt: 0.1\nmechanics:\n  model: membranes\n"
+              "  fibres: fixed\n  fibre_vector: [0, 0, 0]\n");
+        }).keyPath() == "mechanics.fibre_vector");
+}
+
+TEST_CASE("configs/hypocotyl_cylinder.yaml: hoop fibres make the cylinder elongate (length/radius rises)",
+          "[sim][mechanics][configs]") {
+  Simulation sim = Simulation::fromFile(sourcePath("configs/hypocotyl_cylinder.yaml"));
+  REQUIRE(sim.tissue().embedding() == Embedding::Surface);
+  // Length: the top ring's mean height; radius: the mean distance from the axis of the middle ring's vertices.
+  auto shape = [](const Tissue& t) {
+    double top = 0.0, zmax = -1e300;
+    for (VertexId v : t.vertices()) zmax = std::max(zmax, t.position(v).z());
+    std::vector<double> radii;
+    for (VertexId v : t.vertices()) radii.push_back(std::hypot(t.position(v).x(), t.position(v).y()));
+    double r = 0.0;
+    for (double x : radii) r += x;
+    top = zmax;
+    return std::make_pair(top, r / static_cast<double>(radii.size()));
+  };
+  const auto [l0, r0] = shape(sim.tissue());
+  double ratio = l0 / r0;
+  tessella::sim::test::validateEveryStep(sim);
+  sim.onStep([&](const Simulation& s) {
+    for (CellId c : s.tissue().cells()) REQUIRE(cellMeasure(s.tissue(), c) > 0.0);
+    const auto [l, r] = shape(s.tissue());
+    INFO("t = " << s.time() << ", length " << l << ", radius " << r);
+    CHECK(l / r > ratio);
+    ratio = l / r;
+  });
+  sim.run();
+  const auto [l1, r1] = shape(sim.tissue());
+  CHECK(l1 / r1 > 1.1 * l0 / r0);
+  CHECK((l1 - l0) / l0 > 3.0 * (r1 - r0) / r0);  // mostly axial
+}

@@ -29,11 +29,41 @@ const std::vector<std::string>& sideNames() {
 MechanicsStage::MechanicsStage(MechanicsSpec spec) : spec_(std::move(spec)) { spec_.params.check(); }
 
 std::vector<std::string> MechanicsStage::cellPropertiesWritten() const {
+  if (spec_.membranes) return {mechanics::kTurgorPressureName, mechanics::kYoungScaleName};
   return {mechanics::kTurgorPressureName, kMeanStrainName, kMeanTensionName, mechanics::kStressMaxName,
           mechanics::kStressMinName};
 }
 
 void MechanicsStage::prepare(Tissue& tissue, double /*time*/) {
+  if (spec_.membranes) {
+    if (tissue.dim() == 2 && tissue.embedding() != Embedding::Surface)
+      throw InputError("mechanics.model: membranes need a curved sheet (embedding surface) or a 3D tissue; "
+                       "this tissue is planar (use wall_springs)");
+    mechanics::cellOutput(tissue, mechanics::kTurgorPressureName, spec_.membrane.pressure);
+    mechanics::cellOutput(tissue, mechanics::kYoungScaleName, 1.0);
+    if (!spec_.soft_center) {
+      Vec3 sum = Vec3::Zero();
+      for (VertexId v : tissue.vertices()) sum += tissue.position(v);
+      spec_.soft_center = sum / static_cast<double>(std::max<std::size_t>(tissue.numVertices(), 1));
+    }
+    if (restart_) {
+      const auto& [snapshot, state] = *restart_;
+      if (state.count("mechanics.membrane_rest"))
+        membrane_state_.fromText(tissue, state.at("mechanics.membrane_rest"), "snapshot '" + snapshot + "'");
+      if (state.count("mechanics.soft_center")) {
+        std::istringstream in(state.at("mechanics.soft_center"));
+        Vec3 c;
+        for (int k = 0; k < 3; ++k) {
+          std::string word;
+          in >> word;
+          if (!detail::parseExact(word, c[k]))
+            throw InputError("snapshot '" + snapshot + "': mechanics.soft_center holds '" + word + "'");
+        }
+        spec_.soft_center = c;
+      }
+    }
+    return;
+  }
   mechanics::requirePlanar(tissue, "the mechanics section");
   mechanics::prepareTurgorState(tissue, spec_.params);
   if (restart_) restore(tissue);
@@ -51,6 +81,14 @@ void MechanicsStage::prepare(Tissue& tissue, double /*time*/) {
 
 void MechanicsStage::saveState(const Tissue& tissue, const std::string& /*snapshot_path*/,
                                const io::VtuOptions& /*options*/, io::RunState& state) const {
+  if (spec_.membranes) {
+    state["mechanics.membrane_rest"] = membrane_state_.toText(tissue);
+    if (spec_.soft_center)
+      state["mechanics.soft_center"] = formatNumber(spec_.soft_center->x()) + " " +
+                                       formatNumber(spec_.soft_center->y()) + " " +
+                                       formatNumber(spec_.soft_center->z());
+    return;
+  }
   std::string text;
   if (tissue.wallProperties().has(mechanics::kRestLengthName)) {
     const auto& rest = tissue.wallProperties().get<double>(mechanics::kRestLengthName);
@@ -96,7 +134,26 @@ void MechanicsStage::restore(Tissue& tissue) {
   for (WallId w : tissue.walls()) rest[w] = values[i++];
 }
 
+void MechanicsStage::applyMembranes(Tissue& tissue, const StepContext& context) {
+  mechanics::MembraneGrowthParams params = spec_.membrane;
+  params.solver.context = "mechanics, step " + std::to_string(context.clock_step + 1) + ", time " +
+                          formatNumber(context.time);
+  if (spec_.soft_radius > 0.0) {
+    auto& young = mechanics::cellOutput(tissue, mechanics::kYoungScaleName, 1.0);
+    for (CellId c : tissue.cells()) {
+      const Vec3 d = cellCentroid(tissue, c) - *spec_.soft_center;
+      const double s = std::min(std::hypot(d.x(), d.y()) / spec_.soft_radius, 1.0);
+      young[c] = spec_.soft_factor + (1.0 - spec_.soft_factor) * s * s;
+    }
+  }
+  membrane_report_ = mechanics::membraneGrowthStep(tissue, params, membrane_state_, context.dt, context.rng);
+}
+
 void MechanicsStage::apply(Tissue& tissue, const StepContext& context) {
+  if (spec_.membranes) {
+    applyMembranes(tissue, context);
+    return;
+  }
   mechanics::TurgorGrowthParams params = spec_.params;
   params.solver.context = "mechanics, step " + std::to_string(context.clock_step + 1) + ", time " +
                           formatNumber(context.time);
@@ -144,18 +201,24 @@ void MechanicsStage::writeCellMeans(Tissue& tissue) const {
 
 void declareMechanicsSection(Schema& s) {
   s.section("mechanics",
-            "Turgor-driven growth of a planar 2D tissue: walls are linear elastic springs (tension E t "
-            "(L - L0) / L0), cells push with their turgor pressure, the quasi-static equilibrium is solved "
-            "by Newton every step and the tissue moves there; rest lengths then grow where the wall strain "
+            "Turgor-driven growth. `wall_springs` (planar 2D tissues): walls are linear elastic springs "
+            "(tension E t (L - L0) / L0), cells push with their turgor pressure, the quasi-static equilibrium is "
+            "solved by Newton every step and the tissue moves there; rest lengths then grow where the wall strain "
             "exceeds `threshold` (Lockhart-Ortega). Writes turgor_pressure, mean_wall_strain, "
             "mean_wall_tension and the walls' stress (wall_stress, stress_max, stress_min, stress_direction) "
-            "per cell (and rest_length, wall_strain, wall_tension per wall). Off unless "
+            "per cell (and rest_length, wall_strain, wall_tension per wall). `membranes` (curved sheets, 3D "
+            "tissues): every sheet cell or 3D wall is a fan of membrane triangles whose rest shapes grow along "
+            "their principal stretches; writes turgor_pressure and young_scale per cell. Off unless "
             "`model` is set. See docs/mechanics.md.");
   s.key("mechanics.model", ValueType::Enum,
-        "The mechanical model. `wall_springs`: walls as springs, cells under turgor (planar 2D tissues).")
-      .oneOf({"none", "wall_springs"})
+        "The mechanical model. `wall_springs`: walls as springs, cells under turgor (planar 2D tissues). "
+        "`membranes`: every cell of a curved sheet, every wall of a 3D tissue a membrane (the fan of "
+        "St Venant-Kirchhoff triangles from its vertex mean), cells under turgor, the base fixed.")
+      .oneOf({"none", "wall_springs", "membranes"})
       .byDefault(std::string("none"));
-  const std::vector<std::string> on = {"wall_springs"};
+  const std::vector<std::string> on = {"wall_springs", "membranes"};
+  const std::vector<std::string> springs = {"wall_springs"};
+  const std::vector<std::string> membranes = {"membranes"};
   s.key("mechanics.pressure", ValueType::Float,
         "Turgor pressure P of every cell (the cell property turgor_pressure; a model may change it per cell).")
       .byDefault(0.1)
@@ -183,7 +246,7 @@ void declareMechanicsSection(Schema& s) {
         "the rotation about it removed; `region`: the vertices on one side of the bounding box are fixed.")
       .oneOf({"point", "region"})
       .byDefault(std::string("point"))
-      .activeWhen("mechanics.model", on);
+      .activeWhen("mechanics.model", springs);
   s.key("mechanics.pin_point", ValueType::Vec3, "The pinned point.")
       .whenAbsent("the mean of the vertex positions when the run starts")
       .activeWhen("mechanics.support", {"point"});
@@ -192,6 +255,61 @@ void declareMechanicsSection(Schema& s) {
       .oneOf(sideNames())
       .byDefault(std::string("x_min"))
       .activeWhen("mechanics.support", {"region"});
+  s.key("mechanics.poisson", ValueType::Float, "Poisson's ratio nu of the membranes (nu^2 < fibre_ratio).")
+      .byDefault(0.3)
+      .above(-1)
+      .atMost(0.5)
+      .activeWhen("mechanics.model", membranes);
+  s.key("mechanics.fibre_ratio", ValueType::Float,
+        "Stiffness along the fibres over the stiffness across them (1: isotropic).")
+      .byDefault(1.0)
+      .above(0)
+      .activeWhen("mechanics.model", membranes);
+  s.key("mechanics.fibres", ValueType::Enum,
+        "The fibre direction of each membrane polygon, projected on each fan triangle. `none`: isotropic frame "
+        "(its first edge); `fixed`: `fibre_vector`; `circumferential`: around the axis through `fibre_point` "
+        "along `fibre_vector` (axis x (centroid - point)).")
+      .oneOf({"none", "fixed", "circumferential"})
+      .byDefault(std::string("none"))
+      .activeWhen("mechanics.model", membranes);
+  s.key("mechanics.fibre_vector", ValueType::Vec3, "The fixed fibre direction, or the circumferential axis.")
+      .byDefault(std::vector<double>{0, 0, 1})
+      .activeWhen("mechanics.model", membranes);
+  s.key("mechanics.fibre_point", ValueType::Vec3, "A point on the circumferential fibres' axis.")
+      .byDefault(std::vector<double>{0, 0, 0})
+      .activeWhen("mechanics.model", membranes);
+  s.key("mechanics.feedback_rate", ValueType::Float,
+        "Stress feedback: each polygon's fibre turns toward its maximal principal tension, its angle decaying as "
+        "exp(-feedback_rate t) (docs/mechanics.md). 0: off.")
+      .byDefault(0.0)
+      .atLeast(0)
+      .activeWhen("mechanics.model", membranes);
+  s.key("mechanics.feedback_noise", ValueType::Float,
+        "Standard deviation of the fibre angle's random kick per square root of time (radians), drawn from the "
+        "run's random stream. 0: none.")
+      .byDefault(0.0)
+      .atLeast(0)
+      .activeWhen("mechanics.model", membranes);
+  s.key("mechanics.base_distance", ValueType::Float,
+        "Vertices within this distance above the lowest vertex (z) are fixed: the base ring of a dome or "
+        "cylinder, the bottom of a 3D tissue.")
+      .byDefault(1e-6)
+      .atLeast(0)
+      .activeWhen("mechanics.model", membranes);
+  s.key("mechanics.soft_radius", ValueType::Float,
+        "Soft summit: a cell's Young's modulus is young (f + (1 - f) min(r / soft_radius, 1)^2), r the "
+        "horizontal distance of its centroid from soft_center, f = soft_factor (the cell property "
+        "young_scale). 0: uniform.")
+      .byDefault(0.0)
+      .atLeast(0)
+      .activeWhen("mechanics.model", membranes);
+  s.key("mechanics.soft_factor", ValueType::Float, "The summit's Young's modulus over `young`.")
+      .byDefault(1.0)
+      .above(0)
+      .activeWhen("mechanics.model", membranes);
+  s.key("mechanics.soft_center", ValueType::Vec3, "The summit's axis (a vertical line through this point).")
+      .whenAbsent("the mean of the vertex positions when the run starts")
+      .activeWhen("mechanics.model", membranes);
   s.key("mechanics.tolerance", ValueType::Float,
         "Newton stops when the out-of-balance force is below tolerance times the force scale.")
       .byDefault(1e-10)
@@ -215,6 +333,37 @@ MechanicsSpec readMechanicsSection(const Config& c) {
   m.params.growth.threshold = c.getFloat("mechanics.threshold");
   m.params.solver.relative_tolerance = c.getFloat("mechanics.tolerance");
   m.params.solver.max_iterations = static_cast<int>(c.getInt("mechanics.max_iterations"));
+  if (c.getString("mechanics.model") == "membranes") {
+    m.membranes = true;
+    mechanics::MembraneGrowthParams& p = m.membrane;
+    p.material.young = m.params.youngs_modulus;
+    p.material.thickness = m.params.thickness;
+    p.material.poisson = c.getFloat("mechanics.poisson");
+    p.material.fibre_ratio = c.getFloat("mechanics.fibre_ratio");
+    p.pressure = m.params.pressure;
+    p.growth = m.params.growth;
+    p.solver = m.params.solver;
+    p.base_distance = c.getFloat("mechanics.base_distance");
+    p.feedback.rate = c.getFloat("mechanics.feedback_rate");
+    p.feedback.noise = c.getFloat("mechanics.feedback_noise");
+    const std::string fibres = c.getString("mechanics.fibres");
+    p.fibres.kind = fibres == "fixed"             ? mechanics::FibreRule::Kind::Fixed
+                    : fibres == "circumferential" ? mechanics::FibreRule::Kind::Circumferential
+                                                  : mechanics::FibreRule::Kind::None;
+    p.fibres.vector = c.getVec("mechanics.fibre_vector");
+    p.fibres.point = c.getVec("mechanics.fibre_point");
+    if (p.fibres.kind != mechanics::FibreRule::Kind::None && !(p.fibres.vector.norm() > 0.0))
+      throw c.errorAt("mechanics.fibre_vector", "must not be zero");
+    try {
+      p.material.check();
+    } catch (const InputError& e) {
+      throw c.errorAt("mechanics.poisson", e.what());
+    }
+    m.soft_radius = c.getFloat("mechanics.soft_radius");
+    m.soft_factor = c.getFloat("mechanics.soft_factor");
+    if (c.has("mechanics.soft_center")) m.soft_center = c.getVec("mechanics.soft_center");
+    return m;
+  }
   if (c.getString("mechanics.support") == "point") {
     m.support = MechanicsSupport::Point;
     if (c.has("mechanics.pin_point")) {

@@ -183,11 +183,14 @@ void checkTissueShape(const SimulationConfig& s) {
     }
   }
 
-  // mechanics: the wall-spring model is for flat 2D tissues.
-  if (s.mechanics.enabled && !(shape.dim == 2 && shape.planar()))
+  // mechanics: the wall-spring model is for flat 2D tissues, membranes for curved sheets and 3D tissues.
+  if (s.mechanics.enabled && !s.mechanics.membranes && !(shape.dim == 2 && shape.planar()))
     throw c.errorAt("mechanics.model", "'" + c.getString("mechanics.model") +
                                            "' needs a flat 2D tissue; the tissue is " + shape.str() +
-                                           " (curved sheets and 3D tissues are not modelled yet)");
+                                           " (curved sheets and 3D tissues: model membranes)");
+  if (s.mechanics.enabled && s.mechanics.membranes && shape.dim == 2 && shape.planar())
+    throw c.errorAt("mechanics.model", "'membranes' needs a curved sheet or a 3D tissue; the tissue is " +
+                                           shape.str() + " (use wall_springs)");
 
   // mesh: keys for tetrahedra only.
   for (const char* key : {"mesh.max_volume", "mesh.radius_edge_ratio", "mesh.min_dihedral_angle",

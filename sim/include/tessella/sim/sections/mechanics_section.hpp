@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "tessella/mechanics/tissue_membranes.hpp"
 #include "tessella/mechanics/turgor_growth_step.hpp"
 #include "tessella/sim/config/config.hpp"
 #include "tessella/sim/config/schema.hpp"
@@ -33,6 +34,17 @@ enum class MechanicsSupport { Point, Region };
 
 struct MechanicsSpec {
   bool enabled = false;
+  /// `wall_springs` (planar tissues) or `membranes` (curved sheets, 3D tissues).
+  bool membranes = false;
+  /// The membrane model's material, fibres, growth law, base support and
+  /// solver options (pressure, young, thickness, growth and solver as params).
+  mechanics::MembraneGrowthParams membrane{};
+  /// Soft summit: a cell's Young's modulus is young (f + (1 - f) min(r / R, 1)^2),
+  /// r its centroid's distance from the vertical axis through soft_center
+  /// (default: the vertex mean at the start); R = 0: uniform.
+  double soft_radius = 0.0;
+  double soft_factor = 1.0;
+  std::optional<Vec3> soft_center;
   /// Material, pressure, growth law and solver options (params.supports is
   /// filled by the stage from the fields below, for the tissue of each step).
   mechanics::TurgorGrowthParams params{};
@@ -62,13 +74,18 @@ class MechanicsStage final : public Stage {
   void continueFrom(const std::string& snapshot_path, const io::RunState& state) override;
   /// The last step's report (Newton iterations, residuals, strains).
   const mechanics::TurgorStepReport& lastReport() const { return report_; }
+  /// The last step's report of the membrane model.
+  const mechanics::MembraneStepReport& lastMembraneReport() const { return membrane_report_; }
   static constexpr const char* kMeanStrainName = "mean_wall_strain";
   static constexpr const char* kMeanTensionName = "mean_wall_tension";
 
  private:
   void writeCellMeans(Tissue& tissue) const;
   void restore(Tissue& tissue);
+  void applyMembranes(Tissue& tissue, const StepContext& context);
   MechanicsSpec spec_;
+  mechanics::MembraneRestState membrane_state_;
+  mechanics::MembraneStepReport membrane_report_;
   mechanics::TurgorStepReport report_;
   std::optional<std::pair<std::string, io::RunState>> restart_;  // snapshot path, its run state
 };

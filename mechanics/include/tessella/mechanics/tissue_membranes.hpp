@@ -1,0 +1,117 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#pragma once
+// Membranes from a tissue's walls (docs/mechanics.md, "Membranes from a
+// tissue"): a curved sheet (dim 2, Embedding::Surface) has one membrane per
+// cell, a 3D tissue one per wall polygon (shared by its two cells). Each is a
+// fan of membrane triangles from its loop's vertex mean (FanMembraneModel), the
+// surface the tissue measures; a polygon whose fan folds is refused
+// (MechanicsError naming it). Pressure work: a 3D cell's pressure times its
+// volume (the same fans, outward signs); a sheet's cell's pressure times the
+// volume of the cone from a point on the base plane (z = z_min of the support,
+// under the tissue's centroid) to its fan, signed so that the sheet's total is
+// positive: the volume between the sheet and its base plane, up to a constant
+// while the base ring is fixed.
+//
+// The rest shape of every fan triangle is kept in a MembraneRestState between
+// steps, keyed by polygon (face slot) and its loop. A polygon whose loop has
+// changed (divided, or a vertex inserted by a neighbour's division) starts at
+// rest in its current shape scaled isotropically by its previous rest-to-current
+// area ratio (the face property membrane_rest_ratio, copied to both parts of a
+// divided face); a new face (the wall a 3D division adds) starts at rest.
+
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "tessella/mechanics/equilibrium.hpp"
+#include "tessella/mechanics/fan_membrane_model.hpp"
+#include "tessella/mechanics/fibre_feedback.hpp"
+#include "tessella/mechanics/strain_growth.hpp"
+
+namespace tessella {
+class Tissue;
+}
+
+namespace tessella::mechanics {
+
+inline constexpr const char* kMembraneRestRatioName = "membrane_rest_ratio";
+inline constexpr const char* kYoungScaleName = "young_scale";
+
+/// How each polygon's fibre direction is chosen (at its centroid c).
+struct FibreRule {
+  enum class Kind { None, Fixed, Circumferential };
+  Kind kind = Kind::None;
+  Vec3 vector = Vec3(0, 0, 1);  ///< Fixed: this direction; Circumferential: the axis direction
+  Vec3 point = Vec3::Zero();    ///< Circumferential: a point on the axis
+  /// The direction for a polygon with centroid c (zero: none).
+  Vec3 at(const Vec3& c) const;
+};
+
+struct MembraneGrowthParams {
+  MembraneMaterial material{};
+  double pressure = 0.1;  ///< turgor of cells without a turgor_pressure value
+  FibreRule fibres{};
+  /// Stress feedback (off at rate 0 and noise 0): each polygon keeps its own
+  /// fibre (from `fibres` when it has none), turned toward its maximal
+  /// principal stress every step (fibre_feedback.hpp).
+  FibreFeedback feedback{};
+  StrainGrowthLaw growth{};
+  /// Vertices within this distance above the lowest vertex z are fixed (the
+  /// base ring of a dome or a cylinder, the bottom of a 3D tissue); must fix some.
+  double base_distance = 1e-6;
+  EquilibriumOptions solver{};
+  void check() const;
+};
+
+/// Rest metrics of every membrane polygon between steps (by face slot).
+struct MembraneRestState {
+  std::vector<std::vector<Index>> loops;
+  std::vector<std::vector<RestMetric>> rest;
+  /// Per face slot, the fibre direction under stress feedback (zero: none yet).
+  std::vector<Vec3> fibres;
+  /// Text for a snapshot's run state: per live membrane face in slot order, its
+  /// vertex count, its rest metrics and its fibre (exact text).
+  std::string toText(const Tissue& tissue) const;
+  /// Reads toText's output back for `tissue` (same faces, same loops);
+  /// InputError naming `source` on a mismatch.
+  void fromText(const Tissue& tissue, const std::string& text, const std::string& source);
+};
+
+struct MembraneStepReport {
+  EquilibriumReport equilibrium;
+  std::size_t polygons = 0;
+  std::size_t polygons_reset = 0;  ///< polygons whose rest shape was (re)initialised
+  std::size_t fixed_vertices = 0;
+  double max_growth_rate = 0.0;
+};
+
+/// The faces that are membranes: a sheet's cells, a 3D tissue's walls.
+/// MechanicsError for a planar tissue (use the wall-spring model).
+std::vector<FaceId> membraneFaces(const Tissue& tissue);
+/// Positions as dofs: (x, y, z) per vertex slot.
+Eigen::VectorXd spatialDofs(const Tissue& tissue);
+void setSpatialDofs(Tissue& tissue, const Eigen::VectorXd& x);
+/// The pressure coefficient of every membrane face (see the header comment)
+/// from per-cell-slot pressures; `origin` the cone apex of a sheet.
+std::vector<double> facePressures(const Tissue& tissue, const std::vector<FaceId>& faces,
+                                  const std::vector<double>& cell_pressure, const Vec3& origin);
+/// The cone origin of a sheet: the tissue's vertex mean dropped to z_min.
+Vec3 sheetOrigin(const Tissue& tissue);
+/// Builds the model of `tissue` as it is, rest shapes from `state` (updated
+/// for changed loops; counts them in `reset`). MechanicsError naming a cell or
+/// wall whose fan folds.
+FanMembraneModel buildTissueMembranes(Tissue& tissue, const MembraneGrowthParams& params,
+                                      MembraneRestState& state, std::size_t* reset = nullptr);
+/// Cell volumes (3D) or cone volumes (sheet) of the model's fans at x, by cell slot.
+std::vector<double> membraneCellVolumes(const Tissue& tissue, const FanMembraneModel& model, const Eigen::VectorXd& x);
+
+/// One step: model from the tissue, equilibrium (positions move there;
+/// EquilibriumError leaves the tissue unchanged), rest shapes grow over dt.
+/// With stress feedback, the fibres turn after the equilibrium (noise drawn
+/// from `rng`, which must be given when params.feedback.noise > 0).
+MembraneStepReport membraneGrowthStep(Tissue& tissue, const MembraneGrowthParams& params, MembraneRestState& state,
+                                      double dt, std::mt19937_64* rng = nullptr);
+
+}  // namespace tessella::mechanics

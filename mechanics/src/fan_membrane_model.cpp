@@ -1,0 +1,321 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tessella/mechanics/fan_membrane_model.hpp"
+
+#include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
+
+#include <Eigen/Cholesky>
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+namespace tessella::mechanics {
+namespace {
+
+Eigen::Matrix3d cross(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d m;
+  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return m;
+}
+
+Eigen::Vector3d point(const Eigen::VectorXd& x, Index i) { return x.segment<3>(3 * static_cast<Eigen::Index>(i)); }
+
+Eigen::Vector3d greenStrain(const Eigen::Matrix<double, 3, 2>& F) {
+  const Eigen::Matrix2d C = F.transpose() * F;
+  return {0.5 * (C(0, 0) - 1.0), 0.5 * (C(1, 1) - 1.0), C(0, 1)};
+}
+
+Eigen::Matrix3d strainMatrix(const Eigen::Matrix<double, 3, 2>& F, const Eigen::Vector2d& g) {
+  Eigen::Matrix3d B;
+  B.row(0) = g(0) * F.col(0).transpose();
+  B.row(1) = g(1) * F.col(1).transpose();
+  B.row(2) = g(0) * F.col(1).transpose() + g(1) * F.col(0).transpose();
+  return B;
+}
+
+Eigen::Vector3d loopMean(const Eigen::VectorXd& x, const std::vector<Index>& loop) {
+  Eigen::Vector3d a = Eigen::Vector3d::Zero();
+  for (Index v : loop) a += point(x, v);
+  return a / static_cast<double>(loop.size());
+}
+
+}  // namespace
+
+void FanMembraneModel::Element::setRestShape(const Eigen::Matrix2d& edges) {
+  D = edges;
+  const Eigen::Matrix2d Dinv = D.inverse();
+  g[1] = Dinv.row(0).transpose();
+  g[2] = Dinv.row(1).transpose();
+  g[0] = -g[1] - g[2];
+  area = 0.5 * std::abs(D.determinant());
+}
+
+std::vector<RestMetric> FanMembraneModel::currentMetrics(const Eigen::VectorXd& x, const std::vector<Index>& loop) {
+  const Eigen::Vector3d a = loopMean(x, loop);
+  std::vector<RestMetric> m(loop.size());
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const Eigen::Vector3d d1 = point(x, loop[i]) - a, d2 = point(x, loop[(i + 1) % loop.size()]) - a;
+    m[i] = RestMetric(d1.squaredNorm(), d1.dot(d2), d2.squaredNorm());
+  }
+  return m;
+}
+
+FanMembraneModel::FanMembraneModel(const Eigen::VectorXd& positions, std::vector<MembranePolygon> polygons,
+                                   MembraneMaterial material, const Vec3& origin)
+    : size_(positions.size()), polygons_(std::move(polygons)), material_(material), origin_(origin) {
+  material_.check();
+  q_ = material_.planeStressMatrix();
+  const Index points = static_cast<Index>(size_ / 3);
+  first_element_.assign(1, 0);
+  for (std::size_t f = 0; f < polygons_.size(); ++f) {
+    const MembranePolygon& p = polygons_[f];
+    const std::string name = "membrane polygon " + std::to_string(f);
+    if (p.loop.size() < 3) throw InputError(name + ": a loop of " + std::to_string(p.loop.size()) + " vertices");
+    if (p.elastic && p.rest.size() != p.loop.size())
+      throw InputError(name + ": " + std::to_string(p.rest.size()) + " rest metrics for " +
+                       std::to_string(p.loop.size()) + " fan triangles");
+    if (!(p.young_scale > 0.0 && std::isfinite(p.young_scale)))
+      throw InputError(name + ": Young's modulus scale " + formatNumber(p.young_scale) + " must be > 0");
+    if (!std::isfinite(p.pressure)) throw InputError(name + ": pressure " + formatNumber(p.pressure));
+    for (Index v : p.loop)
+      if (v >= points) throw InputError(name + ": vertex slot " + std::to_string(v) + " out of range");
+    const Eigen::Vector3d apex = loopMean(positions, p.loop);
+    if (!p.elastic) {  // a lid: elements without area carry no elastic energy
+      Element e;
+      e.setRestShape(Eigen::Matrix2d::Identity());
+      e.area = 0.0;
+      elements_.insert(elements_.end(), p.loop.size(), e);
+      first_element_.push_back(elements_.size());
+      continue;
+    }
+    for (std::size_t i = 0; i < p.loop.size(); ++i) {
+      Eigen::Matrix<double, 3, 2> E;
+      E.col(0) = point(positions, p.loop[i]) - apex;
+      E.col(1) = point(positions, p.loop[(i + 1) % p.loop.size()]) - apex;
+      const Eigen::Vector3d normal = E.col(0).cross(E.col(1));
+      if (!(normal.norm() > 1e-14 * (E.col(0).squaredNorm() + E.col(1).squaredNorm()) + 1e-300))
+        throw InputError(name + ": fan triangle " + std::to_string(i) + " is degenerate");
+      const Eigen::Vector3d n = normal.normalized();
+      Eigen::Vector2d a(1.0, 0.0);  // the fibre in the edge basis: the first edge by default
+      const Eigen::Vector3d fp = p.fibre - p.fibre.dot(n) * n;
+      if (fp.norm() > 1e-8 * p.fibre.norm() && fp.norm() > 0.0)
+        a = (E.transpose() * E).ldlt().solve(E.transpose() * fp);
+      const RestMetric& c = p.rest[i];
+      Eigen::Matrix2d C;
+      C << c(0), c(1), c(1), c(2);
+      if (!(c(0) > 0.0 && C.determinant() > 1e-14 * c(0) * c(2) && std::isfinite(C.sum())))
+        throw InputError(name + ": rest metric of fan triangle " + std::to_string(i) + " (" + formatNumber(c(0)) +
+                         ", " + formatNumber(c(1)) + ", " + formatNumber(c(2)) + ") is not positive definite");
+      const Eigen::Matrix2d D0 = Eigen::LLT<Eigen::Matrix2d>(C).matrixU();
+      const Eigen::Vector2d u = (D0 * a).normalized();
+      Eigen::Matrix2d R;
+      R << u(0), u(1), -u(1), u(0);
+      Element e;
+      e.setRestShape(R * D0);
+      elements_.push_back(e);
+    }
+    first_element_.push_back(elements_.size());
+  }
+}
+
+std::array<Eigen::Vector3d, 3> FanMembraneModel::corners(const Eigen::VectorXd& x, std::size_t f,
+                                                         std::size_t i) const {
+  const auto& loop = polygons_[f].loop;
+  return {loopMean(x, loop), point(x, loop[i]), point(x, loop[(i + 1) % loop.size()])};
+}
+
+FanMembraneModel::Mat32 FanMembraneModel::deformationGradient(const std::array<Eigen::Vector3d, 3>& c,
+                                                              const Element& e) const {
+  Mat32 F = Mat32::Zero();
+  for (int a = 0; a < 3; ++a) F += c[a] * e.g[a].transpose();
+  return F;
+}
+
+double FanMembraneModel::coneVolume(const Eigen::VectorXd& x, std::size_t f) const {
+  double v = 0.0;
+  for (std::size_t i = 0; i < polygons_[f].loop.size(); ++i) {
+    const auto c = corners(x, f, i);
+    v += (c[0] - origin_).dot((c[1] - origin_).cross(c[2] - origin_));
+  }
+  return v / 6.0;
+}
+
+std::vector<RestMetric> FanMembraneModel::restMetrics(std::size_t f) const {
+  std::vector<RestMetric> m;
+  for (std::size_t e = first_element_[f]; e < first_element_[f + 1]; ++e) {
+    const Eigen::Matrix2d C = elements_[e].D.transpose() * elements_[e].D;
+    m.emplace_back(C(0, 0), C(0, 1), C(1, 1));
+  }
+  return m;
+}
+
+double FanMembraneModel::polygonTerms(const Eigen::VectorXd& x, std::size_t f, Eigen::VectorXd* grad,
+                                      Eigen::VectorXd* magnitude, Eigen::MatrixXd* tangent,
+                                      double* energy_magnitude) const {
+  const MembranePolygon& poly = polygons_[f];
+  const int n = static_cast<int>(poly.loop.size());
+  const double w_apex = 1.0 / n;
+  const double t = material_.thickness;
+  const Eigen::Matrix3d Q = poly.young_scale * q_;
+  const double p = poly.pressure;
+  double energy = 0.0;
+  Eigen::Matrix3d apex_apex = Eigen::Matrix3d::Zero();  // sum_i w^2 H_00
+  // apex_row[l] = sum w H_0b over corners b at loop vertex l; apex_col[k] likewise for H_a0.
+  std::vector<Eigen::Matrix3d> apex_row(tangent ? n : 0, Eigen::Matrix3d::Zero()), apex_col = apex_row;
+  // Corner a of triangle i maps to loop positions: the apex to all (weight 1/n), 1 to i, 2 to i + 1.
+  auto scatter = [&](Eigen::VectorXd& v, int i, int a, const Eigen::Vector3d& value) {
+    if (a == 0) {
+      for (int k = 0; k < n; ++k) v.segment<3>(3 * k) += w_apex * value;
+    } else {
+      v.segment<3>(3 * ((i + a - 1) % n)) += value;
+    }
+  };
+  for (int i = 0; i < n; ++i) {
+    const Element& el = elements_[first_element_[f] + static_cast<std::size_t>(i)];
+    const auto c = corners(x, f, static_cast<std::size_t>(i));
+    const Mat32 F = deformationGradient(c, el);
+    const Eigen::Vector3d eps = greenStrain(F);
+    const Eigen::Vector3d sv = Q * eps;
+    const double w = t * el.area * 0.5 * eps.dot(sv);
+    const std::array<Eigen::Vector3d, 3> r = {c[0] - origin_, c[1] - origin_, c[2] - origin_};
+    const double pv = p * r[0].dot(r[1].cross(r[2])) / 6.0;
+    energy += w - pv;
+    if (energy_magnitude) *energy_magnitude += std::abs(w) + std::abs(pv);
+    if (!grad && !magnitude && !tangent) continue;
+    Eigen::Matrix2d S;
+    S << sv(0), sv(2), sv(2), sv(1);
+    std::array<Eigen::Vector3d, 3> elastic, pressure;
+    for (int a = 0; a < 3; ++a) {
+      elastic[a] = t * el.area * F * (S * el.g[a]);
+      pressure[a] = -p / 6.0 * r[(a + 1) % 3].cross(r[(a + 2) % 3]);
+    }
+    if (grad)
+      for (int a = 0; a < 3; ++a) scatter(*grad, i, a, elastic[a] + pressure[a]);
+    if (magnitude)
+      for (int a = 0; a < 3; ++a) scatter(*magnitude, i, a, elastic[a].cwiseAbs() + pressure[a].cwiseAbs());
+    if (!tangent) continue;
+    std::array<Eigen::Matrix3d, 3> B;
+    for (int a = 0; a < 3; ++a) B[a] = strainMatrix(F, el.g[a]);
+    std::array<std::array<Eigen::Matrix3d, 3>, 3> H;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        H[a][b] = t * el.area *
+                  (B[a].transpose() * Q * B[b] + el.g[a].dot(S * el.g[b]) * Eigen::Matrix3d::Identity());
+    for (int a = 0; a < 3; ++a) {
+      const int b = (a + 1) % 3, cc = (a + 2) % 3;
+      H[a][b] += p / 6.0 * cross(r[cc]);
+      H[a][cc] -= p / 6.0 * cross(r[b]);
+    }
+    // Chain rule: K_kl += sum_ab w_ak w_bl H_ab. The apex terms are summed
+    // over the fan first and spread once (below): O(n^2) blocks per polygon.
+    apex_apex += w_apex * w_apex * H[0][0];
+    for (int b = 1; b < 3; ++b) apex_row[(i + b - 1) % n] += w_apex * H[0][b];
+    for (int a = 1; a < 3; ++a) apex_col[(i + a - 1) % n] += w_apex * H[a][0];
+    for (int a = 1; a < 3; ++a)
+      for (int b = 1; b < 3; ++b) tangent->block<3, 3>(3 * ((i + a - 1) % n), 3 * ((i + b - 1) % n)) += H[a][b];
+  }
+  if (tangent)
+    for (int k = 0; k < n; ++k)
+      for (int l = 0; l < n; ++l) tangent->block<3, 3>(3 * k, 3 * l) += apex_apex + apex_row[l] + apex_col[k];
+  return energy;
+}
+
+double FanMembraneModel::energy(const Eigen::VectorXd& x) const {
+  double e = 0.0;
+  for (std::size_t f = 0; f < polygons_.size(); ++f) e += polygonTerms(x, f, nullptr, nullptr, nullptr, nullptr);
+  return e;
+}
+
+double FanMembraneModel::energyScale(const Eigen::VectorXd& x) const {
+  double m = 0.0;
+  for (std::size_t f = 0; f < polygons_.size(); ++f) polygonTerms(x, f, nullptr, nullptr, nullptr, &m);
+  return m;
+}
+
+void FanMembraneModel::gradient(const Eigen::VectorXd& x, Eigen::VectorXd& g) const {
+  g.setZero(size_);
+  Eigen::VectorXd local;
+  for (std::size_t f = 0; f < polygons_.size(); ++f) {
+    const auto& loop = polygons_[f].loop;
+    local.setZero(3 * static_cast<Eigen::Index>(loop.size()));
+    polygonTerms(x, f, &local, nullptr, nullptr, nullptr);
+    for (std::size_t k = 0; k < loop.size(); ++k)
+      g.segment<3>(3 * static_cast<Eigen::Index>(loop[k])) += local.segment<3>(3 * static_cast<Eigen::Index>(k));
+  }
+}
+
+double FanMembraneModel::forceScale(const Eigen::VectorXd& x) const {
+  Eigen::VectorXd s = Eigen::VectorXd::Zero(size_), local;
+  for (std::size_t f = 0; f < polygons_.size(); ++f) {
+    const auto& loop = polygons_[f].loop;
+    local.setZero(3 * static_cast<Eigen::Index>(loop.size()));
+    polygonTerms(x, f, nullptr, &local, nullptr, nullptr);
+    for (std::size_t k = 0; k < loop.size(); ++k)
+      s.segment<3>(3 * static_cast<Eigen::Index>(loop[k])) += local.segment<3>(3 * static_cast<Eigen::Index>(k));
+  }
+  return s.norm();
+}
+
+void FanMembraneModel::hessian(const Eigen::VectorXd& x, std::vector<Triplet>& entries) const {
+  Eigen::MatrixXd K;
+  for (std::size_t f = 0; f < polygons_.size(); ++f) {
+    const auto& loop = polygons_[f].loop;
+    const Eigen::Index m = 3 * static_cast<Eigen::Index>(loop.size());
+    K.setZero(m, m);
+    polygonTerms(x, f, nullptr, nullptr, &K, nullptr);
+    for (Eigen::Index r = 0; r < m; ++r)
+      for (Eigen::Index c = 0; c < m; ++c)
+        entries.emplace_back(static_cast<int>(3 * loop[r / 3] + r % 3), static_cast<int>(3 * loop[c / 3] + c % 3),
+                             K(r, c));
+  }
+}
+
+Eigen::Matrix3d FanMembraneModel::tension(const Eigen::VectorXd& x, std::size_t f, std::size_t i) const {
+  const Element& el = elements_[first_element_[f] + i];
+  const Mat32 F = deformationGradient(corners(x, f, i), el);
+  const Eigen::Vector3d sv = polygons_[f].young_scale * q_ * greenStrain(F);
+  Eigen::Matrix2d S;
+  S << sv(0), sv(2), sv(2), sv(1);
+  const double J = std::sqrt((F.transpose() * F).determinant());
+  return material_.thickness / J * F * S * F.transpose();
+}
+
+Eigen::Matrix3d FanMembraneModel::meanTension(const Eigen::VectorXd& x, std::size_t f, Vec3* normal) const {
+  Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d vector_area = Eigen::Vector3d::Zero();
+  double area = 0.0;
+  for (std::size_t i = 0; i < polygons_[f].loop.size(); ++i) {
+    const auto c = corners(x, f, i);
+    const Eigen::Vector3d a = 0.5 * (c[1] - c[0]).cross(c[2] - c[0]);
+    vector_area += a;
+    area += a.norm();
+    sum += a.norm() * tension(x, f, i);
+  }
+  if (normal) *normal = vector_area.normalized();
+  return sum / area;
+}
+
+double FanMembraneModel::growRestShape(const Eigen::VectorXd& x, const StrainGrowthLaw& law, double dt) {
+  law.check();
+  if (!(dt >= 0.0 && std::isfinite(dt))) throw InputError("membrane growth: dt " + formatNumber(dt) + " must be >= 0");
+  double fastest = 0.0;
+  for (std::size_t f = 0; f < polygons_.size(); ++f)
+    for (std::size_t i = 0; i < polygons_[f].loop.size() && polygons_[f].elastic; ++i) {
+      Element& el = elements_[first_element_[f] + i];
+      const Mat32 F = deformationGradient(corners(x, f, i), el);
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(F.transpose() * F);
+      Eigen::Matrix2d G = Eigen::Matrix2d::Zero();
+      for (int k = 0; k < 2; ++k) {
+        const double rate = law.relativeRate(std::sqrt(std::max(eig.eigenvalues()[k], 0.0)) - 1.0);
+        fastest = std::max(fastest, rate);
+        G += std::exp(rate * dt) * eig.eigenvectors().col(k) * eig.eigenvectors().col(k).transpose();
+      }
+      el.setRestShape(G * el.D);
+    }
+  return fastest;
+}
+
+}  // namespace tessella::mechanics

@@ -1,0 +1,364 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tessella/mechanics/tissue_membranes.hpp"
+
+#include "tessella/mechanics/errors.hpp"
+#include "tessella/mechanics/wall_state.hpp"
+#include "tessella/tissue/format.hpp"
+#include "tessella/tissue/geometry.hpp"
+#include "tessella/tissue/tissue.hpp"
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace tessella::mechanics {
+namespace {
+
+std::vector<Index> faceLoop(const Tissue& tissue, FaceId f) {
+  std::vector<Index> loop;
+  for (VertexId v : tissue.topology().faceVertices(f)) loop.push_back(v.index());
+  return loop;
+}
+
+// Signed volume of the cone from `origin` to the fan of `loop`.
+double coneVolume(const Tissue& tissue, const std::vector<Index>& loop, const Vec3& origin) {
+  Vec3 apex = Vec3::Zero();
+  for (Index v : loop) apex += tissue.positions()[v];
+  apex /= static_cast<double>(loop.size());
+  double v = 0.0;
+  for (std::size_t i = 0; i < loop.size(); ++i) {
+    const Vec3 a = tissue.positions()[loop[i]] - origin, b = tissue.positions()[loop[(i + 1) % loop.size()]] - origin;
+    v += (apex - origin).dot(a.cross(b));
+  }
+  return v / 6.0;
+}
+
+std::string faceName(const Tissue& tissue, FaceId f) {
+  if (tissue.dim() == 2) return "cell " + std::to_string(f.index()) + " (lineage " +
+                                 std::to_string(tissue.lineageId(CellId(f.index()))) + ")";
+  return "wall " + std::to_string(f.index());
+}
+
+// The open rims of a sheet, each as the loop that closes it: its boundary
+// edges traversed against their cell's loop, so that sheet and lids form a
+// consistently oriented closed surface. Loops start at their smallest vertex slot.
+std::vector<std::vector<Index>> rimLoops(const Tissue& tissue) {
+  std::vector<Index> next(tissue.slots(0), kInvalidIndex);
+  for (WallId w : tissue.walls()) {
+    if (!tissue.isBoundaryWall(w)) continue;
+    const auto uv = tissue.topology().edgeVertices(EdgeId(w.index()));
+    const auto loop = tissue.topology().faceVertices(tissue.cellFace(tissue.wallCells(w).front()));
+    bool forward = false;  // the cell's loop runs u -> v
+    for (std::size_t i = 0; i < loop.size(); ++i)
+      if (loop[i] == uv[0] && loop[(i + 1) % loop.size()] == uv[1]) forward = true;
+    if (forward)
+      next[uv[1].index()] = uv[0].index();
+    else
+      next[uv[0].index()] = uv[1].index();
+  }
+  std::vector<std::vector<Index>> loops;
+  std::vector<std::uint8_t> used(next.size(), 0);
+  for (Index start = 0; start < next.size(); ++start) {
+    if (next[start] == kInvalidIndex || used[start]) continue;
+    std::vector<Index> loop;
+    for (Index v = start; v != kInvalidIndex && !used[v]; v = next[v]) {
+      used[v] = 1;
+      loop.push_back(v);
+    }
+    if (loop.size() >= 3) loops.push_back(std::move(loop));
+  }
+  return loops;
+}
+
+// +1 when the sheet and its lids enclose a positive volume, else -1.
+double sheetSign(const Tissue& tissue, const std::vector<FaceId>& faces, const Vec3& origin) {
+  double total = 0.0;
+  for (FaceId f : faces) total += coneVolume(tissue, faceLoop(tissue, f), origin);
+  for (const auto& lid : rimLoops(tissue)) total += coneVolume(tissue, lid, origin);
+  return total < 0.0 ? -1.0 : 1.0;
+}
+
+double restArea(const RestMetric& c) { return 0.5 * std::sqrt(std::max(c(0) * c(2) - c(1) * c(1), 0.0)); }
+
+}  // namespace
+
+Vec3 FibreRule::at(const Vec3& c) const {
+  switch (kind) {
+    case Kind::None: return Vec3::Zero();
+    case Kind::Fixed: return vector;
+    case Kind::Circumferential: return vector.cross(c - point);
+  }
+  return Vec3::Zero();
+}
+
+void MembraneGrowthParams::check() const {
+  material.check();
+  growth.check();
+  if (!std::isfinite(pressure)) throw InputError("mechanics: pressure " + formatNumber(pressure) + " must be finite");
+  if (!(base_distance >= 0.0 && std::isfinite(base_distance)))
+    throw InputError("mechanics: base_distance " + formatNumber(base_distance) + " must be >= 0");
+  feedback.check();
+  if (fibres.kind != FibreRule::Kind::None && !(fibres.vector.norm() > 0.0))
+    throw InputError("mechanics: the fibre direction (or axis) must not be zero");
+}
+
+std::vector<FaceId> membraneFaces(const Tissue& tissue) {
+  std::vector<FaceId> faces;
+  if (tissue.dim() == 2) {
+    if (tissue.embedding() != Embedding::Surface)
+      throw MechanicsError("mechanics: membranes need a curved sheet (embedding surface) or a 3D tissue; this "
+                           "tissue is planar (use the wall_springs model)");
+    for (CellId c : tissue.cells()) faces.push_back(tissue.cellFace(c));
+  } else {
+    for (FaceId f : tissue.faces()) faces.push_back(f);
+  }
+  return faces;
+}
+
+Eigen::VectorXd spatialDofs(const Tissue& tissue) {
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(3 * static_cast<Eigen::Index>(tissue.slots(0)));
+  const auto p = tissue.positions();
+  for (std::size_t i = 0; i < p.size(); ++i) x.segment<3>(3 * static_cast<Eigen::Index>(i)) = p[i];
+  return x;
+}
+
+void setSpatialDofs(Tissue& tissue, const Eigen::VectorXd& x) {
+  auto p = tissue.mutablePositions();
+  for (VertexId v : tissue.vertices()) p[v.index()] = x.segment<3>(3 * static_cast<Eigen::Index>(v.index()));
+}
+
+Vec3 sheetOrigin(const Tissue& tissue) {
+  Vec3 mean = Vec3::Zero();
+  double zmin = std::numeric_limits<double>::infinity();
+  for (VertexId v : tissue.vertices()) {
+    mean += tissue.position(v);
+    zmin = std::min(zmin, tissue.position(v).z());
+  }
+  mean /= static_cast<double>(std::max<std::size_t>(tissue.numVertices(), 1));
+  return {mean.x(), mean.y(), zmin};
+}
+
+std::vector<double> facePressures(const Tissue& tissue, const std::vector<FaceId>& faces,
+                                  const std::vector<double>& cell_pressure, const Vec3& origin) {
+  std::vector<double> p(faces.size(), 0.0);
+  if (tissue.dim() == 2) {
+    const double sign = sheetSign(tissue, faces, origin);
+    for (std::size_t i = 0; i < faces.size(); ++i) p[i] = sign * cell_pressure[faces[i].index()];
+    return p;
+  }
+  std::vector<std::size_t> position(tissue.slots(2), 0);
+  for (std::size_t i = 0; i < faces.size(); ++i) position[faces[i].index()] = i;
+  for (CellId c : tissue.cells())
+    for (const OrientedFace& o : tissue.topology().volumeFaces(tissue.cellVolume(c)))
+      p[position[o.handle().index()]] += cell_pressure[c.index()] * (o.reversed() ? -1.0 : 1.0);
+  return p;
+}
+
+FanMembraneModel buildTissueMembranes(Tissue& tissue, const MembraneGrowthParams& params, MembraneRestState& state,
+                                      std::size_t* reset) {
+  const std::vector<FaceId> faces = membraneFaces(tissue);
+  const Eigen::VectorXd x = spatialDofs(tissue);
+  PropertyStore& face_props = tissue.properties(2);
+  if (!face_props.has(kMembraneRestRatioName))
+    face_props.add<double>(kMembraneRestRatioName, 1.0, DivisionPolicy::Copy);
+  const auto& ratio = face_props.get<double>(kMembraneRestRatioName);
+  const auto& pressure = cellOutput(tissue, kTurgorPressureName, params.pressure);
+  const PropertyColumn<double>* young =
+      tissue.cellProperties().has(kYoungScaleName) ? &tissue.cellProperties().get<double>(kYoungScaleName) : nullptr;
+  const Vec3 origin = tissue.dim() == 2 ? sheetOrigin(tissue) : Vec3::Zero();
+  const std::vector<double> p = facePressures(tissue, faces, pressure.values(), origin);
+  state.loops.resize(tissue.slots(2));
+  state.rest.resize(tissue.slots(2));
+  state.fibres.resize(tissue.slots(2), Vec3::Zero());
+  const bool feedback = params.feedback.rate > 0.0 || params.feedback.noise > 0.0;
+  std::size_t resets = 0;
+  std::vector<MembranePolygon> polygons(faces.size());
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const FaceId f = faces[i];
+    MembranePolygon& poly = polygons[i];
+    poly.loop = faceLoop(tissue, f);
+    std::vector<Vec3> positions;
+    for (Index v : poly.loop) positions.push_back(tissue.positions()[v]);
+    const PolygonTriangulation tri = polygonTriangulation(positions);
+    if (tri.folded)
+      throw MechanicsError("mechanics: " + faceName(tissue, f) +
+                           ": the fan from its vertex mean folds (a non-convex polygon not star-shaped from its "
+                           "vertex mean); membranes need unfolded fans");
+    const std::size_t slot = f.index();
+    if (state.loops[slot] != poly.loop || state.rest[slot].size() != poly.loop.size()) {
+      state.loops[slot] = poly.loop;
+      state.rest[slot] = FanMembraneModel::currentMetrics(x, poly.loop);
+      for (RestMetric& m : state.rest[slot]) m *= ratio[f];
+      ++resets;
+    }
+    poly.rest = state.rest[slot];
+    Vec3 mean = Vec3::Zero();
+    for (const Vec3& q : positions) mean += q;
+    poly.fibre = params.fibres.at(mean / static_cast<double>(positions.size()));
+    if (feedback) {  // the polygon's own fibre, kept through divisions (both parts keep the slot's or copy it)
+      if (state.fibres[slot].norm() > 0.0) poly.fibre = state.fibres[slot];
+      state.fibres[slot] = poly.fibre;
+    }
+    poly.pressure = p[i];
+    if (young) {
+      if (tissue.dim() == 2) {
+        poly.young_scale = (*young)[CellId(slot)];
+      } else {
+        const auto cells = tissue.wallCells(WallId(slot));
+        double s = 0.0;
+        for (CellId c : cells) s += (*young)[c];
+        poly.young_scale = s / static_cast<double>(cells.size());
+      }
+    }
+  }
+  if (tissue.dim() == 2) {
+    // Lids closing the open rims: pressure only, at the mean pressure of the
+    // cells along the rim, with the sheet's sign (the cells' p over P).
+    const double sign = sheetSign(tissue, faces, origin);
+    std::vector<std::size_t> rim_of(tissue.slots(0), kInvalidIndex);
+    const auto lids = rimLoops(tissue);
+    std::vector<double> sum(lids.size(), 0.0), count(lids.size(), 0.0);
+    for (std::size_t r = 0; r < lids.size(); ++r)
+      for (Index v : lids[r]) rim_of[v] = r;
+    for (WallId w : tissue.walls()) {
+      if (!tissue.isBoundaryWall(w)) continue;
+      const std::size_t r = rim_of[tissue.topology().edgeVertices(EdgeId(w.index()))[0].index()];
+      if (r == kInvalidIndex) continue;
+      sum[r] += pressure[tissue.wallCells(w).front()];
+      count[r] += 1.0;
+    }
+    double zmin = std::numeric_limits<double>::infinity();
+    for (VertexId v : tissue.vertices()) zmin = std::min(zmin, tissue.position(v).z());
+    for (std::size_t r = 0; r < lids.size(); ++r) {
+      // A rim on the fixed base (a dome's) adds a constant: left out.
+      bool fixed = true;
+      for (Index v : lids[r]) fixed = fixed && tissue.positions()[v].z() <= zmin + params.base_distance;
+      if (fixed) continue;
+      MembranePolygon lid;
+      lid.loop = lids[r];
+      lid.elastic = false;
+      lid.pressure = sign * (count[r] > 0.0 ? sum[r] / count[r] : 0.0);
+      polygons.push_back(std::move(lid));
+    }
+  }
+  if (reset) *reset = resets;
+  return FanMembraneModel(x, std::move(polygons), params.material, origin);
+}
+
+std::vector<double> membraneCellVolumes(const Tissue& tissue, const FanMembraneModel& model,
+                                        const Eigen::VectorXd& x) {
+  std::vector<double> v(tissue.cellSlots(), 0.0);
+  const std::vector<FaceId> faces = membraneFaces(tissue);
+  if (tissue.dim() == 2) {
+    for (std::size_t i = 0; i < faces.size(); ++i) v[faces[i].index()] = model.coneVolume(x, i);
+    return v;
+  }
+  std::vector<std::size_t> position(tissue.slots(2), 0);
+  for (std::size_t i = 0; i < faces.size(); ++i) position[faces[i].index()] = i;
+  for (CellId c : tissue.cells())
+    for (const OrientedFace& o : tissue.topology().volumeFaces(tissue.cellVolume(c)))
+      v[c.index()] += (o.reversed() ? -1.0 : 1.0) * model.coneVolume(x, position[o.handle().index()]);
+  return v;
+}
+
+MembraneStepReport membraneGrowthStep(Tissue& tissue, const MembraneGrowthParams& params, MembraneRestState& state,
+                                      double dt, std::mt19937_64* rng) {
+  params.check();
+  if (!(dt >= 0.0 && std::isfinite(dt))) throw InputError("mechanics: step dt " + formatNumber(dt) + " must be >= 0");
+  MembraneStepReport report;
+  FanMembraneModel model = buildTissueMembranes(tissue, params, state, &report.polygons_reset);
+  report.polygons = model.numPolygons();
+
+  std::vector<std::uint8_t> fixed(3 * tissue.slots(0), 1);
+  double zmin = std::numeric_limits<double>::infinity();
+  for (VertexId v : tissue.vertices()) zmin = std::min(zmin, tissue.position(v).z());
+  for (VertexId v : tissue.vertices()) {
+    const bool base = tissue.position(v).z() <= zmin + params.base_distance;
+    report.fixed_vertices += base ? 1 : 0;
+    for (int k = 0; k < 3; ++k) fixed[3 * v.index() + k] = base ? 1 : 0;
+  }
+  Eigen::VectorXd x = spatialDofs(tissue);
+  report.equilibrium = solveEquilibrium(model, x, fixed, params.solver);
+  setSpatialDofs(tissue, x);
+
+  const std::vector<FaceId> faces = membraneFaces(tissue);
+  if (params.feedback.rate > 0.0 || params.feedback.noise > 0.0) {
+    if (params.feedback.noise > 0.0 && !rng) throw InputError("mechanics: feedback noise needs a random stream");
+    std::normal_distribution<double> normal(0.0, 1.0);
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+      Vec3 n;
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(model.meanTension(x, i, &n));
+      const Vec3 s = eig.eigenvectors().col(2);  // the largest principal tension
+      const double kick = params.feedback.noise > 0.0 ? params.feedback.noise * std::sqrt(dt) * normal(*rng) : 0.0;
+      Vec3& f = state.fibres[faces[i].index()];
+      if (f.norm() > 0.0) f = turnFibre(f, s, n, params.feedback.rate, dt, kick);
+    }
+  }
+  report.max_growth_rate = model.growRestShape(x, params.growth, dt);
+  auto& ratio = tissue.properties(2).get<double>(kMembraneRestRatioName);
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const Index slot = faces[i].index();
+    state.rest[slot] = model.restMetrics(i);
+    double rest = 0.0, current = 0.0;
+    const auto now = FanMembraneModel::currentMetrics(x, state.loops[slot]);
+    for (std::size_t k = 0; k < now.size(); ++k) {
+      rest += restArea(state.rest[slot][k]);
+      current += restArea(now[k]);
+    }
+    ratio[faces[i]] = rest / current;
+  }
+  return report;
+}
+
+std::string MembraneRestState::toText(const Tissue& tissue) const {
+  std::string text;
+  for (FaceId f : membraneFaces(tissue)) {
+    if (f.index() >= rest.size()) continue;
+    const auto& r = rest[f.index()];
+    text += (text.empty() ? "" : " ") + std::to_string(r.size());
+    for (const RestMetric& m : r)
+      text += " " + formatNumber(m(0)) + " " + formatNumber(m(1)) + " " + formatNumber(m(2));
+    const Vec3 fibre = f.index() < fibres.size() ? fibres[f.index()] : Vec3::Zero();
+    text += " " + formatNumber(fibre.x()) + " " + formatNumber(fibre.y()) + " " + formatNumber(fibre.z());
+  }
+  return text;
+}
+
+void MembraneRestState::fromText(const Tissue& tissue, const std::string& text, const std::string& source) {
+  std::istringstream in(text);
+  auto number = [&](double& v) {
+    std::string word;
+    if (!(in >> word)) throw InputError(source + ": the membrane rest state ends early");
+    const auto r = std::from_chars(word.data(), word.data() + word.size(), v);
+    if (r.ec != std::errc() || r.ptr != word.data() + word.size())
+      throw InputError(source + ": the membrane rest state holds '" + word + "', not a number");
+  };
+  loops.assign(tissue.slots(2), {});
+  rest.assign(tissue.slots(2), {});
+  fibres.assign(tissue.slots(2), Vec3::Zero());
+  for (FaceId f : membraneFaces(tissue)) {
+    double n = 0.0;
+    number(n);
+    const std::vector<Index> loop = faceLoop(tissue, f);
+    if (n != static_cast<double>(loop.size()))
+      throw InputError(source + ": the membrane rest state has " + formatNumber(n) + " fan triangles for " +
+                       faceName(tissue, f) + ", which has " + std::to_string(loop.size()) + " vertices");
+    loops[f.index()] = loop;
+    rest[f.index()].resize(loop.size());
+    for (RestMetric& m : rest[f.index()]) {
+      number(m(0));
+      number(m(1));
+      number(m(2));
+    }
+    for (int k = 0; k < 3; ++k) number(fibres[f.index()][k]);
+  }
+  std::string extra;
+  if (in >> extra) throw InputError(source + ": the membrane rest state has more values than the tissue's polygons");
+}
+
+}  // namespace tessella::mechanics

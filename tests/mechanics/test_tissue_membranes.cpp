@@ -1,0 +1,337 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
+// Membranes built from a tissue's polygons (fan from the loop's vertex mean):
+// derivatives against finite differences (the apex chain rule included), the
+// fan volumes against the tissue's own cell volumes, a single 3D cell and a
+// dome sheet under pressure reaching equilibrium, short growth runs with a
+// division (validate() after every step), thread counts 1 and 2.
+#include <catch2/catch.hpp>
+
+#include "tessella/generators/dome.hpp"
+#include "tessella/generators/grids.hpp"
+#include "tessella/generators/voronoi.hpp"
+#include "tessella/mechanics/errors.hpp"
+#include "tessella/mechanics/tissue_membranes.hpp"
+#include "tessella/mechanics/wall_state.hpp"
+#include "tessella/tissue/builders.hpp"
+#include "tessella/tissue/geometry.hpp"
+#include "tessella/tissue/validate.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <omp.h>
+
+#include <cmath>
+#include <random>
+
+using namespace tessella;
+using namespace tessella::mechanics;
+
+namespace {
+
+Tissue domeSheet(std::size_t cells, std::uint64_t seed) {
+  Dome dome;
+  dome.base_radius = 5.0;
+  dome.height = 2.5;
+  const Disk footprint{Vec3::Zero(), 5.0};
+  return domeTissue(randomSeeds(footprint, cells, seed), dome, VoronoiOptions{.lloyd_iterations = 2});
+}
+
+Tissue voronoiBox(std::size_t cells, std::uint64_t seed) {
+  const Box box{Vec3(0, 0, 0), Vec3(3, 3, 3)};
+  return voronoiTissue(randomSeeds(box, cells, seed), box, VoronoiOptions{.lloyd_iterations = 1});
+}
+
+double totalVolume(const std::vector<double>& v) {
+  double s = 0.0;
+  for (double x : v) s += x;
+  return s;
+}
+
+// Central differences of E against g, and of g against the Hessian (columns).
+void checkDerivatives(const FanMembraneModel& model, const Eigen::VectorXd& x) {
+  Eigen::VectorXd g;
+  model.gradient(x, g);
+  std::vector<Triplet> entries;
+  model.hessian(x, entries);
+  Eigen::SparseMatrix<double> K(model.size(), model.size());
+  K.setFromTriplets(entries.begin(), entries.end());
+  const Eigen::MatrixXd Kd = Eigen::MatrixXd(K);
+  CHECK((Kd - Kd.transpose()).norm() <= 1e-12 * Kd.norm());
+  const double h = 1e-6;
+  Eigen::VectorXd fd(model.size());
+  Eigen::MatrixXd fdK(model.size(), model.size());
+  for (Eigen::Index i = 0; i < model.size(); ++i) {
+    Eigen::VectorXd xp = x, xm = x;
+    xp(i) += h;
+    xm(i) -= h;
+    fd(i) = (model.energy(xp) - model.energy(xm)) / (2 * h);
+    Eigen::VectorXd gp, gm;
+    model.gradient(xp, gp);
+    model.gradient(xm, gm);
+    fdK.col(i) = (gp - gm) / (2 * h);
+  }
+  CHECK((fd - g).norm() <= 1e-7 * g.norm());
+  CHECK((fdK - Kd).norm() <= 1e-6 * Kd.norm());
+  CHECK(g.norm() > 0.0);
+}
+
+}  // namespace
+
+TEST_CASE("tissue membranes: derivatives of a dome sheet and a 3D tissue against finite differences",
+          "[mechanics]") {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  MembraneGrowthParams params;
+  params.material.young = 50.0;
+  params.material.poisson = 0.3;
+  params.material.thickness = 0.1;
+  params.material.fibre_ratio = 5.0;
+  params.fibres.kind = FibreRule::Kind::Circumferential;
+  for (int dim : {2, 3}) {
+    CAPTURE(dim);
+    Tissue tissue = dim == 2 ? domeSheet(12, 3) : voronoiBox(6, 4);
+    auto& pressure = cellOutput(tissue, kTurgorPressureName, 0.0);
+    auto& young = cellOutput(tissue, kYoungScaleName, 1.0);
+    for (CellId c : tissue.cells()) {
+      pressure[c] = 0.5 + 0.3 * u(rng);  // uneven: interior walls carry a net pressure
+      young[c] = 1.0 + 0.5 * u(rng);
+    }
+    MembraneRestState state;
+    FanMembraneModel at_rest = buildTissueMembranes(tissue, params, state);
+    // Rest shapes 0.9 of the current ones, then a random perturbation: strained, sheared.
+    for (auto& r : state.rest)
+      for (RestMetric& m : r) m *= 0.81;
+    Eigen::VectorXd x = spatialDofs(tissue);
+    for (Eigen::Index i = 0; i < x.size(); ++i) x(i) += 0.02 * u(rng);
+    const FanMembraneModel model = buildTissueMembranes(tissue, params, state);
+    checkDerivatives(model, x);
+    // At rest in its shape the elastic energy is zero: E = -sum p_f V_f.
+    const Eigen::VectorXd x0 = spatialDofs(tissue);
+    double pv = 0.0;
+    for (std::size_t f = 0; f < at_rest.numPolygons(); ++f)
+      pv += at_rest.polygon(f).pressure * at_rest.coneVolume(x0, f);
+    CHECK(at_rest.energy(x0) == Approx(-pv).epsilon(1e-12));
+  }
+}
+
+TEST_CASE("tissue membranes: fan volumes of a 3D tissue are the tissue's cell volumes", "[mechanics]") {
+  Tissue tissue = voronoiBox(20, 9);
+  MembraneRestState state;
+  const FanMembraneModel model = buildTissueMembranes(tissue, MembraneGrowthParams{}, state);
+  const std::vector<double> v = membraneCellVolumes(tissue, model, spatialDofs(tissue));
+  for (CellId c : tissue.cells()) CHECK(v[c.index()] == Approx(cellMeasure(tissue, c)).epsilon(1e-10));
+  CHECK(totalVolume(v) == Approx(27.0).epsilon(1e-10));
+}
+
+TEST_CASE("tissue membranes: a single box cell under pressure reaches equilibrium", "[mechanics]") {
+  Tissue tissue = boxGrid(1, 1, 1);
+  MembraneGrowthParams params;
+  params.material.young = 100.0;
+  params.material.thickness = 0.05;
+  params.pressure = 0.5;
+  params.solver.relative_tolerance = 1e-12;
+  MembraneRestState state;
+  const double v0 = totalMeasure(tissue);
+  const MembraneStepReport r = membraneGrowthStep(tissue, params, state, 0.0);
+  CHECK(r.fixed_vertices == 4);  // the bottom face
+  CHECK(r.equilibrium.iterations >= 2);
+  for (std::size_t k = 1; k < r.equilibrium.energies.size(); ++k)  // up to round-off of E
+    CHECK(r.equilibrium.energies[k] <=
+          r.equilibrium.energies[k - 1] + 1e-13 * std::abs(r.equilibrium.energies[k - 1]));
+  CHECK(r.equilibrium.residual <= r.equilibrium.tolerance);
+  // The box inflates: volume larger, still positive; the top rises above 1.
+  CHECK(totalMeasure(tissue) > v0);
+  double top = 0.0;
+  for (VertexId v : tissue.vertices()) top = std::max(top, tissue.position(v).z());
+  CHECK(top > 1.0);
+  CHECK_NOTHROW(validateOrThrow(tissue));
+  // Energy balance at equilibrium (Clapeyron does not hold at large strain, but
+  // the gradient vanishes): moving every free vertex by a small rigid shift of
+  // the top changes E only to second order.
+  MembraneRestState again = state;
+  const FanMembraneModel model = buildTissueMembranes(tissue, params, again);
+  Eigen::VectorXd x = spatialDofs(tissue), g;
+  model.gradient(x, g);
+  for (VertexId v : tissue.vertices())
+    if (tissue.position(v).z() > 1e-9) CHECK(g.segment<3>(3 * v.index()).norm() <= 1e-9 * r.equilibrium.force_scale);
+}
+
+TEST_CASE("tissue membranes: a dome sheet with a fixed base converges quadratically", "[mechanics]") {
+  Tissue tissue = domeSheet(40, 5);
+  MembraneGrowthParams params;
+  params.material.young = 20.0;
+  params.material.thickness = 0.1;
+  params.pressure = 0.2;
+  params.solver.relative_tolerance = 1e-13;
+  MembraneRestState state;
+  const double h0 = [&] {
+    double h = 0.0;
+    for (VertexId v : tissue.vertices()) h = std::max(h, tissue.position(v).z());
+    return h;
+  }();
+  const MembraneStepReport rep = membraneGrowthStep(tissue, params, state, 0.0);
+  const EquilibriumReport& r = rep.equilibrium;
+  const double s = r.force_scale;
+  for (std::size_t k = 0; k < r.residuals.size(); ++k)
+    UNSCOPED_INFO("relative residual " << k << ": " << r.residuals[k] / s);
+  int near = 0;
+  for (std::size_t k = 0; k + 1 < r.residuals.size(); ++k) {
+    const double rk = r.residuals[k] / s, rn = r.residuals[k + 1] / s;
+    if (rk < 1e-3) {  // measured: r_{k+1} / r_k^2 = 41..55 over the last three steps
+      ++near;
+      CAPTURE(k, rk, rn);
+      CHECK(rn <= 100.0 * rk * rk + 1e-14);
+    }
+  }
+  CHECK(near >= 2);
+  for (std::size_t k = 1; k < r.energies.size(); ++k)  // up to round-off of E
+    CHECK(r.energies[k] <= r.energies[k - 1] + 1e-13 * std::abs(r.energies[k - 1]));
+  double h = 0.0;
+  for (VertexId v : tissue.vertices()) h = std::max(h, tissue.position(v).z());
+  CHECK(h > h0);  // the dome inflates
+  CHECK(rep.fixed_vertices > 0);
+  CHECK_NOTHROW(validateOrThrow(tissue));
+}
+
+TEST_CASE("tissue membranes: growth runs with divisions stay valid; threads 1 and 2 bit-identical",
+          "[mechanics]") {
+  auto run = [](int dim, int threads) {
+    const int saved = omp_get_max_threads();
+    omp_set_num_threads(threads);
+    Tissue tissue = dim == 2 ? domeSheet(30, 8) : voronoiBox(12, 8);
+    MembraneGrowthParams params;
+    params.material.young = 20.0;
+    params.material.thickness = 0.1;
+    params.pressure = 0.2;
+    params.growth.extensibility = 2.0;
+    params.growth.threshold = 0.005;
+    params.fibres.kind = FibreRule::Kind::Circumferential;
+    params.material.fibre_ratio = 3.0;
+    MembraneRestState state;
+    std::vector<double> volumes;
+    for (int step = 0; step < 4; ++step) {
+      const MembraneStepReport r = membraneGrowthStep(tissue, params, state, 0.2);
+      CHECK(r.max_growth_rate > 0.0);
+      CHECK_NOTHROW(validateOrThrow(tissue));
+      const FanMembraneModel model = buildTissueMembranes(tissue, params, state);
+      const std::vector<double> v = membraneCellVolumes(tissue, model, spatialDofs(tissue));
+      for (CellId c : tissue.cells()) CHECK(v[c.index()] > 0.0);
+      volumes.push_back(totalVolume(v));
+      if (step == 1) {  // divide the largest cell through its centroid
+        CellId big;
+        double best = 0.0;
+        for (CellId c : tissue.cells())
+          if (cellMeasure(tissue, c) > best) {
+            best = cellMeasure(tissue, c);
+            big = c;
+          }
+        const Vec3 axis = dim == 2 ? Vec3(1, 0, 0) : Vec3(0, 0, 1);
+        tissue.splitCell(big, Plane{cellCentroid(tissue, big), axis});
+        CHECK_NOTHROW(validateOrThrow(tissue));
+      }
+    }
+    for (std::size_t k = 1; k < volumes.size(); ++k) CHECK(volumes[k] > volumes[k - 1]);  // it grows
+    omp_set_num_threads(saved);
+    return std::vector<Vec3>(tissue.positions().begin(), tissue.positions().end());
+  };
+  for (int dim : {2, 3}) {
+    CAPTURE(dim);
+    CHECK(run(dim, 1) == run(dim, 2));
+  }
+}
+
+TEST_CASE("tissue membranes: refused tissues and bad state", "[mechanics]") {
+  Tissue planar = rectangularGrid(2, 2);
+  MembraneRestState state;
+  CHECK_THROWS_WITH(buildTissueMembranes(planar, MembraneGrowthParams{}, state), Catch::Contains("planar"));
+  // A U-shaped cell: its vertex mean (1.5, 1.5) lies in the notch, so the fan folds.
+  const std::vector<Vec3> u = {Vec3(0, 0, 0), Vec3(3, 0, 0), Vec3(3, 3, 0), Vec3(2, 3, 0),
+                               Vec3(2, 1, 0), Vec3(1, 1, 0), Vec3(1, 3, 0), Vec3(0, 3, 0)};
+  Tissue folded = buildPolygonTissue(u, {{0, 1, 2, 3, 4, 5, 6, 7}}, Embedding::Surface);
+  CHECK_THROWS_WITH(buildTissueMembranes(folded, MembraneGrowthParams{}, state),
+                    Catch::Contains("cell 0") && Catch::Contains("folds"));
+  // The rest state reads back exactly from its text; a short text is refused.
+  Tissue tissue = voronoiBox(5, 2);
+  MembraneGrowthParams params;
+  params.pressure = 0.3;
+  membraneGrowthStep(tissue, params, state, 0.0);
+  for (auto& r : state.rest)
+    for (RestMetric& m : r) m *= 1.0 / 3.0;  // not a short decimal
+  MembraneRestState back;
+  back.fromText(tissue, state.toText(tissue), "snapshot s");
+  for (FaceId f : tissue.faces()) {
+    CHECK(back.rest[f.index()] == state.rest[f.index()]);
+    CHECK(back.loops[f.index()] == state.loops[f.index()]);
+  }
+  CHECK_THROWS_WITH(back.fromText(tissue, "3 1 0 1", "snapshot s"), Catch::Contains("snapshot s"));
+}
+
+TEST_CASE("stress feedback: the fibre angle to a uniaxial stress decays exponentially at the given rate",
+          "[mechanics]") {
+  // One flat square membrane at rest, stretched by 1.2 along x: the maximal
+  // principal tension is along x; an isotropic material keeps it there.
+  const std::vector<Index> loop = {0, 1, 2, 3};
+  Eigen::VectorXd x0(12);
+  x0 << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
+  MembranePolygon poly;
+  poly.loop = loop;
+  poly.rest = FanMembraneModel::currentMetrics(x0, loop);
+  const FanMembraneModel model(x0, {poly}, MembraneMaterial{}, Vec3::Zero());
+  Eigen::VectorXd x = x0;
+  for (int i = 0; i < 4; ++i) x(3 * i) *= 1.2;
+  Vec3 n;
+  const Eigen::Matrix3d T = model.meanTension(x, 0, &n);
+  CHECK(std::abs(n.z()) == Approx(1.0));
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(T);
+  const Vec3 s = eig.eigenvectors().col(2);
+  CHECK(std::abs(s.x()) == Approx(1.0).epsilon(1e-12));
+  const double rate = 2.0, dt = 0.05, theta0 = 1.2;
+  Vec3 f(std::cos(theta0), std::sin(theta0), 0.0);
+  for (int k = 1; k <= 20; ++k) {
+    f = turnFibre(f, s, n, rate, dt);
+    CHECK(f.norm() == Approx(1.0).epsilon(1e-14));
+    const double expected = theta0 * std::exp(-rate * dt * k);
+    CHECK(std::abs(axisAngle(f, Vec3(1, 0, 0), Vec3(0, 0, 1))) == Approx(expected).epsilon(1e-12));
+  }
+  // Axes: a fibre at 170 degrees is 10 degrees from the stress axis.
+  CHECK(axisAngle(Vec3(std::cos(3.0), std::sin(3.0), 0), Vec3(1, 0, 0), Vec3(0, 0, 1)) ==
+        Approx(3.0 - std::acos(-1.0)).epsilon(1e-14));
+}
+
+TEST_CASE("stress feedback in a growth step: a cylinder's fibres turn toward the hoop stress at the rate given",
+          "[mechanics]") {
+  // An isotropic pressurised cylinder (the fibres do not change its stress):
+  // away from its ends the maximal tension is the hoop one (P r against about
+  // P r / 3 along), so each fibre's angle to the hoop direction decays as
+  // theta0 exp(-rate t).
+  Tissue tissue = cylinderGrid(16, 12, 1.0, 6.0);
+  MembraneGrowthParams params;
+  params.material.young = 10.0;
+  params.material.thickness = 0.1;
+  params.pressure = 0.02;
+  params.fibres.kind = FibreRule::Kind::Fixed;
+  const double theta0 = 1.0;  // from the hoop direction, toward the axis
+  params.fibres.vector = Vec3(0, 0, 1);
+  params.feedback.rate = 1.5;
+  MembraneRestState state;
+  // Start: each polygon's fibre at theta0 from its hoop direction.
+  buildTissueMembranes(tissue, params, state);
+  for (CellId c : tissue.cells()) {
+    const Vec3 p = cellCentroid(tissue, c);
+    const Vec3 hoop = Vec3(-p.y(), p.x(), 0).normalized();
+    state.fibres[c.index()] = std::cos(theta0) * hoop + std::sin(theta0) * Vec3(0, 0, 1);
+  }
+  const double dt = 0.2;
+  for (int step = 1; step <= 5; ++step) {
+    membraneGrowthStep(tissue, params, state, dt);
+    for (CellId c : tissue.cells()) {
+      const Vec3 p = cellCentroid(tissue, c);
+      if (p.z() < 2.0 || p.z() > 4.0) continue;  // the middle third
+      const Vec3 hoop = Vec3(-p.y(), p.x(), 0).normalized();
+      const Vec3 normal = Vec3(p.x(), p.y(), 0).normalized();
+      CAPTURE(step, c.index());
+      CHECK(axisAngle(state.fibres[c.index()], hoop, normal) ==
+            Approx(theta0 * std::exp(-params.feedback.rate * dt * step)).epsilon(1e-6));
+    }
+  }
+}
