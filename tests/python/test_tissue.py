@@ -249,8 +249,14 @@ def test_dome_vertices_lie_on_the_dome():
 
 def test_generate_makes_any_generator_of_the_table_by_name():
     # The generators of a configuration's tissue.generator, with its keys.
-    for name in ("rectangular_grid", "hexagonal_grid", "box_grid", "voronoi", "dome"):
+    for name in ("rectangular_grid", "hexagonal_grid", "box_grid", "cylinder", "voronoi", "dome"):
         assert name in tessella.generate.__doc__
+    # The cylinder: around x along quad cells, every vertex at the radius from the z axis.
+    c = tessella.generate("cylinder", {"around": 12, "along": 3, "radius": 1.5, "length": 4.0})
+    assert c.dim == 2 and c.num_cells == 36
+    q = c.positions()
+    np.testing.assert_allclose(np.hypot(q[:, 0], q[:, 1]), 1.5, rtol=1e-12)
+    np.testing.assert_allclose([q[:, 2].min(), q[:, 2].max()], [0.0, 4.0], atol=1e-12)
     t = tessella.generate("hexagonal_grid", {"nx": 3, "ny": 2, "radius": 0.5})
     np.testing.assert_array_equal(t.positions(), tessella.hexagonal_grid(3, 2, radius=0.5).positions())
     # The same random seeds as random_seeds with the same rng_seed.
