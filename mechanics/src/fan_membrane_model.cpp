@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tessella/mechanics/fan_membrane_model.hpp"
 
+#include "membrane_kinematics.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
 
@@ -15,26 +16,10 @@
 namespace tessella::mechanics {
 namespace {
 
-Eigen::Matrix3d cross(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d m;
-  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return m;
-}
-
-Eigen::Vector3d point(const Eigen::VectorXd& x, Index i) { return x.segment<3>(3 * static_cast<Eigen::Index>(i)); }
-
-Eigen::Vector3d greenStrain(const Eigen::Matrix<double, 3, 2>& F) {
-  const Eigen::Matrix2d C = F.transpose() * F;
-  return {0.5 * (C(0, 0) - 1.0), 0.5 * (C(1, 1) - 1.0), C(0, 1)};
-}
-
-Eigen::Matrix3d strainMatrix(const Eigen::Matrix<double, 3, 2>& F, const Eigen::Vector2d& g) {
-  Eigen::Matrix3d B;
-  B.row(0) = g(0) * F.col(0).transpose();
-  B.row(1) = g(1) * F.col(1).transpose();
-  B.row(2) = g(0) * F.col(1).transpose() + g(1) * F.col(0).transpose();
-  return B;
-}
+using detail::cross;
+using detail::greenStrain;
+using detail::point;
+using detail::strainMatrix;
 
 Eigen::Vector3d loopMean(const Eigen::VectorXd& x, const std::vector<Index>& loop) {
   Eigen::Vector3d a = Eigen::Vector3d::Zero();
@@ -43,15 +28,6 @@ Eigen::Vector3d loopMean(const Eigen::VectorXd& x, const std::vector<Index>& loo
 }
 
 }  // namespace
-
-void FanMembraneModel::Element::setRestShape(const Eigen::Matrix2d& edges) {
-  D = edges;
-  const Eigen::Matrix2d Dinv = D.inverse();
-  g[1] = Dinv.row(0).transpose();
-  g[2] = Dinv.row(1).transpose();
-  g[0] = -g[1] - g[2];
-  area = 0.5 * std::abs(D.determinant());
-}
 
 std::vector<RestMetric> FanMembraneModel::currentMetrics(const Eigen::VectorXd& x, const std::vector<Index>& loop) {
   const Eigen::Vector3d a = loopMean(x, loop);

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tessella/mechanics/membrane_model.hpp"
 
+#include "membrane_kinematics.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
 
@@ -14,30 +15,11 @@
 namespace tessella::mechanics {
 namespace {
 
-using Mat32 = Eigen::Matrix<double, 3, 2>;
-
-Eigen::Matrix3d cross(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d m;
-  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return m;
-}
-
-Eigen::Vector3d point(const Eigen::VectorXd& x, Index i) { return x.segment<3>(3 * static_cast<Eigen::Index>(i)); }
-
-// Green-Lagrange strain in Voigt form (E11, E22, 2 E12).
-Eigen::Vector3d greenStrain(const Mat32& F) {
-  const Eigen::Matrix2d C = F.transpose() * F;
-  return {0.5 * (C(0, 0) - 1.0), 0.5 * (C(1, 1) - 1.0), C(0, 1)};
-}
-
-// Strain-displacement matrix of node a: d eps = B_a d x_a.
-Eigen::Matrix3d strainMatrix(const Mat32& F, const Eigen::Vector2d& g) {
-  Eigen::Matrix3d B;
-  B.row(0) = g(0) * F.col(0).transpose();
-  B.row(1) = g(1) * F.col(1).transpose();
-  B.row(2) = g(0) * F.col(1).transpose() + g(1) * F.col(0).transpose();
-  return B;
-}
+using detail::cross;
+using detail::greenStrain;
+using detail::Mat32;
+using detail::point;
+using detail::strainMatrix;
 
 }  // namespace
 
@@ -98,7 +80,7 @@ MembraneModel::MembraneModel(std::vector<Vec3> reference, std::vector<std::array
   }
 }
 
-void MembraneModel::Element::setRestShape(const Eigen::Matrix2d& edges) {
+void MembraneTriangleRest::setRestShape(const Eigen::Matrix2d& edges) {
   D = edges;
   const Eigen::Matrix2d Dinv = D.inverse();
   g[1] = Dinv.row(0).transpose();

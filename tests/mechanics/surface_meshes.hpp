@@ -7,6 +7,7 @@
 // points 0 (south) and 1 (north), and ring points follow ring by ring.
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
 #include "tessella/tissue/handles.hpp"
@@ -32,5 +33,16 @@ SurfaceMesh sphereMesh(double R, int rings, int around);
 /// hemispherical caps: `cap_rings` rings on each cap, `length_rings` on the
 /// cylinder (both ends included).
 SurfaceMesh capsuleMesh(double R, double H, int cap_rings, int length_rings, int around);
+
+/// Supports of a surface of revolution: north pole (vertex 1) fixed, south
+/// pole (vertex 0) held in x and y, one ring point held in y: no rigid motion
+/// is left and the surface is free to inflate.
+inline std::vector<std::uint8_t> supports(const SurfaceMesh& m) {
+  std::vector<std::uint8_t> fixed(3 * m.points.size(), 0);
+  fixed[3 * 1] = fixed[3 * 1 + 1] = fixed[3 * 1 + 2] = 1;
+  fixed[3 * 0] = fixed[3 * 0 + 1] = 1;
+  fixed[3 * m.on_x_axis + 1] = 1;
+  return fixed;
+}
 
 }  // namespace tessella::test

@@ -19,17 +19,7 @@
 using namespace tessella;
 using namespace tessella::mechanics;
 
-namespace {
-
-std::vector<std::uint8_t> supports(const test::SurfaceMesh& m) {
-  std::vector<std::uint8_t> fixed(3 * m.points.size(), 0);
-  fixed[3 * 1] = fixed[3 * 1 + 1] = fixed[3 * 1 + 2] = 1;
-  fixed[3 * 0] = fixed[3 * 0 + 1] = 1;
-  fixed[3 * m.on_x_axis + 1] = 1;
-  return fixed;
-}
-
-}  // namespace
+using test::supports;
 
 TEST_CASE("membrane growth: a pressurised sphere grows isotropically at the rate of its growth ODE",
           "[mechanics][membrane]") {

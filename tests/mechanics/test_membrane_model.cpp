@@ -23,17 +23,9 @@
 using namespace tessella;
 using namespace tessella::mechanics;
 
-namespace {
+using test::supports;
 
-// North pole fixed, south pole held in x and y, one ring point held in y:
-// no rigid motion is left and the surface is free to inflate.
-std::vector<std::uint8_t> supports(const test::SurfaceMesh& m) {
-  std::vector<std::uint8_t> fixed(3 * m.points.size(), 0);
-  fixed[3 * 1] = fixed[3 * 1 + 1] = fixed[3 * 1 + 2] = 1;
-  fixed[3 * 0] = fixed[3 * 0 + 1] = 1;
-  fixed[3 * m.on_x_axis + 1] = 1;
-  return fixed;
-}
+namespace {
 
 // The two in-plane principal tensions of a membrane tension tensor.
 Eigen::Vector2d inPlane(const Eigen::Matrix3d& N) {

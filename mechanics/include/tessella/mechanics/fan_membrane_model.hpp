@@ -24,6 +24,7 @@
 
 #include "tessella/mechanics/energy_model.hpp"
 #include "tessella/mechanics/membrane_model.hpp"
+#include "tessella/mechanics/membrane_triangle.hpp"
 #include "tessella/mechanics/strain_growth.hpp"
 #include "tessella/tissue/handles.hpp"
 #include "tessella/tissue/vec3.hpp"
@@ -83,12 +84,8 @@ class FanMembraneModel final : public EnergyModel {
   static std::vector<RestMetric> currentMetrics(const Eigen::VectorXd& x, const std::vector<Index>& loop);
 
  private:
-  struct Element {
-    Eigen::Matrix2d D;                 // rest edges (apex -> x_i, apex -> x_{i+1}) in the fibre frame
-    std::array<Eigen::Vector2d, 3> g;  // shape-function gradients (apex, x_i, x_{i+1}) in that frame
-    double area = 0.0;
-    void setRestShape(const Eigen::Matrix2d& edges);
-  };
+  // Corners (apex, x_i, x_{i+1}): D holds the rest edges apex -> x_i, apex -> x_{i+1}.
+  using Element = MembraneTriangleRest;
   using Mat32 = Eigen::Matrix<double, 3, 2>;
   std::array<Eigen::Vector3d, 3> corners(const Eigen::VectorXd& x, std::size_t f, std::size_t i) const;
   Mat32 deformationGradient(const std::array<Eigen::Vector3d, 3>& c, const Element& e) const;

@@ -16,6 +16,7 @@
 #include <Eigen/Core>
 
 #include "tessella/mechanics/energy_model.hpp"
+#include "tessella/mechanics/membrane_triangle.hpp"
 #include "tessella/mechanics/strain_growth.hpp"
 #include "tessella/tissue/handles.hpp"
 #include "tessella/tissue/vec3.hpp"
@@ -77,12 +78,7 @@ class MembraneModel final : public EnergyModel {
   double restArea(std::size_t e) const { return elements_[e].area; }
 
  private:
-  struct Element {
-    Eigen::Matrix2d D;                 // reference edge vectors (x1 - x0, x2 - x0) in the fibre frame
-    std::array<Eigen::Vector2d, 3> g;  // gradients of the shape functions in that frame
-    double area = 0.0;                 // reference area A0
-    void setRestShape(const Eigen::Matrix2d& edges);
-  };
+  using Element = MembraneTriangleRest;
   Eigen::Matrix<double, 3, 2> deformationGradient(const Eigen::VectorXd& x, std::size_t e) const;
 
   std::vector<Vec3> reference_;
