@@ -345,10 +345,13 @@ case "$case_name" in
     "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/out" -q || fail "first run failed"
     : >"$tmp/out/tissue_000007.vtu.tmp-123-4"; : >"$tmp/out/tissue.pvd.tmp-123-5"; : >"$tmp/out/run.yaml.tmp"
     : >"$tmp/out/keep.txt"
+    # A previous run's primordia table goes too, though this run records none.
+    printf 'id,time\n0,1\n' >"$tmp/out/primordia.csv"; : >"$tmp/out/primordia.csv.tmp"
     "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/out" -q --overwrite || fail "--overwrite failed"
     left=$(find "$tmp/out" -name '*.tmp*')
     [ -z "$left" ] || fail "temporaries left: $left"
     [ -f "$tmp/out/keep.txt" ] || fail "a file of the user's was removed"
+    [ ! -e "$tmp/out/primordia.csv" ] || fail "the previous run's primordia.csv was left"
     ;;
   disk_full)
     # A full disk: the error names the file and says "No space left on device", without VTK's dump,

@@ -153,4 +153,8 @@ TEST_CASE("network: errors at their keys", "[sim][network][errors]") {
   CHECK(e.keyPath() == "network.mode");
   e = error("network: {mode: transient, species: {a: {permeability: -1}}}\n");
   CHECK(e.keyPath() == "network.species.a.permeability");
+  // A species named like a diffusion species: both stages would write the property `auxin`.
+  e = error("diffusion: {mode: transient, species: auxin}\nnetwork: {mode: transient, species: {auxin: {}}}\n");
+  CHECK(e.keyPath() == "network");
+  CHECK_THAT(e.what(), Catch::Contains("'auxin' is written by both the diffusion and the network stage"));
 }

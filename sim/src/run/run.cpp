@@ -24,8 +24,8 @@ namespace tessella::sim {
 namespace {
 
 /// The files of a previous run of series `name` in `dir` (its snapshots with
-/// the solver fields' state beside them; with_fields: and the solver-field
-/// series), with the temporaries an interrupted write
+/// the solver fields' state beside them, its statistics and primordia tables;
+/// with_fields: and the solver-field series), with the temporaries an interrupted write
 /// left behind (FILE.tmp-PID-N, run.yaml.tmp of older versions).
 std::vector<fs::path> previousRunFiles(const fs::path& dir, const std::string& name, bool with_fields = false) {
   std::vector<fs::path> files;
@@ -39,7 +39,8 @@ std::vector<fs::path> previousRunFiles(const fs::path& dir, const std::string& n
                           R"((\.tmp|\.tmp-\d+-\d+)?)");
   for (const auto& entry : fs::directory_iterator(dir, ec)) {
     const std::string file = entry.path().filename().string();
-    if (std::regex_match(file, record) || file == kStatisticsName || std::regex_match(file, series) ||
+    if (std::regex_match(file, record) || file == kStatisticsName || file == kPrimordiaName ||
+        file == std::string(kPrimordiaName) + ".tmp" || std::regex_match(file, series) ||
         (with_fields && std::regex_match(file, fields)))
       files.push_back(entry.path());
   }

@@ -4,6 +4,7 @@
 
 #include <charconv>
 #include <limits>
+#include <map>
 #include <random>
 
 #include "tessella/sim/config/config_loader.hpp"
@@ -69,15 +70,23 @@ SimulationConfig readSimulationConfig(Config config) {
   SimulationConfig result{.config = std::move(config), .rng_seed = seed, .tissue = std::move(tissue), .time = time};
   for (const SectionUnit& unit : sectionUnits())
     if (unit.read) unit.read(result.config, result);
-  // A division gate reads a value another stage writes: ask the stages the sections make.
-  if (result.division.gate) {
-    std::vector<std::string> written;
-    for (const auto& stage : makeStages(result)) {
-      const std::vector<std::string> names = stage->cellPropertiesWritten();
-      written.insert(written.end(), names.begin(), names.end());
+  // Ask the stages the sections make which cell properties they write: two
+  // stages writing one property would overwrite each other (a network species
+  // named like a diffusion species would even take its values as its state),
+  // and a division gate reads a value some stage writes.
+  std::vector<std::string> written;
+  std::map<std::string, std::string> writer;  // property -> the stage writing it
+  for (const auto& stage : makeStages(result)) {
+    for (const std::string& name : stage->cellPropertiesWritten()) {
+      const auto [it, first] = writer.emplace(name, stage->name());
+      if (!first && it->second != stage->name())
+        throw result.config.errorAt(stage->name(), "the cell property '" + name + "' is written by both the " +
+                                                       it->second + " and the " + stage->name() +
+                                                       " stage; give one of them another name");
+      written.push_back(name);
     }
-    checkDivisionGate(result.config, result.division, written);
   }
+  if (result.division.gate) checkDivisionGate(result.config, result.division, written);
   detail::checkTissueShape(result);  // keys that assume a dimension, against the tissue's
   return result;
 }
