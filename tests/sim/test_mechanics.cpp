@@ -9,7 +9,9 @@
 #include <numbers>
 
 #include "tessella/mechanics/errors.hpp"
+#include "tessella/mechanics/tissue_membranes.hpp"
 #include "tessella/mechanics/wall_state.hpp"
+#include "tessella/mechanics/wall_stress.hpp"
 #include "tessella/sim/sections/simulation_config.hpp"
 #include "tessella/sim/simulation.hpp"
 #include "tessella/tissue/builders.hpp"
