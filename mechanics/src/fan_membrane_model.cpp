@@ -259,7 +259,9 @@ Eigen::Matrix3d FanMembraneModel::tension(const Eigen::VectorXd& x, std::size_t 
   return material_.thickness / J * F * S * F.transpose();
 }
 
-Eigen::Matrix3d FanMembraneModel::meanTension(const Eigen::VectorXd& x, std::size_t f, Vec3* normal) const {
+template <class PerTriangle>
+Eigen::Matrix3d FanMembraneModel::fanMean(const Eigen::VectorXd& x, std::size_t f, PerTriangle per_triangle,
+                                          Vec3* normal) const {
   Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
   Eigen::Vector3d vector_area = Eigen::Vector3d::Zero();
   double area = 0.0;
@@ -268,10 +270,39 @@ Eigen::Matrix3d FanMembraneModel::meanTension(const Eigen::VectorXd& x, std::siz
     const Eigen::Vector3d a = 0.5 * (c[1] - c[0]).cross(c[2] - c[0]);
     vector_area += a;
     area += a.norm();
-    sum += a.norm() * tension(x, f, i);
+    sum += a.norm() * per_triangle(i);
   }
   if (normal) *normal = vector_area.normalized();
   return sum / area;
+}
+
+Eigen::Matrix3d FanMembraneModel::meanTension(const Eigen::VectorXd& x, std::size_t f, Vec3* normal) const {
+  return fanMean(x, f, [&](std::size_t i) { return tension(x, f, i); }, normal);
+}
+
+Eigen::Matrix3d FanMembraneModel::strain(const Eigen::VectorXd& x, std::size_t f, std::size_t i) const {
+  const Mat32 F = deformationGradient(corners(x, f, i), elements_[first_element_[f] + i]);
+  const Eigen::Matrix3d projector = F * (F.transpose() * F).inverse() * F.transpose();
+  return 0.5 * (F * F.transpose() - projector);
+}
+
+Eigen::Matrix3d FanMembraneModel::meanStrain(const Eigen::VectorXd& x, std::size_t f) const {
+  return fanMean(x, f, [&](std::size_t i) { return strain(x, f, i); }, nullptr);
+}
+
+double FanMembraneModel::fanArea(const Eigen::VectorXd& x, std::size_t f) const {
+  double area = 0.0;
+  for (std::size_t i = 0; i < polygons_[f].loop.size(); ++i) {
+    const auto c = corners(x, f, i);
+    area += 0.5 * (c[1] - c[0]).cross(c[2] - c[0]).norm();
+  }
+  return area;
+}
+
+double FanMembraneModel::restArea(std::size_t f) const {
+  double area = 0.0;
+  for (std::size_t e = first_element_[f]; e < first_element_[f + 1]; ++e) area += elements_[e].area;
+  return area;
 }
 
 double FanMembraneModel::growRestShape(const Eigen::VectorXd& x, const StrainGrowthLaw& law, double dt) {

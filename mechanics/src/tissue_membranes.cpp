@@ -4,6 +4,7 @@
 
 #include "tessella/mechanics/errors.hpp"
 #include "tessella/mechanics/wall_state.hpp"
+#include "tessella/mechanics/wall_stress.hpp"
 #include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/tissue.hpp"
@@ -266,6 +267,111 @@ std::vector<double> membraneCellVolumes(const Tissue& tissue, const FanMembraneM
   return v;
 }
 
+namespace {
+
+struct Principal {
+  double high = 0.0, low = 0.0;
+  Vec3 direction = Vec3::Zero();
+};
+
+// In-plane principal values of a tangent tensor of a surface with unit normal n.
+Principal inPlane(const Eigen::Matrix3d& m, const Vec3& n) {
+  Vec3 e1 = n.unitOrthogonal();
+  const Vec3 e2 = n.cross(e1);
+  Eigen::Matrix<double, 3, 2> basis;
+  basis << e1, e2;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(basis.transpose() * m * basis);
+  return {eig.eigenvalues()[1], eig.eigenvalues()[0], basis * eig.eigenvectors().col(1)};
+}
+
+// The largest and smallest of the nonzero principal values of a symmetric tensor.
+Principal nonzero(const Eigen::Matrix3d& m) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(m);
+  const Eigen::Vector3d v = eig.eigenvalues();
+  const double scale = v.cwiseAbs().maxCoeff();
+  Principal p;
+  bool any = false;
+  for (int k = 0; k < 3; ++k) {
+    if (!(std::abs(v[k]) > 1e-12 * scale)) continue;
+    p.low = any ? std::min(p.low, v[k]) : v[k];
+    if (!any || v[k] >= p.high) {
+      p.high = v[k];
+      p.direction = eig.eigenvectors().col(k);
+    }
+    any = true;
+  }
+  return p;
+}
+
+// Per-cell rest areas of the model's membranes (a 3D cell: the sum of its walls').
+std::vector<double> cellRestAreas(const Tissue& tissue, const FanMembraneModel& model,
+                                  const std::vector<FaceId>& faces) {
+  std::vector<double> a(tissue.cellSlots(), 0.0);
+  if (tissue.dim() == 2) {
+    for (std::size_t i = 0; i < faces.size(); ++i) a[faces[i].index()] = model.restArea(i);
+    return a;
+  }
+  std::vector<std::size_t> position(tissue.slots(2), 0);
+  for (std::size_t i = 0; i < faces.size(); ++i) position[faces[i].index()] = i;
+  for (CellId c : tissue.cells())
+    for (const OrientedFace& o : tissue.topology().volumeFaces(tissue.cellVolume(c)))
+      a[c.index()] += model.restArea(position[o.handle().index()]);
+  return a;
+}
+
+}  // namespace
+
+void writeMembraneCellStress(Tissue& tissue, const FanMembraneModel& model, const Eigen::VectorXd& x) {
+  PropertyStore& cells = tissue.cellProperties();
+  if (!cells.has(kWallStressName)) cells.add<Sym3>(kWallStressName, Sym3{}, DivisionPolicy::Copy);
+  if (!cells.has(kStressDirectionName)) cells.add<Vec3>(kStressDirectionName, Vec3::Zero(), DivisionPolicy::Copy);
+  auto& stress = cells.get<Sym3>(kWallStressName);
+  auto& direction = cells.get<Vec3>(kStressDirectionName);
+  auto& stress_max = cellOutput(tissue, kStressMaxName);
+  auto& stress_min = cellOutput(tissue, kStressMinName);
+  auto& strain_max = cellOutput(tissue, kStrainMaxName);
+  auto& strain_min = cellOutput(tissue, kStrainMinName);
+  const std::vector<FaceId> faces = membraneFaces(tissue);
+  auto write = [&](CellId c, const Eigen::Matrix3d& tension, const Principal& t, const Principal& e) {
+    stress[c] = Sym3::fromMatrix(tension);
+    stress_max[c] = t.high;
+    stress_min[c] = t.low;
+    direction[c] = t.direction;
+    strain_max[c] = e.high;
+    strain_min[c] = e.low;
+  };
+  if (tissue.dim() == 2) {
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+      Vec3 n;
+      const Eigen::Matrix3d tension = model.meanTension(x, i, &n);
+      write(CellId(faces[i].index()), tension, inPlane(tension, n), inPlane(model.meanStrain(x, i), n));
+    }
+    return;
+  }
+  std::vector<Eigen::Matrix3d> tension(faces.size()), strain(faces.size());
+  std::vector<double> area(faces.size());
+  std::vector<std::size_t> position(tissue.slots(2), 0);
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    position[faces[i].index()] = i;
+    tension[i] = model.meanTension(x, i);
+    strain[i] = model.meanStrain(x, i);
+    area[i] = model.fanArea(x, i);
+  }
+  for (CellId c : tissue.cells()) {
+    Eigen::Matrix3d t = Eigen::Matrix3d::Zero(), e = Eigen::Matrix3d::Zero();
+    double a = 0.0;
+    for (const OrientedFace& o : tissue.topology().volumeFaces(tissue.cellVolume(c))) {
+      const std::size_t i = position[o.handle().index()];
+      t += area[i] * tension[i];
+      e += area[i] * strain[i];
+      a += area[i];
+    }
+    t /= a;
+    e /= a;
+    write(c, t, nonzero(t), nonzero(e));
+  }
+}
+
 MembraneStepReport membraneGrowthStep(Tissue& tissue, const MembraneGrowthParams& params, MembraneRestState& state,
                                       double dt, std::mt19937_64* rng) {
   params.check();
@@ -299,7 +405,15 @@ MembraneStepReport membraneGrowthStep(Tissue& tissue, const MembraneGrowthParams
       if (f.norm() > 0.0) f = turnFibre(f, s, n, params.feedback.rate, dt, kick);
     }
   }
+  writeMembraneCellStress(tissue, model, x);
+  const std::vector<double> rest_before = cellRestAreas(tissue, model, faces);
   report.max_growth_rate = model.growRestShape(x, params.growth, dt);
+  const std::vector<double> rest_after = cellRestAreas(tissue, model, faces);
+  auto& growth_rate = cellOutput(tissue, kGrowthRateName);
+  for (CellId c : tissue.cells()) {
+    const double a0 = rest_before[c.index()];
+    growth_rate[c] = dt > 0.0 && a0 > 0.0 ? (rest_after[c.index()] - a0) / (a0 * dt) : 0.0;
+  }
   auto& ratio = tissue.properties(2).get<double>(kMembraneRestRatioName);
   for (std::size_t i = 0; i < faces.size(); ++i) {
     const Index slot = faces[i].index();

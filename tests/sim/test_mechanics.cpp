@@ -9,7 +9,9 @@
 #include <numbers>
 
 #include "tessella/mechanics/errors.hpp"
+#include "tessella/mechanics/tissue_membranes.hpp"
 #include "tessella/mechanics/wall_state.hpp"
+#include "tessella/mechanics/wall_stress.hpp"
 #include "tessella/sim/sections/simulation_config.hpp"
 #include "tessella/sim/simulation.hpp"
 #include "tessella/tissue/builders.hpp"
@@ -199,6 +201,24 @@ TEST_CASE("configs/turgor_dome_2p5d.yaml: the dome rises and grows under turgor,
   }
   CHECK(lo < 0.5);
   CHECK(hi == 1.0);
+  // The membranes' per-cell outputs (written at every equilibrium, names as the wall-spring model's).
+  const auto& cells = sim.tissue().cellProperties();
+  const auto& stress_max = cells.get<double>(mechanics::kStressMaxName);
+  const auto& stress_min = cells.get<double>(mechanics::kStressMinName);
+  const auto& direction = cells.get<Vec3>(mechanics::kStressDirectionName);
+  const auto& strain_max = cells.get<double>(mechanics::kStrainMaxName);
+  const auto& strain_min = cells.get<double>(mechanics::kStrainMinName);
+  const auto& growth_rate = cells.get<double>(mechanics::kGrowthRateName);
+  double fastest = 0.0;
+  for (CellId c : sim.tissue().cells()) {
+    CHECK(stress_max[c] >= stress_min[c]);
+    CHECK(stress_min[c] > 0.0);  // turgor puts every cell in tension
+    CHECK(strain_max[c] >= strain_min[c]);
+    CHECK(direction[c].norm() == Approx(1.0).epsilon(1e-12));
+    CHECK(growth_rate[c] >= 0.0);
+    fastest = std::max(fastest, growth_rate[c]);
+  }
+  CHECK(fastest > 0.0);
 }
 
 TEST_CASE("configs/turgor_tissue_3d.yaml: a 3D tissue grows under turgor, volumes positive and rising",

@@ -29,7 +29,10 @@ const std::vector<std::string>& sideNames() {
 MechanicsStage::MechanicsStage(MechanicsSpec spec) : spec_(std::move(spec)) { spec_.params.check(); }
 
 std::vector<std::string> MechanicsStage::cellPropertiesWritten() const {
-  if (spec_.membranes) return {mechanics::kTurgorPressureName, mechanics::kYoungScaleName};
+  if (spec_.membranes)
+    return {mechanics::kTurgorPressureName, mechanics::kYoungScaleName, mechanics::kStressMaxName,
+            mechanics::kStressMinName,      mechanics::kStrainMaxName,  mechanics::kStrainMinName,
+            mechanics::kGrowthRateName};
   return {mechanics::kTurgorPressureName, kMeanStrainName, kMeanTensionName, mechanics::kStressMaxName,
           mechanics::kStressMinName};
 }
@@ -41,6 +44,15 @@ void MechanicsStage::prepare(Tissue& tissue, double /*time*/) {
                        "this tissue is planar (use wall_springs)");
     mechanics::cellOutput(tissue, mechanics::kTurgorPressureName, spec_.membrane.pressure);
     mechanics::cellOutput(tissue, mechanics::kYoungScaleName, 1.0);
+    // Zero before the first equilibrium (a restart keeps the snapshot's values).
+    for (const char* name : {mechanics::kStressMaxName, mechanics::kStressMinName, mechanics::kStrainMaxName,
+                             mechanics::kStrainMinName, mechanics::kGrowthRateName})
+      mechanics::cellOutput(tissue, name);
+    PropertyStore& cells = tissue.cellProperties();
+    if (!cells.has(mechanics::kWallStressName))
+      cells.add<Sym3>(mechanics::kWallStressName, Sym3{}, DivisionPolicy::Copy);
+    if (!cells.has(mechanics::kStressDirectionName))
+      cells.add<Vec3>(mechanics::kStressDirectionName, Vec3::Zero(), DivisionPolicy::Copy);
     if (!spec_.soft_center) {
       Vec3 sum = Vec3::Zero();
       for (VertexId v : tissue.vertices()) sum += tissue.position(v);
@@ -208,7 +220,8 @@ void declareMechanicsSection(Schema& s) {
             "mean_wall_tension and the walls' stress (wall_stress, stress_max, stress_min, stress_direction) "
             "per cell (and rest_length, wall_strain, wall_tension per wall). `membranes` (curved sheets, 3D "
             "tissues): every sheet cell or 3D wall is a fan of membrane triangles whose rest shapes grow along "
-            "their principal stretches; writes turgor_pressure and young_scale per cell. Off unless "
+            "their principal stretches; writes turgor_pressure, young_scale, the mean membrane tension (wall_stress, "
+            "stress_max, stress_min, stress_direction), strain_max, strain_min and growth_rate per cell. Off unless "
             "`model` is set. See docs/mechanics.md.");
   s.key("mechanics.model", ValueType::Enum,
         "The mechanical model. `wall_springs`: walls as springs, cells under turgor (planar 2D tissues). "

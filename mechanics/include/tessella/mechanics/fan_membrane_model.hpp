@@ -73,6 +73,18 @@ class FanMembraneModel final : public EnergyModel {
   /// The mean membrane tension of polygon f at x (current-area-weighted over
   /// its fan triangles) and the polygon's unit normal (its vector area).
   Eigen::Matrix3d meanTension(const Eigen::VectorXd& x, std::size_t f, Vec3* normal = nullptr) const;
+  /// The Green-Lagrange strain of fan triangle i of polygon f at x, carried to
+  /// the current configuration by the rotation of F (polar decomposition):
+  /// (1/2) (F F^T - P), P the projector on the triangle's plane. Its nonzero
+  /// principal values are those of E = (1/2) (F^T F - I), its principal
+  /// directions the current images of E's.
+  Eigen::Matrix3d strain(const Eigen::VectorXd& x, std::size_t f, std::size_t i) const;
+  /// The mean of strain() over polygon f's fan (current-area-weighted, as meanTension).
+  Eigen::Matrix3d meanStrain(const Eigen::VectorXd& x, std::size_t f) const;
+  /// The current area of polygon f's fan at x.
+  double fanArea(const Eigen::VectorXd& x, std::size_t f) const;
+  /// The rest area of polygon f's fan (0 for a lid).
+  double restArea(std::size_t f) const;
   /// Lockhart-Ortega growth of every fan triangle's rest shape along the
   /// principal directions of its stretch at x (as MembraneModel::growRestShape).
   /// Returns the largest relative rate.
@@ -91,6 +103,9 @@ class FanMembraneModel final : public EnergyModel {
   Mat32 deformationGradient(const std::array<Eigen::Vector3d, 3>& c, const Element& e) const;
   // Adds the element and pressure contributions of polygon f: energy, corner
   // gradient per loop vertex (3 n), dense tangent (3n x 3n) when asked.
+  // The current-area-weighted mean over polygon f's fan of per_triangle(i).
+  template <class PerTriangle>
+  Eigen::Matrix3d fanMean(const Eigen::VectorXd& x, std::size_t f, PerTriangle per_triangle, Vec3* normal) const;
   double polygonTerms(const Eigen::VectorXd& x, std::size_t f, Eigen::VectorXd* grad, Eigen::VectorXd* magnitude,
                       Eigen::MatrixXd* tangent, double* energy_magnitude) const;
 

@@ -38,6 +38,9 @@ namespace tessella::mechanics {
 
 inline constexpr const char* kMembraneRestRatioName = "membrane_rest_ratio";
 inline constexpr const char* kYoungScaleName = "young_scale";
+inline constexpr const char* kStrainMaxName = "strain_max";    ///< cell, double: larger principal Green strain
+inline constexpr const char* kStrainMinName = "strain_min";    ///< cell, double: smaller principal Green strain
+inline constexpr const char* kGrowthRateName = "growth_rate";  ///< cell, double: (A1 - A0) / (A0 dt) of its rest area
 
 /// How each polygon's fibre direction is chosen (at its centroid c).
 struct FibreRule {
@@ -107,10 +110,21 @@ FanMembraneModel buildTissueMembranes(Tissue& tissue, const MembraneGrowthParams
 /// Cell volumes (3D) or cone volumes (sheet) of the model's fans at x, by cell slot.
 std::vector<double> membraneCellVolumes(const Tissue& tissue, const FanMembraneModel& model, const Eigen::VectorXd& x);
 
+/// The per-cell outputs of the membranes at x (docs/mechanics.md, "Membrane
+/// outputs"): a sheet's cell its fan's, a 3D cell the mean over its walls'
+/// fans weighted by their current areas, of the mean tension (wall_stress;
+/// stress_max, stress_min, stress_direction: in-plane principal values for a
+/// sheet, the largest and smallest nonzero ones in 3D) and of the mean Green
+/// strain (strain_max, strain_min). Columns added with policy Copy when missing.
+void writeMembraneCellStress(Tissue& tissue, const FanMembraneModel& model, const Eigen::VectorXd& x);
+
 /// One step: model from the tissue, equilibrium (positions move there;
 /// EquilibriumError leaves the tissue unchanged), rest shapes grow over dt.
 /// With stress feedback, the fibres turn after the equilibrium (noise drawn
-/// from `rng`, which must be given when params.feedback.noise > 0).
+/// from `rng`, which must be given when params.feedback.noise > 0). Writes
+/// the cells' outputs at the equilibrium (writeMembraneCellStress) and their
+/// growth_rate: the relative change of a cell's rest area (its fan's, or the
+/// sum of its walls') by this step's growth, divided by dt (0 when dt = 0).
 MembraneStepReport membraneGrowthStep(Tissue& tissue, const MembraneGrowthParams& params, MembraneRestState& state,
                                       double dt, std::mt19937_64* rng = nullptr);
 
