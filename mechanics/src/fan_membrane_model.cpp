@@ -20,6 +20,7 @@ using detail::cross;
 using detail::greenStrain;
 using detail::point;
 using detail::strainMatrix;
+using detail::stressTensor;
 
 Eigen::Vector3d loopMean(const Eigen::VectorXd& x, const std::vector<Index>& loop) {
   Eigen::Vector3d a = Eigen::Vector3d::Zero();
@@ -161,8 +162,7 @@ double FanMembraneModel::polygonTerms(const Eigen::VectorXd& x, std::size_t f, E
     energy += w - pv;
     if (energy_magnitude) *energy_magnitude += std::abs(w) + std::abs(pv);
     if (!grad && !magnitude && !tangent) continue;
-    Eigen::Matrix2d S;
-    S << sv(0), sv(2), sv(2), sv(1);
+    const Eigen::Matrix2d S = stressTensor(sv);
     std::array<Eigen::Vector3d, 3> elastic, pressure;
     for (int a = 0; a < 3; ++a) {
       elastic[a] = t * el.area * F * (S * el.g[a]);
@@ -253,8 +253,7 @@ Eigen::Matrix3d FanMembraneModel::tension(const Eigen::VectorXd& x, std::size_t 
   const Element& el = elements_[first_element_[f] + i];
   const Mat32 F = deformationGradient(corners(x, f, i), el);
   const Eigen::Vector3d sv = polygons_[f].young_scale * q_ * greenStrain(F);
-  Eigen::Matrix2d S;
-  S << sv(0), sv(2), sv(2), sv(1);
+  const Eigen::Matrix2d S = stressTensor(sv);
   const double J = std::sqrt((F.transpose() * F).determinant());
   return material_.thickness / J * F * S * F.transpose();
 }

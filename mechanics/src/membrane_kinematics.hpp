@@ -41,4 +41,11 @@ inline Eigen::Matrix3d strainMatrix(const Mat32& F, const Eigen::Vector2d& g) {
   return B;
 }
 
+/// The symmetric 2 x 2 tensor of a Voigt vector (S11, S22, S12).
+inline Eigen::Matrix2d stressTensor(const Eigen::Vector3d& s) {
+  Eigen::Matrix2d S;
+  S << s(0), s(2), s(2), s(1);
+  return S;
+}
+
 }  // namespace tessella::mechanics::detail

@@ -20,6 +20,7 @@ using detail::greenStrain;
 using detail::Mat32;
 using detail::point;
 using detail::strainMatrix;
+using detail::stressTensor;
 
 }  // namespace
 
@@ -150,8 +151,7 @@ void MembraneModel::gradient(const Eigen::VectorXd& x, Eigen::VectorXd& g) const
   for (std::size_t e = 0; e < triangles_.size(); ++e) {
     const Mat32 F = deformationGradient(x, e);
     const Eigen::Vector3d s = q_ * greenStrain(F);
-    Eigen::Matrix2d S;
-    S << s(0), s(2), s(2), s(1);
+    const Eigen::Matrix2d S = stressTensor(s);
     const auto& tri = triangles_[e];
     for (int a = 0; a < 3; ++a)
       g.segment<3>(3 * static_cast<Eigen::Index>(tri[a])) += t * elements_[e].area * F * (S * elements_[e].g[a]);
@@ -168,8 +168,7 @@ double MembraneModel::forceScale(const Eigen::VectorXd& x) const {
   for (std::size_t e = 0; e < triangles_.size(); ++e) {
     const Mat32 F = deformationGradient(x, e);
     const Eigen::Vector3d sv = q_ * greenStrain(F);
-    Eigen::Matrix2d S;
-    S << sv(0), sv(2), sv(2), sv(1);
+    const Eigen::Matrix2d S = stressTensor(sv);
     const auto& tri = triangles_[e];
     for (int a = 0; a < 3; ++a) {
       const Eigen::Index i = 3 * static_cast<Eigen::Index>(tri[a]);
@@ -193,8 +192,7 @@ void MembraneModel::hessian(const Eigen::VectorXd& x, std::vector<Triplet>& entr
   for (std::size_t e = 0; e < triangles_.size(); ++e) {
     const Mat32 F = deformationGradient(x, e);
     const Eigen::Vector3d sv = q_ * greenStrain(F);
-    Eigen::Matrix2d S;
-    S << sv(0), sv(2), sv(2), sv(1);
+    const Eigen::Matrix2d S = stressTensor(sv);
     const Element& el = elements_[e];
     const auto& tri = triangles_[e];
     std::array<Eigen::Matrix3d, 3> B;
@@ -217,8 +215,7 @@ void MembraneModel::hessian(const Eigen::VectorXd& x, std::vector<Triplet>& entr
 Eigen::Matrix3d MembraneModel::tension(const Eigen::VectorXd& x, std::size_t e) const {
   const Mat32 F = deformationGradient(x, e);
   const Eigen::Vector3d sv = q_ * greenStrain(F);
-  Eigen::Matrix2d S;
-  S << sv(0), sv(2), sv(2), sv(1);
+  const Eigen::Matrix2d S = stressTensor(sv);
   const double J = std::sqrt((F.transpose() * F).determinant());
   return material_.thickness / J * F * S * F.transpose();
 }
