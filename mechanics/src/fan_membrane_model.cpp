@@ -28,13 +28,34 @@ Eigen::Vector3d loopMean(const Eigen::VectorXd& x, const std::vector<Index>& loo
   return a / static_cast<double>(loop.size());
 }
 
+// The apex of a loop: its vertex mean (the mean fan), or sum_k w_k x_k.
+Eigen::Vector3d apexPoint(const Eigen::VectorXd& x, const std::vector<Index>& loop, const MembraneTriangulation& t) {
+  if (t.kind != MembraneTriangulation::Kind::KernelFan) return loopMean(x, loop);
+  Eigen::Vector3d a = Eigen::Vector3d::Zero();
+  for (std::size_t k = 0; k < loop.size(); ++k) a += t.apex_weights[k] * point(x, loop[k]);
+  return a;
+}
+
+// The corners of triangle i of a loop (apex computed by the caller).
+std::array<Eigen::Vector3d, 3> triangleCorners(const Eigen::VectorXd& x, const std::vector<Index>& loop,
+                                               const MembraneTriangulation& t, const Eigen::Vector3d& apex,
+                                               std::size_t i) {
+  const std::array<int, 3> c = t.triangle(i, loop.size());
+  std::array<Eigen::Vector3d, 3> out;
+  for (int a = 0; a < 3; ++a)
+    out[a] = c[a] == MembraneTriangulation::kApex ? apex : point(x, loop[static_cast<std::size_t>(c[a])]);
+  return out;
+}
+
 }  // namespace
 
-std::vector<RestMetric> FanMembraneModel::currentMetrics(const Eigen::VectorXd& x, const std::vector<Index>& loop) {
-  const Eigen::Vector3d a = loopMean(x, loop);
-  std::vector<RestMetric> m(loop.size());
-  for (std::size_t i = 0; i < loop.size(); ++i) {
-    const Eigen::Vector3d d1 = point(x, loop[i]) - a, d2 = point(x, loop[(i + 1) % loop.size()]) - a;
+std::vector<RestMetric> FanMembraneModel::currentMetrics(const Eigen::VectorXd& x, const std::vector<Index>& loop,
+                                                         const MembraneTriangulation& triangulation) {
+  const Eigen::Vector3d a = apexPoint(x, loop, triangulation);
+  std::vector<RestMetric> m(triangulation.size(loop.size()));
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    const auto c = triangleCorners(x, loop, triangulation, a, i);
+    const Eigen::Vector3d d1 = c[1] - c[0], d2 = c[2] - c[0];
     m[i] = RestMetric(d1.squaredNorm(), d1.dot(d2), d2.squaredNorm());
   }
   return m;
@@ -51,30 +72,33 @@ FanMembraneModel::FanMembraneModel(const Eigen::VectorXd& positions, std::vector
     const MembranePolygon& p = polygons_[f];
     const std::string name = "membrane polygon " + std::to_string(f);
     if (p.loop.size() < 3) throw InputError(name + ": a loop of " + std::to_string(p.loop.size()) + " vertices");
-    if (p.elastic && p.rest.size() != p.loop.size())
+    p.triangulation.check(p.loop.size(), name);
+    const std::size_t triangles = p.triangulation.size(p.loop.size());
+    if (p.elastic && p.rest.size() != triangles)
       throw InputError(name + ": " + std::to_string(p.rest.size()) + " rest metrics for " +
-                       std::to_string(p.loop.size()) + " fan triangles");
+                       std::to_string(triangles) + " triangles");
     if (!(p.young_scale > 0.0 && std::isfinite(p.young_scale)))
       throw InputError(name + ": Young's modulus scale " + formatNumber(p.young_scale) + " must be > 0");
     if (!std::isfinite(p.pressure)) throw InputError(name + ": pressure " + formatNumber(p.pressure));
     for (Index v : p.loop)
       if (v >= points) throw InputError(name + ": vertex slot " + std::to_string(v) + " out of range");
-    const Eigen::Vector3d apex = loopMean(positions, p.loop);
+    const Eigen::Vector3d apex = apexPoint(positions, p.loop, p.triangulation);
     if (!p.elastic) {  // a lid: elements without area carry no elastic energy
       Element e;
       e.setRestShape(Eigen::Matrix2d::Identity());
       e.area = 0.0;
-      elements_.insert(elements_.end(), p.loop.size(), e);
+      elements_.insert(elements_.end(), triangles, e);
       first_element_.push_back(elements_.size());
       continue;
     }
-    for (std::size_t i = 0; i < p.loop.size(); ++i) {
+    for (std::size_t i = 0; i < triangles; ++i) {
+      const auto corner = triangleCorners(positions, p.loop, p.triangulation, apex, i);
       Eigen::Matrix<double, 3, 2> E;
-      E.col(0) = point(positions, p.loop[i]) - apex;
-      E.col(1) = point(positions, p.loop[(i + 1) % p.loop.size()]) - apex;
+      E.col(0) = corner[1] - corner[0];
+      E.col(1) = corner[2] - corner[0];
       const Eigen::Vector3d normal = E.col(0).cross(E.col(1));
       if (!(normal.norm() > 1e-14 * (E.col(0).squaredNorm() + E.col(1).squaredNorm()) + 1e-300))
-        throw InputError(name + ": fan triangle " + std::to_string(i) + " is degenerate");
+        throw InputError(name + ": triangle " + std::to_string(i) + " is degenerate");
       const Eigen::Vector3d n = normal.normalized();
       Eigen::Vector2d a(1.0, 0.0);  // the fibre in the edge basis: the first edge by default
       const Eigen::Vector3d fp = p.fibre - p.fibre.dot(n) * n;
@@ -84,7 +108,7 @@ FanMembraneModel::FanMembraneModel(const Eigen::VectorXd& positions, std::vector
       Eigen::Matrix2d C;
       C << c(0), c(1), c(1), c(2);
       if (!(c(0) > 0.0 && C.determinant() > 1e-14 * c(0) * c(2) && std::isfinite(C.sum())))
-        throw InputError(name + ": rest metric of fan triangle " + std::to_string(i) + " (" + formatNumber(c(0)) +
+        throw InputError(name + ": rest metric of triangle " + std::to_string(i) + " (" + formatNumber(c(0)) +
                          ", " + formatNumber(c(1)) + ", " + formatNumber(c(2)) + ") is not positive definite");
       const Eigen::Matrix2d D0 = Eigen::LLT<Eigen::Matrix2d>(C).matrixU();
       const Eigen::Vector2d u = (D0 * a).normalized();
@@ -100,8 +124,8 @@ FanMembraneModel::FanMembraneModel(const Eigen::VectorXd& positions, std::vector
 
 std::array<Eigen::Vector3d, 3> FanMembraneModel::corners(const Eigen::VectorXd& x, std::size_t f,
                                                          std::size_t i) const {
-  const auto& loop = polygons_[f].loop;
-  return {loopMean(x, loop), point(x, loop[i]), point(x, loop[(i + 1) % loop.size()])};
+  const MembranePolygon& p = polygons_[f];
+  return triangleCorners(x, p.loop, p.triangulation, apexPoint(x, p.loop, p.triangulation), i);
 }
 
 FanMembraneModel::Mat32 FanMembraneModel::deformationGradient(const std::array<Eigen::Vector3d, 3>& c,
@@ -113,7 +137,7 @@ FanMembraneModel::Mat32 FanMembraneModel::deformationGradient(const std::array<E
 
 double FanMembraneModel::coneVolume(const Eigen::VectorXd& x, std::size_t f) const {
   double v = 0.0;
-  for (std::size_t i = 0; i < polygons_[f].loop.size(); ++i) {
+  for (std::size_t i = 0; i < numTriangles(f); ++i) {
     const auto c = corners(x, f, i);
     v += (c[0] - origin_).dot((c[1] - origin_).cross(c[2] - origin_));
   }
@@ -134,23 +158,27 @@ double FanMembraneModel::polygonTerms(const Eigen::VectorXd& x, std::size_t f, E
                                       double* energy_magnitude) const {
   const MembranePolygon& poly = polygons_[f];
   const int n = static_cast<int>(poly.loop.size());
-  const double w_apex = 1.0 / n;
+  const int triangles = static_cast<int>(numTriangles(f));
+  std::vector<double> w_apex(static_cast<std::size_t>(n));  // the apex's weight at each loop vertex
+  for (std::size_t k = 0; k < w_apex.size(); ++k) w_apex[k] = poly.triangulation.apexWeight(k, poly.loop.size());
   const double t = material_.thickness;
   const Eigen::Matrix3d Q = poly.young_scale * q_;
   const double p = poly.pressure;
   double energy = 0.0;
-  Eigen::Matrix3d apex_apex = Eigen::Matrix3d::Zero();  // sum_i w^2 H_00
-  // apex_row[l] = sum w H_0b over corners b at loop vertex l; apex_col[k] likewise for H_a0.
+  Eigen::Matrix3d apex_apex = Eigen::Matrix3d::Zero();  // sum_i H_00 over corners at the apex
+  // apex_row[l] = sum H_0b over corners b at loop vertex l; apex_col[k] likewise for H_a0.
   std::vector<Eigen::Matrix3d> apex_row(tangent ? n : 0, Eigen::Matrix3d::Zero()), apex_col = apex_row;
-  // Corner a of triangle i maps to loop positions: the apex to all (weight 1/n), 1 to i, 2 to i + 1.
-  auto scatter = [&](Eigen::VectorXd& v, int i, int a, const Eigen::Vector3d& value) {
-    if (a == 0) {
-      for (int k = 0; k < n; ++k) v.segment<3>(3 * k) += w_apex * value;
+  // Corner a of triangle i maps to loop positions: the apex to all (weights w_apex), others to their own.
+  std::array<int, 3> tri{};
+  auto scatter = [&](Eigen::VectorXd& v, int, int a, const Eigen::Vector3d& value) {
+    if (tri[a] == MembraneTriangulation::kApex) {
+      for (int k = 0; k < n; ++k) v.segment<3>(3 * k) += w_apex[k] * value;
     } else {
-      v.segment<3>(3 * ((i + a - 1) % n)) += value;
+      v.segment<3>(3 * tri[a]) += value;
     }
   };
-  for (int i = 0; i < n; ++i) {
+  for (int i = 0; i < triangles; ++i) {
+    tri = poly.triangulation.triangle(static_cast<std::size_t>(i), poly.loop.size());
     const Element& el = elements_[first_element_[f] + static_cast<std::size_t>(i)];
     const auto c = corners(x, f, static_cast<std::size_t>(i));
     const Mat32 F = deformationGradient(c, el);
@@ -187,15 +215,24 @@ double FanMembraneModel::polygonTerms(const Eigen::VectorXd& x, std::size_t f, E
     }
     // Chain rule: K_kl += sum_ab w_ak w_bl H_ab. The apex terms are summed
     // over the fan first and spread once (below): O(n^2) blocks per polygon.
-    apex_apex += w_apex * w_apex * H[0][0];
-    for (int b = 1; b < 3; ++b) apex_row[(i + b - 1) % n] += w_apex * H[0][b];
-    for (int a = 1; a < 3; ++a) apex_col[(i + a - 1) % n] += w_apex * H[a][0];
-    for (int a = 1; a < 3; ++a)
-      for (int b = 1; b < 3; ++b) tangent->block<3, 3>(3 * ((i + a - 1) % n), 3 * ((i + b - 1) % n)) += H[a][b];
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) {
+        const bool ap = tri[a] == MembraneTriangulation::kApex, bp = tri[b] == MembraneTriangulation::kApex;
+        if (ap && bp)
+          apex_apex += H[a][b];
+        else if (ap)
+          apex_row[tri[b]] += H[a][b];
+        else if (bp)
+          apex_col[tri[a]] += H[a][b];
+        else
+          tangent->block<3, 3>(3 * tri[a], 3 * tri[b]) += H[a][b];
+      }
   }
-  if (tangent)
+  if (tangent && poly.triangulation.hasApex())
     for (int k = 0; k < n; ++k)
-      for (int l = 0; l < n; ++l) tangent->block<3, 3>(3 * k, 3 * l) += apex_apex + apex_row[l] + apex_col[k];
+      for (int l = 0; l < n; ++l)
+        tangent->block<3, 3>(3 * k, 3 * l) +=
+            w_apex[k] * w_apex[l] * apex_apex + w_apex[k] * apex_row[l] + w_apex[l] * apex_col[k];
   return energy;
 }
 
@@ -264,7 +301,7 @@ Eigen::Matrix3d FanMembraneModel::fanMean(const Eigen::VectorXd& x, std::size_t 
   Eigen::Matrix3d sum = Eigen::Matrix3d::Zero();
   Eigen::Vector3d vector_area = Eigen::Vector3d::Zero();
   double area = 0.0;
-  for (std::size_t i = 0; i < polygons_[f].loop.size(); ++i) {
+  for (std::size_t i = 0; i < numTriangles(f); ++i) {
     const auto c = corners(x, f, i);
     const Eigen::Vector3d a = 0.5 * (c[1] - c[0]).cross(c[2] - c[0]);
     vector_area += a;
@@ -291,7 +328,7 @@ Eigen::Matrix3d FanMembraneModel::meanStrain(const Eigen::VectorXd& x, std::size
 
 double FanMembraneModel::fanArea(const Eigen::VectorXd& x, std::size_t f) const {
   double area = 0.0;
-  for (std::size_t i = 0; i < polygons_[f].loop.size(); ++i) {
+  for (std::size_t i = 0; i < numTriangles(f); ++i) {
     const auto c = corners(x, f, i);
     area += 0.5 * (c[1] - c[0]).cross(c[2] - c[0]).norm();
   }
@@ -309,7 +346,7 @@ double FanMembraneModel::growRestShape(const Eigen::VectorXd& x, const StrainGro
   if (!(dt >= 0.0 && std::isfinite(dt))) throw InputError("membrane growth: dt " + formatNumber(dt) + " must be >= 0");
   double fastest = 0.0;
   for (std::size_t f = 0; f < polygons_.size(); ++f)
-    for (std::size_t i = 0; i < polygons_[f].loop.size() && polygons_[f].elastic; ++i) {
+    for (std::size_t i = 0; i < numTriangles(f) && polygons_[f].elastic; ++i) {
       Element& el = elements_[first_element_[f] + i];
       const Mat32 F = deformationGradient(corners(x, f, i), el);
       const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(F.transpose() * F);

@@ -3,6 +3,7 @@
 #include "tessella/mechanics/tissue_membranes.hpp"
 
 #include "tessella/mechanics/errors.hpp"
+#include "tessella/mechanics/membrane_triangulation.hpp"
 #include "tessella/mechanics/wall_state.hpp"
 #include "tessella/mechanics/wall_stress.hpp"
 #include "tessella/tissue/format.hpp"
@@ -160,6 +161,29 @@ std::vector<double> facePressures(const Tissue& tissue, const std::vector<FaceId
   return p;
 }
 
+std::vector<std::uint8_t> membraneSupport(const Tissue& tissue, const MembraneGrowthParams& params) {
+  std::vector<std::uint8_t> fixed(tissue.slots(0), 0);
+  if (params.support == MembraneGrowthParams::Support::Boundary) {
+    if (tissue.dim() != 2)
+      throw MechanicsError("mechanics: the boundary support holds a sheet's rims; a 3D tissue has none (use the "
+                           "base support)");
+    bool any = false;
+    for (WallId w : tissue.walls()) {
+      if (!tissue.isBoundaryWall(w)) continue;
+      for (VertexId v : tissue.topology().edgeVertices(EdgeId(w.index()))) fixed[v.index()] = 1;
+      any = true;
+    }
+    if (!any)
+      throw MechanicsError("mechanics: the boundary support fixes nothing: this sheet is closed (no boundary "
+                           "walls; use the base support)");
+    return fixed;
+  }
+  double zmin = std::numeric_limits<double>::infinity();
+  for (VertexId v : tissue.vertices()) zmin = std::min(zmin, tissue.position(v).z());
+  for (VertexId v : tissue.vertices()) fixed[v.index()] = tissue.position(v).z() <= zmin + params.base_distance;
+  return fixed;
+}
+
 FanMembraneModel buildTissueMembranes(Tissue& tissue, const MembraneGrowthParams& params, MembraneRestState& state,
                                       std::size_t* reset) {
   const std::vector<FaceId> faces = membraneFaces(tissue);
@@ -175,6 +199,7 @@ FanMembraneModel buildTissueMembranes(Tissue& tissue, const MembraneGrowthParams
   const std::vector<double> p = facePressures(tissue, faces, pressure.values(), origin);
   state.loops.resize(tissue.slots(2));
   state.rest.resize(tissue.slots(2));
+  state.triangulations.resize(tissue.slots(2));
   state.fibres.resize(tissue.slots(2), Vec3::Zero());
   const bool feedback = params.feedback.rate > 0.0 || params.feedback.noise > 0.0;
   std::size_t resets = 0;
@@ -185,18 +210,21 @@ FanMembraneModel buildTissueMembranes(Tissue& tissue, const MembraneGrowthParams
     poly.loop = faceLoop(tissue, f);
     std::vector<Vec3> positions;
     for (Index v : poly.loop) positions.push_back(tissue.positions()[v]);
-    const PolygonTriangulation tri = polygonTriangulation(positions);
-    if (tri.folded)
-      throw MechanicsError("mechanics: " + faceName(tissue, f) +
-                           ": the fan from its vertex mean folds (a non-convex polygon not star-shaped from its "
-                           "vertex mean); membranes need unfolded fans");
     const std::size_t slot = f.index();
-    if (state.loops[slot] != poly.loop || state.rest[slot].size() != poly.loop.size()) {
+    if (state.loops[slot] != poly.loop ||
+        state.rest[slot].size() != state.triangulations[slot].size(poly.loop.size())) {
+      // A new reference: the triangulation is chosen in the current shape and kept while the loop lives.
+      try {
+        state.triangulations[slot] = membraneTriangulation(positions);
+      } catch (const Error& e) {
+        throw MechanicsError("mechanics: " + faceName(tissue, f) + ": " + e.what());
+      }
       state.loops[slot] = poly.loop;
-      state.rest[slot] = FanMembraneModel::currentMetrics(x, poly.loop);
+      state.rest[slot] = FanMembraneModel::currentMetrics(x, poly.loop, state.triangulations[slot]);
       for (RestMetric& m : state.rest[slot]) m *= ratio[f];
       ++resets;
     }
+    poly.triangulation = state.triangulations[slot];
     poly.rest = state.rest[slot];
     Vec3 mean = Vec3::Zero();
     for (const Vec3& q : positions) mean += q;
@@ -233,12 +261,11 @@ FanMembraneModel buildTissueMembranes(Tissue& tissue, const MembraneGrowthParams
       sum[r] += pressure[tissue.wallCells(w).front()];
       count[r] += 1.0;
     }
-    double zmin = std::numeric_limits<double>::infinity();
-    for (VertexId v : tissue.vertices()) zmin = std::min(zmin, tissue.position(v).z());
+    const std::vector<std::uint8_t> support = membraneSupport(tissue, params);
     for (std::size_t r = 0; r < lids.size(); ++r) {
-      // A rim on the fixed base (a dome's) adds a constant: left out.
+      // A rim on the fixed base (a dome's) or a fixed boundary adds a constant: left out.
       bool fixed = true;
-      for (Index v : lids[r]) fixed = fixed && tissue.positions()[v].z() <= zmin + params.base_distance;
+      for (Index v : lids[r]) fixed = fixed && support[v];
       if (fixed) continue;
       MembranePolygon lid;
       lid.loop = lids[r];
@@ -381,12 +408,11 @@ MembraneStepReport membraneGrowthStep(Tissue& tissue, const MembraneGrowthParams
   report.polygons = model.numPolygons();
 
   std::vector<std::uint8_t> fixed(3 * tissue.slots(0), 1);
-  double zmin = std::numeric_limits<double>::infinity();
-  for (VertexId v : tissue.vertices()) zmin = std::min(zmin, tissue.position(v).z());
+  const std::vector<std::uint8_t> support = membraneSupport(tissue, params);
   for (VertexId v : tissue.vertices()) {
-    const bool base = tissue.position(v).z() <= zmin + params.base_distance;
-    report.fixed_vertices += base ? 1 : 0;
-    for (int k = 0; k < 3; ++k) fixed[3 * v.index() + k] = base ? 1 : 0;
+    const bool held = support[v.index()] != 0;
+    report.fixed_vertices += held ? 1 : 0;
+    for (int k = 0; k < 3; ++k) fixed[3 * v.index() + k] = held ? 1 : 0;
   }
   Eigen::VectorXd x = spatialDofs(tissue);
   report.equilibrium = solveEquilibrium(model, x, fixed, params.solver);
@@ -419,7 +445,7 @@ MembraneStepReport membraneGrowthStep(Tissue& tissue, const MembraneGrowthParams
     const Index slot = faces[i].index();
     state.rest[slot] = model.restMetrics(i);
     double rest = 0.0, current = 0.0;
-    const auto now = FanMembraneModel::currentMetrics(x, state.loops[slot]);
+    const auto now = FanMembraneModel::currentMetrics(x, state.loops[slot], state.triangulations[slot]);
     for (std::size_t k = 0; k < now.size(); ++k) {
       rest += restArea(state.rest[slot][k]);
       current += restArea(now[k]);
@@ -434,7 +460,23 @@ std::string MembraneRestState::toText(const Tissue& tissue) const {
   for (FaceId f : membraneFaces(tissue)) {
     if (f.index() >= rest.size()) continue;
     const auto& r = rest[f.index()];
-    text += (text.empty() ? "" : " ") + std::to_string(r.size());
+    const MembraneTriangulation tri =
+        f.index() < triangulations.size() ? triangulations[f.index()] : MembraneTriangulation{};
+    // The mean fan as it always was ("n metrics fibre"); the others name themselves.
+    std::ostringstream head;
+    if (!text.empty()) head << ' ';
+    if (tri.kind == MembraneTriangulation::Kind::KernelFan) {
+      head << "apex " << tri.apex_weights.size();
+      for (double w : tri.apex_weights) head << ' ' << formatNumber(w);
+      head << ' ' << r.size();
+    } else if (tri.kind == MembraneTriangulation::Kind::Ears) {
+      head << "ears " << tri.ears.size();
+      for (const auto& t : tri.ears)
+        for (int c : t) head << ' ' << c;
+    } else {
+      head << r.size();
+    }
+    text += head.str();
     for (const RestMetric& m : r)
       text += " " + formatNumber(m(0)) + " " + formatNumber(m(1)) + " " + formatNumber(m(2));
     const Vec3 fibre = f.index() < fibres.size() ? fibres[f.index()] : Vec3::Zero();
@@ -455,15 +497,47 @@ void MembraneRestState::fromText(const Tissue& tissue, const std::string& text, 
   loops.assign(tissue.slots(2), {});
   rest.assign(tissue.slots(2), {});
   fibres.assign(tissue.slots(2), Vec3::Zero());
-  for (FaceId f : membraneFaces(tissue)) {
+  triangulations.assign(tissue.slots(2), {});
+  auto count = [&](std::size_t expected, const char* what, FaceId f) {
     double n = 0.0;
     number(n);
+    if (n != static_cast<double>(expected))
+      throw InputError(source + ": the membrane rest state has " + formatNumber(n) + " " + what + " for " +
+                       faceName(tissue, f) + ", which needs " + std::to_string(expected));
+  };
+  for (FaceId f : membraneFaces(tissue)) {
     const std::vector<Index> loop = faceLoop(tissue, f);
-    if (n != static_cast<double>(loop.size()))
-      throw InputError(source + ": the membrane rest state has " + formatNumber(n) + " fan triangles for " +
-                       faceName(tissue, f) + ", which has " + std::to_string(loop.size()) + " vertices");
+    MembraneTriangulation& tri = triangulations[f.index()];
+    const std::streampos start = in.tellg();
+    std::string word;
+    in >> word;
+    if (word == "apex") {
+      tri.kind = MembraneTriangulation::Kind::KernelFan;
+      count(loop.size(), "apex weights", f);
+      tri.apex_weights.resize(loop.size());
+      for (double& w : tri.apex_weights) number(w);
+      count(loop.size(), "fan triangles", f);
+    } else if (word == "ears") {
+      tri.kind = MembraneTriangulation::Kind::Ears;
+      count(loop.size() - 2, "ear triangles", f);
+      tri.ears.resize(loop.size() - 2);
+      for (auto& t : tri.ears)
+        for (int& c : t) {
+          double v = 0.0;
+          number(v);
+          c = static_cast<int>(v);
+          if (static_cast<double>(c) != v)
+            throw InputError(source + ": the membrane rest state has triangle corner " + formatNumber(v) + " for " +
+                             faceName(tissue, f));
+        }
+    } else {
+      in.clear();
+      in.seekg(start);
+      count(loop.size(), "fan triangles", f);
+    }
+    tri.check(loop.size(), source + ": the membrane rest state of " + faceName(tissue, f));
     loops[f.index()] = loop;
-    rest[f.index()].resize(loop.size());
+    rest[f.index()].resize(tri.size(loop.size()));
     for (RestMetric& m : rest[f.index()]) {
       number(m(0));
       number(m(1));

@@ -1,6 +1,8 @@
 // SPDX-FileCopyrightText: 2026 The Tessella developers
 // SPDX-License-Identifier: AGPL-3.0-or-later
-// Membranes built from a tissue's polygons (fan from the loop's vertex mean):
+// Membranes built from a tissue's polygons (fan from the loop's vertex mean, or
+// for a folded polygon the fan from its kernel centroid with fixed weights or
+// its ear-clipped triangles): the triangulations against closed forms,
 // derivatives against finite differences (the apex chain rule included), the
 // fan volumes against the tissue's own cell volumes, a single 3D cell and a
 // dome sheet under pressure reaching equilibrium, short growth runs with a
@@ -11,6 +13,7 @@
 #include "tessella/generators/grids.hpp"
 #include "tessella/generators/voronoi.hpp"
 #include "tessella/mechanics/errors.hpp"
+#include "tessella/mechanics/membrane_triangulation.hpp"
 #include "tessella/mechanics/tissue_membranes.hpp"
 #include "tessella/mechanics/wall_state.hpp"
 #include "tessella/tissue/builders.hpp"
@@ -75,7 +78,134 @@ void checkDerivatives(const FanMembraneModel& model, const Eigen::VectorXd& x) {
   CHECK(g.norm() > 0.0);
 }
 
+// A curved two-cell sheet whose fans from the vertex means fold: a U cell (no
+// kernel: ear-clipped) and an L cell beside it (kernel [3, 4] x [0, 1]: the fan
+// from its centroid (3.5, 0.5)), sharing the wall x = 3, lifted onto the bowl
+// z = bowl (x^2 + y^2).
+Tissue foldedSheet(double bowl) {
+  std::vector<Vec3> p = {Vec3(0, 0, 0), Vec3(3, 0, 0), Vec3(3, 3, 0), Vec3(2, 3, 0), Vec3(2, 1, 0), Vec3(1, 1, 0),
+                         Vec3(1, 3, 0), Vec3(0, 3, 0), Vec3(6, 0, 0), Vec3(6, 1, 0), Vec3(4, 1, 0), Vec3(4, 3, 0)};
+  for (Vec3& q : p) q.z() = bowl * (q.x() * q.x() + q.y() * q.y());
+  return buildPolygonTissue(p, {{0, 1, 2, 3, 4, 5, 6, 7}, {1, 8, 9, 10, 11, 2}}, Embedding::Surface);
+}
+
 }  // namespace
+
+TEST_CASE("membrane triangulation: the mean fan, the kernel fan with mean value coordinates, the ears",
+          "[mechanics]") {
+  using Kind = MembraneTriangulation::Kind;
+  // A convex loop keeps the fan from its vertex mean.
+  const std::vector<Vec3> square = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0.2), Vec3(0, 1, 0)};
+  CHECK(membraneTriangulation(square).kind == Kind::MeanFan);
+  // The L: its vertex mean (4/3, 4/3) lies in the notch; its kernel is the unit
+  // square [0, 1]^2, centroid (1/2, 1/2). The apex weights are positive, sum to
+  // 1 and reproduce that centroid (linear precision), whatever the plane.
+  const std::vector<std::array<double, 2>> l2 = {{0, 0}, {3, 0}, {3, 1}, {1, 1}, {1, 3}, {0, 3}};
+  const Eigen::Matrix3d rotation = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  std::vector<Vec3> l3;
+  for (const auto& q : l2) l3.push_back(rotation * Vec3(q[0], q[1], 0) + Vec3(5, -2, 1));
+  const MembraneTriangulation l = membraneTriangulation(l3);
+  REQUIRE(l.kind == Kind::KernelFan);
+  REQUIRE(l.apex_weights.size() == 6);
+  double sum = 0.0;
+  Vec3 apex = Vec3::Zero();
+  for (std::size_t k = 0; k < 6; ++k) {
+    CHECK(l.apex_weights[k] > 0.0);
+    sum += l.apex_weights[k];
+    apex += l.apex_weights[k] * l3[k];
+  }
+  CHECK(sum == Approx(1.0).epsilon(1e-14));
+  CHECK((apex - (rotation * Vec3(0.5, 0.5, 0) + Vec3(5, -2, 1))).norm() <= 1e-12);
+  CHECK(l.size(6) == 6);
+  CHECK(l.triangle(5, 6) == std::array<int, 3>{MembraneTriangulation::kApex, 5, 0});
+  // A regular polygon's centre: every weight 1/n (symmetry).
+  std::vector<std::array<double, 2>> hexagon;
+  for (int k = 0; k < 6; ++k) hexagon.push_back({std::cos(k * M_PI / 3), std::sin(k * M_PI / 3)});
+  for (double w : meanValueCoordinates(hexagon, {0.0, 0.0})) CHECK(w == Approx(1.0 / 6.0).epsilon(1e-14));
+  // Outside the kernel (the L's notch): no coordinates.
+  CHECK(meanValueCoordinates(l2, {2.0, 2.0}).empty());
+  // The U has no kernel: its n - 2 ear triangles, counter-clockwise, cover its area 7.
+  const std::vector<Vec3> u = {Vec3(0, 0, 0), Vec3(3, 0, 0), Vec3(3, 3, 0), Vec3(2, 3, 0),
+                               Vec3(2, 1, 0), Vec3(1, 1, 0), Vec3(1, 3, 0), Vec3(0, 3, 0)};
+  const MembraneTriangulation ears = membraneTriangulation(u);
+  REQUIRE(ears.kind == Kind::Ears);
+  REQUIRE(ears.size(8) == 6);
+  CHECK_FALSE(ears.hasApex());
+  double area = 0.0;
+  for (std::size_t i = 0; i < 6; ++i) {
+    const auto t = ears.triangle(i, 8);
+    const double a = 0.5 * (u[t[1]] - u[t[0]]).cross(u[t[2]] - u[t[0]]).z();
+    CHECK(a > 0.0);
+    area += a;
+  }
+  CHECK(area == Approx(7.0).epsilon(1e-14));
+  // Triangulations that do not fit their loop are refused, naming it.
+  MembraneTriangulation bad = l;
+  bad.apex_weights[0] += 0.1;
+  CHECK_THROWS_WITH(bad.check(6, "polygon 3"), Catch::Contains("polygon 3") && Catch::Contains("sum"));
+  CHECK_THROWS_WITH(l.check(7, "polygon 3"), Catch::Contains("7 vertices"));
+  bad = ears;
+  bad.ears[2][1] = 8;
+  CHECK_THROWS_WITH(bad.check(8, "polygon 4"), Catch::Contains("polygon 4") && Catch::Contains("corner 8"));
+}
+
+TEST_CASE("tissue membranes: derivatives of folded polygons (kernel fan, ears) against finite differences",
+          "[mechanics]") {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Tissue tissue = foldedSheet(0.03);
+  REQUIRE(polygonTriangulation(std::vector<Vec3>{tissue.position(VertexId(0)), tissue.position(VertexId(1)),
+                                                 tissue.position(VertexId(2)), tissue.position(VertexId(3)),
+                                                 tissue.position(VertexId(4)), tissue.position(VertexId(5)),
+                                                 tissue.position(VertexId(6)), tissue.position(VertexId(7))})
+              .folded);
+  MembraneGrowthParams params;
+  params.material.young = 50.0;
+  params.material.thickness = 0.1;
+  params.material.fibre_ratio = 4.0;
+  params.fibres.kind = FibreRule::Kind::Fixed;
+  params.fibres.vector = Vec3(1, 2, 0.5);
+  auto& pressure = cellOutput(tissue, kTurgorPressureName, 0.0);
+  pressure[CellId(0)] = 0.7;
+  pressure[CellId(1)] = 0.4;
+  cellOutput(tissue, kYoungScaleName, 1.0)[CellId(1)] = 1.6;
+  MembraneRestState state;
+  const FanMembraneModel at_rest = buildTissueMembranes(tissue, params, state);
+  CHECK(state.triangulations[0].kind == MembraneTriangulation::Kind::Ears);
+  CHECK(state.triangulations[1].kind == MembraneTriangulation::Kind::KernelFan);
+  CHECK(at_rest.numTriangles(0) == 6);
+  CHECK(at_rest.numTriangles(1) == 6);
+  // The kernel apex projects on the tissue's apex, the kernel centroid placed
+  // in the L's best-fit plane (it differs only across that plane).
+  const Eigen::VectorXd x0 = spatialDofs(tissue);
+  std::vector<Vec3> l_loop;
+  for (Index v : state.loops[1]) l_loop.push_back(tissue.position(VertexId(v)));
+  const PolygonTriangulation l_tri = polygonTriangulation(l_loop);
+  Vec3 apex = Vec3::Zero();
+  for (std::size_t k = 0; k < 6; ++k) apex += state.triangulations[1].apex_weights[k] * l_loop[k];
+  const Vec3 off = apex - l_tri.center;
+  CHECK((off - off.dot(l_tri.normal) * l_tri.normal).norm() <= 1e-12);
+  // At rest: no elastic energy.
+  double pv = 0.0;
+  for (std::size_t f = 0; f < at_rest.numPolygons(); ++f)
+    pv += at_rest.polygon(f).pressure * at_rest.coneVolume(x0, f);
+  CHECK(at_rest.energy(x0) == Approx(-pv).epsilon(1e-12));
+  // Flat, both tile their cells: the rest areas are the U's 7 and the L's 5.
+  Tissue flat = foldedSheet(0.0);
+  MembraneRestState flat_state;
+  const FanMembraneModel flat_model = buildTissueMembranes(flat, MembraneGrowthParams{}, flat_state);
+  CHECK(flat_model.restArea(0) == Approx(7.0).epsilon(1e-14));
+  CHECK(flat_model.restArea(1) == Approx(5.0).epsilon(1e-14));
+  CHECK(flat_model.fanArea(spatialDofs(flat), 1) == Approx(5.0).epsilon(1e-14));
+  // Strained and sheared: rest shapes 0.9 of the current ones, random moves.
+  for (auto& r : state.rest)
+    for (RestMetric& m : r) m *= 0.81;
+  Eigen::VectorXd x = x0;
+  for (Eigen::Index i = 0; i < x.size(); ++i) x(i) += 0.05 * u(rng);
+  const FanMembraneModel model = buildTissueMembranes(tissue, params, state);
+  CHECK(model.polygon(1).triangulation == state.triangulations[1]);
+  checkDerivatives(model, x);
+}
 
 TEST_CASE("tissue membranes: derivatives of a dome sheet and a 3D tissue against finite differences",
           "[mechanics]") {
@@ -244,12 +374,14 @@ TEST_CASE("tissue membranes: refused tissues and bad state", "[mechanics]") {
   Tissue planar = rectangularGrid(2, 2);
   MembraneRestState state;
   CHECK_THROWS_WITH(buildTissueMembranes(planar, MembraneGrowthParams{}, state), Catch::Contains("planar"));
-  // A U-shaped cell: its vertex mean (1.5, 1.5) lies in the notch, so the fan folds.
-  const std::vector<Vec3> u = {Vec3(0, 0, 0), Vec3(3, 0, 0), Vec3(3, 3, 0), Vec3(2, 3, 0),
-                               Vec3(2, 1, 0), Vec3(1, 1, 0), Vec3(1, 3, 0), Vec3(0, 3, 0)};
-  Tissue folded = buildPolygonTissue(u, {{0, 1, 2, 3, 4, 5, 6, 7}}, Embedding::Surface);
-  CHECK_THROWS_WITH(buildTissueMembranes(folded, MembraneGrowthParams{}, state),
-                    Catch::Contains("cell 0") && Catch::Contains("folds"));
+  // The boundary support needs a sheet with a rim.
+  MembraneGrowthParams boundary;
+  boundary.support = MembraneGrowthParams::Support::Boundary;
+  Tissue box = voronoiBox(4, 1);
+  CHECK_THROWS_WITH(membraneSupport(box, boundary), Catch::Contains("3D tissue"));
+  Tissue folded = foldedSheet(0.0);
+  const auto rim = membraneSupport(folded, boundary);
+  CHECK(std::count(rim.begin(), rim.end(), 1) == 12);  // every vertex of the two cells is on the rim
   // The rest state reads back exactly from its text; a short text is refused.
   Tissue tissue = voronoiBox(5, 2);
   MembraneGrowthParams params;
@@ -264,6 +396,25 @@ TEST_CASE("tissue membranes: refused tissues and bad state", "[mechanics]") {
     CHECK(back.loops[f.index()] == state.loops[f.index()]);
   }
   CHECK_THROWS_WITH(back.fromText(tissue, "3 1 0 1", "snapshot s"), Catch::Contains("snapshot s"));
+  // Folded polygons: the triangulations (kernel weights, ear corners) read back too.
+  MembraneRestState bent;
+  buildTissueMembranes(folded, MembraneGrowthParams{}, bent);
+  for (auto& r : bent.rest)
+    for (RestMetric& m : r) m *= 1.0 / 3.0;
+  const std::string text = bent.toText(folded);
+  CHECK(text.find("ears 6") != std::string::npos);
+  CHECK(text.find("apex 6") != std::string::npos);
+  MembraneRestState bent_back;
+  bent_back.fromText(folded, text, "snapshot t");
+  for (FaceId f : folded.faces()) {
+    CHECK(bent_back.rest[f.index()] == bent.rest[f.index()]);
+    CHECK(bent_back.triangulations[f.index()] == bent.triangulations[f.index()]);
+  }
+  CHECK(bent_back.toText(folded) == text);
+  std::string wrong = text;
+  wrong.replace(wrong.find("ears 6"), 6, "ears 5");
+  CHECK_THROWS_WITH(bent_back.fromText(folded, wrong, "snapshot t"),
+                    Catch::Contains("snapshot t") && Catch::Contains("ear triangles"));
 }
 
 TEST_CASE("stress feedback: the fibre angle to a uniaxial stress decays exponentially at the given rate",

@@ -3,22 +3,25 @@
 #pragma once
 // Membranes from a tissue's walls (docs/mechanics.md, "Membranes from a
 // tissue"): a curved sheet (dim 2, Embedding::Surface) has one membrane per
-// cell, a 3D tissue one per wall polygon (shared by its two cells). Each is a
-// fan of membrane triangles from its loop's vertex mean (FanMembraneModel), the
-// surface the tissue measures; a polygon whose fan folds is refused
-// (MechanicsError naming it). Pressure work: a 3D cell's pressure times its
+// cell, a 3D tissue one per wall polygon (shared by its two cells). Each is cut
+// into membrane triangles (FanMembraneModel) by the triangulation chosen when
+// its rest state is created (membrane_triangulation.hpp: the fan from its
+// vertex mean, or for a polygon whose fan folds, the fan from its kernel
+// centroid with fixed weights or its ear-clipped triangles), kept with the
+// rest state while its loop is unchanged. Pressure work: a 3D cell's pressure times its
 // volume (the same fans, outward signs); a sheet's cell's pressure times the
 // volume of the cone from a point on the base plane (z = z_min of the support,
 // under the tissue's centroid) to its fan, signed so that the sheet's total is
 // positive: the volume between the sheet and its base plane, up to a constant
 // while the base ring is fixed.
 //
-// The rest shape of every fan triangle is kept in a MembraneRestState between
-// steps, keyed by polygon (face slot) and its loop. A polygon whose loop has
-// changed (divided, or a vertex inserted by a neighbour's division) starts at
-// rest in its current shape scaled isotropically by its previous rest-to-current
-// area ratio (the face property membrane_rest_ratio, copied to both parts of a
-// divided face); a new face (the wall a 3D division adds) starts at rest.
+// The rest shape of every triangle is kept in a MembraneRestState between
+// steps, keyed by polygon (face slot) and its loop, with the triangulation. A
+// polygon whose loop has changed (divided, or a vertex inserted by a
+// neighbour's division) is triangulated anew and starts at rest in its current
+// shape scaled isotropically by its previous rest-to-current area ratio (the
+// face property membrane_rest_ratio, copied to both parts of a divided face); a
+// new face (the wall a 3D division adds) starts at rest.
 
 #include <cstdint>
 #include <random>
@@ -61,8 +64,13 @@ struct MembraneGrowthParams {
   /// principal stress every step (fibre_feedback.hpp).
   FibreFeedback feedback{};
   StrainGrowthLaw growth{};
-  /// Vertices within this distance above the lowest vertex z are fixed (the
-  /// base ring of a dome or a cylinder, the bottom of a 3D tissue); must fix some.
+  /// What is fixed: `Base`, the vertices within `base_distance` above the
+  /// lowest vertex z (the base ring of a dome or a cylinder, the bottom of a 3D
+  /// tissue); `Boundary`, every vertex on a boundary wall of a sheet (its rims:
+  /// a cropped patch of a larger surface). A rim whose vertices are all fixed
+  /// gets no lid (its pressure work is constant).
+  enum class Support { Base, Boundary };
+  Support support = Support::Base;
   double base_distance = 1e-6;
   EquilibriumOptions solver{};
   void check() const;
@@ -72,10 +80,14 @@ struct MembraneGrowthParams {
 struct MembraneRestState {
   std::vector<std::vector<Index>> loops;
   std::vector<std::vector<RestMetric>> rest;
+  /// Per face slot, how its loop is cut into the triangles `rest` describes.
+  std::vector<MembraneTriangulation> triangulations;
   /// Per face slot, the fibre direction under stress feedback (zero: none yet).
   std::vector<Vec3> fibres;
   /// Text for a snapshot's run state: per live membrane face in slot order, its
-  /// vertex count, its rest metrics and its fibre (exact text).
+  /// triangle count, its rest metrics and its fibre (exact text); a kernel fan
+  /// is preceded by "apex n" and its n weights, ears are "ears t" and their 3 t
+  /// corners (loop positions) in place of the count.
   std::string toText(const Tissue& tissue) const;
   /// Reads toText's output back for `tissue` (same faces, same loops);
   /// InputError naming `source` on a mismatch.
@@ -102,9 +114,11 @@ std::vector<double> facePressures(const Tissue& tissue, const std::vector<FaceId
                                   const std::vector<double>& cell_pressure, const Vec3& origin);
 /// The cone origin of a sheet: the tissue's vertex mean dropped to z_min.
 Vec3 sheetOrigin(const Tissue& tissue);
+/// The fixed vertices (per vertex slot, 1: fixed) of `params.support`.
+/// MechanicsError when it fixes none, or for Boundary on a 3D tissue.
+std::vector<std::uint8_t> membraneSupport(const Tissue& tissue, const MembraneGrowthParams& params);
 /// Builds the model of `tissue` as it is, rest shapes from `state` (updated
-/// for changed loops; counts them in `reset`). MechanicsError naming a cell or
-/// wall whose fan folds.
+/// for changed loops, with a new triangulation; counts them in `reset`).
 FanMembraneModel buildTissueMembranes(Tissue& tissue, const MembraneGrowthParams& params,
                                       MembraneRestState& state, std::size_t* reset = nullptr);
 /// Cell volumes (3D) or cone volumes (sheet) of the model's fans at x, by cell slot.
