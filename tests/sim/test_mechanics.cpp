@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <map>
 #include <numbers>
 
 #include "tessella/mechanics/errors.hpp"
@@ -238,6 +239,69 @@ TEST_CASE("configs/turgor_tissue_3d.yaml: a 3D tissue grows under turgor, volume
   });
   sim.run();
   CHECK(volume > 1.01 * volume_start);
+}
+
+TEST_CASE("configs/turgor_real_meristem.yaml: a real meristem with folded cells grows under turgor, rim held",
+          "[sim][mechanics][configs]") {
+  // The MorphoGraphX meristem (tests/data copy): some cells are not
+  // star-shaped from their vertex means, so their fans fold and they are
+  // meshed on their kernel-centroid fans or ears.
+  Simulation sim = Simulation::fromFile(sourcePath("configs/turgor_real_meristem.yaml"));
+  REQUIRE(sim.tissue().embedding() == Embedding::Surface);
+  const std::size_t cells_before = sim.tissue().numCells();
+  REQUIRE(cells_before == 128);
+  int folded = 0;
+  for (CellId c : sim.tissue().cells()) {
+    std::vector<Vec3> loop;
+    for (VertexId v : sim.tissue().topology().faceVertices(sim.tissue().cellFace(c)))
+      loop.push_back(sim.tissue().position(v));
+    folded += polygonTriangulation(loop).folded ? 1 : 0;
+  }
+  CHECK(folded >= 1);
+  // The rim (the cropped patch's boundary) is held where it is.
+  std::map<VertexId, Vec3> rim;
+  for (WallId w : sim.tissue().walls())
+    if (sim.tissue().isBoundaryWall(w))
+      for (VertexId v : sim.tissue().topology().edgeVertices(EdgeId(w.index())))
+        rim.emplace(v, sim.tissue().position(v));
+  const MechanicsStage* stage = nullptr;
+  for (std::size_t i = 0; i < sim.numStages(); ++i)
+    if (const auto* m = dynamic_cast<const MechanicsStage*>(&sim.stage(i))) stage = m;
+  REQUIRE(stage);
+  double area = totalMeasure(sim.tissue());
+  const double area_start = area;
+  int steps = 0;
+  tessella::sim::test::validateEveryStep(sim);
+  sim.onStep([&](const Simulation& s) {
+    INFO("t = " << s.time());
+    const mechanics::MembraneStepReport& r = stage->lastMembraneReport();
+    CHECK(r.equilibrium.residual <= r.equilibrium.tolerance);  // converged
+    CHECK(r.fixed_vertices >= rim.size());
+    CHECK(r.polygons == s.tissue().numCells());
+    if (steps++ == 0)
+      CHECK(r.polygons_reset == r.polygons);  // every cell at rest in its start shape
+    else
+      CHECK(r.polygons_reset < r.polygons);  // only divided cells and their neighbours
+    for (CellId c : s.tissue().cells()) REQUIRE(cellMeasure(s.tissue(), c) > 0.0);
+    const double now = totalMeasure(s.tissue());
+    CHECK(now > area);
+    area = now;
+  });
+  sim.run();
+  CHECK(steps == 4);
+  CHECK(area > 1.1 * area_start);
+  CHECK(sim.tissue().numCells() > cells_before);
+  for (const auto& [v, p] : rim) CHECK(sim.tissue().position(v) == p);
+}
+
+TEST_CASE("mechanics section: the boundary support is for sheets", "[sim][mechanics]") {
+  const ConfigError e = configErrorOf([] {
+    loadSimulationConfigString(
+        "tissue:\n  generator: box_grid\ntime:\n  end: 1\n  dt: 0.1\nmechanics:\n  model: membranes\n"
+        "  membrane_support: boundary\n");
+  });
+  CHECK(e.keyPath() == "mechanics.membrane_support");
+  CHECK_THAT(std::string(e.what()), Catch::Contains("rims"));
 }
 
 TEST_CASE("mechanics section: membranes refuse a planar tissue at mechanics.model", "[sim][mechanics]") {

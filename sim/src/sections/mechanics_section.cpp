@@ -42,6 +42,8 @@ void MechanicsStage::prepare(Tissue& tissue, double /*time*/) {
     if (tissue.dim() == 2 && tissue.embedding() != Embedding::Surface)
       throw InputError("mechanics.model: membranes need a curved sheet (embedding surface) or a 3D tissue; "
                        "this tissue is planar (use wall_springs)");
+    if (spec_.membrane.support == mechanics::MembraneGrowthParams::Support::Boundary && tissue.dim() != 2)
+      throw InputError("mechanics.membrane_support: boundary holds a sheet's rims; this tissue is 3D (use base)");
     mechanics::cellOutput(tissue, mechanics::kTurgorPressureName, spec_.membrane.pressure);
     mechanics::cellOutput(tissue, mechanics::kYoungScaleName, 1.0);
     // Zero before the first equilibrium (a restart keeps the snapshot's values).
@@ -226,7 +228,8 @@ void declareMechanicsSection(Schema& s) {
   s.key("mechanics.model", ValueType::Enum,
         "The mechanical model. `wall_springs`: walls as springs, cells under turgor (planar 2D tissues). "
         "`membranes`: every cell of a curved sheet, every wall of a 3D tissue a membrane (the fan of "
-        "St Venant-Kirchhoff triangles from its vertex mean), cells under turgor, the base fixed.")
+        "St Venant-Kirchhoff triangles from its vertex mean; a polygon whose fan folds: from its kernel centroid, "
+        "or its ear-clipped triangles), cells under turgor, the base or the rim fixed.")
       .oneOf({"none", "wall_springs", "membranes"})
       .byDefault(std::string("none"));
   const std::vector<std::string> on = {"wall_springs", "membranes"};
@@ -303,12 +306,19 @@ void declareMechanicsSection(Schema& s) {
       .byDefault(0.0)
       .atLeast(0)
       .activeWhen("mechanics.model", membranes);
+  s.key("mechanics.membrane_support", ValueType::Enum,
+        "What holds the membranes. `base`: the vertices within `base_distance` above the lowest vertex; "
+        "`boundary`: every vertex on the sheet's boundary walls (its rims: a cropped patch of a larger "
+        "surface, such as an imported meristem; sheets only). A rim whose vertices are all fixed is not loaded.")
+      .oneOf({"base", "boundary"})
+      .byDefault(std::string("base"))
+      .activeWhen("mechanics.model", membranes);
   s.key("mechanics.base_distance", ValueType::Float,
         "Vertices within this distance above the lowest vertex (z) are fixed: the base ring of a dome or "
         "cylinder, the bottom of a 3D tissue.")
       .byDefault(1e-6)
       .atLeast(0)
-      .activeWhen("mechanics.model", membranes);
+      .activeWhen("mechanics.membrane_support", {"base"});
   s.key("mechanics.soft_radius", ValueType::Float,
         "Soft summit: a cell's Young's modulus is young (f + (1 - f) min(r / soft_radius, 1)^2), r the "
         "horizontal distance of its centroid from soft_center, f = soft_factor (the cell property "
@@ -356,7 +366,11 @@ MechanicsSpec readMechanicsSection(const Config& c) {
     p.pressure = m.params.pressure;
     p.growth = m.params.growth;
     p.solver = m.params.solver;
-    p.base_distance = c.getFloat("mechanics.base_distance");
+    p.support = c.getString("mechanics.membrane_support") == "boundary"
+                    ? mechanics::MembraneGrowthParams::Support::Boundary
+                    : mechanics::MembraneGrowthParams::Support::Base;
+    if (p.support == mechanics::MembraneGrowthParams::Support::Base)
+      p.base_distance = c.getFloat("mechanics.base_distance");
     p.feedback.rate = c.getFloat("mechanics.feedback_rate");
     p.feedback.noise = c.getFloat("mechanics.feedback_noise");
     const std::string fibres = c.getString("mechanics.fibres");

@@ -191,6 +191,10 @@ void checkTissueShape(const SimulationConfig& s) {
   if (s.mechanics.enabled && s.mechanics.membranes && shape.dim == 2 && shape.planar())
     throw c.errorAt("mechanics.model", "'membranes' needs a curved sheet or a 3D tissue; the tissue is " +
                                            shape.str() + " (use wall_springs)");
+  if (s.mechanics.enabled && s.mechanics.membranes && shape.dim == 3 &&
+      s.mechanics.membrane.support == mechanics::MembraneGrowthParams::Support::Boundary)
+    throw c.errorAt("mechanics.membrane_support", "'boundary' holds a sheet's rims; the tissue is " + shape.str() +
+                                                      " (use base)");
 
   // mesh: keys for tetrahedra only.
   for (const char* key : {"mesh.max_volume", "mesh.radius_edge_ratio", "mesh.min_dihedral_angle",

@@ -36,7 +36,7 @@ struct MechanicsSpec {
   bool enabled = false;
   /// `wall_springs` (planar tissues) or `membranes` (curved sheets, 3D tissues).
   bool membranes = false;
-  /// The membrane model's material, fibres, growth law, base support and
+  /// The membrane model's material, fibres, growth law, support (base or rim) and
   /// solver options (pressure, young, thickness, growth and solver as params).
   mechanics::MembraneGrowthParams membrane{};
   /// Soft summit: a cell's Young's modulus is young (f + (1 - f) min(r / R, 1)^2),
