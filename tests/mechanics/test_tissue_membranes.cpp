@@ -207,6 +207,37 @@ TEST_CASE("tissue membranes: derivatives of folded polygons (kernel fan, ears) a
   checkDerivatives(model, x);
 }
 
+TEST_CASE("tissue membranes: a divided folded cell is triangulated anew; its neighbour keeps its rest state",
+          "[mechanics]") {
+  Tissue tissue = foldedSheet(0.0);
+  MembraneRestState state;
+  buildTissueMembranes(tissue, MembraneGrowthParams{}, state);
+  const MembraneTriangulation l_tri = state.triangulations[1];
+  auto& l_rest = state.rest[1];
+  for (RestMetric& m : l_rest) m *= 0.7;  // the L strained: its rest state must survive
+  const std::vector<RestMetric> l_before = l_rest;
+  // The U at 0.9 of its area at rest: both parts start so (membrane_rest_ratio, copied on division).
+  tissue.properties(2).get<double>(kMembraneRestRatioName)[FaceId(0)] = 0.9;
+  // Cut off its left arm's outer half: a rectangle [0, 0.5] x [0, 3] and a U still without kernel.
+  const CellSplit split = tissue.splitCell(CellId(0), Plane{Vec3(0.5, 1.5, 0), Vec3(1, 0, 0)});
+  REQUIRE(tissue.numCells() == 3);
+  std::size_t reset = 0;
+  const FanMembraneModel model = buildTissueMembranes(tissue, MembraneGrowthParams{}, state, &reset);
+  CHECK(reset == 2);
+  CHECK(state.triangulations[1] == l_tri);
+  CHECK(state.rest[1] == l_before);
+  int fans = 0, ears = 0;
+  for (CellId c : {CellId(0), split.daughter}) {
+    const MembraneTriangulation& t = state.triangulations[c.index()];
+    fans += t.kind == MembraneTriangulation::Kind::MeanFan ? 1 : 0;
+    ears += t.kind == MembraneTriangulation::Kind::Ears ? 1 : 0;
+    CHECK(model.restArea(c.index()) == Approx(0.9 * cellMeasure(tissue, c)).epsilon(1e-13));
+  }
+  CHECK(fans == 1);
+  CHECK(ears == 1);
+  CHECK(cellMeasure(tissue, CellId(0)) + cellMeasure(tissue, split.daughter) == Approx(7.0).epsilon(1e-14));
+}
+
 TEST_CASE("tissue membranes: derivatives of a dome sheet and a 3D tissue against finite differences",
           "[mechanics]") {
   std::mt19937_64 rng(7);
