@@ -159,8 +159,8 @@ double FanMembraneModel::polygonTerms(const Eigen::VectorXd& x, std::size_t f, E
   const MembranePolygon& poly = polygons_[f];
   const int n = static_cast<int>(poly.loop.size());
   const int triangles = static_cast<int>(numTriangles(f));
-  std::vector<double> w_apex(static_cast<std::size_t>(n));  // the apex's weight at each loop vertex
-  for (std::size_t k = 0; k < w_apex.size(); ++k) w_apex[k] = poly.triangulation.apexWeight(k, poly.loop.size());
+  // The apex's weight at loop vertex k.
+  auto w_apex = [&poly](int k) { return poly.triangulation.apexWeight(static_cast<std::size_t>(k), poly.loop.size()); };
   const double t = material_.thickness;
   const Eigen::Matrix3d Q = poly.young_scale * q_;
   const double p = poly.pressure;
@@ -172,7 +172,7 @@ double FanMembraneModel::polygonTerms(const Eigen::VectorXd& x, std::size_t f, E
   std::array<int, 3> tri{};
   auto scatter = [&](Eigen::VectorXd& v, int, int a, const Eigen::Vector3d& value) {
     if (tri[a] == MembraneTriangulation::kApex) {
-      for (int k = 0; k < n; ++k) v.segment<3>(3 * k) += w_apex[k] * value;
+      for (int k = 0; k < n; ++k) v.segment<3>(3 * k) += w_apex(k) * value;
     } else {
       v.segment<3>(3 * tri[a]) += value;
     }
@@ -232,7 +232,7 @@ double FanMembraneModel::polygonTerms(const Eigen::VectorXd& x, std::size_t f, E
     for (int k = 0; k < n; ++k)
       for (int l = 0; l < n; ++l)
         tangent->block<3, 3>(3 * k, 3 * l) +=
-            w_apex[k] * w_apex[l] * apex_apex + w_apex[k] * apex_row[l] + w_apex[l] * apex_col[k];
+            w_apex(k) * w_apex(l) * apex_apex + w_apex(k) * apex_row[l] + w_apex(l) * apex_col[k];
   return energy;
 }
 
