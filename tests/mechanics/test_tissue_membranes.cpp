@@ -197,6 +197,11 @@ TEST_CASE("tissue membranes: derivatives of folded polygons (kernel fan, ears) a
   CHECK(flat_model.restArea(0) == Approx(7.0).epsilon(1e-14));
   CHECK(flat_model.restArea(1) == Approx(5.0).epsilon(1e-14));
   CHECK(flat_model.fanArea(spatialDofs(flat), 1) == Approx(5.0).epsilon(1e-14));
+  // Their cones from a point 2 below the (counter-clockwise) loops: area times 2 / 3, positive.
+  const FanMembraneModel below(spatialDofs(flat), {flat_model.polygon(0), flat_model.polygon(1)}, MembraneMaterial{},
+                               Vec3(0.3, 0.4, -2.0));
+  CHECK(below.coneVolume(spatialDofs(flat), 0) == Approx(7.0 * 2.0 / 3.0).epsilon(1e-14));
+  CHECK(below.coneVolume(spatialDofs(flat), 1) == Approx(5.0 * 2.0 / 3.0).epsilon(1e-14));
   // Strained and sheared: rest shapes 0.9 of the current ones, random moves.
   for (auto& r : state.rest)
     for (RestMetric& m : r) m *= 0.81;
