@@ -149,16 +149,19 @@ void membraneStep(Tissue tissue, const char* what, double pressure, const char* 
   params.growth = {1.0, 0.0};
   params.solver.relative_tolerance = 1e-8;
   MembraneRestState state;
-  const auto t0 = Clock::now();
-  const MembraneStepReport report = membraneGrowthStep(tissue, params, state, 0.1);
-  const auto t1 = Clock::now();
-  const double step = seconds(t0, t1);
-  const FanMembraneModel model = buildTissueMembranes(tissue, params, state);
+  // The dofs the step fixes (the base, as membraneGrowthStep finds it before
+  // solving): found again after the step, a vertex pushed below the base would
+  // leave the base free and make a different system.
   std::vector<std::uint8_t> fixed(3 * tissue.slots(0), 1);
   double zmin = 1e300;
   for (VertexId v : tissue.vertices()) zmin = std::min(zmin, tissue.position(v).z());
   for (VertexId v : tissue.vertices())
     for (int k = 0; k < 3; ++k) fixed[3 * v.index() + k] = tissue.position(v).z() <= zmin + params.base_distance;
+  const auto t0 = Clock::now();
+  const MembraneStepReport report = membraneGrowthStep(tissue, params, state, 0.1);
+  const auto t1 = Clock::now();
+  const double step = seconds(t0, t1);
+  const FanMembraneModel model = buildTissueMembranes(tissue, params, state);
   const double solve = linearSolveSeconds(model, spatialDofs(tissue), fixed);
   const int it = report.equilibrium.iterations;
   std::printf("%s%s %6zu cells %7zu dofs: step %8.3f s, %2d Newton iterations (%d linear solves), %8.4f s per "

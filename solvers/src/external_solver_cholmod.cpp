@@ -32,9 +32,10 @@ class CholmodSolver final : public ExternalSolver {
     llt_.cholmod().print = 0;  // library code does not print: failures become exceptions
   }
 
-  void compute(const SparseMatrix& A) override {
+  void compute(const SparseMatrix& A, bool same_pattern) override {
     const auto n = static_cast<double>(A.rows());
-    llt_.compute(A);
+    if (!same_pattern) llt_.analyzePattern(A);  // ordering (AMD, METIS when better) and supernodes
+    llt_.factorize(A);
     if (llt_.info() != Eigen::Success)
       throw FactorizationError("LinearSolver (CHOLMOD): Cholesky factorisation failed: matrix is not positive definite");
     // rcond = (min L_ii / max L_ii)^2, comparable with the LDL^T pivot ratio.
