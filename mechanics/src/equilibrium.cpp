@@ -211,6 +211,7 @@ EquilibriumReport solveEquilibrium(const EnergyModel& model, Eigen::VectorXd& x,
         solver.compute(tau > 0.0 ? tangent.shifted(tau) : K);
         d = solver.solve(-g);
         ++report.linear_solves;
+        report.analyses = solver.analyses();
         if (d.allFinite() && g.dot(d) < 0.0) {
           found = true;
           break;
