@@ -46,7 +46,7 @@ class FreeTangent {
   FreeTangent(const std::vector<Eigen::Index>& free_of, Eigen::Index m) : free_of_(free_of), m_(m) {}
 
   const solvers::SparseMatrix& assemble(const std::vector<Triplet>& entries) {
-    bool same = built_ && entries.size() == slot_.size();
+    bool same = built_ && entries.size() == place_.size();
     if (same) {
       double* value = K_.valuePtr();
       std::fill(value, value + K_.nonZeros(), -0.0);
@@ -55,7 +55,7 @@ class FreeTangent {
       for (std::size_t k = 0; k < entries.size() && same; ++k) {
         const Eigen::Index r = free_of_[static_cast<std::size_t>(entries[k].row())];
         const Eigen::Index c = free_of_[static_cast<std::size_t>(entries[k].col())];
-        const StorageIndex s = slot_[k];
+        const StorageIndex s = place_[k];
         if (r < 0 || c < 0) {
           same = s < 0;
         } else {
@@ -104,11 +104,11 @@ class FreeTangent {
       const StorageIndex* at = std::lower_bound(inner + outer[c], inner + outer[c + 1], static_cast<StorageIndex>(r));
       return at != inner + outer[c + 1] && *at == r ? static_cast<StorageIndex>(at - inner) : -1;
     };
-    slot_.resize(entries.size());
+    place_.resize(entries.size());
     for (std::size_t k = 0; k < entries.size(); ++k) {
       const Eigen::Index r = free_of_[static_cast<std::size_t>(entries[k].row())];
       const Eigen::Index c = free_of_[static_cast<std::size_t>(entries[k].col())];
-      slot_[k] = r >= 0 && c >= 0 ? find(r, c) : -1;
+      place_[k] = r >= 0 && c >= 0 ? find(r, c) : -1;
     }
     diagonal_.resize(static_cast<std::size_t>(m_));
     whole_diagonal_ = true;
@@ -124,7 +124,7 @@ class FreeTangent {
   Eigen::Index m_;
   bool built_ = false;
   solvers::SparseMatrix K_, shifted_;
-  std::vector<StorageIndex> slot_;      // per Hessian entry: its index in K_'s values, -1 off the free dofs
+  std::vector<StorageIndex> place_;     // per Hessian entry: its index in K_'s values, -1 off the free dofs
   std::vector<StorageIndex> diagonal_;  // per free dof: the index of K_(k, k), -1 when absent
   bool whole_diagonal_ = true;
 };
