@@ -76,7 +76,8 @@ void LinearSolver::compute(const SparseMatrix& A) {
 
   if (method_ == SolverMethod::Cholmod || method_ == SolverMethod::AmgCG) {
     if (!external_ || method_ == SolverMethod::AmgCG)
-      external_ = method_ == SolverMethod::Cholmod ? detail::makeCholmodSolver(options_) : detail::makeHypreSolver(options_);
+      external_ =
+          method_ == SolverMethod::Cholmod ? detail::makeCholmodSolver(options_) : detail::makeHypreSolver(options_);
     if (method_ == SolverMethod::Cholmod && !same) {
       ++analyses_;
       keepPattern(A);  // before the factorisation, which may throw (not positive definite) after analysing
