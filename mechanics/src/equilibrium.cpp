@@ -31,6 +31,104 @@ void checkOptions(const EquilibriumOptions& o) {
 
 std::string where(const EquilibriumOptions& o) { return o.context.empty() ? std::string() : " (" + o.context + ")"; }
 
+// The tangent K on the free dofs from the model's Hessian entries. The first
+// Hessian builds K's sparsity pattern (setFromTriplets) and the place of each
+// of its entries among K's values; a later Hessian with the same entries (rows
+// and columns in the same order: a model's pattern is fixed during a solve)
+// only scatters its values there, summed in the entries' order from -0 (the
+// additive identity) as setFromTriplets sums repeated entries, so K is the
+// same bit for bit and the linear solver reuses its symbolic analysis. Any
+// other Hessian rebuilds the pattern.
+class FreeTangent {
+ public:
+  using StorageIndex = solvers::SparseMatrix::StorageIndex;
+
+  FreeTangent(const std::vector<Eigen::Index>& free_of, Eigen::Index m) : free_of_(free_of), m_(m) {}
+
+  const solvers::SparseMatrix& assemble(const std::vector<Triplet>& entries) {
+    bool same = built_ && entries.size() == place_.size();
+    if (same) {
+      double* value = K_.valuePtr();
+      std::fill(value, value + K_.nonZeros(), -0.0);
+      const StorageIndex* outer = K_.outerIndexPtr();
+      const StorageIndex* inner = K_.innerIndexPtr();
+      for (std::size_t k = 0; k < entries.size() && same; ++k) {
+        const Eigen::Index r = free_of_[static_cast<std::size_t>(entries[k].row())];
+        const Eigen::Index c = free_of_[static_cast<std::size_t>(entries[k].col())];
+        const StorageIndex s = place_[k];
+        if (r < 0 || c < 0) {
+          same = s < 0;
+        } else {
+          same = s >= outer[c] && s < outer[c + 1] && inner[s] == r;
+          if (same) value[s] += entries[k].value();
+        }
+      }
+    }
+    if (!same) rebuild(entries);
+    return K_;
+  }
+
+  double diagonal(Eigen::Index k) const {
+    const StorageIndex s = diagonal_[static_cast<std::size_t>(k)];
+    return s < 0 ? 0.0 : K_.valuePtr()[s];
+  }
+
+  /// K + tau I: K's pattern when it holds the whole diagonal (the solver then
+  /// only refactorises), else with the missing diagonal entries inserted.
+  const solvers::SparseMatrix& shifted(double tau) {
+    if (!whole_diagonal_) {
+      shifted_ = K_;
+      for (Eigen::Index k = 0; k < m_; ++k) shifted_.coeffRef(k, k) += tau;
+      return shifted_;
+    }
+    if (shifted_.nonZeros() != K_.nonZeros() || shifted_.rows() != m_) shifted_ = K_;
+    std::copy(K_.valuePtr(), K_.valuePtr() + K_.nonZeros(), shifted_.valuePtr());
+    for (StorageIndex s : diagonal_) shifted_.valuePtr()[s] += tau;
+    return shifted_;
+  }
+
+ private:
+  void rebuild(const std::vector<Triplet>& entries) {
+    std::vector<Triplet> reduced;
+    reduced.reserve(entries.size());
+    for (const Triplet& t : entries) {
+      const Eigen::Index r = free_of_[static_cast<std::size_t>(t.row())];
+      const Eigen::Index c = free_of_[static_cast<std::size_t>(t.col())];
+      if (r >= 0 && c >= 0) reduced.emplace_back(r, c, t.value());
+    }
+    K_ = solvers::SparseMatrix(m_, m_);
+    K_.setFromTriplets(reduced.begin(), reduced.end());
+    const StorageIndex* outer = K_.outerIndexPtr();
+    const StorageIndex* inner = K_.innerIndexPtr();
+    auto find = [&](Eigen::Index r, Eigen::Index c) -> StorageIndex {
+      const StorageIndex* at = std::lower_bound(inner + outer[c], inner + outer[c + 1], static_cast<StorageIndex>(r));
+      return at != inner + outer[c + 1] && *at == r ? static_cast<StorageIndex>(at - inner) : -1;
+    };
+    place_.resize(entries.size());
+    for (std::size_t k = 0; k < entries.size(); ++k) {
+      const Eigen::Index r = free_of_[static_cast<std::size_t>(entries[k].row())];
+      const Eigen::Index c = free_of_[static_cast<std::size_t>(entries[k].col())];
+      place_[k] = r >= 0 && c >= 0 ? find(r, c) : -1;
+    }
+    diagonal_.resize(static_cast<std::size_t>(m_));
+    whole_diagonal_ = true;
+    for (Eigen::Index k = 0; k < m_; ++k) {
+      diagonal_[static_cast<std::size_t>(k)] = find(k, k);
+      whole_diagonal_ = whole_diagonal_ && diagonal_[static_cast<std::size_t>(k)] >= 0;
+    }
+    shifted_ = solvers::SparseMatrix();
+    built_ = true;
+  }
+
+  const std::vector<Eigen::Index>& free_of_;
+  Eigen::Index m_;
+  bool built_ = false;
+  solvers::SparseMatrix K_, shifted_;
+  std::vector<StorageIndex> place_;     // per Hessian entry: its index in K_'s values, -1 off the free dofs
+  std::vector<StorageIndex> diagonal_;  // per free dof: the index of K_(k, k), -1 when absent
+  bool whole_diagonal_ = true;
+};
+
 }  // namespace
 
 EquilibriumReport solveEquilibrium(const EnergyModel& model, Eigen::VectorXd& x, const std::vector<std::uint8_t>& fixed,
@@ -83,24 +181,17 @@ EquilibriumReport solveEquilibrium(const EnergyModel& model, Eigen::VectorXd& x,
   report.energies.push_back(energy);
   if (!std::isfinite(energy) || !std::isfinite(report.residual)) fail("the energy or its gradient is not finite");
 
-  std::vector<Triplet> entries, reduced;
+  std::vector<Triplet> entries;
+  FreeTangent tangent(free_of, m);
   solvers::LinearSolver solver(options.linear);
   while (report.residual > report.tolerance) {
     if (report.iterations >= options.max_iterations) fail("no convergence");
     // Tangent on the free dofs.
     entries.clear();
     model.hessian(x, entries);
-    reduced.clear();
-    reduced.reserve(entries.size());
-    for (const Triplet& t : entries) {
-      const Eigen::Index r = free_of[static_cast<std::size_t>(t.row())];
-      const Eigen::Index c = free_of[static_cast<std::size_t>(t.col())];
-      if (r >= 0 && c >= 0) reduced.emplace_back(r, c, t.value());
-    }
-    solvers::SparseMatrix K(m, m);
-    K.setFromTriplets(reduced.begin(), reduced.end());
+    const solvers::SparseMatrix& K = tangent.assemble(entries);
     double diag_max = 0.0;
-    for (Eigen::Index k = 0; k < m; ++k) diag_max = std::max(diag_max, std::abs(K.coeff(k, k)));
+    for (Eigen::Index k = 0; k < m; ++k) diag_max = std::max(diag_max, std::abs(tangent.diagonal(k)));
     if (!(diag_max > 0.0)) diag_max = 1.0;
     // Positions are known to eps |x|, so forces only to about that times the
     // stiffness: a residual below this floor is round-off (an unloaded body
@@ -116,13 +207,11 @@ EquilibriumReport solveEquilibrium(const EnergyModel& model, Eigen::VectorXd& x,
     double tau = 0.0;
     bool found = false;
     for (int attempt = 0; attempt <= options.max_shifts; ++attempt) {
-      solvers::SparseMatrix A = K;
-      if (tau > 0.0)
-        for (Eigen::Index k = 0; k < m; ++k) A.coeffRef(k, k) += tau;
       try {
-        solver.compute(A);
+        solver.compute(tau > 0.0 ? tangent.shifted(tau) : K);
         d = solver.solve(-g);
         ++report.linear_solves;
+        report.analyses = solver.analyses();
         if (d.allFinite() && g.dot(d) < 0.0) {
           found = true;
           break;

@@ -16,7 +16,9 @@ class ExternalSolver {
  public:
   virtual ~ExternalSolver() = default;
   /// Factorises / sets up the preconditioner for the square SPD matrix A.
-  virtual void compute(const SparseMatrix& A) = 0;
+  /// same_pattern: A has the pattern of the previous compute() on this object,
+  /// whose symbolic analysis may be reused.
+  virtual void compute(const SparseMatrix& A, bool same_pattern) = 0;
   /// Solves A x = b starting from x0 (empty: zero); sets the iterations done.
   virtual Eigen::VectorXd solve(const Eigen::VectorXd& b, const Eigen::VectorXd& x0, int& iterations) = 0;
 };

@@ -13,6 +13,7 @@
 
 #if TESSELLA_HAVE_CHOLMOD
 #include <Eigen/CholmodSupport>
+#include <omp.h>
 #endif
 
 namespace tessella::solvers::detail {
@@ -26,15 +27,42 @@ class CholmodLLT : public Eigen::CholmodSupernodalLLT<SparseMatrix, Eigen::Lower
   double rcond() { return cholmod_rcond(m_cholmodFactor, &this->cholmod()); }
 };
 
+// CHOLMOD's supernodal factorisation forks CHOLMOD_OMP_NUM_THREADS threads (4
+// in Debian's build, whatever the machine) for every large supernode, only to
+// clear and copy memory; the dense work is BLAS's. On a small shared machine
+// these teams wait on each other: on 2 cores under load, 45 % of a dome step's
+// samples were libgomp spinning and task switches. While this guard lives,
+// every team of the calling thread has one thread: nthreads-var 1 and dynamic
+// threads on (both the thread's own ICVs) cap num_threads clauses too. The
+// loops have no reductions, so the factor does not depend on the team size.
+class OneThreadTeams {
+ public:
+  OneThreadTeams() : dynamic_(omp_get_dynamic()), threads_(omp_get_max_threads()) {
+    omp_set_dynamic(1);
+    omp_set_num_threads(1);
+  }
+  ~OneThreadTeams() {
+    omp_set_num_threads(threads_);
+    omp_set_dynamic(dynamic_);
+  }
+  OneThreadTeams(const OneThreadTeams&) = delete;
+  OneThreadTeams& operator=(const OneThreadTeams&) = delete;
+
+ private:
+  int dynamic_, threads_;
+};
+
 class CholmodSolver final : public ExternalSolver {
  public:
   explicit CholmodSolver(const LinearSolverOptions& options) : options_(options) {
     llt_.cholmod().print = 0;  // library code does not print: failures become exceptions
   }
 
-  void compute(const SparseMatrix& A) override {
+  void compute(const SparseMatrix& A, bool same_pattern) override {
     const auto n = static_cast<double>(A.rows());
-    llt_.compute(A);
+    const OneThreadTeams one_thread;
+    if (!same_pattern) llt_.analyzePattern(A);  // ordering (AMD, METIS when better) and supernodes
+    llt_.factorize(A);
     if (llt_.info() != Eigen::Success)
       throw FactorizationError("LinearSolver (CHOLMOD): Cholesky factorisation failed: matrix is not positive definite");
     // rcond = (min L_ii / max L_ii)^2, comparable with the LDL^T pivot ratio.
@@ -50,6 +78,7 @@ class CholmodSolver final : public ExternalSolver {
 
   Eigen::VectorXd solve(const Eigen::VectorXd& b, const Eigen::VectorXd&, int& iterations) override {
     iterations = 0;
+    const OneThreadTeams one_thread;
     Eigen::VectorXd x = llt_.solve(b);
     if (llt_.info() != Eigen::Success) throw FactorizationError("LinearSolver (CHOLMOD): solve failed");
     return x;

@@ -69,7 +69,7 @@ class HypreSolver final : public ExternalSolver {
   HypreSolver(const HypreSolver&) = delete;
   HypreSolver& operator=(const HypreSolver&) = delete;
 
-  void compute(const SparseMatrix& A) override {
+  void compute(const SparseMatrix& A, bool /*same_pattern*/) override {
     release();
     n_ = static_cast<HYPRE_Int>(A.rows());
     const MPI_Comm comm = MPI_COMM_SELF;

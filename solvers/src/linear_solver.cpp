@@ -64,17 +64,34 @@ void LinearSolver::compute(const SparseMatrix& A) {
     method_ = n <= options_.auto_direct_max_unknowns ? SolverMethod::Direct : iterative;
   }
   matrix_ = A;
-  external_.reset();
+  const bool same = samePattern(A);
+  if (!same) {
+    analysed_size_ = -1;  // until this matrix is analysed
+    if (method_ != SolverMethod::Cholmod || n == 0) external_.reset();
+  }
   if (n == 0) {
     ready_ = true;
     return;
   }
 
   if (method_ == SolverMethod::Cholmod || method_ == SolverMethod::AmgCG) {
-    external_ = method_ == SolverMethod::Cholmod ? detail::makeCholmodSolver(options_) : detail::makeHypreSolver(options_);
-    external_->compute(A);
+    if (!external_ || method_ == SolverMethod::AmgCG)
+      external_ =
+          method_ == SolverMethod::Cholmod ? detail::makeCholmodSolver(options_) : detail::makeHypreSolver(options_);
+    if (method_ == SolverMethod::Cholmod && !same) {
+      ++analyses_;
+      keepPattern(A);  // before the factorisation, which may throw (not positive definite) after analysing
+    }
+    external_->compute(A, same);
   } else if (method_ == SolverMethod::Direct) {
-    ldlt_.compute(A);
+    if (same) {
+      ldlt_.factorize(A);
+    } else {
+      ldlt_.analyzePattern(A);
+      ++analyses_;
+      keepPattern(A);
+      ldlt_.factorize(A);
+    }
     if (ldlt_.info() != Eigen::Success)
       throw FactorizationError("LinearSolver: LDL^T factorisation failed (matrix singular or not SPD)");
     // SimplicialLDLT accepts indefinite and (numerically) singular matrices;
@@ -116,6 +133,22 @@ void LinearSolver::compute(const SparseMatrix& A) {
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC diagnostic pop
 #endif
+
+bool LinearSolver::samePattern(const SparseMatrix& A) const {
+  if (analysed_size_ != A.rows() || analysed_method_ != method_ || !A.isCompressed()) return false;
+  const auto nnz = static_cast<std::size_t>(A.nonZeros());
+  return analysed_inner_.size() == nnz &&
+         std::equal(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1, analysed_outer_.begin()) &&
+         std::equal(A.innerIndexPtr(), A.innerIndexPtr() + nnz, analysed_inner_.begin());
+}
+
+void LinearSolver::keepPattern(const SparseMatrix& A) {
+  if (!A.isCompressed()) return;  // not reused: analysed_size_ stays -1
+  analysed_method_ = method_;
+  analysed_size_ = A.rows();
+  analysed_outer_.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
+  analysed_inner_.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
+}
 
 Eigen::VectorXd LinearSolver::solve(const Eigen::VectorXd& b, const Eigen::VectorXd& x0) {
   if (!ready_) throw SolverError("LinearSolver::solve called before a successful compute()");

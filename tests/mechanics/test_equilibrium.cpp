@@ -64,9 +64,13 @@ TEST_CASE("equilibrium: a pressurised ring of N wall springs has side L0 / (1 - 
       for (int i = 0; i < n; ++i) CHECK(std::abs((x.segment<2>(2 * i) - centre).norm() - R) < 1e-10 * R);
       CHECK(model.tension(x, 0) == Approx(P * L / (2 * std::tan(std::numbers::pi / n))).epsilon(1e-10));
       CHECK(report.residual <= report.tolerance);
+      // The tangent's pattern is analysed once; every later factorisation reuses it.
+      CHECK(report.linear_solves >= report.iterations);
+      CHECK(report.analyses == 1);
       if (start < 1.0) {
         REQUIRE(!report.shifts.empty());
         CHECK(report.shifts.front() > 0.0);  // the compressed start needed a shift
+        CHECK(report.linear_solves > 1);
         CHECK(report.shifts.back() == 0.0);  // pure Newton at the end
       }
     }

@@ -156,3 +156,59 @@ TEST_CASE("LinearSolver: zero right-hand side gives zero, CG warm start converge
   solver.solve(b, solver.solve(b, x));  // an exact guess needs no step at all
   CHECK(solver.lastReport().iterations <= 1);
 }
+
+TEST_CASE("LinearSolver analyses a repeated pattern once, with the same result as a fresh solver",
+          "[solvers][linear]") {
+  // A 2D grid Laplacian plus a diagonal c I: SPD for c > 0, singular for c = 0,
+  // indefinite for c < 0. Every matrix below has the same pattern but the last.
+  const int g = 20, n = g * g;
+  auto grid = [&](double c, bool extra_entry = false) {
+    std::vector<Eigen::Triplet<double>> t;
+    for (int j = 0; j < g; ++j)
+      for (int i = 0; i < g; ++i) {
+        const int k = j * g + i;
+        t.emplace_back(k, k, c + 0.01 * (k % 7));
+        for (const int l : {i + 1 < g ? k + 1 : -1, j + 1 < g ? k + g : -1}) {
+          if (l < 0) continue;
+          t.emplace_back(k, k, 1.0), t.emplace_back(l, l, 1.0);
+          t.emplace_back(k, l, -1.0), t.emplace_back(l, k, -1.0);
+        }
+      }
+    if (extra_entry) t.emplace_back(0, n - 1, 0.0), t.emplace_back(n - 1, 0, 0.0);
+    SparseMatrix A(n, n);
+    A.setFromTriplets(t.begin(), t.end());
+    return A;
+  };
+  Eigen::VectorXd b(n);
+  for (int i = 0; i < n; ++i) b[i] = std::cos(0.3 * i);
+  std::vector<SolverMethod> methods{SolverMethod::Direct};
+  if (solverAvailable(SolverMethod::Cholmod)) methods.push_back(SolverMethod::Cholmod);
+  for (const SolverMethod method : methods) {
+    CAPTURE(toString(method));
+    LinearSolverOptions opt;
+    opt.method = method;
+    LinearSolver solver(opt);
+    auto fresh = [&](const SparseMatrix& A) {
+      LinearSolver one(opt);
+      one.compute(A);
+      CHECK(one.analyses() == 1);
+      return Eigen::VectorXd(one.solve(b));
+    };
+    for (const double c : {0.5, 2.0}) {
+      solver.compute(grid(c));
+      CHECK((solver.solve(b) - fresh(grid(c))).cwiseAbs().maxCoeff() == 0.0);  // the same arithmetic
+    }
+    CHECK(solver.analyses() == 1);
+    // A failed factorisation (indefinite) keeps the analysis; the shifted retry only refactorises.
+    CHECK_THROWS_AS(solver.compute(grid(-0.5)), FactorizationError);
+    CHECK_FALSE(solver.ready());
+    solver.compute(grid(0.1));
+    CHECK(solver.analyses() == 1);
+    CHECK((solver.solve(b) - fresh(grid(0.1))).cwiseAbs().maxCoeff() == 0.0);
+    // Another pattern (one more entry, an explicit zero) is analysed anew.
+    solver.compute(grid(0.1, true));
+    CHECK(solver.analyses() == 2);
+    const Eigen::VectorXd x = solver.solve(b);
+    CHECK((grid(0.1) * x - b).norm() <= 1e-10 * b.norm());
+  }
+}

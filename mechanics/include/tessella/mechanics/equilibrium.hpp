@@ -58,6 +58,10 @@ struct EquilibriumReport {
   std::vector<double> shifts;
   std::vector<double> step_lengths;
   int linear_solves = 0;
+  /// Symbolic analyses of the tangent's pattern (the fill-reducing ordering):
+  /// one per solve when the model's pattern is fixed, later tangents and
+  /// shifted retries are only refactorised.
+  int analyses = 0;
 };
 
 /// Minimises model.energy over the entries of x whose `fixed` flag is 0

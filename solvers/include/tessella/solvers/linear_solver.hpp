@@ -15,6 +15,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace tessella::solvers {
 
@@ -70,7 +71,14 @@ class LinearSolver {
   LinearSolver& operator=(const LinearSolver&) = delete;
 
   /// Sets up the solver for the square SPD matrix A (a copy is kept, so A may die).
+  /// The direct solvers (LDL^T, CHOLMOD) analyse a sparsity pattern once (the
+  /// fill-reducing ordering and the symbolic factorisation): a compressed A with
+  /// the same pattern as the previous one is factorised numerically only, with
+  /// the same arithmetic as a fresh analysis (Newton iterations, shifted retries).
   void compute(const SparseMatrix& A);
+  /// Symbolic analyses done so far (a fresh pattern, a method change or an
+  /// uncompressed matrix each cost one).
+  int analyses() const { return analyses_; }
   /// Solves A x = b; for CG, x0 is the initial guess (empty: zero).
   Eigen::VectorXd solve(const Eigen::VectorXd& b, const Eigen::VectorXd& x0 = {});
 
@@ -97,6 +105,13 @@ class LinearSolver {
   CgIchol cg_ichol_;
   std::unique_ptr<detail::ExternalSolver> external_;  // Cholmod / AmgCG
   SolveReport report_;
+  // The pattern the direct solver analysed (empty: none), and for which method.
+  bool samePattern(const SparseMatrix& A) const;
+  void keepPattern(const SparseMatrix& A);
+  SolverMethod analysed_method_ = SolverMethod::Auto;
+  Eigen::Index analysed_size_ = -1;
+  std::vector<SparseMatrix::StorageIndex> analysed_outer_, analysed_inner_;
+  int analyses_ = 0;
 };
 
 /// Convenience: one-shot solve of A x = b.
