@@ -94,11 +94,17 @@ NetworkGraph networkGraph(const Tissue& tissue, GeometryCache& geometry, const s
   for (const std::string& name : properties) {
     const PropertyColumnBase* column = tissue.cellProperties().find(name);
     if (!column) throw InputError("network: the cell property '" + name + "' is not on the tissue");
-    if (column->type() != std::type_index(typeid(double)))
-      throw InputError("network: the cell property '" + name + "' does not hold numbers (double)");
-    const auto& values = tissue.cellProperties().get<double>(name);
     std::vector<double>& out = g.properties[name];
-    for (CellId c : cells) out.push_back(values[c]);
+    if (column->type() == std::type_index(typeid(double))) {
+      const auto& values = tissue.cellProperties().get<double>(name);
+      for (CellId c : cells) out.push_back(values[c]);
+    } else if (column->type() == std::type_index(typeid(int))) {
+      // An int property (a label, e.g. the primordium id) is read as its value.
+      const auto& values = tissue.cellProperties().get<int>(name);
+      for (CellId c : cells) out.push_back(static_cast<double>(values[c]));
+    } else {
+      throw InputError("network: the cell property '" + name + "' does not hold numbers (double or int)");
+    }
   }
   if (cells_out) *cells_out = std::move(cells);
   return g;

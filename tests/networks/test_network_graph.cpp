@@ -37,3 +37,24 @@ TEST_CASE("networkGraph of a rectangular grid: unit measures, interior walls, no
   CHECK(horizontal == 3);
   REQUIRE_THROWS_WITH(networkGraph(t, geometry, {"missing"}), Catch::Contains("'missing'"));
 }
+
+TEST_CASE("networkGraph reads double and int cell properties as numbers, and refuses others", "[networks]") {
+  Tissue t = rectangularGrid(2, 2, 1.0, 1.0);
+  auto& q = t.cellProperties().add<double>("q", 0.0, DivisionPolicy::Copy);
+  auto& label = t.cellProperties().add<int>("label", 0, DivisionPolicy::Copy);
+  t.cellProperties().add<Vec3>("v", Vec3::Zero(), DivisionPolicy::Copy);
+  std::vector<CellId> cells(t.cells().begin(), t.cells().end());
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    q[cells[k]] = 0.5 * static_cast<double>(k);
+    label[cells[k]] = 3 - static_cast<int>(k);
+  }
+  GeometryCache geometry;
+  std::vector<CellId> order;
+  const NetworkGraph g = networkGraph(t, geometry, {"q", "label"}, &order);
+  REQUIRE(order.size() == cells.size());
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    CHECK(g.properties.at("q")[k] == q[order[k]]);
+    CHECK(g.properties.at("label")[k] == static_cast<double>(label[order[k]]));
+  }
+  REQUIRE_THROWS_WITH(networkGraph(t, geometry, {"v"}), Catch::Contains("'v' does not hold numbers"));
+}

@@ -5,11 +5,14 @@
 // (atan2 about the z axis here, independently of networks::axialPosition;
 // the annulus in the distance from the apex),
 // the primordium cell property, primordia.csv, and the records across a
-// restart. The divergence angles the model gives are reported in
-// docs/networks.md; no test asserts them.
+// restart; and what the config's mechanism makes of a run (primordia after the
+// first ring, one per solve, in the competent annulus only, primordium cells
+// kept as auxin maxima). The divergence angles the model gives are reported
+// in docs/networks.md; no test asserts them.
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -20,6 +23,7 @@
 #include "tessella/sim/run/primordia_output.hpp"
 #include "tessella/sim/simulation.hpp"
 #include "tessella/sim/stages/network_stage.hpp"
+#include "tessella/tissue/geometry.hpp"
 #include "test_support.hpp"
 
 using namespace tessella;
@@ -135,6 +139,69 @@ TEST_CASE("phyllotaxis_dome.yaml: the primordia records and cells survive a rest
   CHECK(other == 0);
 }
 
+// The mechanism (docs/networks.md, "Phyllotaxis on a growing dome"): auxin
+// patterns only in the annulus Rc <= r < Rc + W about the summit (slow
+// turnover d, unstable); elsewhere it decays at rate k, for which the linear
+// stability analysis gives a stable uniform state (k V > 3 (B - A)^2 / B for
+// every cell), and cells that started a primordium are held at cP above the
+// threshold. So, at the end of a run: no cell outside the annulus is above
+// the threshold unless it is a primordium cell, no primordium cell is in the
+// central zone (growth carries cells outward), and every primordium still has
+// a cell above the threshold (held near cP, however far it has moved; the
+// cells at a clone's edge pump much of their auxin into the clone and can
+// fall below). The first
+// solves make a ring of primordia at once (the whole annulus is unstable from
+// the uniform start); after t = 1, primordia appear each in its own solve
+// (in this run: over seeds, a few per cent of the later ones share a solve
+// with another, docs/networks.md).
+TEST_CASE("phyllotaxis_dome.yaml to t = 8: primordia one at a time after the first ring, only in the annulus",
+          "[sim][network][primordia]") {
+  Simulation sim = Simulation::fromFile(sourcePath("configs/phyllotaxis_dome.yaml"), {"time.end=8"});
+  sim.run();
+  const NetworkStage& stage = networkStageOf(sim);
+  const auto& records = stage.primordia();
+  REQUIRE(!records.empty());
+  checkRecords(sim);
+  const auto& prm = stage.spec().model.parameters;
+  const double Rc = prm.at("Rc"), W = prm.at("W"), cP = prm.at("cP");
+  const Vec3 apex(0, 0, prm.at("zA"));
+  const auto& o = stage.spec().primordia.options;
+  REQUIRE(o.apex == apex);
+  REQUIRE(o.min_radius == Rc);
+  REQUIRE(o.max_radius == Rc + W);
+  REQUIRE(cP > o.threshold);
+  std::vector<double> later;
+  for (const auto& r : records)
+    if (r.time > 1.0) later.push_back(r.time);
+  CHECK(later.size() >= 3);
+  for (std::size_t i = 1; i < later.size(); ++i) CHECK(later[i] > later[i - 1]);
+  const Tissue& t = sim.tissue();
+  const auto& auxin = t.cellProperties().get<double>("auxin");
+  const auto& id = t.cellProperties().get<int>(kPrimordiumProperty);
+  std::size_t primordium_cells = 0, central = 0;
+  std::vector<double> peak(records.size() + 1, 0.0);  // the highest auxin among each primordium's cells
+  for (CellId c : t.cells()) {
+    const double r = (cellCentroid(t, c) - apex).norm();
+    INFO("cell " << c.index() << " at distance " << r << " from the summit, auxin " << auxin[c] << ", primordium "
+                 << id[c]);
+    if (id[c] > 0) {
+      ++primordium_cells;
+      CHECK(r >= Rc);
+      REQUIRE(static_cast<std::size_t>(id[c]) <= records.size());
+      peak[static_cast<std::size_t>(id[c])] = std::max(peak[static_cast<std::size_t>(id[c])], auxin[c]);
+    } else if (r < Rc || r >= Rc + W) {
+      CHECK(auxin[c] < o.threshold);
+    }
+    central += r < Rc ? 1 : 0;
+  }
+  for (std::size_t p = 1; p < peak.size(); ++p) {
+    INFO("primordium " << p << " of " << records.size());
+    CHECK(peak[p] > o.threshold);
+  }
+  CHECK(central > 0);
+  CHECK(primordium_cells > records.size());  // the first cells have divided
+}
+
 TEST_CASE("phyllotaxis_dome.yaml to t = 20: successive primordia appear after the first ones",
           "[sim][network][primordia][slow]") {
   Simulation sim = Simulation::fromFile(sourcePath("configs/phyllotaxis_dome.yaml"), {"time.end=20"});
@@ -142,7 +209,7 @@ TEST_CASE("phyllotaxis_dome.yaml to t = 20: successive primordia appear after th
   const auto& records = networkStageOf(sim).primordia();
   REQUIRE(!records.empty());
   checkRecords(sim);
-  CHECK(laterThanFirst(records) >= 3);
+  CHECK(laterThanFirst(records) >= 10);
   std::ostringstream table;
   for (const auto& r : records)
     table << "t = " << r.time << "  angle " << r.angle_deg << "  radius " << r.radius << "  divergence "

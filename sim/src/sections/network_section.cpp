@@ -63,7 +63,8 @@ void declareNetworkSection(Schema& s) {
       "Named constants of the reactions and initial values, \"name=value, ...\", e.g. \"p=1, d=0.1\".")
       .whenAbsent("none");
   key("network.properties", ValueType::String,
-      "Double cell properties the reactions read, \"name, name\" (their values at the start of each solve).")
+      "Cell properties (double or int) the reactions read, \"name, name\" (their values at the start of each "
+      "solve; e.g. primordium, the id network.primordia writes).")
       .whenAbsent("none");
   s.section(kSpecies,
             "The species: a map from each species' name (letters, digits, '_', not starting with a digit; it "

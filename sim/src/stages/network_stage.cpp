@@ -175,6 +175,8 @@ void NetworkStage::writeOutputs(Tissue& tissue, const std::vector<CellId>& cells
 }
 
 void NetworkStage::prepare(Tissue& tissue, double /*time*/) {
+  // In the first snapshot already, and before the graph: the reactions may read it.
+  if (spec_.primordia.enabled()) primordiumColumn(tissue);
   GeometryCache geometry;
   std::vector<CellId> cells;
   networks::NetworkGraph graph = networks::networkGraph(tissue, geometry, spec_.model.cell_properties, &cells);
@@ -204,7 +206,6 @@ void NetworkStage::prepare(Tissue& tissue, double /*time*/) {
   }
   networks::NetworkSystem system(spec_.model, std::move(graph));
   writeOutputs(tissue, cells, system, y);
-  if (spec_.primordia.enabled()) primordiumColumn(tissue);  // in the first snapshot already
 }
 
 void NetworkStage::apply(Tissue& tissue, const StepContext& context) {

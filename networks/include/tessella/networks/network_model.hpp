@@ -28,7 +28,7 @@ struct NetworkSpecies {
 struct NetworkModel {
   std::vector<NetworkSpecies> species;
   std::map<std::string, double> parameters;
-  /// Double cell properties the reactions read (constant during an integration).
+  /// Cell properties (double or int) the reactions read (constant during an integration).
   std::vector<std::string> cell_properties;
   /// Carrier-mediated efflux of one species; off when pin.species is empty.
   PinTransport pin;
