@@ -12,6 +12,17 @@
 #include <sstream>
 
 namespace tessella::mechanics {
+
+const EnumTable<solvers::SolverMethod>& tangentSolvers() {
+  static const EnumTable<solvers::SolverMethod> table(
+      "tangent solver",
+      {{"auto", solvers::SolverMethod::Auto, "Eigen's simplicial LDL^T (the default; deterministic everywhere)."},
+       {"ldlt", solvers::SolverMethod::Direct, "Eigen's simplicial LDL^T at any size."},
+       {"cholmod", solvers::SolverMethod::Cholmod,
+        "CHOLMOD's supernodal Cholesky: several times faster on large 3D tissues (builds with CHOLMOD only)."}});
+  return table;
+}
+
 namespace {
 
 void checkOptions(const EquilibriumOptions& o) {

@@ -104,6 +104,8 @@ void MembraneGrowthParams::check() const {
   if (!std::isfinite(pressure)) throw InputError("mechanics: pressure " + formatNumber(pressure) + " must be finite");
   if (!(base_distance >= 0.0 && std::isfinite(base_distance)))
     throw InputError("mechanics: base_distance " + formatNumber(base_distance) + " must be >= 0");
+  if (base_height && !std::isfinite(*base_height))
+    throw InputError("mechanics: base height " + formatNumber(*base_height) + " must be finite");
   feedback.check();
   if (fibres.kind != FibreRule::Kind::None && !(fibres.vector.norm() > 0.0))
     throw InputError("mechanics: the fibre direction (or axis) must not be zero");
@@ -180,6 +182,7 @@ std::vector<std::uint8_t> membraneSupport(const Tissue& tissue, const MembraneGr
   }
   double zmin = std::numeric_limits<double>::infinity();
   for (VertexId v : tissue.vertices()) zmin = std::min(zmin, tissue.position(v).z());
+  if (params.base_height) zmin = *params.base_height;
   for (VertexId v : tissue.vertices()) fixed[v.index()] = tissue.position(v).z() <= zmin + params.base_distance;
   return fixed;
 }

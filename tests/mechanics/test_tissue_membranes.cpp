@@ -322,6 +322,33 @@ TEST_CASE("tissue membranes: a single box cell under pressure reaches equilibriu
     if (tissue.position(v).z() > 1e-9) CHECK(g.segment<3>(3 * v.index()).norm() <= 1e-9 * r.equilibrium.force_scale);
 }
 
+TEST_CASE("tissue membranes: the base support holds the base plane it is given, not the lowest vertex",
+          "[mechanics]") {
+  Tissue tissue = domeSheet(40, 5);
+  MembraneGrowthParams params;
+  const std::vector<std::uint8_t> base = membraneSupport(tissue, params);  // the plane z = lowest vertex
+  double z0 = std::numeric_limits<double>::infinity();
+  for (VertexId v : tissue.vertices()) z0 = std::min(z0, tissue.position(v).z());
+  // A free vertex sinks below the base (as a rim vertex a little above the
+  // plane can under turgor): without a base height it alone would be "the base".
+  VertexId sunk;
+  for (VertexId v : tissue.vertices())
+    if (!base[v.index()]) {
+      sunk = v;
+      break;
+    }
+  REQUIRE(sunk.valid());
+  tissue.setPosition(sunk, Vec3(tissue.position(sunk).x(), tissue.position(sunk).y(), z0 - 0.01));
+  const std::vector<std::uint8_t> found_again = membraneSupport(tissue, params);
+  CHECK(std::count(found_again.begin(), found_again.end(), 1) == 1);
+  params.base_height = z0;
+  const std::vector<std::uint8_t> kept = membraneSupport(tissue, params);
+  for (VertexId v : tissue.vertices()) {
+    INFO("vertex " << v.index());
+    CHECK(kept[v.index()] == (base[v.index()] || v == sunk ? 1 : 0));
+  }
+}
+
 TEST_CASE("tissue membranes: a dome sheet with a fixed base converges quadratically", "[mechanics]") {
   Tissue tissue = domeSheet(40, 5);
   MembraneGrowthParams params;

@@ -18,8 +18,17 @@
 
 #include "tessella/mechanics/energy_model.hpp"
 #include "tessella/solvers/linear_solver.hpp"
+#include "tessella/tissue/enum_table.hpp"
 
 namespace tessella::mechanics {
+
+/// The direct solvers offered for the tangents (`mechanics.linear_solver`):
+/// `auto` (Eigen's simplicial LDL^T below LinearSolverOptions'
+/// auto_direct_max_unknowns), `ldlt` (always Eigen's LDL^T) and `cholmod`
+/// (CHOLMOD's supernodal Cholesky; builds with TESSELLA_WITH_CHOLMOD). Only
+/// direct solvers: the shifted tangents are factorised, an iterative solve of
+/// an indefinite K would not detect it.
+const EnumTable<solvers::SolverMethod>& tangentSolvers();
 
 struct EquilibriumOptions {
   /// Converged when ||g_free|| <= relative_tolerance * forceScale(x) + absolute_tolerance,

@@ -26,6 +26,7 @@
 #include <cstdint>
 #include <random>
 #include <string>
+#include <optional>
 #include <vector>
 
 #include "tessella/mechanics/equilibrium.hpp"
@@ -65,13 +66,17 @@ struct MembraneGrowthParams {
   FibreFeedback feedback{};
   StrainGrowthLaw growth{};
   /// What is fixed: `Base`, the vertices within `base_distance` above the
-  /// lowest vertex z (the base ring of a dome or a cylinder, the bottom of a 3D
-  /// tissue); `Boundary`, every vertex on a boundary wall of a sheet (its rims:
+  /// base height (`base_height`, else the lowest vertex z: the base ring of a
+  /// dome or a cylinder, the bottom of a 3D tissue); `Boundary`, every vertex on a boundary wall of a sheet (its rims:
   /// a cropped patch of a larger surface). A rim whose vertices are all fixed
   /// gets no lid (its pressure work is constant).
   enum class Support { Base, Boundary };
   Support support = Support::Base;
   double base_distance = 1e-6;
+  /// The base plane's z for `Base`. A run sets it once, at its start: found
+  /// again each step, a free rim vertex that sank below the base would become
+  /// the "lowest vertex" and the support would hold it alone.
+  std::optional<double> base_height;
   EquilibriumOptions solver{};
   void check() const;
 };
