@@ -372,11 +372,18 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
   std::vector<std::int32_t> bridge_row, bridge_x;
   std::vector<std::uint8_t> bridge_type;
   std::size_t checkerboards = 0;
+  // Counted on the way, for the vertices and edges below: the corners on a vertical edge, and the horizontal
+  // boundary edges and the corners inside their straight stretches.
+  std::size_t n_corners = 0, n_hedges = 0, n_hcorners = 0;
   for (std::size_t cj = 1; cj < static_cast<std::size_t>(H); ++cj)
-    sideBySide(cj - 1, cj, [&](std::size_t ka, std::size_t kb, std::int32_t, std::int32_t e, bool a_ends, bool b_ends) {
+    sideBySide(cj - 1, cj, [&](std::size_t ka, std::size_t kb, std::int32_t s, std::int32_t e, bool a_ends, bool b_ends) {
       const Label below = runs.label[ka];
-      if (below != kOutside && below == runs.label[kb])
-        uf.unite(static_cast<std::int32_t>(ka), static_cast<std::int32_t>(kb));
+      if (below == runs.label[kb]) {
+        if (below != kOutside) uf.unite(static_cast<std::int32_t>(ka), static_cast<std::int32_t>(kb));
+      } else {  // a boundary (runs of one label side by side are one piece)
+        n_hedges += static_cast<std::size_t>(e - s), n_hcorners += static_cast<std::size_t>(e - s - 1);
+      }
+      n_corners += e < width;
       if (!a_ends || !b_ends || e == width) return;
       // Corner e: pixels a (below left), b (below right), c (above left), d (above right).
       const Label a = below, b = runs.label[ka + 1], c = runs.label[kb], d = runs.label[kb + 1];
@@ -479,10 +486,15 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
   // Vertices and boundary edges, numbered as a scan of every pixel edge would create them: first the vertical
   // edges (row by row, each creating its lower corner, then its upper one), then the horizontal ones. A pixel
   // corner on a boundary is a vertex (two at a bridged corner), in pixel units. The vertices first met by a
-  // horizontal edge (on a straight horizontal stretch) are numbered after all the others: `hpos`, referred to
-  // as -1 - k until then.
-  std::vector<Vec3> pos, hpos;
-  std::vector<BoundaryEdge> edges, hedges;
+  // horizontal edge (on a straight horizontal stretch) are numbered after all the others, from `h_vertex`, and
+  // the horizontal edges after the vertical ones, from `h_edge`.
+  const std::size_t n_verts = n_corners + bridge_row.size() + n_hcorners;
+  const std::size_t n_vedges = runs.x.size() - static_cast<std::size_t>(H), n_edges = n_vedges + n_hedges;
+  std::vector<Vec3> pos(n_verts);
+  std::int32_t v_vertex = 0;
+  std::vector<BoundaryEdge> edges(n_edges);
+  std::size_t v_edge = 0, h_edge = n_vedges;
+  auto h_vertex = static_cast<std::int32_t>(n_corners + bridge_row.size());
   std::size_t bp_this = 0, bp_next = 0;  // into the bridge lists
   auto bridgeAt = [&](std::size_t& bp, std::int32_t row, std::int32_t x) -> int {
     while (bp < bridge_row.size() && (bridge_row[bp] < row || (bridge_row[bp] == row && bridge_x[bp] < x))) ++bp;
@@ -492,10 +504,11 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
   // it up or left (type 1) or up or right (type 2), a quarter pixel off the corner.
   auto newVertex = [&](std::int32_t ci, std::int32_t cj, int type, bool second) {
     const double x = ci - 1, y = cj - 1;
-    if (type == 1) pos.push_back(second ? Vec3(x - kSplit, y + kSplit, 0) : Vec3(x + kSplit, y - kSplit, 0));
-    else if (type == 2) pos.push_back(second ? Vec3(x + kSplit, y + kSplit, 0) : Vec3(x - kSplit, y - kSplit, 0));
-    else pos.emplace_back(x, y, 0);
-    return static_cast<std::int32_t>(pos.size() - 1);
+    Vec3& p = pos[static_cast<std::size_t>(v_vertex)];
+    if (type == 1) p = second ? Vec3(x - kSplit, y + kSplit, 0) : Vec3(x + kSplit, y - kSplit, 0);
+    else if (type == 2) p = second ? Vec3(x + kSplit, y + kSplit, 0) : Vec3(x - kSplit, y - kSplit, 0);
+    else p = Vec3(x, y, 0);
+    return v_vertex++;
   };
   struct Corner {
     std::int32_t x, v0, v1;  // v1: the second vertex of a bridged corner
@@ -524,7 +537,7 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
         lower = v0 = newVertex(xb, cj, 0, false);
       }
       const std::int32_t upper = newVertex(xb, cj + 1, bridgeAt(bp_next, cj + 1, xb), false);
-      edges.push_back({lower, upper, cell[k - 1], cell[k]});
+      edges[v_edge++] = {lower, upper, cell[k - 1], cell[k]};
       corners.push_back({xb, v0, v1, type});
       next_up.emplace_back(xb, upper);
       ++k;
@@ -542,33 +555,23 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
                    for (std::int32_t i = s; i < e; ++i) {
                      std::int32_t v;
                      if (i + 1 < e) {
-                       v = -1 - static_cast<std::int32_t>(hpos.size());
-                       hpos.emplace_back(i, cj - 1, 0);
+                       pos[static_cast<std::size_t>(h_vertex)] = Vec3(i, cj - 1, 0);
+                       v = h_vertex++;
                      } else {
                        const Corner& ce = corners[q];
                        v = ce.type == 1 ? ce.v1 : ce.v0;  // leaving left: type 1's second vertex
                      }
-                     hedges.push_back({u, v, above, below});
+                     edges[h_edge++] = {u, v, above, below};
                      u = v;
                    }
                  }
                  q += e < width;
                });
   }
-  {
-    const auto first_h = static_cast<std::int32_t>(pos.size());
-    pos.insert(pos.end(), hpos.begin(), hpos.end());
-    std::vector<Vec3>().swap(hpos);
-    edges.reserve(edges.size() + hedges.size());
-    for (BoundaryEdge e : hedges) {
-      if (e.u < 0) e.u = first_h - 1 - e.u;
-      if (e.v < 0) e.v = first_h - 1 - e.v;
-      edges.push_back(e);
-    }
-    std::vector<BoundaryEdge>().swap(hedges);
-  }
+  if (static_cast<std::size_t>(v_vertex) != n_corners + bridge_row.size() ||
+      static_cast<std::size_t>(h_vertex) != n_verts || v_edge != n_vedges || h_edge != n_edges)
+    throw InputError(file + ": the pixel corners were miscounted (an internal error)");
   Runs().x.swap(runs.x);
-  const std::size_t n_verts = pos.size(), n_edges = edges.size();
   std::vector<std::array<std::int32_t, 4>> incident(n_verts);
   std::vector<std::uint8_t> degree(n_verts, 0);
   for (std::size_t e = 0; e < n_edges; ++e)
@@ -645,6 +648,11 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
       }
       throw InputError(file + ": " + cellName(ci) + ": its outline is not closed (an internal error)");
     };
+    // The next edge along the outline: at a corner of two edges, the other one.
+    auto next = [&](std::int32_t e) {
+      const std::int32_t v = to(e);
+      return degree[v] == 2 ? incident[v][incident[v][0] == e] : out(v);
+    };
     const auto e_begin = cell_edges.items.begin() + cell_edges.off[c],
                e_end = cell_edges.items.begin() + cell_edges.off[c + 1];
     std::vector<std::vector<std::int32_t>> loops;  // the edges of each loop, kept only for an error
@@ -653,7 +661,7 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
       if (edge_used[e0] & side(e0)) continue;
       const bool first = it == e_begin;
       if (!first) loops.emplace_back();
-      for (std::int32_t e = e0; !(edge_used[e] & side(e)); e = out(to(e))) {
+      for (std::int32_t e = e0; !(edge_used[e] & side(e)); e = next(e)) {
         edge_used[e] |= side(e);
         if (first) outlines.items.push_back(from(e));
         else loops.back().push_back(e);
@@ -721,93 +729,96 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
         simplifyWall(walls, wi, pos, keep);
       }
   }
-  Csr<std::int32_t> cell_walls;
-  cell_walls.off.assign(n_cells + 1, 0);
-  for (const auto& cs : wall_cells)
-    for (const std::int32_t c : cs)
-      if (c >= 0) ++cell_walls.off[static_cast<std::size_t>(c) + 1];
-  std::partial_sum(cell_walls.off.begin(), cell_walls.off.end(), cell_walls.off.begin());
-  cell_walls.items.resize(static_cast<std::size_t>(cell_walls.off.back()));
-  {
-    std::vector<std::int32_t> fill(cell_walls.off.begin(), cell_walls.off.end() - 1);
-    for (std::size_t wi = 0; wi < n_walls; ++wi)
-      for (const std::int32_t c : wall_cells[wi])
-        if (c >= 0) cell_walls.items[fill[c]++] = static_cast<std::int32_t>(wi);
-  }
-  // The crossing test: every pair of segments in one bucket of a grid of 4 x 4 pixels is tested, unless
-  // neither wall changed since the last round (a pair that did not conflict then does not now; a wall that
-  // conflicted was redone). Cells are checked again when one of their walls changed.
-  const double bucket = 4;
-  const auto nbx = static_cast<std::size_t>(w / 4 + 2), nby = static_cast<std::size_t>(h / 4 + 2);
-  std::vector<char> dirty(n_walls, 1), redo(n_walls, 0);
-  std::vector<Segment> segs;
-  std::vector<std::int32_t> bucket_off, bucket_segs;
-  for (int round = 0;; ++round) {
-    std::fill(redo.begin(), redo.end(), 0);
-    segs.clear();
-    for (std::size_t wi = 0; wi < n_walls; ++wi) {
-      const auto b = static_cast<std::size_t>(walls.off[wi]), e = static_cast<std::size_t>(walls.off[wi + 1]);
-      std::int32_t prev = walls.chain[b];
-      for (std::size_t k = b + 1; k < e; ++k) {
-        const std::int32_t v = walls.chain[k];
-        if (!keep[v]) continue;
-        segs.push_back({prev, v, static_cast<std::int32_t>(wi)});
-        prev = v;
-      }
-    }
-    auto forBuckets = [&](const Segment& sg, auto&& f) {
-      const Vec3 &p = pos[sg.a], &q = pos[sg.b];
-      const auto bx0 = static_cast<std::size_t>(std::floor((std::min(p.x(), q.x()) + 1) / bucket));
-      const auto bx1 = static_cast<std::size_t>(std::floor((std::max(p.x(), q.x()) + 1) / bucket));
-      const auto by0 = static_cast<std::size_t>(std::floor((std::min(p.y(), q.y()) + 1) / bucket));
-      const auto by1 = static_cast<std::size_t>(std::floor((std::max(p.y(), q.y()) + 1) / bucket));
-      for (std::size_t by = by0; by <= by1; ++by)
-        for (std::size_t bx = bx0; bx <= bx1; ++bx) f(by * nbx + bx);
-    };
-    bucket_off.assign(nbx * nby + 1, 0);
-    for (const Segment& sg : segs) forBuckets(sg, [&](std::size_t b) { ++bucket_off[b + 1]; });
-    std::partial_sum(bucket_off.begin(), bucket_off.end(), bucket_off.begin());
-    bucket_segs.resize(static_cast<std::size_t>(bucket_off.back()));
+  // With simplify 0 every wall is its pixel staircase but for the corners it passes straight through: the
+  // walls neither cross nor touch, and no cell flattens (tests/io compares both ways on random images).
+  if (o.simplify > 0) {
+    Csr<std::int32_t> cell_walls;
+    cell_walls.off.assign(n_cells + 1, 0);
+    for (const auto& cs : wall_cells)
+      for (const std::int32_t c : cs)
+        if (c >= 0) ++cell_walls.off[static_cast<std::size_t>(c) + 1];
+    std::partial_sum(cell_walls.off.begin(), cell_walls.off.end(), cell_walls.off.begin());
+    cell_walls.items.resize(static_cast<std::size_t>(cell_walls.off.back()));
     {
-      std::vector<std::int32_t> fill(bucket_off.begin(), bucket_off.end() - 1);
-      for (std::size_t s = 0; s < segs.size(); ++s)
-        forBuckets(segs[s], [&](std::size_t b) { bucket_segs[fill[b]++] = static_cast<std::int32_t>(s); });
+      std::vector<std::int32_t> fill(cell_walls.off.begin(), cell_walls.off.end() - 1);
+      for (std::size_t wi = 0; wi < n_walls; ++wi)
+        for (const std::int32_t c : wall_cells[wi])
+          if (c >= 0) cell_walls.items[fill[c]++] = static_cast<std::int32_t>(wi);
     }
-    for (std::size_t b = 0; b + 1 < bucket_off.size(); ++b)
-      for (auto i = bucket_off[b]; i < bucket_off[b + 1]; ++i)
-        for (auto j = i + 1; j < bucket_off[b + 1]; ++j) {
-          const Segment &s = segs[bucket_segs[i]], &t = segs[bucket_segs[j]];
-          if ((dirty[s.wall] || dirty[t.wall]) && conflict(s, t, pos)) redo[s.wall] = redo[t.wall] = 1;
+    // The crossing test: every pair of segments in one bucket of a grid of 4 x 4 pixels is tested, unless
+    // neither wall changed since the last round (a pair that did not conflict then does not now; a wall that
+    // conflicted was redone). Cells are checked again when one of their walls changed.
+    const double bucket = 4;
+    const auto nbx = static_cast<std::size_t>(w / 4 + 2), nby = static_cast<std::size_t>(h / 4 + 2);
+    std::vector<char> dirty(n_walls, 1), redo(n_walls, 0);
+    std::vector<Segment> segs;
+    std::vector<std::int32_t> bucket_off, bucket_segs;
+    for (int round = 0;; ++round) {
+      std::fill(redo.begin(), redo.end(), 0);
+      segs.clear();
+      for (std::size_t wi = 0; wi < n_walls; ++wi) {
+        const auto b = static_cast<std::size_t>(walls.off[wi]), e = static_cast<std::size_t>(walls.off[wi + 1]);
+        std::int32_t prev = walls.chain[b];
+        for (std::size_t k = b + 1; k < e; ++k) {
+          const std::int32_t v = walls.chain[k];
+          if (!keep[v]) continue;
+          segs.push_back({prev, v, static_cast<std::int32_t>(wi)});
+          prev = v;
         }
-    for (std::size_t c = 0; c < n_cells; ++c) {
-      bool changed = false;
-      for (auto k = cell_walls.off[c]; k < cell_walls.off[c + 1] && !changed; ++k) changed = dirty[cell_walls.items[k]];
-      if (!changed) continue;
-      double area = 0;
-      std::size_t corners_kept = 0;
-      std::int32_t first = -1, prev = -1;
-      for (auto k = outlines.off[c]; k < outlines.off[c + 1]; ++k) {
-        const std::int32_t v = outlines.items[k];
-        if (!keep[v]) continue;
-        ++corners_kept;
-        if (first < 0) first = v;
-        else area += pos[prev].x() * pos[v].y() - pos[v].x() * pos[prev].y();
-        prev = v;
       }
-      area += pos[prev].x() * pos[first].y() - pos[first].x() * pos[prev].y();
-      if (corners_kept < 3 || area <= 0)
-        for (auto k = cell_walls.off[c]; k < cell_walls.off[c + 1]; ++k) redo[cell_walls.items[k]] = 1;
+      auto forBuckets = [&](const Segment& sg, auto&& f) {
+        const Vec3 &p = pos[sg.a], &q = pos[sg.b];
+        const auto bx0 = static_cast<std::size_t>(std::floor((std::min(p.x(), q.x()) + 1) / bucket));
+        const auto bx1 = static_cast<std::size_t>(std::floor((std::max(p.x(), q.x()) + 1) / bucket));
+        const auto by0 = static_cast<std::size_t>(std::floor((std::min(p.y(), q.y()) + 1) / bucket));
+        const auto by1 = static_cast<std::size_t>(std::floor((std::max(p.y(), q.y()) + 1) / bucket));
+        for (std::size_t by = by0; by <= by1; ++by)
+          for (std::size_t bx = bx0; bx <= bx1; ++bx) f(by * nbx + bx);
+      };
+      bucket_off.assign(nbx * nby + 1, 0);
+      for (const Segment& sg : segs) forBuckets(sg, [&](std::size_t b) { ++bucket_off[b + 1]; });
+      std::partial_sum(bucket_off.begin(), bucket_off.end(), bucket_off.begin());
+      bucket_segs.resize(static_cast<std::size_t>(bucket_off.back()));
+      {
+        std::vector<std::int32_t> fill(bucket_off.begin(), bucket_off.end() - 1);
+        for (std::size_t s = 0; s < segs.size(); ++s)
+          forBuckets(segs[s], [&](std::size_t b) { bucket_segs[fill[b]++] = static_cast<std::int32_t>(s); });
+      }
+      for (std::size_t b = 0; b + 1 < bucket_off.size(); ++b)
+        for (auto i = bucket_off[b]; i < bucket_off[b + 1]; ++i)
+          for (auto j = i + 1; j < bucket_off[b + 1]; ++j) {
+            const Segment &s = segs[bucket_segs[i]], &t = segs[bucket_segs[j]];
+            if ((dirty[s.wall] || dirty[t.wall]) && conflict(s, t, pos)) redo[s.wall] = redo[t.wall] = 1;
+          }
+      for (std::size_t c = 0; c < n_cells; ++c) {
+        bool changed = false;
+        for (auto k = cell_walls.off[c]; k < cell_walls.off[c + 1] && !changed; ++k) changed = dirty[cell_walls.items[k]];
+        if (!changed) continue;
+        double area = 0;
+        std::size_t corners_kept = 0;
+        std::int32_t first = -1, prev = -1;
+        for (auto k = outlines.off[c]; k < outlines.off[c + 1]; ++k) {
+          const std::int32_t v = outlines.items[k];
+          if (!keep[v]) continue;
+          ++corners_kept;
+          if (first < 0) first = v;
+          else area += pos[prev].x() * pos[v].y() - pos[v].x() * pos[prev].y();
+          prev = v;
+        }
+        area += pos[prev].x() * pos[first].y() - pos[first].x() * pos[prev].y();
+        if (corners_kept < 3 || area <= 0)
+          for (auto k = cell_walls.off[c]; k < cell_walls.off[c + 1]; ++k) redo[cell_walls.items[k]] = 1;
+      }
+      if (std::find(redo.begin(), redo.end(), 1) == redo.end()) break;
+      for (std::size_t wi = 0; wi < n_walls; ++wi) {
+        if (!redo[wi] || walls.tol[wi] < 0) continue;
+        walls.tol[wi] = walls.tol[wi] > 1.0 / 64 ? walls.tol[wi] / 2 : -1;
+        simplifyWall(walls, wi, pos, keep);
+      }
+      dirty.swap(redo);
+      if (round > 64) throw InputError(file + ": simplifying the walls did not converge (an internal error)");
     }
-    if (std::find(redo.begin(), redo.end(), 1) == redo.end()) break;
-    for (std::size_t wi = 0; wi < n_walls; ++wi) {
-      if (!redo[wi] || walls.tol[wi] < 0) continue;
-      walls.tol[wi] = walls.tol[wi] > 1.0 / 64 ? walls.tol[wi] / 2 : -1;
-      simplifyWall(walls, wi, pos, keep);
-    }
-    dirty.swap(redo);
-    if (round > 64) throw InputError(file + ": simplifying the walls did not converge (an internal error)");
   }
-
   // Positions: corner (x, y) in pixels is the edge of pixel x, at origin + (x - 1/2) * spacing.
   std::vector<std::int32_t> new_index(n_verts, -1);
   std::vector<Vec3> positions;
