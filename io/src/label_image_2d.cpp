@@ -17,6 +17,7 @@
 // and of two cells the smaller label bridges.
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -376,7 +377,8 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
   // boundary edges and the corners inside their straight stretches.
   std::size_t n_corners = 0, n_hedges = 0, n_hcorners = 0;
   for (std::size_t cj = 1; cj < static_cast<std::size_t>(H); ++cj)
-    sideBySide(cj - 1, cj, [&](std::size_t ka, std::size_t kb, std::int32_t s, std::int32_t e, bool a_ends, bool b_ends) {
+    sideBySide(cj - 1, cj, [&](std::size_t ka, std::size_t kb, std::int32_t s, std::int32_t e, bool a_ends,
+                               bool b_ends) {
       const Label below = runs.label[ka];
       if (below == runs.label[kb]) {
         if (below != kOutside) uf.unite(static_cast<std::int32_t>(ka), static_cast<std::int32_t>(kb));
@@ -630,17 +632,42 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
       if (edges[e].right >= 0) cell_edges.items[fill[edges[e].right]++] = static_cast<std::int32_t>(e);
     }
   }
-  std::vector<std::uint8_t> edge_used(n_edges, 0);  // 1: walked by its left cell, 2: by its right one
-  Csr<std::int32_t> outlines;                       // the vertices, in loop order
-  outlines.off.reserve(n_cells + 1);
-  outlines.off.push_back(0);
-  outlines.items.reserve(cell_edges.items.size());
+  // The loop through a cell's first edge, for every cell in parallel (each writes its own outline); a cell
+  // whose loop misses some of its edges has several loops (a hole), reported below.
+  Csr<std::int32_t> outlines;  // the vertices, in loop order
+  outlines.off = cell_edges.off;
+  outlines.items.resize(cell_edges.items.size());
+  std::vector<std::uint8_t> outline_fault(n_cells, 0);
+#pragma omp parallel for schedule(dynamic, 512)
+  for (std::ptrdiff_t cc = 0; cc < static_cast<std::ptrdiff_t>(n_cells); ++cc) {
+    const auto c = static_cast<std::size_t>(cc);
+    const auto ci = static_cast<std::int32_t>(c);
+    const std::int32_t begin = cell_edges.off[c], count = cell_edges.off[c + 1] - begin;
+    const std::int32_t e0 = cell_edges.items[static_cast<std::size_t>(begin)];
+    std::int32_t k = 0, e = e0;
+    do {
+      const bool left = edges[e].left == ci;
+      outlines.items[static_cast<std::size_t>(begin + k++)] = left ? edges[e].u : edges[e].v;
+      const std::int32_t v = left ? edges[e].v : edges[e].u;
+      if (degree[v] == 2) {  // the other edge
+        e = incident[v][incident[v][0] == e];
+        continue;
+      }
+      e = -1;  // the cell's edge leaving v: one at most, as pinched corners are bridged
+      for (int j = 0; j < degree[v] && e < 0; ++j) {
+        const std::int32_t f = incident[v][j];
+        if ((edges[f].left == ci && edges[f].u == v) || (edges[f].right == ci && edges[f].v == v)) e = f;
+      }
+    } while (e >= 0 && e != e0 && k < count);
+    outline_fault[c] = e != e0 || k > count ? 2 : k < count ? 1 : 0;
+  }
   for (std::size_t c = 0; c < n_cells; ++c) {
+    if (!outline_fault[c]) continue;
+    // Every loop of the cell, for the message.
     const auto ci = static_cast<std::int32_t>(c);
     auto side = [&](std::int32_t e) -> std::uint8_t { return edges[e].left == ci ? 1 : 2; };
     auto from = [&](std::int32_t e) { return edges[e].left == ci ? edges[e].u : edges[e].v; };
     auto to = [&](std::int32_t e) { return edges[e].left == ci ? edges[e].v : edges[e].u; };
-    // The cell's edge leaving vertex v: one at most, as pinched corners are bridged.
     auto out = [&](std::int32_t v) {
       for (int k = 0; k < degree[v]; ++k) {
         const std::int32_t e = incident[v][k];
@@ -648,65 +675,52 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
       }
       throw InputError(file + ": " + cellName(ci) + ": its outline is not closed (an internal error)");
     };
-    // The next edge along the outline: at a corner of two edges, the other one.
-    auto next = [&](std::int32_t e) {
-      const std::int32_t v = to(e);
-      return degree[v] == 2 ? incident[v][incident[v][0] == e] : out(v);
-    };
-    const auto e_begin = cell_edges.items.begin() + cell_edges.off[c],
-               e_end = cell_edges.items.begin() + cell_edges.off[c + 1];
-    std::vector<std::vector<std::int32_t>> loops;  // the edges of each loop, kept only for an error
-    for (auto it = e_begin; it != e_end; ++it) {
-      const std::int32_t e0 = *it;
+    std::map<std::int32_t, std::uint8_t> edge_used;  // 1: walked by its left cell, 2: by its right one
+    std::vector<std::vector<std::int32_t>> loops;
+    for (auto k = cell_edges.off[c]; k < cell_edges.off[c + 1]; ++k) {
+      const std::int32_t e0 = cell_edges.items[static_cast<std::size_t>(k)];
       if (edge_used[e0] & side(e0)) continue;
-      const bool first = it == e_begin;
-      if (!first) loops.emplace_back();
-      for (std::int32_t e = e0; !(edge_used[e] & side(e)); e = next(e)) {
+      loops.emplace_back();
+      for (std::int32_t e = e0; !(edge_used[e] & side(e)); e = out(to(e))) {
         edge_used[e] |= side(e);
-        if (first) outlines.items.push_back(from(e));
-        else loops.back().push_back(e);
+        loops.back().push_back(e);
       }
     }
-    if (!loops.empty()) {
-      // Several loops: the outer one turns counter-clockwise (positive area); the others bound holes.
-      loops.emplace(loops.begin());
-      for (std::int32_t e = *e_begin;;) {  // the first loop again, as edges
-        loops[0].push_back(e);
-        e = out(to(e));
-        if (e == *e_begin) break;
+    if (loops.size() < 2)
+      throw InputError(file + ": " + cellName(ci) + ": its outline is not closed (an internal error)");
+    // The outer loop turns counter-clockwise (positive area); the others bound holes.
+    std::vector<Label> inside;
+    bool background = false;
+    for (const auto& loop : loops) {
+      double area = 0;
+      for (const std::int32_t e : loop) {
+        const Vec3 &p = pos[from(e)], &q = pos[to(e)];
+        area += p.x() * q.y() - q.x() * p.y();
       }
-      std::vector<Label> inside;
-      bool background = false;
-      for (const auto& loop : loops) {
-        double area = 0;
-        for (const std::int32_t e : loop) {
-          const Vec3 &p = pos[from(e)], &q = pos[to(e)];
-          area += p.x() * q.y() - q.x() * p.y();
-        }
-        if (area > 0) continue;
-        for (const std::int32_t e : loop) {
-          const std::int32_t other = edges[e].left == ci ? edges[e].right : edges[e].left;
-          if (other < 0) background = true;
-          else inside.push_back(pieces[order[other]].label);
-        }
+      if (area > 0) continue;
+      for (const std::int32_t e : loop) {
+        const std::int32_t other = edges[e].left == ci ? edges[e].right : edges[e].left;
+        if (other < 0) background = true;
+        else inside.push_back(pieces[order[other]].label);
       }
-      std::sort(inside.begin(), inside.end());
-      inside.erase(std::unique(inside.begin(), inside.end()), inside.end());
-      std::string what = inside.empty() ? std::string() : "label(s) " + labelList(inside);
-      if (background) what += (what.empty() ? "" : " and ") + std::string("background pixels");
-      throw InputError(file + ": " + cellName(ci) + " (a pixel of it at " + pixelName(pieces[order[c]].first) +
-                       ") has a hole: it surrounds " + what +
-                       ". A cell is one polygon without holes; drop the inner labels (drop_labels), merge them "
-                       "(min_cell_size with small_cells: merge), or make the hole part of the cell");
     }
-    outlines.off.push_back(static_cast<std::int32_t>(outlines.items.size()));
+    std::sort(inside.begin(), inside.end());
+    inside.erase(std::unique(inside.begin(), inside.end()), inside.end());
+    std::string what = inside.empty() ? std::string() : "label(s) " + labelList(inside);
+    if (background) what += (what.empty() ? "" : " and ") + std::string("background pixels");
+    throw InputError(file + ": " + cellName(ci) + " (a pixel of it at " + pixelName(pieces[order[c]].first) +
+                     ") has a hole: it surrounds " + what +
+                     ". A cell is one polygon without holes; drop the inner labels (drop_labels), merge them "
+                     "(min_cell_size with small_cells: merge), or make the hole part of the cell");
   }
-  std::vector<std::uint8_t>().swap(edge_used);
   Csr<std::int32_t>().items.swap(cell_edges.items);
 
   // Simplify, then make sure no two walls cross and no cell flattens.
   std::vector<char> keep(junction.begin(), junction.end());
-  for (std::size_t wi = 0; wi < n_walls; ++wi) simplifyWall(walls, wi, pos, keep);
+  // In parallel: a wall sets `keep` of its inner vertices only.
+#pragma omp parallel for schedule(dynamic, 1024)
+  for (std::ptrdiff_t wi = 0; wi < static_cast<std::ptrdiff_t>(n_walls); ++wi)
+    simplifyWall(walls, static_cast<std::size_t>(wi), pos, keep);
   {
     // Of the walls with the same two ends, one at most may become a straight segment (they would collapse):
     // the first of them, in wall order.
@@ -784,15 +798,23 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
         for (std::size_t s = 0; s < segs.size(); ++s)
           forBuckets(segs[s], [&](std::size_t b) { bucket_segs[fill[b]++] = static_cast<std::int32_t>(s); });
       }
-      for (std::size_t b = 0; b + 1 < bucket_off.size(); ++b)
+      // Buckets and cells in parallel: `redo` only ever becomes 1.
+      auto setRedo = [&](std::int32_t wi) {
+        std::atomic_ref<char>(redo[static_cast<std::size_t>(wi)]).store(1, std::memory_order_relaxed);
+      };
+#pragma omp parallel for schedule(dynamic, 4096)
+      for (std::ptrdiff_t b = 0; b < static_cast<std::ptrdiff_t>(nbx * nby); ++b)
         for (auto i = bucket_off[b]; i < bucket_off[b + 1]; ++i)
           for (auto j = i + 1; j < bucket_off[b + 1]; ++j) {
             const Segment &s = segs[bucket_segs[i]], &t = segs[bucket_segs[j]];
-            if ((dirty[s.wall] || dirty[t.wall]) && conflict(s, t, pos)) redo[s.wall] = redo[t.wall] = 1;
+            if ((dirty[s.wall] || dirty[t.wall]) && conflict(s, t, pos)) setRedo(s.wall), setRedo(t.wall);
           }
-      for (std::size_t c = 0; c < n_cells; ++c) {
+#pragma omp parallel for schedule(dynamic, 1024)
+      for (std::ptrdiff_t cc = 0; cc < static_cast<std::ptrdiff_t>(n_cells); ++cc) {
+        const auto c = static_cast<std::size_t>(cc);
         bool changed = false;
-        for (auto k = cell_walls.off[c]; k < cell_walls.off[c + 1] && !changed; ++k) changed = dirty[cell_walls.items[k]];
+        for (auto k = cell_walls.off[c]; k < cell_walls.off[c + 1] && !changed; ++k)
+          changed = dirty[cell_walls.items[k]];
         if (!changed) continue;
         double area = 0;
         std::size_t corners_kept = 0;
@@ -807,38 +829,63 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
         }
         area += pos[prev].x() * pos[first].y() - pos[first].x() * pos[prev].y();
         if (corners_kept < 3 || area <= 0)
-          for (auto k = cell_walls.off[c]; k < cell_walls.off[c + 1]; ++k) redo[cell_walls.items[k]] = 1;
+          for (auto k = cell_walls.off[c]; k < cell_walls.off[c + 1]; ++k) setRedo(cell_walls.items[k]);
       }
       if (std::find(redo.begin(), redo.end(), 1) == redo.end()) break;
-      for (std::size_t wi = 0; wi < n_walls; ++wi) {
+#pragma omp parallel for schedule(dynamic, 1024)
+      for (std::ptrdiff_t wi = 0; wi < static_cast<std::ptrdiff_t>(n_walls); ++wi) {
         if (!redo[wi] || walls.tol[wi] < 0) continue;
         walls.tol[wi] = walls.tol[wi] > 1.0 / 64 ? walls.tol[wi] / 2 : -1;
-        simplifyWall(walls, wi, pos, keep);
+        simplifyWall(walls, static_cast<std::size_t>(wi), pos, keep);
       }
       dirty.swap(redo);
       if (round > 64) throw InputError(file + ": simplifying the walls did not converge (an internal error)");
     }
   }
   // Positions: corner (x, y) in pixels is the edge of pixel x, at origin + (x - 1/2) * spacing.
+  // In parallel over fixed blocks of vertices, then of cells (the same result for any number of threads).
+  constexpr std::ptrdiff_t kBlocks = 64;
+  std::vector<std::size_t> block_start(kBlocks + 1, 0);
+  auto blockOf = [&](std::ptrdiff_t b) { return static_cast<std::size_t>(b) * n_verts / kBlocks; };
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t b = 0; b < kBlocks; ++b)
+    block_start[static_cast<std::size_t>(b) + 1] =
+        static_cast<std::size_t>(std::count(keep.begin() + static_cast<std::ptrdiff_t>(blockOf(b)),
+                                            keep.begin() + static_cast<std::ptrdiff_t>(blockOf(b + 1)), 1));
+  std::partial_sum(block_start.begin(), block_start.end(), block_start.begin());
+  const std::size_t n_positions = block_start.back();
   std::vector<std::int32_t> new_index(n_verts, -1);
-  std::vector<Vec3> positions;
-  for (std::size_t v = 0; v < n_verts; ++v)
-    if (keep[v]) {
-      new_index[v] = static_cast<std::int32_t>(positions.size());
-      const double x = img.origin[0] + (pos[v].x() + static_cast<double>(x0) - 0.5) * sx;
-      const double y = img.origin[1] + (pos[v].y() + static_cast<double>(y0) - 0.5) * sy;
-      positions.emplace_back(o.scale * x, o.scale * y, 0.0);
-    }
+  std::vector<Vec3> positions(n_positions);
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t b = 0; b < kBlocks; ++b) {
+    std::size_t next = block_start[static_cast<std::size_t>(b)];
+    for (std::size_t v = blockOf(b); v < blockOf(b + 1); ++v)
+      if (keep[v]) {
+        new_index[v] = static_cast<std::int32_t>(next);
+        const double x = img.origin[0] + (pos[v].x() + static_cast<double>(x0) - 0.5) * sx;
+        const double y = img.origin[1] + (pos[v].y() + static_cast<double>(y0) - 0.5) * sy;
+        positions[next++] = Vec3(o.scale * x, o.scale * y, 0.0);
+      }
+  }
   report.file_vertices = 0;
-  report.simplified_vertices = n_verts - positions.size();
-  const std::size_t n_positions = positions.size();
-  std::vector<Index> polygon_off{0}, polygon_vertices;
-  polygon_off.reserve(n_cells + 1);
-  polygon_vertices.reserve(n_positions * 2);
-  for (std::size_t c = 0; c < n_cells; ++c) {
+  report.simplified_vertices = n_verts - n_positions;
+  std::vector<Index> polygon_off(n_cells + 1, 0), polygon_vertices;
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t cc = 0; cc < static_cast<std::ptrdiff_t>(n_cells); ++cc) {
+    const auto c = static_cast<std::size_t>(cc);
+    Index n = 0;
+    for (auto k = outlines.off[c]; k < outlines.off[c + 1]; ++k) n += keep[outlines.items[k]] != 0;
+    polygon_off[c + 1] = n;
+  }
+  std::partial_sum(polygon_off.begin(), polygon_off.end(), polygon_off.begin());
+  polygon_vertices.resize(polygon_off.back());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t cc = 0; cc < static_cast<std::ptrdiff_t>(n_cells); ++cc) {
+    const auto c = static_cast<std::size_t>(cc);
+    Index next = polygon_off[c];
     for (auto k = outlines.off[c]; k < outlines.off[c + 1]; ++k)
-      if (const std::int32_t v = outlines.items[k]; keep[v]) polygon_vertices.push_back(static_cast<Index>(new_index[v]));
-    polygon_off.push_back(static_cast<Index>(polygon_vertices.size()));
+      if (const std::int32_t v = outlines.items[k]; keep[v])
+        polygon_vertices[next++] = static_cast<Index>(new_index[v]);
   }
   try {
     result.tissue = buildPolygonTissue(std::move(positions), polygon_off, polygon_vertices, Embedding::Planar);
