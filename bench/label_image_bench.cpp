@@ -142,7 +142,7 @@ void row(const std::string& path, int dim, std::int64_t n, std::size_t seeds, do
       const io::LabelImage img = io::readLabelImage(path);
       read = std::min(read, secondsSince(t0));
       rss_read = std::max(rss_read, maxRssMb());
-      if (r == 0) {  // the conversion alone (tissueFromLabelImage), from the image in memory
+      if (r == 0 && dim == 2) {  // the conversion alone (tissueFromLabelImage), from the image in memory
         const auto t1 = Clock::now();
         const io::ImportResult result = io::tissueFromLabelImage(img, o);
         convert = std::min(convert, secondsSince(t1));
@@ -164,8 +164,8 @@ void row(const std::string& path, int dim, std::int64_t n, std::size_t seeds, do
   const double rss_import = maxRssMb();
   const std::string size = dim == 3 ? std::to_string(n) + "^3" : std::to_string(n) + "^2";
   std::printf("%-3dD %-8s %8zu %8zu %9zu %8.3f %9.3f %8.3f %8.3f %8.3f %7.2f %10.0f %9.0f %10.0f\n", dim,
-              size.c_str(), seeds, cells, vertices, read, import, import_cpu, convert, dim == 2 ? build : 0.0,
-              import / read, static_cast<double>(cells) / import, rss_read, rss_import);
+              size.c_str(), seeds, cells, vertices, read, import, import_cpu, dim == 2 ? convert : 0.0,
+              dim == 2 ? build : 0.0, import / read, static_cast<double>(cells) / import, rss_read, rss_import);
   const std::string name = "import.label_image_" + std::to_string(dim) + "d." + size + "." + std::to_string(cells) +
                            "cells.simplify" + (simplify > 0 ? "1" : "0");
   if (dim == 2) {
@@ -207,7 +207,7 @@ int main(int argc, char** argv) {
     std::filesystem::remove(path);
   }
   std::printf("(RSS in MB, the process's peak so far; import includes reading the file; CPU s: the import's CPU "
-              "time, all threads; convert: tissueFromLabelImage alone, the image in memory; build: "
+              "time, all threads; 2D only: convert, tissueFromLabelImage alone, the image in memory; build, "
               "buildPolygonTissue of the imported cells' polygons alone, the floor of a 2D import)\n");
   return 0;
 }

@@ -28,6 +28,9 @@
 #include <map>
 #include <numeric>
 #include <unordered_map>
+#include <unordered_set>
+
+#include <omp.h>
 
 #include "cell_complex_core.hpp"
 #include "labelled_surface.hpp"
@@ -140,7 +143,9 @@ std::size_t makeWellComposed(Grid& g, const std::string& name, const std::functi
     for (int b = 0; b < 8; ++b) n += blockDefects(block(cornerOf(v, b)));
     return n;
   };
-  std::vector<std::size_t> work;
+  // The corners with a defect, in parallel over z layers, then in corner order.
+  std::vector<std::vector<std::size_t>> layer_work(static_cast<std::size_t>(g.n[2]));
+#pragma omp parallel for schedule(dynamic, 4)
   for (std::int64_t k = 1; k < g.n[2]; ++k)
     for (std::int64_t j = 1; j < g.n[1]; ++j)
       for (std::int64_t i = 1; i < g.n[0]; ++i) {
@@ -148,8 +153,10 @@ std::size_t makeWellComposed(Grid& g, const std::string& name, const std::functi
         const std::int32_t first = g.cell[g.blockVoxel(c, 0)];
         bool mixed = false;
         for (int b = 1; b < 8 && !mixed; ++b) mixed = g.cell[g.blockVoxel(c, b)] != first;
-        if (mixed && blockDefects(block(c)) > 0) work.push_back(c);
+        if (mixed && blockDefects(block(c)) > 0) layer_work[static_cast<std::size_t>(k)].push_back(c);
       }
+  std::vector<std::size_t> work;
+  for (const auto& lw : layer_work) work.insert(work.end(), lw.begin(), lw.end());
   std::reverse(work.begin(), work.end());  // worked from the back: the first corner first
   std::size_t changed = 0;
   while (!work.empty()) {
@@ -369,10 +376,14 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
     };
     const Label first = source(0, 0, 0);
     bool several = false;
+    // The labels present, in parallel over z layers (merged as a set: the same for any number of threads).
+#pragma omp parallel reduction(|| : several)
     {
-      Label last = first;
-      bool last_in = false;
-      for (std::int64_t k = 0; k < d; ++k)
+      std::unordered_set<Label> present;
+#pragma omp for schedule(static)
+      for (std::int64_t k = 0; k < d; ++k) {
+        Label last = first;
+        bool last_in = false;
         for (std::int64_t j = 0; j < h; ++j)
           for (std::int64_t i = 0; i < w; ++i) {
             const Label l = source(i, j, k);
@@ -380,8 +391,11 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
             several = several || l != first;
             last = l;
             last_in = true;
-            if (!excluded(l)) id.emplace(l, 0);
+            if (!excluded(l)) present.insert(l);
           }
+      }
+#pragma omp critical
+      for (const Label l : present) id.emplace(l, 0);
     }
     if (!several)
       throw InputError(file + ": the image" + std::string(io.crop.empty() ? "" : " (cropped)") +
@@ -389,7 +403,8 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
     for (const auto& [l, unused] : id) id_label.push_back(l);
     std::sort(id_label.begin(), id_label.end());
     for (std::size_t k = 0; k < id_label.size(); ++k) id[id_label[k]] = static_cast<std::int32_t>(k);
-    g.cell.assign(g.size(), kBackground);
+    g.cell.resize(g.size());
+#pragma omp parallel for schedule(static)
     for (std::int64_t k = 0; k < g.n[2]; ++k)
       for (std::int64_t j = 0; j < g.n[1]; ++j) {
         Label last = 0;
@@ -416,8 +431,19 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       }
   }
   std::vector<std::int64_t> size(id_label.size(), 0);
-  for (std::int32_t c : g.cell)
-    if (c >= 0) ++size[static_cast<std::size_t>(c)];
+  auto countSizes = [&] {  // voxels per label, summed over per-thread counts
+    std::fill(size.begin(), size.end(), 0);
+#pragma omp parallel
+    {
+      std::vector<std::int64_t> mine(size.size(), 0);
+#pragma omp for schedule(static)
+      for (std::ptrdiff_t v = 0; v < static_cast<std::ptrdiff_t>(g.size()); ++v)
+        if (const std::int32_t c = g.cell[static_cast<std::size_t>(v)]; c >= 0) ++mine[static_cast<std::size_t>(c)];
+#pragma omp critical
+      for (std::size_t l = 0; l < size.size(); ++l) size[l] += mine[l];
+    }
+  };
+  countSizes();
 
   // Small labels: dropped, or merged into the neighbour sharing the most voxel faces.
   std::vector<std::string> small_notes;
@@ -477,9 +503,7 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
     if (!small.empty()) {
       for (std::int32_t& c : g.cell)
         if (c >= 0 && into[static_cast<std::size_t>(c)] != c) c = find(c);
-      std::fill(size.begin(), size.end(), 0);
-      for (std::int32_t c : g.cell)
-        if (c >= 0) ++size[static_cast<std::size_t>(c)];
+      countSizes();
     }
   }
   for (std::size_t k = 0; k < small_notes.size() && k < kMaxNotes; ++k) report.notes.push_back(small_notes[k]);
@@ -577,8 +601,9 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       cell_of_piece[order[c]] = static_cast<std::int32_t>(c);
       cell_label[c] = id_label[static_cast<std::size_t>(pieces[order[c]].id)];
     }
-    for (std::int32_t& c : g.cell)
-      if (c >= 0) c = cell_of_piece[static_cast<std::size_t>(c)];
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t v = 0; v < static_cast<std::ptrdiff_t>(g.size()); ++v)
+      if (std::int32_t& c = g.cell[static_cast<std::size_t>(v)]; c >= 0) c = cell_of_piece[static_cast<std::size_t>(c)];
   }
   auto labelName = [&](std::int32_t c) {
     static const char* sides[6] = {"x = 0", "x = max", "y = 0", "y = max", "z = 0", "z = max"};
@@ -588,60 +613,100 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
   };
 
   // Interface faces: key voxel * 3 + axis for the face between voxel and voxel + axis (ascending).
+  // In parallel over blocks of voxels, joined in voxel order.
   std::vector<std::uint64_t> face_key;
   std::vector<Face> faces;
   RankedSet face_set(3 * g.size());
-  for (std::size_t v = 0; v + g.stride[2] < g.size(); ++v) {
-    const std::int32_t a = g.cell[v];
-    for (int ax = 0; ax < 3; ++ax) {
-      const std::int32_t b = g.cell[v + g.stride[ax]];
-      if (a == b || (a < 0 && b < 0)) continue;
-      face_key.push_back(v * 3 + static_cast<std::uint64_t>(ax));
-      face_set.insert(face_key.back());
-      faces.push_back(a > b ? Face{a, b, true} : Face{b, a, false});
+  {
+    constexpr std::ptrdiff_t kBlocks = 64;
+    const std::size_t n_voxels = g.size() - g.stride[2];
+    std::vector<std::vector<std::uint64_t>> block_keys(kBlocks);
+    std::vector<std::vector<Face>> block_faces(kBlocks);
+#pragma omp parallel for schedule(dynamic, 1)
+    for (std::ptrdiff_t blk = 0; blk < kBlocks; ++blk) {
+      auto& keys = block_keys[static_cast<std::size_t>(blk)];
+      auto& fs = block_faces[static_cast<std::size_t>(blk)];
+      const std::size_t v0 = n_voxels * static_cast<std::size_t>(blk) / kBlocks,
+                        v1 = n_voxels * static_cast<std::size_t>(blk + 1) / kBlocks;
+      for (std::size_t v = v0; v < v1; ++v) {
+        const std::int32_t a = g.cell[v];
+        for (int ax = 0; ax < 3; ++ax) {
+          const std::int32_t b = g.cell[v + g.stride[ax]];
+          if (a == b || (a < 0 && b < 0)) continue;
+          keys.push_back(v * 3 + static_cast<std::uint64_t>(ax));
+          fs.push_back(a > b ? Face{a, b, true} : Face{b, a, false});
+        }
+      }
+    }
+    for (std::size_t blk = 0; blk < kBlocks; ++blk) {
+      for (const std::uint64_t key : block_keys[blk]) face_set.insert(key);
+      face_key.insert(face_key.end(), block_keys[blk].begin(), block_keys[blk].end());
+      faces.insert(faces.end(), block_faces[blk].begin(), block_faces[blk].end());
+      std::vector<std::uint64_t>().swap(block_keys[blk]);
+      std::vector<Face>().swap(block_faces[blk]);
     }
   }
   face_set.finish();
   auto faceIndex = [&](std::uint64_t key) { return static_cast<Index>(face_set.rank(key)); };
 
   // Voxel edges: junctions (three or more labels around) or a joint of two faces of one wall.
+  // In parallel over z layers: each lists its junction edges and the face pairs to join, taken in layer order.
   UnionFind patches(faces.size());
   std::vector<std::uint64_t> junction_edges;  // corner * 3 + axis: from the corner along the axis
   RankedSet junction_set(3 * g.size());
-  for (std::int64_t k = 1; k < g.n[2]; ++k)
-    for (std::int64_t j = 1; j < g.n[1]; ++j)
-      for (std::int64_t i = 1; i < g.n[0]; ++i) {
-        const std::size_t c = g.at(i, j, k);
-        const std::array<std::int64_t, 3> p{i, j, k};
-        for (int ax = 0; ax < 3; ++ax) {
-          if (p[ax] > g.n[ax] - 2) continue;  // the edge would run in the last padding layer
-          const int b = (ax + 1) % 3, cc = (ax + 2) % 3;
-          // The four voxels around the edge, in turn: q0 (-b, -c), q1 (+b, -c), q2 (+b, +c), q3 (-b, +c).
-          const std::size_t q1 = c - g.stride[cc], q3 = c - g.stride[b], q0 = q1 - g.stride[b], q2 = c;
-          const std::int32_t l0 = g.cell[q0], l1 = g.cell[q1], l2 = g.cell[q2], l3 = g.cell[q3];
-          if (l0 == l1 && l1 == l2 && l2 == l3) continue;
-          auto iface = [](std::int32_t x, std::int32_t y) { return x != y && (x >= 0 || y >= 0); };
-          const bool f01 = iface(l0, l1), f12 = iface(l1, l2), f32 = iface(l3, l2), f03 = iface(l0, l3);
-          const int n_faces = f01 + f12 + f32 + f03;
-          if (n_faces == 0) continue;
-          int distinct = 1 + (l1 != l0) + (l2 != l0 && l2 != l1) + (l3 != l0 && l3 != l1 && l3 != l2);
-          if (distinct >= 3) {
-            junction_edges.push_back(c * 3 + static_cast<std::uint64_t>(ax));
-            junction_set.insert(junction_edges.back());
-            continue;
+  {
+    struct Layer {
+      std::vector<std::uint64_t> junctions;
+      std::vector<std::array<Index, 2>> joins;
+      std::string error;
+    };
+    std::vector<Layer> layers(static_cast<std::size_t>(g.n[2]));
+#pragma omp parallel for schedule(dynamic, 4)
+    for (std::int64_t k = 1; k < g.n[2]; ++k) {
+      Layer& layer = layers[static_cast<std::size_t>(k)];
+      for (std::int64_t j = 1; j < g.n[1] && layer.error.empty(); ++j)
+        for (std::int64_t i = 1; i < g.n[0] && layer.error.empty(); ++i) {
+          const std::size_t c = g.at(i, j, k);
+          const std::array<std::int64_t, 3> p{i, j, k};
+          for (int ax = 0; ax < 3; ++ax) {
+            if (p[ax] > g.n[ax] - 2) continue;  // the edge would run in the last padding layer
+            const int b = (ax + 1) % 3, cc = (ax + 2) % 3;
+            // The four voxels around the edge, in turn: q0 (-b, -c), q1 (+b, -c), q2 (+b, +c), q3 (-b, +c).
+            const std::size_t q1 = c - g.stride[cc], q3 = c - g.stride[b], q0 = q1 - g.stride[b], q2 = c;
+            const std::int32_t l0 = g.cell[q0], l1 = g.cell[q1], l2 = g.cell[q2], l3 = g.cell[q3];
+            if (l0 == l1 && l1 == l2 && l2 == l3) continue;
+            auto iface = [](std::int32_t x, std::int32_t y) { return x != y && (x >= 0 || y >= 0); };
+            const bool f01 = iface(l0, l1), f12 = iface(l1, l2), f32 = iface(l3, l2), f03 = iface(l0, l3);
+            const int n_faces = f01 + f12 + f32 + f03;
+            if (n_faces == 0) continue;
+            int distinct = 1 + (l1 != l0) + (l2 != l0 && l2 != l1) + (l3 != l0 && l3 != l1 && l3 != l2);
+            if (distinct >= 3) {
+              layer.junctions.push_back(c * 3 + static_cast<std::uint64_t>(ax));
+              continue;
+            }
+            if (n_faces != 2) {
+              layer.error = file + ": voxels " + voxelName(q0) + " and " + voxelName(q2) +
+                            " touch along an edge only (an internal error: they should have been joined)";
+              break;
+            }
+            std::array<Index, 2> two{};
+            int m = 0;
+            if (f01) two[m++] = faceIndex(q0 * 3 + static_cast<std::uint64_t>(b));
+            if (f12) two[m++] = faceIndex(q1 * 3 + static_cast<std::uint64_t>(cc));
+            if (f32) two[m++] = faceIndex(q3 * 3 + static_cast<std::uint64_t>(b));
+            if (f03) two[m++] = faceIndex(q0 * 3 + static_cast<std::uint64_t>(cc));
+            layer.joins.push_back(two);
           }
-          if (n_faces != 2)
-            throw InputError(file + ": voxels " + voxelName(q0) + " and " + voxelName(q2) +
-                             " touch along an edge only (an internal error: they should have been joined)");
-          std::array<Index, 2> two{};
-          int m = 0;
-          if (f01) two[m++] = faceIndex(q0 * 3 + static_cast<std::uint64_t>(b));
-          if (f12) two[m++] = faceIndex(q1 * 3 + static_cast<std::uint64_t>(cc));
-          if (f32) two[m++] = faceIndex(q3 * 3 + static_cast<std::uint64_t>(b));
-          if (f03) two[m++] = faceIndex(q0 * 3 + static_cast<std::uint64_t>(cc));
-          patches.unite(two[0], two[1]);
         }
-      }
+    }
+    for (Layer& layer : layers) {
+      if (!layer.error.empty()) throw InputError(layer.error);
+      for (const auto& two : layer.joins) patches.unite(two[0], two[1]);
+      for (const std::uint64_t e : layer.junctions) junction_set.insert(e), junction_edges.push_back(e);
+      Layer().joins.swap(layer.joins);
+      Layer().junctions.swap(layer.junctions);
+    }
+  }
   // Corners on junction lines (compact ids, ascending corner index), their degree and whether they are vertices.
   junction_set.finish();
   std::vector<std::uint64_t> corners;
