@@ -21,6 +21,7 @@
 #include "label_image_3d.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -898,27 +899,43 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
     for (const std::int32_t pl : wall_polylines[p]) polyline_walls[static_cast<std::size_t>(pl)].push_back(
         static_cast<std::int32_t>(p));
   const double voxel_volume = s[0] * s[1] * s[2];
+  const bool check_crossings = o.simplify > 0;  // the staircase (simplify 0) is left as it is
+  // Per wall, kept between rounds for the walls that did not change: 2 fewer than three corners, 1 crossing
+  // itself, 0 fine; the volume its polygon adds to its first cell; its triangles.
+  std::vector<char> wall_state(n_walls, 0);
+  std::vector<double> wall_volume(n_walls, 0);
+  std::vector<std::vector<WallTriangle>> wall_tris_of(n_walls);
+  std::vector<Vec3> points(check_crossings ? n_corners + n_walls : 0);  // every corner, and the fan centres
+  if (check_crossings)
+    for (std::size_t u = 0; u < n_corners; ++u)
+      points[u] = Vec3(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
   for (int round = 0;; ++round) {
     std::vector<char> redo(polylines.size(), 0);
     bool any = false;
     auto redoWall = [&](std::size_t p) {
       for (const std::int32_t pl : wall_polylines[p]) redo[static_cast<std::size_t>(pl)] = 1, any = true;
     };
+    auto redoWallShared = [&](std::size_t p) {  // from several threads: `redo` only ever becomes 1
+      for (const std::int32_t pl : wall_polylines[p])
+        std::atomic_ref<char>(redo[static_cast<std::size_t>(pl)]).store(1, std::memory_order_relaxed);
+    };
     std::fill(six_volume.begin(), six_volume.end(), 0.0);
-    const bool check_crossings = o.simplify > 0;  // the staircase (simplify 0) is left as it is
-    std::vector<WallTriangle> wall_tris;
-    std::vector<Vec3> points(check_crossings ? n_corners + n_walls : 0);
-    std::vector<Vec3> loop_points;
-    for (std::size_t p = 0; p < n_walls; ++p) {
-      loop_points.clear();
+    // Each changed wall's polygon: its check, volume and triangles, in parallel (a wall writes its own
+    // entries and fan centre), then gathered in wall order (the volumes summed in that order).
+#pragma omp parallel for schedule(dynamic, 64)
+    for (std::ptrdiff_t pp = 0; pp < static_cast<std::ptrdiff_t>(n_walls); ++pp) {
+      const auto p = static_cast<std::size_t>(pp);
+      if (!wall_changed[p]) continue;
+      std::vector<Vec3> loop_points;
       for (const std::int32_t u : loops[p])
         if (keep[u]) loop_points.emplace_back(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
+      wall_tris_of[p].clear();
       if (loop_points.size() < 3) {
-        redoWall(p);
+        wall_state[p] = 2;
         continue;
       }
       // A loop crossing itself in its best-fit plane cannot be meshed: simplify it less.
-      if (polygonDefect(loop_points)) redoWall(p);
+      wall_state[p] = polygonDefect(loop_points) ? 1 : 0;
       // The cells' volumes as the tissue will measure them (tissue/geometry.hpp).
       const PolygonTriangulation tri = polygonTriangulation(loop_points);
       double vol = 0;
@@ -928,10 +945,7 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       else
         for (const auto& t : tri.triangles)
           vol += loop_points[t[0]].dot(loop_points[t[1]].cross(loop_points[t[2]]));
-      vol /= voxel_volume;
-      const Face& f = faces[patch_face[p]];
-      six_volume[static_cast<std::size_t>(f.first)] += vol;
-      if (f.second >= 0) six_volume[static_cast<std::size_t>(f.second)] -= vol;
+      wall_volume[p] = vol / voxel_volume;
       if (check_crossings) {  // the wall's triangles, as the tissue and the mesher make them
         std::vector<std::int32_t> ids;
         for (const std::int32_t u : loops[p])
@@ -940,13 +954,24 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
           const auto centre = static_cast<std::int32_t>(n_corners + p);
           points[static_cast<std::size_t>(centre)] = tri.center;
           for (std::size_t i = 0; i < k; ++i)
-            wall_tris.push_back({{centre, ids[i], ids[(i + 1) % k]}, static_cast<std::int32_t>(p)});
+            wall_tris_of[p].push_back({{centre, ids[i], ids[(i + 1) % k]}, static_cast<std::int32_t>(p)});
         } else {
           for (const auto& t : tri.triangles)
-            wall_tris.push_back({{ids[t[0]], ids[t[1]], ids[t[2]]}, static_cast<std::int32_t>(p)});
+            wall_tris_of[p].push_back({{ids[t[0]], ids[t[1]], ids[t[2]]}, static_cast<std::int32_t>(p)});
         }
-        for (std::size_t i = 0; i < k; ++i) points[static_cast<std::size_t>(ids[i])] = loop_points[i];
       }
+    }
+    std::vector<WallTriangle> wall_tris;
+    for (std::size_t p = 0; p < n_walls; ++p) {
+      if (wall_state[p] == 2) {
+        redoWall(p);
+        continue;
+      }
+      if (wall_state[p] == 1) redoWall(p);
+      const Face& f = faces[patch_face[p]];
+      six_volume[static_cast<std::size_t>(f.first)] += wall_volume[p];
+      if (f.second >= 0) six_volume[static_cast<std::size_t>(f.second)] -= wall_volume[p];
+      wall_tris.insert(wall_tris.end(), wall_tris_of[p].begin(), wall_tris_of[p].end());
     }
     if (check_crossings) {
       // Triangles of two walls that cross (away from shared corners): both walls are simplified less.
@@ -976,9 +1001,14 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       }
       std::sort(buckets.begin(), buckets.end());
       const double slack = 1e-9 * bucket;
-      for (std::size_t i = 0; i < buckets.size();) {
-        std::size_t j = i;
-        while (j < buckets.size() && buckets[j].first == buckets[i].first) ++j;
+      std::vector<std::size_t> group_start;  // the buckets' runs in the sorted list, tested in parallel
+      for (std::size_t i = 0; i < buckets.size(); ++i)
+        if (i == 0 || buckets[i].first != buckets[i - 1].first) group_start.push_back(i);
+      group_start.push_back(buckets.size());
+#pragma omp parallel for schedule(dynamic, 256)
+      for (std::ptrdiff_t gi = 0; gi < static_cast<std::ptrdiff_t>(group_start.size()) - 1; ++gi) {
+        const std::size_t i = group_start[static_cast<std::size_t>(gi)],
+                          j = group_start[static_cast<std::size_t>(gi) + 1];
         for (std::size_t a = i; a < j; ++a)
           for (std::size_t b = a + 1; b < j; ++b) {
             const std::int32_t x = buckets[a].second, y = buckets[b].second;
@@ -987,10 +1017,10 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
             const Vec3 lo_o = box[x][0].cwiseMax(box[y][0]), hi_o = box[x][1].cwiseMin(box[y][1]);
             if ((lo_o.array() > hi_o.array() + slack).any()) continue;
             if (key(cellOf(lo_o)) != buckets[i].first) continue;
-            if (trianglesCross(ta.v, tb.v, points)) redoWall(ta.wall), redoWall(tb.wall);
+            if (trianglesCross(ta.v, tb.v, points)) redoWallShared(ta.wall), redoWallShared(tb.wall);
           }
-        i = j;
       }
+      any = any || std::find(redo.begin(), redo.end(), 1) != redo.end();
     }
     for (std::size_t c = 0; c < n_cells; ++c)
       if (six_volume[c] < 3.0 * static_cast<double>(pieces[order[c]].voxels))  // lost more than half its volume
