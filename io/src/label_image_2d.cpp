@@ -147,7 +147,10 @@ struct UnionFind32 {
 
 }  // namespace
 
-ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o) {
+namespace {
+
+// `release`, when given, is img.labels, emptied once the runs are made.
+ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, std::vector<std::int64_t>* release) {
   detail::checkImportOptions(o);
   const LabelImageOptions& io = o.image;
   const std::string file = "'" + img.name + "'";
@@ -156,7 +159,7 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
       img.labels.size() != static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny) * static_cast<std::size_t>(nz))
     throw InputError(file + ": the image has dimensions " + std::to_string(nx) + " x " + std::to_string(ny) + " x " +
                      std::to_string(nz) + " but " + std::to_string(img.labels.size()) + " labels");
-  if (nz != 1) return detail::tissueFromLabelImage3d(img, o);
+  if (nz != 1) return detail::tissueFromLabelImage3d(img, o, release);
   // Pixel size.
   double sx = img.spacing[0], sy = img.spacing[1];
   if (!io.voxel_size.empty()) {
@@ -265,6 +268,7 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
     outsideRow();
     runs.off.push_back(static_cast<std::int32_t>(runs.x.size()));
   }
+  if (release) std::vector<std::int64_t>().swap(*release);  // img.labels: not read again
   auto runEnd = [&](std::size_t k, std::size_t row) { return runs.end(k, row, width); };
   // Walks the runs of rows ra and rb side by side: f(ka, kb, s, e, a_ends, b_ends) for each stretch [s, e) of
   // the padded row over which run ka of row ra and run kb of row rb both lie (a_ends: run ka ends at e).
@@ -898,6 +902,16 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
                          std::to_string(n_positions) + " of " + std::to_string(n_verts) +
                          " boundary pixel corners kept (simplify " + formatNumber(o.simplify) + " px)");
   return result;
+}
+
+}  // namespace
+
+ImportResult tissueFromLabelImage(const LabelImage& image, const ImportOptions& options) {
+  return convertLabelImage(image, options, nullptr);
+}
+
+ImportResult tissueFromLabelImage(LabelImage&& image, const ImportOptions& options) {
+  return convertLabelImage(image, options, &image.labels);
 }
 
 }  // namespace tessella::io

@@ -303,7 +303,8 @@ void simplifyPolyline(const Polyline& p, const std::vector<Vec3>& pos, std::vect
 
 }  // namespace
 
-ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& o) {
+ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& o,
+                                    std::vector<std::int64_t>* release) {
   const LabelImageOptions& io = o.image;
   const std::string file = "'" + img.name + "'";
   const auto [nx, ny, nz] = img.dims;
@@ -431,6 +432,7 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
         }
       }
   }
+  if (release) std::vector<std::int64_t>().swap(*release);  // img.labels: read for the last time above
   std::vector<std::int64_t> size(id_label.size(), 0);
   auto countSizes = [&] {  // voxels per label, summed over per-thread counts
     std::fill(size.begin(), size.end(), 0);
