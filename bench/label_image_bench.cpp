@@ -12,7 +12,8 @@
 // as an uncompressed MetaImage of 32-bit labels. Peak memory (max RSS) is
 // printed after each step; it only grows, so a step's own use is the rise.
 //
-//   label_image_bench [--quick]   --quick: 1024^2 (about 6000 cells) and 128^3 (about 1000 cells)
+//   label_image_bench [--quick | --2d | --3d]   --quick: 1024^2 (about 6000 cells) and 128^3 (about 1000 cells);
+//                                               --2d, --3d: the full size of one dimension only
 
 #include <sys/resource.h>
 
@@ -32,6 +33,7 @@
 #include "bench_figure.hpp"
 #include "tessella/io/import.hpp"
 #include "tessella/io/label_image.hpp"
+#include "tessella/tissue/builders.hpp"
 
 using namespace tessella;
 using Clock = std::chrono::steady_clock;
@@ -110,33 +112,60 @@ std::size_t writeVoronoiImage(const std::string& path, int dim, std::int64_t n, 
   return seeds.size();
 }
 
+// The flat polygon lists of a planar tissue's cells, to time rebuilding it (the floor of a 2D import).
+struct Polygons {
+  std::vector<Vec3> positions;
+  std::vector<Index> offsets{0}, loops;
+};
+Polygons polygonsOf(const Tissue& t) {
+  Polygons p;
+  for (VertexId v : t.vertices()) p.positions.push_back(t.position(v));
+  for (CellId c : t.cells()) {
+    for (VertexId v : t.topology().faceVertices(t.cellFace(c))) p.loops.push_back(v.index());
+    p.offsets.push_back(static_cast<Index>(p.loops.size()));
+  }
+  return p;
+}
+
 void row(const std::string& path, int dim, std::int64_t n, std::size_t seeds, double simplify, int runs,
          double target) {
-  double read = 1e300, import = 1e300;
-  for (int r = 0; r < runs; ++r) {
-    const auto t0 = Clock::now();
-    const io::LabelImage img = io::readLabelImage(path);
-    read = std::min(read, secondsSince(t0));
-  }
-  const double rss_read = maxRssMb();
   io::ImportOptions o;
   o.simplify = simplify;
   o.image.keep_pieces = true;  // a pixel nearer a seed two grid cells away may leave a speck of another label
   std::size_t cells = 0, vertices = 0;
-  double import_cpu = 1e300;
+  double read = 1e300, import = 1e300, convert = 1e300, build = 1e300, import_cpu = 1e300;
+  double rss_read = 0;
+  // Read and import in turns, so that both see the same machine load.
   for (int r = 0; r < runs; ++r) {
+    {
+      const auto t0 = Clock::now();
+      const io::LabelImage img = io::readLabelImage(path);
+      read = std::min(read, secondsSince(t0));
+      rss_read = std::max(rss_read, maxRssMb());
+      if (r == 0 && dim == 2) {  // the conversion alone (tissueFromLabelImage), from the image in memory
+        const auto t1 = Clock::now();
+        const io::ImportResult result = io::tissueFromLabelImage(img, o);
+        convert = std::min(convert, secondsSince(t1));
+      }
+    }
     const auto t0 = Clock::now();
     const double c0 = cpuSeconds();
     const io::ImportResult result = io::importTissue(path, o);
     import = std::min(import, secondsSince(t0));
     import_cpu = std::min(import_cpu, cpuSeconds() - c0);
     cells = result.tissue.numCells(), vertices = result.tissue.numVertices();
+    if (dim == 2) {  // the floor: building the same tissue from its polygons
+      const Polygons p = polygonsOf(result.tissue);
+      const auto t1 = Clock::now();
+      const Tissue t = buildPolygonTissue(p.positions, p.offsets, p.loops);
+      build = std::min(build, secondsSince(t1));
+    }
   }
   const double rss_import = maxRssMb();
   const std::string size = dim == 3 ? std::to_string(n) + "^3" : std::to_string(n) + "^2";
-  std::printf("%-3dD %-8s %8zu %8zu %9zu %8.3f %9.3f %8.3f %7.2f %10.0f %9.0f %10.0f\n", dim, size.c_str(), seeds,
-              cells, vertices, read, import, import_cpu, import / read, static_cast<double>(cells) / import, rss_read,
-              rss_import);
+  std::printf("%-3dD %-8s %8zu %8zu %9zu %8.3f %9.3f %8.3f %8.3f %8.3f %7.2f %10.0f %9.0f %10.0f\n", dim,
+              size.c_str(), seeds, cells, vertices, read, import, import_cpu, dim == 2 ? convert : 0.0,
+              dim == 2 ? build : 0.0, import / read, static_cast<double>(cells) / import, rss_read, rss_import);
   const std::string name = "import.label_image_" + std::to_string(dim) + "d." + size + "." + std::to_string(cells) +
                            "cells.simplify" + (simplify > 0 ? "1" : "0");
   if (dim == 2) {
@@ -152,21 +181,24 @@ void row(const std::string& path, int dim, std::int64_t n, std::size_t seeds, do
 }  // namespace
 
 int main(int argc, char** argv) {
-  const char* usage = "label_image_bench [--quick]   (default: 4096^2 with ~10^5 cells, 512^3 with ~10^4 cells)";
-  const bool quick = bench::flagArgument(argc, argv, {"--quick"}, usage) == "--quick";
+  const char* usage =
+      "label_image_bench [--quick | --2d | --3d]   (default: 4096^2 with ~10^5 cells, 512^3 with ~10^4 cells)";
+  const std::string flag = bench::flagArgument(argc, argv, {"--quick", "--2d", "--3d"}, usage);
+  const bool quick = flag == "--quick";
   const auto dir = std::filesystem::temp_directory_path() / "tessella_label_image_bench";
   std::filesystem::create_directories(dir);
   const std::int64_t n2 = quick ? 1024 : 4096, g2 = quick ? 78 : 316;  // 316^2 = 99856 seeds
   const std::int64_t n3 = quick ? 128 : 512, g3 = quick ? 10 : 22;     // 22^3 = 10648 seeds
-  std::printf("%-4s %-8s %8s %8s %9s %8s %9s %8s %7s %10s %9s %10s\n", "dim", "size", "seeds", "cells", "vertices",
-              "read s", "import s", "CPU s", "ratio", "cells/s", "RSS read", "RSS import");
-  {
+  std::printf("%-4s %-8s %8s %8s %9s %8s %9s %8s %8s %8s %7s %10s %9s %10s\n", "dim", "size", "seeds", "cells",
+              "vertices", "read s", "import s", "CPU s", "convert", "build", "ratio", "cells/s", "RSS read",
+              "RSS import");
+  if (flag != "--3d") {
     const std::string path = (dir / "cells_2d.mha").string();
     const std::size_t seeds = writeVoronoiImage(path, 2, n2, g2);
     for (const double simplify : {0.0, 1.0}) row(path, 2, n2, seeds, simplify, 3, 3.0);
     std::filesystem::remove(path);
   }
-  {
+  if (flag != "--2d") {
     const std::string path = (dir / "cells_3d.mha").string();
     const std::size_t seeds = writeVoronoiImage(path, 3, n3, g3);
     // The 30 s target is the for 512^3; the quick size has none.
@@ -175,6 +207,7 @@ int main(int argc, char** argv) {
     std::filesystem::remove(path);
   }
   std::printf("(RSS in MB, the process's peak so far; import includes reading the file; CPU s: the import's CPU "
-              "time, all threads)\n");
+              "time, all threads; 2D only: convert, tissueFromLabelImage alone, the image in memory; build, "
+              "buildPolygonTissue of the imported cells' polygons alone, the floor of a 2D import)\n");
   return 0;
 }

@@ -17,10 +17,13 @@
 // and of two cells the smaller label bridges.
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
-#include <unordered_map>
+
+#include <omp.h>
 
 #include "label_image_3d.hpp"
 #include "labelled_surface.hpp"
@@ -82,33 +85,72 @@ bool conflict(const Segment& s, const Segment& t, const std::vector<Vec3>& pos) 
          (d3 == 0 && onSegment(p1, p2, q1)) || (d4 == 0 && onSegment(p1, p2, q2));
 }
 
-struct Wall {
-  std::vector<std::int32_t> chain;  // vertices, junction to junction (closed: first == last)
-  double tol;
-  bool keep_one = false;  // keep an inner vertex: another wall with the same two ends is a straight segment
+// The walls, flat: wall w is the vertex chain chain[off[w] .. off[w + 1]), junction to junction (closed:
+// first == last), simplified with tolerance tol[w] (< 0: keep every vertex); keep_one[w]: keep an inner vertex
+// (another wall with the same two ends is a straight segment).
+struct Walls {
+  std::vector<std::int32_t> off{0}, chain;
+  std::vector<double> tol;
+  std::vector<char> keep_one;
+  std::size_t size() const { return tol.size(); }
 };
 
-void simplifyWall(const Wall& w, const std::vector<Vec3>& pos, std::vector<char>& keep) {
-  const auto& ch = w.chain;
-  const std::size_t last = ch.size() - 1;
-  for (std::size_t i = 1; i < last; ++i) keep[ch[i]] = w.tol < 0;  // tol < 0: keep every vertex
-  if (w.tol < 0) return;
-  if (ch.front() == ch.back()) {  // a loop: split at the vertex farthest from its start, keep one more on each side
-    std::size_t far = 1;
-    for (std::size_t i = 1; i < last; ++i)
-      if ((pos[ch[i]] - pos[ch[0]]).squaredNorm() > (pos[ch[far]] - pos[ch[0]]).squaredNorm()) far = i;
-    if (last < 2) return;
+void simplifyWall(const Walls& ws, std::size_t wi, const std::vector<Vec3>& pos, std::vector<char>& keep) {
+  const auto& ch = ws.chain;
+  const auto b = static_cast<std::size_t>(ws.off[wi]), last = static_cast<std::size_t>(ws.off[wi + 1]) - 1;
+  const double tol = ws.tol[wi];
+  for (std::size_t i = b + 1; i < last; ++i) keep[ch[i]] = tol < 0;  // tol < 0: keep every vertex
+  if (tol < 0) return;
+  if (ch[b] == ch[last]) {  // a loop: split at the vertex farthest from its start, keep one more on each side
+    std::size_t far = b + 1;
+    for (std::size_t i = b + 1; i < last; ++i)
+      if ((pos[ch[i]] - pos[ch[b]]).squaredNorm() > (pos[ch[far]] - pos[ch[b]]).squaredNorm()) far = i;
+    if (last < b + 2) return;
     keep[ch[far]] = 1;
-    douglasPeucker(ch, 0, far, pos, w.tol, far > 1, keep);
-    douglasPeucker(ch, far, last, pos, w.tol, last - far > 1, keep);
+    douglasPeucker(ch, b, far, pos, tol, far > b + 1, keep);
+    douglasPeucker(ch, far, last, pos, tol, last - far > 1, keep);
     return;
   }
-  douglasPeucker(ch, 0, last, pos, w.tol, w.keep_one, keep);
+  douglasPeucker(ch, b, last, pos, tol, ws.keep_one[wi] != 0, keep);
 }
+
+// Compressed sparse rows: the items of row r are items[off[r] .. off[r + 1]).
+template <typename T>
+struct Csr {
+  std::vector<std::int32_t> off;
+  std::vector<T> items;
+};
+
+// The runs of equal labels along the rows of the padded image: row r's runs start at x[off[r]] (the first at 0),
+// each ends where the next starts (the last at the padded width); label[k] is the run's label (kOutside for
+// background, dropped labels and the padding, all joined into one run).
+struct Runs {
+  std::vector<std::int32_t> off, x;
+  std::vector<Label> label;
+  std::int32_t end(std::size_t k, std::size_t row, std::int32_t width) const {
+    return k + 1 < static_cast<std::size_t>(off[row + 1]) ? x[k + 1] : width;
+  }
+};
+
+struct UnionFind32 {
+  std::vector<std::int32_t> parent;
+  explicit UnionFind32(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  std::int32_t find(std::int32_t a) {
+    while (parent[a] != a) a = parent[a] = parent[parent[a]];
+    return a;
+  }
+  void unite(std::int32_t a, std::int32_t b) {
+    a = find(a), b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
 
 }  // namespace
 
-ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o) {
+namespace {
+
+// `release`, when given, is img.labels, emptied once the runs are made.
+ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, std::vector<std::int64_t>* release) {
   detail::checkImportOptions(o);
   const LabelImageOptions& io = o.image;
   const std::string file = "'" + img.name + "'";
@@ -117,7 +159,7 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
       img.labels.size() != static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny) * static_cast<std::size_t>(nz))
     throw InputError(file + ": the image has dimensions " + std::to_string(nx) + " x " + std::to_string(ny) + " x " +
                      std::to_string(nz) + " but " + std::to_string(img.labels.size()) + " labels");
-  if (nz != 1) return detail::tissueFromLabelImage3d(img, o);
+  if (nz != 1) return detail::tissueFromLabelImage3d(img, o, release);
   // Pixel size.
   double sx = img.spacing[0], sy = img.spacing[1];
   if (!io.voxel_size.empty()) {
@@ -150,22 +192,95 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
                        ", 0 <= y0 < y1 <= " + std::to_string(ny) + " inside the image");
   }
   const std::int64_t w = x1 - x0, h = y1 - y0;
-  const std::int64_t W = w + 2, H = h + 2;  // padded with a ring of outside pixels
+  // The image padded with a ring of outside pixels: pixel (i, j) of the padded image is pixel (i - 1 + x0,
+  // j - 1 + y0) of the file. Pixel corner (i, j) is the lower left corner of padded pixel (i, j).
+  const std::int64_t W = w + 2, H = h + 2;
+  if (W * H > std::numeric_limits<std::int32_t>::max())
+    throw InputError(file + ": " + std::to_string(w) + " x " + std::to_string(h) +
+                     " pixels are more than a 2D import handles (2^31); crop the image");
+  const auto width = static_cast<std::int32_t>(W);
   auto pix = [&](std::int64_t i, std::int64_t j) { return static_cast<std::size_t>(j * W + i); };
-  std::vector<Label> lab(static_cast<std::size_t>(W * H), kOutside);
+  auto outsideLabel = [&](Label l) {
+    return std::find(io.background.begin(), io.background.end(), l) != io.background.end() ||
+           std::find(io.drop_labels.begin(), io.drop_labels.end(), l) != io.drop_labels.end();
+  };
+
+  // Labels, as runs along the rows: one pass over the pixels, in parallel over blocks of rows (a row's runs
+  // depend on that row alone, so the result is the same for any number of threads).
+  Runs runs;
   {
-    Label first = img.labels[static_cast<std::size_t>(y0 * nx + x0)];
-    bool several = false;
-    for (std::int64_t j = 0; j < h; ++j)
-      for (std::int64_t i = 0; i < w; ++i) {
-        const Label l = img.labels[static_cast<std::size_t>((j + y0) * nx + i + x0)];
-        several = several || l != first;
-        lab[pix(i + 1, j + 1)] = l;
+    const Label first = img.labels[static_cast<std::size_t>(y0 * nx + x0)];
+    struct Block {
+      std::vector<std::int32_t> count, x;
+      std::vector<Label> label;
+      bool several = false;
+    };
+    const int n_blocks = std::max(1, std::min<int>(omp_get_max_threads(), static_cast<int>(h)));
+    std::vector<Block> blocks(static_cast<std::size_t>(n_blocks));
+#pragma omp parallel for schedule(static, 1) num_threads(n_blocks)
+    for (int b = 0; b < n_blocks; ++b) {
+      Block& blk = blocks[static_cast<std::size_t>(b)];
+      const std::int64_t r0 = h * b / n_blocks, r1 = h * (b + 1) / n_blocks;
+      bool several = false;
+      for (std::int64_t r = r0; r < r1; ++r) {
+        const Label* src = img.labels.data() + static_cast<std::size_t>((r + y0) * nx + x0);
+        const std::size_t before = blk.x.size();
+        blk.x.push_back(0), blk.label.push_back(kOutside);
+        Label current = kOutside;
+        for (std::int64_t i = 0; i < w;) {
+          const Label l = src[i];
+          several = several || l != first;
+          const Label m = outsideLabel(l) ? kOutside : l;
+          if (m != current) blk.x.push_back(static_cast<std::int32_t>(i + 1)), blk.label.push_back(m), current = m;
+          for (++i; i < w && src[i] == l;) ++i;
+        }
+        if (current != kOutside) blk.x.push_back(static_cast<std::int32_t>(w + 1)), blk.label.push_back(kOutside);
+        blk.count.push_back(static_cast<std::int32_t>(blk.x.size() - before));
       }
+      blk.several = several;
+    }
+    bool several = false;
+    std::size_t n_runs = 2;
+    for (const Block& blk : blocks) several = several || blk.several, n_runs += blk.x.size();
     if (!several)
       throw InputError(file + ": the image" + std::string(io.crop.empty() ? "" : " (cropped)") +
                        " holds one label only (" + std::to_string(first) + " in every pixel): no cells to tell apart");
+    if (n_runs > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
+      throw InputError(file + ": too many label changes for a 2D import (2^31); crop the image");
+    runs.off.reserve(static_cast<std::size_t>(H + 1));
+    runs.x.reserve(n_runs), runs.label.reserve(n_runs);
+    auto outsideRow = [&] {
+      runs.off.push_back(static_cast<std::int32_t>(runs.x.size()));
+      runs.x.push_back(0), runs.label.push_back(kOutside);
+    };
+    outsideRow();
+    for (const Block& blk : blocks) {
+      std::size_t k = 0;
+      for (const std::int32_t n : blk.count) {
+        runs.off.push_back(static_cast<std::int32_t>(runs.x.size()));
+        runs.x.insert(runs.x.end(), blk.x.begin() + static_cast<std::ptrdiff_t>(k),
+                      blk.x.begin() + static_cast<std::ptrdiff_t>(k + static_cast<std::size_t>(n)));
+        runs.label.insert(runs.label.end(), blk.label.begin() + static_cast<std::ptrdiff_t>(k),
+                          blk.label.begin() + static_cast<std::ptrdiff_t>(k + static_cast<std::size_t>(n)));
+        k += static_cast<std::size_t>(n);
+      }
+    }
+    outsideRow();
+    runs.off.push_back(static_cast<std::int32_t>(runs.x.size()));
   }
+  if (release) std::vector<std::int64_t>().swap(*release);  // img.labels: not read again
+  auto runEnd = [&](std::size_t k, std::size_t row) { return runs.end(k, row, width); };
+  // Walks the runs of rows ra and rb side by side: f(ka, kb, s, e, a_ends, b_ends) for each stretch [s, e) of
+  // the padded row over which run ka of row ra and run kb of row rb both lie (a_ends: run ka ends at e).
+  auto sideBySide = [&](std::size_t ra, std::size_t rb, auto&& f) {
+    auto ka = static_cast<std::size_t>(runs.off[ra]), kb = static_cast<std::size_t>(runs.off[rb]);
+    for (std::int32_t s = 0; s < width;) {
+      const std::int32_t ea = runEnd(ka, ra), eb = runEnd(kb, rb), e = std::min(ea, eb);
+      f(ka, kb, s, e, ea == e, eb == e);
+      ka += ea == e, kb += eb == e, s = e;
+    }
+  };
+
   ImportResult result{Tissue(2, Embedding::Planar), {}};
   ImportReport& report = result.report;
   report.path = img.name;
@@ -178,17 +293,12 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
                          ", pixel size " + formatNumber(sx) + " x " + formatNumber(sy) +
                          (io.voxel_size.empty() ? " (from the file)" : " (given)"));
   std::vector<std::string> small_notes;
-  for (Label& l : lab) {
-    if (l == kOutside) continue;
-    if (std::find(io.background.begin(), io.background.end(), l) != io.background.end() ||
-        std::find(io.drop_labels.begin(), io.drop_labels.end(), l) != io.drop_labels.end())
-      l = kOutside;
-  }
   // Small labels: dropped, or merged into the neighbour sharing the most pixel edges.
   if (io.min_cell_size > 0) {
     std::map<Label, std::int64_t> size;
-    for (Label l : lab)
-      if (l != kOutside) ++size[l];
+    for (std::size_t r = 1; r + 1 < static_cast<std::size_t>(H); ++r)
+      for (auto k = static_cast<std::size_t>(runs.off[r]); k < static_cast<std::size_t>(runs.off[r + 1]); ++k)
+        if (runs.label[k] != kOutside) size[runs.label[k]] += runEnd(k, r) - runs.x[k];
     std::vector<std::pair<std::int64_t, Label>> small;
     for (const auto& [l, n] : size)
       if (n < io.min_cell_size) small.emplace_back(n, l);
@@ -199,14 +309,19 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
       return l;
     };
     if (io.small_cells == "merge" && !small.empty()) {
+      // Pixel edges shared by two labels: between consecutive runs of a row, and where runs of two
+      // consecutive rows lie side by side.
       std::map<Label, std::map<Label, std::int64_t>> shared;
-      for (std::int64_t j = 1; j < H - 1; ++j)
-        for (std::int64_t i = 1; i < W - 1; ++i) {
-          const Label a = lab[pix(i, j)];
-          if (a == kOutside) continue;
-          for (const Label b : {lab[pix(i + 1, j)], lab[pix(i, j + 1)]})
-            if (b != kOutside && b != a) ++shared[a][b], ++shared[b][a];
-        }
+      for (std::size_t r = 1; r + 1 < static_cast<std::size_t>(H); ++r) {
+        for (auto k = static_cast<std::size_t>(runs.off[r]) + 1; k < static_cast<std::size_t>(runs.off[r + 1]); ++k)
+          if (const Label a = runs.label[k - 1], b = runs.label[k]; a != kOutside && b != kOutside)
+            ++shared[a][b], ++shared[b][a];
+        if (r + 2 < static_cast<std::size_t>(H))
+          sideBySide(r, r + 1, [&](std::size_t ka, std::size_t kb, std::int32_t s, std::int32_t e, bool, bool) {
+            const Label a = runs.label[ka], b = runs.label[kb];
+            if (a != kOutside && b != kOutside && a != b) shared[a][b] += e - s, shared[b][a] += e - s;
+          });
+      }
       for (const auto& [n0, l] : small) {
         if (find(l) != l || size[l] >= io.min_cell_size) continue;
         std::map<Label, std::int64_t> by_root;
@@ -235,69 +350,82 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
                               " pixels < min_cell_size) dropped");
       }
     }
-    if (!into.empty())
-      for (Label& l : lab)
-        if (l != kOutside && into.count(l)) l = find(l);
+    if (!into.empty()) {  // relabel the runs, joining neighbours that now carry one label
+      Runs joined;
+      joined.off.reserve(runs.off.size()), joined.x.reserve(runs.x.size()), joined.label.reserve(runs.x.size());
+      for (std::size_t r = 0; r + 1 < runs.off.size(); ++r) {
+        joined.off.push_back(static_cast<std::int32_t>(joined.x.size()));
+        for (auto k = static_cast<std::size_t>(runs.off[r]); k < static_cast<std::size_t>(runs.off[r + 1]); ++k) {
+          const Label l = runs.label[k] != kOutside && into.count(runs.label[k]) ? find(runs.label[k]) : runs.label[k];
+          if (k > static_cast<std::size_t>(runs.off[r]) && l == joined.label.back()) continue;
+          joined.x.push_back(runs.x[k]), joined.label.push_back(l);
+        }
+      }
+      joined.off.push_back(static_cast<std::int32_t>(joined.x.size()));
+      runs = std::move(joined);
+    }
   }
   for (std::size_t k = 0; k < small_notes.size() && k < kMaxNotes; ++k) report.notes.push_back(small_notes[k]);
   if (small_notes.size() > kMaxNotes)
     report.notes.push_back("and " + std::to_string(small_notes.size() - kMaxNotes) + " more small labels");
 
-  // Pinched corners: which diagonal pair bridges (1: bottom-left/top-right, 2: bottom-right/top-left).
-  std::vector<std::uint8_t> bridge(static_cast<std::size_t>(W * H), 0);
+  // Pieces: runs of one label joined where they lie side by side in consecutive rows, or across a pinched
+  // corner. A corner is pinched where both rows change label: which diagonal pair bridges it (1: bottom-left/
+  // top-right, 2: bottom-right/top-left) is listed row by row.
+  const std::size_t n_runs = runs.x.size();
+  UnionFind32 uf(n_runs);
+  std::vector<std::int32_t> bridge_row, bridge_x;
+  std::vector<std::uint8_t> bridge_type;
   std::size_t checkerboards = 0;
-  for (std::int64_t cj = 1; cj < H; ++cj)
-    for (std::int64_t ci = 1; ci < W; ++ci) {
-      const Label a = lab[pix(ci - 1, cj - 1)], b = lab[pix(ci, cj - 1)], c = lab[pix(ci - 1, cj)],
-                  d = lab[pix(ci, cj)];
+  // Counted on the way, for the vertices and edges below: the corners on a vertical edge, and the horizontal
+  // boundary edges and the corners inside their straight stretches.
+  std::size_t n_corners = 0, n_hedges = 0, n_hcorners = 0;
+  for (std::size_t cj = 1; cj < static_cast<std::size_t>(H); ++cj)
+    sideBySide(cj - 1, cj, [&](std::size_t ka, std::size_t kb, std::int32_t s, std::int32_t e, bool a_ends,
+                               bool b_ends) {
+      const Label below = runs.label[ka];
+      if (below == runs.label[kb]) {
+        if (below != kOutside) uf.unite(static_cast<std::int32_t>(ka), static_cast<std::int32_t>(kb));
+      } else {  // a boundary (runs of one label side by side are one piece)
+        n_hedges += static_cast<std::size_t>(e - s), n_hcorners += static_cast<std::size_t>(e - s - 1);
+      }
+      n_corners += e < width;
+      if (!a_ends || !b_ends || e == width) return;
+      // Corner e: pixels a (below left), b (below right), c (above left), d (above right).
+      const Label a = below, b = runs.label[ka + 1], c = runs.label[kb], d = runs.label[kb + 1];
       const bool ad = a == d && b != a && c != a, bc = b == c && a != b && d != b;
-      if (!ad && !bc) continue;
+      if (!ad && !bc) return;
       bool use_ad = ad;
       if (ad && bc) {
         ++checkerboards;
         use_ad = b == kOutside ? true : a == kOutside ? false : a < b;
       }
-      bridge[pix(ci, cj)] = use_ad ? 1 : 2;
-    }
+      bridge_row.push_back(static_cast<std::int32_t>(cj)), bridge_x.push_back(e);
+      bridge_type.push_back(use_ad ? 1 : 2);
+      if (use_ad && d != kOutside) uf.unite(static_cast<std::int32_t>(ka), static_cast<std::int32_t>(kb + 1));
+      if (!use_ad && b != kOutside) uf.unite(static_cast<std::int32_t>(ka + 1), static_cast<std::int32_t>(kb));
+    });
   if (checkerboards)
     report.notes.push_back(std::to_string(checkerboards) +
                            " pixel corner(s) where two labels touch diagonally (a checkerboard): the smaller "
                            "label, or the cell over the background, is joined across the corner");
 
-  // Pieces: pixels of one label joined by an edge or a bridged corner.
-  detail::UnionFind uf(lab.size());
-  for (std::int64_t j = 1; j < H - 1; ++j)
-    for (std::int64_t i = 1; i < W - 1; ++i) {
-      const Label a = lab[pix(i, j)];
-      if (a == kOutside) continue;
-      if (lab[pix(i + 1, j)] == a) uf.unite(static_cast<Index>(pix(i, j)), static_cast<Index>(pix(i + 1, j)));
-      if (lab[pix(i, j + 1)] == a) uf.unite(static_cast<Index>(pix(i, j)), static_cast<Index>(pix(i, j + 1)));
-    }
-  for (std::int64_t cj = 1; cj < H; ++cj)
-    for (std::int64_t ci = 1; ci < W; ++ci) {
-      const auto type = bridge[pix(ci, cj)];
-      if (type == 1 && lab[pix(ci, cj)] != kOutside)
-        uf.unite(static_cast<Index>(pix(ci - 1, cj - 1)), static_cast<Index>(pix(ci, cj)));
-      if (type == 2 && lab[pix(ci, cj - 1)] != kOutside)
-        uf.unite(static_cast<Index>(pix(ci, cj - 1)), static_cast<Index>(pix(ci - 1, cj)));
-    }
   // Cells: pieces sorted by label, then by their first pixel (row by row from y0).
   struct Piece {
     Label label;
     std::size_t first, pixels = 0;
   };
-  std::vector<std::int32_t> piece_of_root(lab.size(), -1);  // by root pixel
+  std::vector<std::int32_t> piece_of_run(n_runs, -1);  // by root run, then by run
   std::vector<Piece> pieces;
-  for (std::int64_t j = 1; j < H - 1; ++j)
-    for (std::int64_t i = 1; i < W - 1; ++i) {
-      const Label a = lab[pix(i, j)];
-      if (a == kOutside) continue;
-      std::int32_t& piece = piece_of_root[uf.find(static_cast<Index>(pix(i, j)))];
+  for (std::size_t r = 1; r + 1 < static_cast<std::size_t>(H); ++r)
+    for (auto k = static_cast<std::size_t>(runs.off[r]); k < static_cast<std::size_t>(runs.off[r + 1]); ++k) {
+      if (runs.label[k] == kOutside) continue;
+      std::int32_t& piece = piece_of_run[static_cast<std::size_t>(uf.find(static_cast<std::int32_t>(k)))];
       if (piece < 0) {
         piece = static_cast<std::int32_t>(pieces.size());
-        pieces.push_back({a, pix(i, j)});
+        pieces.push_back({runs.label[k], pix(runs.x[k], static_cast<std::int64_t>(r))});
       }
-      ++pieces[static_cast<std::size_t>(piece)].pixels;
+      pieces[static_cast<std::size_t>(piece)].pixels += static_cast<std::size_t>(runEnd(k, r) - runs.x[k]);
     }
   if (pieces.empty())
     throw InputError(file + ": no cells: every pixel is background (" + labelList(io.background) + ")" +
@@ -343,107 +471,207 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
   if (split_labels)
     report.notes.push_back(std::to_string(split_labels) +
                            " label(s) in several disconnected pieces, each piece a cell (keep_pieces)");
-  std::vector<std::size_t> cell_of_piece(pieces.size());
-  for (std::size_t c = 0; c < order.size(); ++c) cell_of_piece[order[c]] = c;
+  std::vector<std::int32_t> cell_of_piece(pieces.size());
+  for (std::size_t c = 0; c < order.size(); ++c) cell_of_piece[order[c]] = static_cast<std::int32_t>(c);
   const std::size_t n_cells = pieces.size();
-  std::vector<std::int32_t> cell(lab.size(), -1);
-  for (std::int64_t j = 1; j < H - 1; ++j)
-    for (std::int64_t i = 1; i < W - 1; ++i)
-      if (lab[pix(i, j)] != kOutside)
-        cell[pix(i, j)] = static_cast<std::int32_t>(
-            cell_of_piece[static_cast<std::size_t>(piece_of_root[uf.find(static_cast<Index>(pix(i, j)))])]);
+  // The cell of each run (-1 outside), in place: a piece's root is its first run, converted before the others.
+  std::vector<std::int32_t>& cell = piece_of_run;
+  for (std::size_t k = 0; k < n_runs; ++k) {
+    if (runs.label[k] == kOutside) {
+      cell[k] = -1;
+      continue;
+    }
+    const auto root = static_cast<std::size_t>(uf.find(static_cast<std::int32_t>(k)));
+    cell[k] = root == k ? cell_of_piece[static_cast<std::size_t>(cell[k])] : cell[root];
+  }
+  std::vector<std::int32_t>().swap(uf.parent);
   auto cellName = [&](std::int32_t c) {
     return c < 0 ? std::string("the background") : "label " + std::to_string(pieces[order[c]].label);
   };
 
-  // Vertices: the pixel corners on a boundary (two at a bridged corner), in pixel units.
-  std::vector<std::int32_t> vert0(lab.size(), -1), vert1(lab.size(), -1);
-  std::vector<Vec3> pos;
-  // The vertex at corner (ci, cj) for the pixel edge leaving it along axis 0 down, 1 right, 2 up, 3 left.
-  auto vertexAt = [&](std::int64_t ci, std::int64_t cj, int axis) {
-    const std::size_t k = pix(ci, cj);
-    const double x = static_cast<double>(ci - 1), y = static_cast<double>(cj - 1);
-    const auto type = bridge[k];
-    bool second = false;
-    Vec3 p(x, y, 0);
-    if (type == 1) {  // a-d bridge: down/right on b's side (+,-), up/left on c's side (-,+)
-      second = axis == 2 || axis == 3;
-      p = second ? Vec3(x - kSplit, y + kSplit, 0) : Vec3(x + kSplit, y - kSplit, 0);
-    } else if (type == 2) {  // b-c bridge: down/left on a's side (-,-), up/right on d's side (+,+)
-      second = axis == 1 || axis == 2;
-      p = second ? Vec3(x + kSplit, y + kSplit, 0) : Vec3(x - kSplit, y - kSplit, 0);
-    }
-    std::int32_t& id = second ? vert1[k] : vert0[k];
-    if (id < 0) {
-      id = static_cast<std::int32_t>(pos.size());
-      pos.push_back(p);
-    }
-    return id;
+  // Vertices and boundary edges, numbered as a scan of every pixel edge would create them: first the vertical
+  // edges (row by row, each creating its lower corner, then its upper one), then the horizontal ones. A pixel
+  // corner on a boundary is a vertex (two at a bridged corner), in pixel units. The vertices first met by a
+  // horizontal edge (on a straight horizontal stretch) are numbered after all the others, from `h_vertex`, and
+  // the horizontal edges after the vertical ones, from `h_edge`.
+  const std::size_t n_verts = n_corners + bridge_row.size() + n_hcorners;
+  const std::size_t n_vedges = runs.x.size() - static_cast<std::size_t>(H), n_edges = n_vedges + n_hedges;
+  std::vector<Vec3> pos(n_verts);
+  std::int32_t v_vertex = 0;
+  std::vector<BoundaryEdge> edges(n_edges);
+  std::size_t v_edge = 0, h_edge = n_vedges;
+  auto h_vertex = static_cast<std::int32_t>(n_corners + bridge_row.size());
+  std::size_t bp_this = 0, bp_next = 0;  // into the bridge lists
+  auto bridgeAt = [&](std::size_t& bp, std::int32_t row, std::int32_t x) -> int {
+    while (bp < bridge_row.size() && (bridge_row[bp] < row || (bridge_row[bp] == row && bridge_x[bp] < x))) ++bp;
+    return bp < bridge_row.size() && bridge_row[bp] == row && bridge_x[bp] == x ? bridge_type[bp] : 0;
   };
-  std::vector<BoundaryEdge> edges;
-  for (std::int64_t j = 1; j < H - 1; ++j)
-    for (std::int64_t i = 1; i < W; ++i) {  // vertical edge between pixels (i-1, j) and (i, j)
-      const std::int32_t l = cell[pix(i - 1, j)], r = cell[pix(i, j)];
-      if (l != r) edges.push_back({vertexAt(i, j, 2), vertexAt(i, j + 1, 0), l, r});
+  // The vertex at corner (ci, cj): at a bridged corner, `second` is the one on the side of the edges leaving
+  // it up or left (type 1) or up or right (type 2), a quarter pixel off the corner.
+  auto newVertex = [&](std::int32_t ci, std::int32_t cj, int type, bool second) {
+    const double x = ci - 1, y = cj - 1;
+    Vec3& p = pos[static_cast<std::size_t>(v_vertex)];
+    if (type == 1) p = second ? Vec3(x - kSplit, y + kSplit, 0) : Vec3(x + kSplit, y - kSplit, 0);
+    else if (type == 2) p = second ? Vec3(x + kSplit, y + kSplit, 0) : Vec3(x - kSplit, y - kSplit, 0);
+    else p = Vec3(x, y, 0);
+    return v_vertex++;
+  };
+  struct Corner {
+    std::int32_t x, v0, v1;  // v1: the second vertex of a bridged corner
+    int type;
+  };
+  std::vector<Corner> corners;  // of corner row cj: those on a vertical edge, by x
+  std::vector<std::pair<std::int32_t, std::int32_t>> up, next_up;  // x, vertex: upper ends of the row below's edges
+  constexpr std::int32_t kNone = std::numeric_limits<std::int32_t>::max();
+  for (std::int32_t cj = 1; cj < static_cast<std::int32_t>(H); ++cj) {
+    // The vertical edges of pixel row cj (none in the padding row H - 1).
+    corners.clear(), next_up.clear();
+    std::size_t p = 0, k = static_cast<std::size_t>(runs.off[cj]) + 1;
+    const auto k_end = static_cast<std::size_t>(runs.off[cj + 1]);
+    while (p < up.size() || k < k_end) {
+      const std::int32_t xa = p < up.size() ? up[p].first : kNone, xb = k < k_end ? runs.x[k] : kNone;
+      if (xa < xb) {
+        corners.push_back({xa, up[p++].second, -1, 0});
+        continue;
+      }
+      const int type = bridgeAt(bp_this, cj, xb);
+      std::int32_t v0, v1 = -1, lower;
+      if (xa == xb) {
+        v0 = up[p++].second;
+        lower = type ? (v1 = newVertex(xb, cj, type, true)) : v0;
+      } else {
+        lower = v0 = newVertex(xb, cj, 0, false);
+      }
+      const std::int32_t upper = newVertex(xb, cj + 1, bridgeAt(bp_next, cj + 1, xb), false);
+      edges[v_edge++] = {lower, upper, cell[k - 1], cell[k]};
+      corners.push_back({xb, v0, v1, type});
+      next_up.emplace_back(xb, upper);
+      ++k;
     }
-  for (std::int64_t j = 1; j < H; ++j)
-    for (std::int64_t i = 1; i < W - 1; ++i) {  // horizontal edge between pixels (i, j-1) below and (i, j) above
-      const std::int32_t below = cell[pix(i, j - 1)], above = cell[pix(i, j)];
-      if (below != above) edges.push_back({vertexAt(i, j, 1), vertexAt(i + 1, j, 3), above, below});
-    }
-  std::vector<std::int32_t>().swap(vert0);
-  std::vector<std::int32_t>().swap(vert1);
-  const std::size_t n_verts = pos.size();
+    std::swap(up, next_up);
+    // The horizontal edges along corner row cj, between pixel rows cj - 1 (below) and cj (above): each
+    // stretch [s, e) starts and ends at a corner on a vertical edge, corners[q - 1] and corners[q].
+    std::size_t q = 0;
+    sideBySide(static_cast<std::size_t>(cj) - 1, static_cast<std::size_t>(cj),
+               [&](std::size_t ka, std::size_t kb, std::int32_t s, std::int32_t e, bool, bool) {
+                 const std::int32_t below = cell[ka], above = cell[kb];
+                 if (below != above) {
+                   const Corner& cs = corners[q - 1];
+                   std::int32_t u = cs.type == 2 ? cs.v1 : cs.v0;  // leaving right: type 2's second vertex
+                   for (std::int32_t i = s; i < e; ++i) {
+                     std::int32_t v;
+                     if (i + 1 < e) {
+                       pos[static_cast<std::size_t>(h_vertex)] = Vec3(i, cj - 1, 0);
+                       v = h_vertex++;
+                     } else {
+                       const Corner& ce = corners[q];
+                       v = ce.type == 1 ? ce.v1 : ce.v0;  // leaving left: type 1's second vertex
+                     }
+                     edges[h_edge++] = {u, v, above, below};
+                     u = v;
+                   }
+                 }
+                 q += e < width;
+               });
+  }
+  if (static_cast<std::size_t>(v_vertex) != n_corners + bridge_row.size() ||
+      static_cast<std::size_t>(h_vertex) != n_verts || v_edge != n_vedges || h_edge != n_edges)
+    throw InputError(file + ": the pixel corners were miscounted (an internal error)");
+  Runs().x.swap(runs.x);
   std::vector<std::array<std::int32_t, 4>> incident(n_verts);
   std::vector<std::uint8_t> degree(n_verts, 0);
-  for (std::size_t e = 0; e < edges.size(); ++e)
+  for (std::size_t e = 0; e < n_edges; ++e)
     for (const std::int32_t v : {edges[e].u, edges[e].v}) incident[v][degree[v]++] = static_cast<std::int32_t>(e);
-  auto pairOf = [&](std::size_t e) {
-    return std::minmax(edges[e].left, edges[e].right);
-  };
+  auto pairOf = [&](std::size_t e) { return std::minmax(edges[e].left, edges[e].right); };
   std::vector<char> junction(n_verts, 0);
   for (std::size_t v = 0; v < n_verts; ++v)
     junction[v] = degree[v] != 2 || pairOf(incident[v][0]) != pairOf(incident[v][1]);
 
   // Walls: chains of edges between junctions; a closed chain without one starts at its first vertex.
-  std::vector<Wall> walls;
-  std::vector<std::int32_t> edge_wall(edges.size(), -1);
+  Walls walls;
+  std::vector<std::array<std::int32_t, 2>> wall_cells;  // -1: none (the outside)
+  std::vector<std::int32_t> edge_wall(n_edges, -1);
   auto walk = [&](std::int32_t start, std::int32_t e0) {
-    Wall wall{{start}, o.simplify};
+    const auto wi = static_cast<std::int32_t>(walls.size());
+    walls.chain.push_back(start);
     std::int32_t v = start, e = e0;
     for (;;) {
-      edge_wall[e] = static_cast<std::int32_t>(walls.size());
+      edge_wall[e] = wi;
       v = edges[e].u == v ? edges[e].v : edges[e].u;
-      wall.chain.push_back(v);
+      walls.chain.push_back(v);
       if (junction[v]) break;
       e = incident[v][0] == e ? incident[v][1] : incident[v][0];
     }
-    walls.push_back(std::move(wall));
+    walls.off.push_back(static_cast<std::int32_t>(walls.chain.size()));
+    walls.tol.push_back(o.simplify);
+    walls.keep_one.push_back(0);
+    wall_cells.push_back({edges[e0].left, edges[e0].right});
   };
   for (std::size_t v = 0; v < n_verts; ++v)
     if (junction[v])
       for (int k = 0; k < degree[v]; ++k)
         if (edge_wall[incident[v][k]] < 0) walk(static_cast<std::int32_t>(v), incident[v][k]);
-  for (std::size_t e = 0; e < edges.size(); ++e)
+  for (std::size_t e = 0; e < n_edges; ++e)
     if (edge_wall[e] < 0) {
       junction[edges[e].u] = 1;
       walk(edges[e].u, static_cast<std::int32_t>(e));
     }
+  std::vector<std::int32_t>().swap(edge_wall);
+  const std::size_t n_walls = walls.size();
 
-  // Outlines: per cell, its boundary edges chained the way the cell runs (counter-clockwise).
-  std::vector<std::vector<std::int32_t>> cell_edges(n_cells);
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    if (edges[e].left >= 0) cell_edges[edges[e].left].push_back(static_cast<std::int32_t>(e));
-    if (edges[e].right >= 0) cell_edges[edges[e].right].push_back(static_cast<std::int32_t>(e));
+  // Outlines: per cell, its boundary edges chained the way the cell runs (counter-clockwise), from its first
+  // edge (the edges of each cell in increasing order).
+  Csr<std::int32_t> cell_edges;
+  cell_edges.off.assign(n_cells + 1, 0);
+  for (const BoundaryEdge& e : edges) {
+    if (e.left >= 0) ++cell_edges.off[static_cast<std::size_t>(e.left) + 1];
+    if (e.right >= 0) ++cell_edges.off[static_cast<std::size_t>(e.right) + 1];
   }
-  std::vector<std::uint8_t> edge_used(edges.size(), 0);  // 1: walked by its left cell, 2: by its right one
-  std::vector<std::vector<std::int32_t>> outline_edges(n_cells);  // the edges in loop order
-  std::vector<std::vector<std::int32_t>> outlines(n_cells);       // the vertices
-  for (std::size_t c = 0; c < n_cells; ++c) {
+  std::partial_sum(cell_edges.off.begin(), cell_edges.off.end(), cell_edges.off.begin());
+  cell_edges.items.resize(static_cast<std::size_t>(cell_edges.off.back()));
+  {
+    std::vector<std::int32_t> fill(cell_edges.off.begin(), cell_edges.off.end() - 1);
+    for (std::size_t e = 0; e < n_edges; ++e) {
+      if (edges[e].left >= 0) cell_edges.items[fill[edges[e].left]++] = static_cast<std::int32_t>(e);
+      if (edges[e].right >= 0) cell_edges.items[fill[edges[e].right]++] = static_cast<std::int32_t>(e);
+    }
+  }
+  // The loop through a cell's first edge, for every cell in parallel (each writes its own outline); a cell
+  // whose loop misses some of its edges has several loops (a hole), reported below.
+  Csr<std::int32_t> outlines;  // the vertices, in loop order
+  outlines.off = cell_edges.off;
+  outlines.items.resize(cell_edges.items.size());
+  std::vector<std::uint8_t> outline_fault(n_cells, 0);
+#pragma omp parallel for schedule(dynamic, 512)
+  for (std::ptrdiff_t cc = 0; cc < static_cast<std::ptrdiff_t>(n_cells); ++cc) {
+    const auto c = static_cast<std::size_t>(cc);
     const auto ci = static_cast<std::int32_t>(c);
+    const std::int32_t begin = cell_edges.off[c], count = cell_edges.off[c + 1] - begin;
+    const std::int32_t e0 = cell_edges.items[static_cast<std::size_t>(begin)];
+    std::int32_t k = 0, e = e0;
+    do {
+      const bool left = edges[e].left == ci;
+      outlines.items[static_cast<std::size_t>(begin + k++)] = left ? edges[e].u : edges[e].v;
+      const std::int32_t v = left ? edges[e].v : edges[e].u;
+      if (degree[v] == 2) {  // the other edge
+        e = incident[v][incident[v][0] == e];
+        continue;
+      }
+      e = -1;  // the cell's edge leaving v: one at most, as pinched corners are bridged
+      for (int j = 0; j < degree[v] && e < 0; ++j) {
+        const std::int32_t f = incident[v][j];
+        if ((edges[f].left == ci && edges[f].u == v) || (edges[f].right == ci && edges[f].v == v)) e = f;
+      }
+    } while (e >= 0 && e != e0 && k < count);
+    outline_fault[c] = e != e0 || k > count ? 2 : k < count ? 1 : 0;
+  }
+  for (std::size_t c = 0; c < n_cells; ++c) {
+    if (!outline_fault[c]) continue;
+    // Every loop of the cell, for the message.
+    const auto ci = static_cast<std::int32_t>(c);
+    auto side = [&](std::int32_t e) -> std::uint8_t { return edges[e].left == ci ? 1 : 2; };
     auto from = [&](std::int32_t e) { return edges[e].left == ci ? edges[e].u : edges[e].v; };
     auto to = [&](std::int32_t e) { return edges[e].left == ci ? edges[e].v : edges[e].u; };
-    // The cell's edge leaving vertex v: one at most, as pinched corners are bridged.
     auto out = [&](std::int32_t v) {
       for (int k = 0; k < degree[v]; ++k) {
         const std::int32_t e = incident[v][k];
@@ -451,157 +679,239 @@ ImportResult tissueFromLabelImage(const LabelImage& img, const ImportOptions& o)
       }
       throw InputError(file + ": " + cellName(ci) + ": its outline is not closed (an internal error)");
     };
+    std::map<std::int32_t, std::uint8_t> edge_used;  // 1: walked by its left cell, 2: by its right one
     std::vector<std::vector<std::int32_t>> loops;
-    for (const std::int32_t e0 : cell_edges[c]) {  // in increasing order
-      if (edge_used[e0] & (edges[e0].left == ci ? 1 : 2)) continue;
+    for (auto k = cell_edges.off[c]; k < cell_edges.off[c + 1]; ++k) {
+      const std::int32_t e0 = cell_edges.items[static_cast<std::size_t>(k)];
+      if (edge_used[e0] & side(e0)) continue;
       loops.emplace_back();
-      for (std::int32_t e = e0; !(edge_used[e] & (edges[e].left == ci ? 1 : 2)); e = out(to(e))) {
-        edge_used[e] |= edges[e].left == ci ? 1 : 2;
+      for (std::int32_t e = e0; !(edge_used[e] & side(e)); e = out(to(e))) {
+        edge_used[e] |= side(e);
         loops.back().push_back(e);
       }
     }
-    if (loops.size() > 1) {
-      // The outer loop turns counter-clockwise (positive area); the others bound holes.
-      std::vector<Label> inside;
-      bool background = false;
-      for (const auto& loop : loops) {
-        double area = 0;
-        for (const std::int32_t e : loop) {
-          const Vec3 &p = pos[from(e)], &q = pos[to(e)];
-          area += p.x() * q.y() - q.x() * p.y();
-        }
-        if (area > 0) continue;
-        for (const std::int32_t e : loop) {
-          const std::int32_t other = edges[e].left == ci ? edges[e].right : edges[e].left;
-          if (other < 0) background = true;
-          else inside.push_back(pieces[order[other]].label);
-        }
+    if (loops.size() < 2)
+      throw InputError(file + ": " + cellName(ci) + ": its outline is not closed (an internal error)");
+    // The outer loop turns counter-clockwise (positive area); the others bound holes.
+    std::vector<Label> inside;
+    bool background = false;
+    for (const auto& loop : loops) {
+      double area = 0;
+      for (const std::int32_t e : loop) {
+        const Vec3 &p = pos[from(e)], &q = pos[to(e)];
+        area += p.x() * q.y() - q.x() * p.y();
       }
-      std::sort(inside.begin(), inside.end());
-      inside.erase(std::unique(inside.begin(), inside.end()), inside.end());
-      std::string what = inside.empty() ? std::string() : "label(s) " + labelList(inside);
-      if (background) what += (what.empty() ? "" : " and ") + std::string("background pixels");
-      throw InputError(file + ": " + cellName(ci) + " (a pixel of it at " + pixelName(pieces[order[c]].first) +
-                       ") has a hole: it surrounds " + what +
-                       ". A cell is one polygon without holes; drop the inner labels (drop_labels), merge them "
-                       "(min_cell_size with small_cells: merge), or make the hole part of the cell");
+      if (area > 0) continue;
+      for (const std::int32_t e : loop) {
+        const std::int32_t other = edges[e].left == ci ? edges[e].right : edges[e].left;
+        if (other < 0) background = true;
+        else inside.push_back(pieces[order[other]].label);
+      }
     }
-    outline_edges[c] = std::move(loops[0]);
-    for (const std::int32_t e : outline_edges[c]) outlines[c].push_back(from(e));
+    std::sort(inside.begin(), inside.end());
+    inside.erase(std::unique(inside.begin(), inside.end()), inside.end());
+    std::string what = inside.empty() ? std::string() : "label(s) " + labelList(inside);
+    if (background) what += (what.empty() ? "" : " and ") + std::string("background pixels");
+    throw InputError(file + ": " + cellName(ci) + " (a pixel of it at " + pixelName(pieces[order[c]].first) +
+                     ") has a hole: it surrounds " + what +
+                     ". A cell is one polygon without holes; drop the inner labels (drop_labels), merge them "
+                     "(min_cell_size with small_cells: merge), or make the hole part of the cell");
   }
+  Csr<std::int32_t>().items.swap(cell_edges.items);
 
   // Simplify, then make sure no two walls cross and no cell flattens.
-  std::vector<char> keep(n_verts, 0);
-  for (std::size_t v = 0; v < n_verts; ++v) keep[v] = junction[v];
-  for (const Wall& wl : walls) simplifyWall(wl, pos, keep);
+  std::vector<char> keep(junction.begin(), junction.end());
+  // In parallel: a wall sets `keep` of its inner vertices only.
+#pragma omp parallel for schedule(dynamic, 1024)
+  for (std::ptrdiff_t wi = 0; wi < static_cast<std::ptrdiff_t>(n_walls); ++wi)
+    simplifyWall(walls, static_cast<std::size_t>(wi), pos, keep);
   {
-    // Of the walls with the same two ends, one at most may become a straight segment (they would collapse).
-    std::map<std::pair<std::int32_t, std::int32_t>, int> straight;
-    for (Wall& wl : walls) {
-      if (wl.chain.front() == wl.chain.back() || wl.chain.size() < 3) continue;
+    // Of the walls with the same two ends, one at most may become a straight segment (they would collapse):
+    // the first of them, in wall order.
+    std::vector<std::pair<std::uint64_t, std::int32_t>> straight;  // ends, wall
+    for (std::size_t wi = 0; wi < n_walls; ++wi) {
+      const auto b = static_cast<std::size_t>(walls.off[wi]), last = static_cast<std::size_t>(walls.off[wi + 1]) - 1;
+      if (walls.chain[b] == walls.chain[last] || last - b < 2) continue;
       bool inner = false;
-      for (std::size_t k = 1; k + 1 < wl.chain.size(); ++k) inner = inner || keep[wl.chain[k]];
+      for (std::size_t k = b + 1; k < last && !inner; ++k) inner = keep[walls.chain[k]];
       if (inner) continue;
-      if (straight[std::minmax(wl.chain.front(), wl.chain.back())]++ == 0) continue;
-      wl.keep_one = true;
-      simplifyWall(wl, pos, keep);
+      const auto [lo, hi] = std::minmax(walls.chain[b], walls.chain[last]);
+      straight.emplace_back((static_cast<std::uint64_t>(lo) << 32) | static_cast<std::uint32_t>(hi),
+                            static_cast<std::int32_t>(wi));
     }
+    std::sort(straight.begin(), straight.end());
+    for (std::size_t k = 1; k < straight.size(); ++k)
+      if (straight[k].first == straight[k - 1].first) {
+        const auto wi = static_cast<std::size_t>(straight[k].second);
+        walls.keep_one[wi] = 1;
+        simplifyWall(walls, wi, pos, keep);
+      }
   }
-  std::vector<std::vector<std::int32_t>> wall_cells(walls.size());
-  for (std::size_t e = 0; e < edges.size(); ++e) {
-    auto& cs = wall_cells[edge_wall[e]];
-    if (cs.empty()) {
-      if (edges[e].left >= 0) cs.push_back(edges[e].left);
-      if (edges[e].right >= 0) cs.push_back(edges[e].right);
+  // With simplify 0 every wall is its pixel staircase but for the corners it passes straight through: the
+  // walls neither cross nor touch, and no cell flattens (tests/io compares both ways on random images).
+  if (o.simplify > 0) {
+    Csr<std::int32_t> cell_walls;
+    cell_walls.off.assign(n_cells + 1, 0);
+    for (const auto& cs : wall_cells)
+      for (const std::int32_t c : cs)
+        if (c >= 0) ++cell_walls.off[static_cast<std::size_t>(c) + 1];
+    std::partial_sum(cell_walls.off.begin(), cell_walls.off.end(), cell_walls.off.begin());
+    cell_walls.items.resize(static_cast<std::size_t>(cell_walls.off.back()));
+    {
+      std::vector<std::int32_t> fill(cell_walls.off.begin(), cell_walls.off.end() - 1);
+      for (std::size_t wi = 0; wi < n_walls; ++wi)
+        for (const std::int32_t c : wall_cells[wi])
+          if (c >= 0) cell_walls.items[fill[c]++] = static_cast<std::int32_t>(wi);
     }
-  }
-  std::vector<std::vector<std::int32_t>> cell_walls(n_cells);
-  for (std::size_t wi = 0; wi < walls.size(); ++wi)
-    for (const std::int32_t c : wall_cells[wi]) cell_walls[c].push_back(static_cast<std::int32_t>(wi));
-  const double bucket = 4;
-  for (int round = 0;; ++round) {
-    std::vector<char> redo(walls.size(), 0);
+    // The crossing test: every pair of segments in one bucket of a grid of 4 x 4 pixels is tested, unless
+    // neither wall changed since the last round (a pair that did not conflict then does not now; a wall that
+    // conflicted was redone). Cells are checked again when one of their walls changed.
+    const double bucket = 4;
+    const auto nbx = static_cast<std::size_t>(w / 4 + 2), nby = static_cast<std::size_t>(h / 4 + 2);
+    std::vector<char> dirty(n_walls, 1), redo(n_walls, 0);
     std::vector<Segment> segs;
-    for (std::size_t wi = 0; wi < walls.size(); ++wi) {
-      std::int32_t prev = walls[wi].chain.front();
-      for (std::size_t k = 1; k < walls[wi].chain.size(); ++k) {
-        const std::int32_t v = walls[wi].chain[k];
-        if (!keep[v]) continue;
-        segs.push_back({prev, v, static_cast<std::int32_t>(wi)});
-        prev = v;
-      }
-    }
-    std::unordered_map<std::uint64_t, std::vector<std::int32_t>> grid;
-    for (std::size_t s = 0; s < segs.size(); ++s) {
-      const Vec3 &p = pos[segs[s].a], &q = pos[segs[s].b];
-      const auto bx0 = static_cast<std::int64_t>(std::floor((std::min(p.x(), q.x()) + 1) / bucket));
-      const auto bx1 = static_cast<std::int64_t>(std::floor((std::max(p.x(), q.x()) + 1) / bucket));
-      const auto by0 = static_cast<std::int64_t>(std::floor((std::min(p.y(), q.y()) + 1) / bucket));
-      const auto by1 = static_cast<std::int64_t>(std::floor((std::max(p.y(), q.y()) + 1) / bucket));
-      for (std::int64_t by = by0; by <= by1; ++by)
-        for (std::int64_t bx = bx0; bx <= bx1; ++bx)
-          grid[(static_cast<std::uint64_t>(by) << 32) | static_cast<std::uint64_t>(bx)].push_back(
-              static_cast<std::int32_t>(s));
-    }
-    for (const auto& [key, list] : grid)
-      for (std::size_t a = 0; a < list.size(); ++a)
-        for (std::size_t b = a + 1; b < list.size(); ++b) {
-          const Segment &s = segs[list[a]], &t = segs[list[b]];
-          if (conflict(s, t, pos)) redo[s.wall] = redo[t.wall] = 1;
+    std::vector<std::int32_t> bucket_off, bucket_segs;
+    for (int round = 0;; ++round) {
+      std::fill(redo.begin(), redo.end(), 0);
+      segs.clear();
+      for (std::size_t wi = 0; wi < n_walls; ++wi) {
+        const auto b = static_cast<std::size_t>(walls.off[wi]), e = static_cast<std::size_t>(walls.off[wi + 1]);
+        std::int32_t prev = walls.chain[b];
+        for (std::size_t k = b + 1; k < e; ++k) {
+          const std::int32_t v = walls.chain[k];
+          if (!keep[v]) continue;
+          segs.push_back({prev, v, static_cast<std::int32_t>(wi)});
+          prev = v;
         }
-    for (std::size_t c = 0; c < n_cells; ++c) {
-      double area = 0;
-      std::size_t corners = 0;
-      std::int32_t first = -1, prev = -1;
-      for (const std::int32_t v : outlines[c]) {
-        if (!keep[v]) continue;
-        ++corners;
-        if (first < 0) first = v;
-        else area += pos[prev].x() * pos[v].y() - pos[v].x() * pos[prev].y();
-        prev = v;
       }
-      area += pos[prev].x() * pos[first].y() - pos[first].x() * pos[prev].y();
-      if (corners < 3 || area <= 0)
-        for (const std::int32_t wi : cell_walls[c]) redo[wi] = 1;
+      auto forBuckets = [&](const Segment& sg, auto&& f) {
+        const Vec3 &p = pos[sg.a], &q = pos[sg.b];
+        const auto bx0 = static_cast<std::size_t>(std::floor((std::min(p.x(), q.x()) + 1) / bucket));
+        const auto bx1 = static_cast<std::size_t>(std::floor((std::max(p.x(), q.x()) + 1) / bucket));
+        const auto by0 = static_cast<std::size_t>(std::floor((std::min(p.y(), q.y()) + 1) / bucket));
+        const auto by1 = static_cast<std::size_t>(std::floor((std::max(p.y(), q.y()) + 1) / bucket));
+        for (std::size_t by = by0; by <= by1; ++by)
+          for (std::size_t bx = bx0; bx <= bx1; ++bx) f(by * nbx + bx);
+      };
+      bucket_off.assign(nbx * nby + 1, 0);
+      for (const Segment& sg : segs) forBuckets(sg, [&](std::size_t b) { ++bucket_off[b + 1]; });
+      std::partial_sum(bucket_off.begin(), bucket_off.end(), bucket_off.begin());
+      bucket_segs.resize(static_cast<std::size_t>(bucket_off.back()));
+      {
+        std::vector<std::int32_t> fill(bucket_off.begin(), bucket_off.end() - 1);
+        for (std::size_t s = 0; s < segs.size(); ++s)
+          forBuckets(segs[s], [&](std::size_t b) { bucket_segs[fill[b]++] = static_cast<std::int32_t>(s); });
+      }
+      // Buckets and cells in parallel: `redo` only ever becomes 1.
+      auto setRedo = [&](std::int32_t wi) {
+        std::atomic_ref<char>(redo[static_cast<std::size_t>(wi)]).store(1, std::memory_order_relaxed);
+      };
+#pragma omp parallel for schedule(dynamic, 4096)
+      for (std::ptrdiff_t b = 0; b < static_cast<std::ptrdiff_t>(nbx * nby); ++b)
+        for (auto i = bucket_off[b]; i < bucket_off[b + 1]; ++i)
+          for (auto j = i + 1; j < bucket_off[b + 1]; ++j) {
+            const Segment &s = segs[bucket_segs[i]], &t = segs[bucket_segs[j]];
+            if ((dirty[s.wall] || dirty[t.wall]) && conflict(s, t, pos)) setRedo(s.wall), setRedo(t.wall);
+          }
+#pragma omp parallel for schedule(dynamic, 1024)
+      for (std::ptrdiff_t cc = 0; cc < static_cast<std::ptrdiff_t>(n_cells); ++cc) {
+        const auto c = static_cast<std::size_t>(cc);
+        bool changed = false;
+        for (auto k = cell_walls.off[c]; k < cell_walls.off[c + 1] && !changed; ++k)
+          changed = dirty[cell_walls.items[k]];
+        if (!changed) continue;
+        double area = 0;
+        std::size_t corners_kept = 0;
+        std::int32_t first = -1, prev = -1;
+        for (auto k = outlines.off[c]; k < outlines.off[c + 1]; ++k) {
+          const std::int32_t v = outlines.items[k];
+          if (!keep[v]) continue;
+          ++corners_kept;
+          if (first < 0) first = v;
+          else area += pos[prev].x() * pos[v].y() - pos[v].x() * pos[prev].y();
+          prev = v;
+        }
+        area += pos[prev].x() * pos[first].y() - pos[first].x() * pos[prev].y();
+        if (corners_kept < 3 || area <= 0)
+          for (auto k = cell_walls.off[c]; k < cell_walls.off[c + 1]; ++k) setRedo(cell_walls.items[k]);
+      }
+      if (std::find(redo.begin(), redo.end(), 1) == redo.end()) break;
+#pragma omp parallel for schedule(dynamic, 1024)
+      for (std::ptrdiff_t wi = 0; wi < static_cast<std::ptrdiff_t>(n_walls); ++wi) {
+        if (!redo[wi] || walls.tol[wi] < 0) continue;
+        walls.tol[wi] = walls.tol[wi] > 1.0 / 64 ? walls.tol[wi] / 2 : -1;
+        simplifyWall(walls, static_cast<std::size_t>(wi), pos, keep);
+      }
+      dirty.swap(redo);
+      if (round > 64) throw InputError(file + ": simplifying the walls did not converge (an internal error)");
     }
-    if (std::find(redo.begin(), redo.end(), 1) == redo.end()) break;
-    for (std::size_t wi = 0; wi < walls.size(); ++wi) {
-      if (!redo[wi]) continue;
-      Wall& wl = walls[wi];
-      if (wl.tol < 0) continue;
-      wl.tol = wl.tol > 1.0 / 64 ? wl.tol / 2 : -1;
-      simplifyWall(wl, pos, keep);
-    }
-    if (round > 64) throw InputError(file + ": simplifying the walls did not converge (an internal error)");
   }
-
   // Positions: corner (x, y) in pixels is the edge of pixel x, at origin + (x - 1/2) * spacing.
+  // In parallel over fixed blocks of vertices, then of cells (the same result for any number of threads).
+  constexpr std::ptrdiff_t kBlocks = 64;
+  std::vector<std::size_t> block_start(kBlocks + 1, 0);
+  auto blockOf = [&](std::ptrdiff_t b) { return static_cast<std::size_t>(b) * n_verts / kBlocks; };
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t b = 0; b < kBlocks; ++b)
+    block_start[static_cast<std::size_t>(b) + 1] =
+        static_cast<std::size_t>(std::count(keep.begin() + static_cast<std::ptrdiff_t>(blockOf(b)),
+                                            keep.begin() + static_cast<std::ptrdiff_t>(blockOf(b + 1)), 1));
+  std::partial_sum(block_start.begin(), block_start.end(), block_start.begin());
+  const std::size_t n_positions = block_start.back();
   std::vector<std::int32_t> new_index(n_verts, -1);
-  std::vector<Vec3> positions;
-  for (std::size_t v = 0; v < n_verts; ++v)
-    if (keep[v]) {
-      new_index[v] = static_cast<std::int32_t>(positions.size());
-      const double x = img.origin[0] + (pos[v].x() + static_cast<double>(x0) - 0.5) * sx;
-      const double y = img.origin[1] + (pos[v].y() + static_cast<double>(y0) - 0.5) * sy;
-      positions.emplace_back(o.scale * x, o.scale * y, 0.0);
-    }
+  std::vector<Vec3> positions(n_positions);
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t b = 0; b < kBlocks; ++b) {
+    std::size_t next = block_start[static_cast<std::size_t>(b)];
+    for (std::size_t v = blockOf(b); v < blockOf(b + 1); ++v)
+      if (keep[v]) {
+        new_index[v] = static_cast<std::int32_t>(next);
+        const double x = img.origin[0] + (pos[v].x() + static_cast<double>(x0) - 0.5) * sx;
+        const double y = img.origin[1] + (pos[v].y() + static_cast<double>(y0) - 0.5) * sy;
+        positions[next++] = Vec3(o.scale * x, o.scale * y, 0.0);
+      }
+  }
   report.file_vertices = 0;
-  report.simplified_vertices = n_verts - positions.size();
-  std::vector<std::vector<Index>> polygons(n_cells);
-  for (std::size_t c = 0; c < n_cells; ++c)
-    for (const std::int32_t v : outlines[c])
-      if (keep[v]) polygons[c].push_back(static_cast<Index>(new_index[v]));
+  report.simplified_vertices = n_verts - n_positions;
+  std::vector<Index> polygon_off(n_cells + 1, 0), polygon_vertices;
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t cc = 0; cc < static_cast<std::ptrdiff_t>(n_cells); ++cc) {
+    const auto c = static_cast<std::size_t>(cc);
+    Index n = 0;
+    for (auto k = outlines.off[c]; k < outlines.off[c + 1]; ++k) n += keep[outlines.items[k]] != 0;
+    polygon_off[c + 1] = n;
+  }
+  std::partial_sum(polygon_off.begin(), polygon_off.end(), polygon_off.begin());
+  polygon_vertices.resize(polygon_off.back());
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t cc = 0; cc < static_cast<std::ptrdiff_t>(n_cells); ++cc) {
+    const auto c = static_cast<std::size_t>(cc);
+    Index next = polygon_off[c];
+    for (auto k = outlines.off[c]; k < outlines.off[c + 1]; ++k)
+      if (const std::int32_t v = outlines.items[k]; keep[v])
+        polygon_vertices[next++] = static_cast<Index>(new_index[v]);
+  }
   try {
-    result.tissue = buildPolygonTissue(positions, polygons, Embedding::Planar);
+    result.tissue = buildPolygonTissue(std::move(positions), polygon_off, polygon_vertices, Embedding::Planar);
   } catch (const Error& e) {
     throw InputError(file + ": the cells do not form a tissue: " + std::string(e.what()));
   }
   auto& label = result.tissue.cellProperties().add<std::int64_t>("label", 0);
   for (std::size_t c = 0; c < n_cells; ++c) label[CellId(static_cast<Index>(c))] = pieces[order[c]].label;
-  report.notes.push_back(std::to_string(n_cells) + " cells, " + std::to_string(walls.size()) + " walls; " +
-                         std::to_string(positions.size()) + " of " + std::to_string(n_verts) +
+  report.notes.push_back(std::to_string(n_cells) + " cells, " + std::to_string(n_walls) + " walls; " +
+                         std::to_string(n_positions) + " of " + std::to_string(n_verts) +
                          " boundary pixel corners kept (simplify " + formatNumber(o.simplify) + " px)");
   return result;
+}
+
+}  // namespace
+
+ImportResult tissueFromLabelImage(const LabelImage& image, const ImportOptions& options) {
+  return convertLabelImage(image, options, nullptr);
+}
+
+ImportResult tissueFromLabelImage(LabelImage&& image, const ImportOptions& options) {
+  return convertLabelImage(image, options, &image.labels);
 }
 
 }  // namespace tessella::io

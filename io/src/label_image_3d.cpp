@@ -21,6 +21,7 @@
 #include "label_image_3d.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -28,6 +29,9 @@
 #include <map>
 #include <numeric>
 #include <unordered_map>
+#include <unordered_set>
+
+#include <omp.h>
 
 #include "cell_complex_core.hpp"
 #include "labelled_surface.hpp"
@@ -140,7 +144,9 @@ std::size_t makeWellComposed(Grid& g, const std::string& name, const std::functi
     for (int b = 0; b < 8; ++b) n += blockDefects(block(cornerOf(v, b)));
     return n;
   };
-  std::vector<std::size_t> work;
+  // The corners with a defect, in parallel over z layers, then in corner order.
+  std::vector<std::vector<std::size_t>> layer_work(static_cast<std::size_t>(g.n[2]));
+#pragma omp parallel for schedule(dynamic, 4)
   for (std::int64_t k = 1; k < g.n[2]; ++k)
     for (std::int64_t j = 1; j < g.n[1]; ++j)
       for (std::int64_t i = 1; i < g.n[0]; ++i) {
@@ -148,8 +154,10 @@ std::size_t makeWellComposed(Grid& g, const std::string& name, const std::functi
         const std::int32_t first = g.cell[g.blockVoxel(c, 0)];
         bool mixed = false;
         for (int b = 1; b < 8 && !mixed; ++b) mixed = g.cell[g.blockVoxel(c, b)] != first;
-        if (mixed && blockDefects(block(c)) > 0) work.push_back(c);
+        if (mixed && blockDefects(block(c)) > 0) layer_work[static_cast<std::size_t>(k)].push_back(c);
       }
+  std::vector<std::size_t> work;
+  for (const auto& lw : layer_work) work.insert(work.end(), lw.begin(), lw.end());
   std::reverse(work.begin(), work.end());  // worked from the back: the first corner first
   std::size_t changed = 0;
   while (!work.empty()) {
@@ -295,7 +303,8 @@ void simplifyPolyline(const Polyline& p, const std::vector<Vec3>& pos, std::vect
 
 }  // namespace
 
-ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& o) {
+ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& o,
+                                    std::vector<std::int64_t>* release) {
   const LabelImageOptions& io = o.image;
   const std::string file = "'" + img.name + "'";
   const auto [nx, ny, nz] = img.dims;
@@ -369,10 +378,14 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
     };
     const Label first = source(0, 0, 0);
     bool several = false;
+    // The labels present, in parallel over z layers (merged as a set: the same for any number of threads).
+#pragma omp parallel reduction(|| : several)
     {
-      Label last = first;
-      bool last_in = false;
-      for (std::int64_t k = 0; k < d; ++k)
+      std::unordered_set<Label> present;
+#pragma omp for schedule(static)
+      for (std::int64_t k = 0; k < d; ++k) {
+        Label last = first;
+        bool last_in = false;
         for (std::int64_t j = 0; j < h; ++j)
           for (std::int64_t i = 0; i < w; ++i) {
             const Label l = source(i, j, k);
@@ -380,8 +393,11 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
             several = several || l != first;
             last = l;
             last_in = true;
-            if (!excluded(l)) id.emplace(l, 0);
+            if (!excluded(l)) present.insert(l);
           }
+      }
+#pragma omp critical
+      for (const Label l : present) id.emplace(l, 0);
     }
     if (!several)
       throw InputError(file + ": the image" + std::string(io.crop.empty() ? "" : " (cropped)") +
@@ -389,7 +405,8 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
     for (const auto& [l, unused] : id) id_label.push_back(l);
     std::sort(id_label.begin(), id_label.end());
     for (std::size_t k = 0; k < id_label.size(); ++k) id[id_label[k]] = static_cast<std::int32_t>(k);
-    g.cell.assign(g.size(), kBackground);
+    g.cell.resize(g.size());
+#pragma omp parallel for schedule(static)
     for (std::int64_t k = 0; k < g.n[2]; ++k)
       for (std::int64_t j = 0; j < g.n[1]; ++j) {
         Label last = 0;
@@ -415,9 +432,21 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
         }
       }
   }
+  if (release) std::vector<std::int64_t>().swap(*release);  // img.labels: read for the last time above
   std::vector<std::int64_t> size(id_label.size(), 0);
-  for (std::int32_t c : g.cell)
-    if (c >= 0) ++size[static_cast<std::size_t>(c)];
+  auto countSizes = [&] {  // voxels per label, summed over per-thread counts
+    std::fill(size.begin(), size.end(), 0);
+#pragma omp parallel
+    {
+      std::vector<std::int64_t> mine(size.size(), 0);
+#pragma omp for schedule(static)
+      for (std::ptrdiff_t v = 0; v < static_cast<std::ptrdiff_t>(g.size()); ++v)
+        if (const std::int32_t c = g.cell[static_cast<std::size_t>(v)]; c >= 0) ++mine[static_cast<std::size_t>(c)];
+#pragma omp critical
+      for (std::size_t l = 0; l < size.size(); ++l) size[l] += mine[l];
+    }
+  };
+  countSizes();
 
   // Small labels: dropped, or merged into the neighbour sharing the most voxel faces.
   std::vector<std::string> small_notes;
@@ -477,9 +506,7 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
     if (!small.empty()) {
       for (std::int32_t& c : g.cell)
         if (c >= 0 && into[static_cast<std::size_t>(c)] != c) c = find(c);
-      std::fill(size.begin(), size.end(), 0);
-      for (std::int32_t c : g.cell)
-        if (c >= 0) ++size[static_cast<std::size_t>(c)];
+      countSizes();
     }
   }
   for (std::size_t k = 0; k < small_notes.size() && k < kMaxNotes; ++k) report.notes.push_back(small_notes[k]);
@@ -577,8 +604,9 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       cell_of_piece[order[c]] = static_cast<std::int32_t>(c);
       cell_label[c] = id_label[static_cast<std::size_t>(pieces[order[c]].id)];
     }
-    for (std::int32_t& c : g.cell)
-      if (c >= 0) c = cell_of_piece[static_cast<std::size_t>(c)];
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t v = 0; v < static_cast<std::ptrdiff_t>(g.size()); ++v)
+      if (std::int32_t& c = g.cell[static_cast<std::size_t>(v)]; c >= 0) c = cell_of_piece[static_cast<std::size_t>(c)];
   }
   auto labelName = [&](std::int32_t c) {
     static const char* sides[6] = {"x = 0", "x = max", "y = 0", "y = max", "z = 0", "z = max"};
@@ -588,60 +616,100 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
   };
 
   // Interface faces: key voxel * 3 + axis for the face between voxel and voxel + axis (ascending).
+  // In parallel over blocks of voxels, joined in voxel order.
   std::vector<std::uint64_t> face_key;
   std::vector<Face> faces;
   RankedSet face_set(3 * g.size());
-  for (std::size_t v = 0; v + g.stride[2] < g.size(); ++v) {
-    const std::int32_t a = g.cell[v];
-    for (int ax = 0; ax < 3; ++ax) {
-      const std::int32_t b = g.cell[v + g.stride[ax]];
-      if (a == b || (a < 0 && b < 0)) continue;
-      face_key.push_back(v * 3 + static_cast<std::uint64_t>(ax));
-      face_set.insert(face_key.back());
-      faces.push_back(a > b ? Face{a, b, true} : Face{b, a, false});
+  {
+    constexpr std::ptrdiff_t kBlocks = 64;
+    const std::size_t n_voxels = g.size() - g.stride[2];
+    std::vector<std::vector<std::uint64_t>> block_keys(kBlocks);
+    std::vector<std::vector<Face>> block_faces(kBlocks);
+#pragma omp parallel for schedule(dynamic, 1)
+    for (std::ptrdiff_t blk = 0; blk < kBlocks; ++blk) {
+      auto& keys = block_keys[static_cast<std::size_t>(blk)];
+      auto& fs = block_faces[static_cast<std::size_t>(blk)];
+      const std::size_t v0 = n_voxels * static_cast<std::size_t>(blk) / kBlocks,
+                        v1 = n_voxels * static_cast<std::size_t>(blk + 1) / kBlocks;
+      for (std::size_t v = v0; v < v1; ++v) {
+        const std::int32_t a = g.cell[v];
+        for (int ax = 0; ax < 3; ++ax) {
+          const std::int32_t b = g.cell[v + g.stride[ax]];
+          if (a == b || (a < 0 && b < 0)) continue;
+          keys.push_back(v * 3 + static_cast<std::uint64_t>(ax));
+          fs.push_back(a > b ? Face{a, b, true} : Face{b, a, false});
+        }
+      }
+    }
+    for (std::size_t blk = 0; blk < kBlocks; ++blk) {
+      for (const std::uint64_t key : block_keys[blk]) face_set.insert(key);
+      face_key.insert(face_key.end(), block_keys[blk].begin(), block_keys[blk].end());
+      faces.insert(faces.end(), block_faces[blk].begin(), block_faces[blk].end());
+      std::vector<std::uint64_t>().swap(block_keys[blk]);
+      std::vector<Face>().swap(block_faces[blk]);
     }
   }
   face_set.finish();
   auto faceIndex = [&](std::uint64_t key) { return static_cast<Index>(face_set.rank(key)); };
 
   // Voxel edges: junctions (three or more labels around) or a joint of two faces of one wall.
+  // In parallel over z layers: each lists its junction edges and the face pairs to join, taken in layer order.
   UnionFind patches(faces.size());
   std::vector<std::uint64_t> junction_edges;  // corner * 3 + axis: from the corner along the axis
   RankedSet junction_set(3 * g.size());
-  for (std::int64_t k = 1; k < g.n[2]; ++k)
-    for (std::int64_t j = 1; j < g.n[1]; ++j)
-      for (std::int64_t i = 1; i < g.n[0]; ++i) {
-        const std::size_t c = g.at(i, j, k);
-        const std::array<std::int64_t, 3> p{i, j, k};
-        for (int ax = 0; ax < 3; ++ax) {
-          if (p[ax] > g.n[ax] - 2) continue;  // the edge would run in the last padding layer
-          const int b = (ax + 1) % 3, cc = (ax + 2) % 3;
-          // The four voxels around the edge, in turn: q0 (-b, -c), q1 (+b, -c), q2 (+b, +c), q3 (-b, +c).
-          const std::size_t q1 = c - g.stride[cc], q3 = c - g.stride[b], q0 = q1 - g.stride[b], q2 = c;
-          const std::int32_t l0 = g.cell[q0], l1 = g.cell[q1], l2 = g.cell[q2], l3 = g.cell[q3];
-          if (l0 == l1 && l1 == l2 && l2 == l3) continue;
-          auto iface = [](std::int32_t x, std::int32_t y) { return x != y && (x >= 0 || y >= 0); };
-          const bool f01 = iface(l0, l1), f12 = iface(l1, l2), f32 = iface(l3, l2), f03 = iface(l0, l3);
-          const int n_faces = f01 + f12 + f32 + f03;
-          if (n_faces == 0) continue;
-          int distinct = 1 + (l1 != l0) + (l2 != l0 && l2 != l1) + (l3 != l0 && l3 != l1 && l3 != l2);
-          if (distinct >= 3) {
-            junction_edges.push_back(c * 3 + static_cast<std::uint64_t>(ax));
-            junction_set.insert(junction_edges.back());
-            continue;
+  {
+    struct Layer {
+      std::vector<std::uint64_t> junctions;
+      std::vector<std::array<Index, 2>> joins;
+      std::string error;
+    };
+    std::vector<Layer> layers(static_cast<std::size_t>(g.n[2]));
+#pragma omp parallel for schedule(dynamic, 4)
+    for (std::int64_t k = 1; k < g.n[2]; ++k) {
+      Layer& layer = layers[static_cast<std::size_t>(k)];
+      for (std::int64_t j = 1; j < g.n[1] && layer.error.empty(); ++j)
+        for (std::int64_t i = 1; i < g.n[0] && layer.error.empty(); ++i) {
+          const std::size_t c = g.at(i, j, k);
+          const std::array<std::int64_t, 3> p{i, j, k};
+          for (int ax = 0; ax < 3; ++ax) {
+            if (p[ax] > g.n[ax] - 2) continue;  // the edge would run in the last padding layer
+            const int b = (ax + 1) % 3, cc = (ax + 2) % 3;
+            // The four voxels around the edge, in turn: q0 (-b, -c), q1 (+b, -c), q2 (+b, +c), q3 (-b, +c).
+            const std::size_t q1 = c - g.stride[cc], q3 = c - g.stride[b], q0 = q1 - g.stride[b], q2 = c;
+            const std::int32_t l0 = g.cell[q0], l1 = g.cell[q1], l2 = g.cell[q2], l3 = g.cell[q3];
+            if (l0 == l1 && l1 == l2 && l2 == l3) continue;
+            auto iface = [](std::int32_t x, std::int32_t y) { return x != y && (x >= 0 || y >= 0); };
+            const bool f01 = iface(l0, l1), f12 = iface(l1, l2), f32 = iface(l3, l2), f03 = iface(l0, l3);
+            const int n_faces = f01 + f12 + f32 + f03;
+            if (n_faces == 0) continue;
+            int distinct = 1 + (l1 != l0) + (l2 != l0 && l2 != l1) + (l3 != l0 && l3 != l1 && l3 != l2);
+            if (distinct >= 3) {
+              layer.junctions.push_back(c * 3 + static_cast<std::uint64_t>(ax));
+              continue;
+            }
+            if (n_faces != 2) {
+              layer.error = file + ": voxels " + voxelName(q0) + " and " + voxelName(q2) +
+                            " touch along an edge only (an internal error: they should have been joined)";
+              break;
+            }
+            std::array<Index, 2> two{};
+            int m = 0;
+            if (f01) two[m++] = faceIndex(q0 * 3 + static_cast<std::uint64_t>(b));
+            if (f12) two[m++] = faceIndex(q1 * 3 + static_cast<std::uint64_t>(cc));
+            if (f32) two[m++] = faceIndex(q3 * 3 + static_cast<std::uint64_t>(b));
+            if (f03) two[m++] = faceIndex(q0 * 3 + static_cast<std::uint64_t>(cc));
+            layer.joins.push_back(two);
           }
-          if (n_faces != 2)
-            throw InputError(file + ": voxels " + voxelName(q0) + " and " + voxelName(q2) +
-                             " touch along an edge only (an internal error: they should have been joined)");
-          std::array<Index, 2> two{};
-          int m = 0;
-          if (f01) two[m++] = faceIndex(q0 * 3 + static_cast<std::uint64_t>(b));
-          if (f12) two[m++] = faceIndex(q1 * 3 + static_cast<std::uint64_t>(cc));
-          if (f32) two[m++] = faceIndex(q3 * 3 + static_cast<std::uint64_t>(b));
-          if (f03) two[m++] = faceIndex(q0 * 3 + static_cast<std::uint64_t>(cc));
-          patches.unite(two[0], two[1]);
         }
-      }
+    }
+    for (Layer& layer : layers) {
+      if (!layer.error.empty()) throw InputError(layer.error);
+      for (const auto& two : layer.joins) patches.unite(two[0], two[1]);
+      for (const std::uint64_t e : layer.junctions) junction_set.insert(e), junction_edges.push_back(e);
+      Layer().joins.swap(layer.joins);
+      Layer().junctions.swap(layer.junctions);
+    }
+  }
   // Corners on junction lines (compact ids, ascending corner index), their degree and whether they are vertices.
   junction_set.finish();
   std::vector<std::uint64_t> corners;
@@ -833,27 +901,43 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
     for (const std::int32_t pl : wall_polylines[p]) polyline_walls[static_cast<std::size_t>(pl)].push_back(
         static_cast<std::int32_t>(p));
   const double voxel_volume = s[0] * s[1] * s[2];
+  const bool check_crossings = o.simplify > 0;  // the staircase (simplify 0) is left as it is
+  // Per wall, kept between rounds for the walls that did not change: 2 fewer than three corners, 1 crossing
+  // itself, 0 fine; the volume its polygon adds to its first cell; its triangles.
+  std::vector<char> wall_state(n_walls, 0);
+  std::vector<double> wall_volume(n_walls, 0);
+  std::vector<std::vector<WallTriangle>> wall_tris_of(n_walls);
+  std::vector<Vec3> points(check_crossings ? n_corners + n_walls : 0);  // every corner, and the fan centres
+  if (check_crossings)
+    for (std::size_t u = 0; u < n_corners; ++u)
+      points[u] = Vec3(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
   for (int round = 0;; ++round) {
     std::vector<char> redo(polylines.size(), 0);
     bool any = false;
     auto redoWall = [&](std::size_t p) {
       for (const std::int32_t pl : wall_polylines[p]) redo[static_cast<std::size_t>(pl)] = 1, any = true;
     };
+    auto redoWallShared = [&](std::size_t p) {  // from several threads: `redo` only ever becomes 1
+      for (const std::int32_t pl : wall_polylines[p])
+        std::atomic_ref<char>(redo[static_cast<std::size_t>(pl)]).store(1, std::memory_order_relaxed);
+    };
     std::fill(six_volume.begin(), six_volume.end(), 0.0);
-    const bool check_crossings = o.simplify > 0;  // the staircase (simplify 0) is left as it is
-    std::vector<WallTriangle> wall_tris;
-    std::vector<Vec3> points(check_crossings ? n_corners + n_walls : 0);
-    std::vector<Vec3> loop_points;
-    for (std::size_t p = 0; p < n_walls; ++p) {
-      loop_points.clear();
+    // Each changed wall's polygon: its check, volume and triangles, in parallel (a wall writes its own
+    // entries and fan centre), then gathered in wall order (the volumes summed in that order).
+#pragma omp parallel for schedule(dynamic, 64)
+    for (std::ptrdiff_t pp = 0; pp < static_cast<std::ptrdiff_t>(n_walls); ++pp) {
+      const auto p = static_cast<std::size_t>(pp);
+      if (!wall_changed[p]) continue;
+      std::vector<Vec3> loop_points;
       for (const std::int32_t u : loops[p])
         if (keep[u]) loop_points.emplace_back(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
+      wall_tris_of[p].clear();
       if (loop_points.size() < 3) {
-        redoWall(p);
+        wall_state[p] = 2;
         continue;
       }
       // A loop crossing itself in its best-fit plane cannot be meshed: simplify it less.
-      if (polygonDefect(loop_points)) redoWall(p);
+      wall_state[p] = polygonDefect(loop_points) ? 1 : 0;
       // The cells' volumes as the tissue will measure them (tissue/geometry.hpp).
       const PolygonTriangulation tri = polygonTriangulation(loop_points);
       double vol = 0;
@@ -863,10 +947,7 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       else
         for (const auto& t : tri.triangles)
           vol += loop_points[t[0]].dot(loop_points[t[1]].cross(loop_points[t[2]]));
-      vol /= voxel_volume;
-      const Face& f = faces[patch_face[p]];
-      six_volume[static_cast<std::size_t>(f.first)] += vol;
-      if (f.second >= 0) six_volume[static_cast<std::size_t>(f.second)] -= vol;
+      wall_volume[p] = vol / voxel_volume;
       if (check_crossings) {  // the wall's triangles, as the tissue and the mesher make them
         std::vector<std::int32_t> ids;
         for (const std::int32_t u : loops[p])
@@ -875,13 +956,24 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
           const auto centre = static_cast<std::int32_t>(n_corners + p);
           points[static_cast<std::size_t>(centre)] = tri.center;
           for (std::size_t i = 0; i < k; ++i)
-            wall_tris.push_back({{centre, ids[i], ids[(i + 1) % k]}, static_cast<std::int32_t>(p)});
+            wall_tris_of[p].push_back({{centre, ids[i], ids[(i + 1) % k]}, static_cast<std::int32_t>(p)});
         } else {
           for (const auto& t : tri.triangles)
-            wall_tris.push_back({{ids[t[0]], ids[t[1]], ids[t[2]]}, static_cast<std::int32_t>(p)});
+            wall_tris_of[p].push_back({{ids[t[0]], ids[t[1]], ids[t[2]]}, static_cast<std::int32_t>(p)});
         }
-        for (std::size_t i = 0; i < k; ++i) points[static_cast<std::size_t>(ids[i])] = loop_points[i];
       }
+    }
+    std::vector<WallTriangle> wall_tris;
+    for (std::size_t p = 0; p < n_walls; ++p) {
+      if (wall_state[p] == 2) {
+        redoWall(p);
+        continue;
+      }
+      if (wall_state[p] == 1) redoWall(p);
+      const Face& f = faces[patch_face[p]];
+      six_volume[static_cast<std::size_t>(f.first)] += wall_volume[p];
+      if (f.second >= 0) six_volume[static_cast<std::size_t>(f.second)] -= wall_volume[p];
+      wall_tris.insert(wall_tris.end(), wall_tris_of[p].begin(), wall_tris_of[p].end());
     }
     if (check_crossings) {
       // Triangles of two walls that cross (away from shared corners): both walls are simplified less.
@@ -911,9 +1003,14 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       }
       std::sort(buckets.begin(), buckets.end());
       const double slack = 1e-9 * bucket;
-      for (std::size_t i = 0; i < buckets.size();) {
-        std::size_t j = i;
-        while (j < buckets.size() && buckets[j].first == buckets[i].first) ++j;
+      std::vector<std::size_t> group_start;  // the buckets' runs in the sorted list, tested in parallel
+      for (std::size_t i = 0; i < buckets.size(); ++i)
+        if (i == 0 || buckets[i].first != buckets[i - 1].first) group_start.push_back(i);
+      group_start.push_back(buckets.size());
+#pragma omp parallel for schedule(dynamic, 256)
+      for (std::ptrdiff_t gi = 0; gi < static_cast<std::ptrdiff_t>(group_start.size()) - 1; ++gi) {
+        const std::size_t i = group_start[static_cast<std::size_t>(gi)],
+                          j = group_start[static_cast<std::size_t>(gi) + 1];
         for (std::size_t a = i; a < j; ++a)
           for (std::size_t b = a + 1; b < j; ++b) {
             const std::int32_t x = buckets[a].second, y = buckets[b].second;
@@ -922,10 +1019,10 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
             const Vec3 lo_o = box[x][0].cwiseMax(box[y][0]), hi_o = box[x][1].cwiseMin(box[y][1]);
             if ((lo_o.array() > hi_o.array() + slack).any()) continue;
             if (key(cellOf(lo_o)) != buckets[i].first) continue;
-            if (trianglesCross(ta.v, tb.v, points)) redoWall(ta.wall), redoWall(tb.wall);
+            if (trianglesCross(ta.v, tb.v, points)) redoWallShared(ta.wall), redoWallShared(tb.wall);
           }
-        i = j;
       }
+      any = any || std::find(redo.begin(), redo.end(), 1) != redo.end();
     }
     for (std::size_t c = 0; c < n_cells; ++c)
       if (six_volume[c] < 3.0 * static_cast<double>(pieces[order[c]].voxels))  // lost more than half its volume

@@ -10,7 +10,9 @@ namespace tessella::io::detail {
 
 /// The 3D tissue of a label image with more than one z layer
 /// (docs/import.md, "3D label images"); `options` already checked by
-/// checkImportOptions.
-ImportResult tissueFromLabelImage3d(const LabelImage& image, const ImportOptions& options);
+/// checkImportOptions. `release`, when given, is image.labels, emptied once
+/// read (lower peak memory).
+ImportResult tissueFromLabelImage3d(const LabelImage& image, const ImportOptions& options,
+                                    std::vector<std::int64_t>* release = nullptr);
 
 }  // namespace tessella::io::detail

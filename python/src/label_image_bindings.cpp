@@ -87,7 +87,7 @@ void bindLabelImage(py::module_& m) {
           img = imageFromArray(py::array::ensure(image), voxel_size, origin);
         }
         if (voxel_size) o.image.voxel_size = *voxel_size;  // checked (and named) as an option
-        io::ImportResult r = io::tissueFromLabelImage(img, o);
+        io::ImportResult r = io::tissueFromLabelImage(std::move(img), o);
         r.report.format = "label_image";
         return py::make_tuple(std::move(r.tissue), importReportDict(r.report));
       },

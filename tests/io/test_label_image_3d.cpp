@@ -9,9 +9,12 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <random>
 #include <set>
+#include <sstream>
 
 #include <catch2/catch.hpp>
+#include <omp.h>
 #include <vtkImageData.h>
 #include <vtkMetaImageWriter.h>
 #include <vtkPointData.h>
@@ -314,3 +317,44 @@ TEST_CASE("3D label image errors name the file, the label and the value", "[io][
                     Contains("'drawn': the interface between label 3 and label 2") && Contains("closed surface"));
 }
 
+
+TEST_CASE("3D imports are the same bit for bit on one thread and on two", "[io][label_image]") {
+  // A Voronoi tissue with a speck of a new label every few hundred voxels, merged into its neighbours.
+  LabelImage img = rasterise(voronoi3d(40, 11).seeds, 32);
+  std::mt19937 rng(4);
+  std::int64_t speck = 1000;
+  for (std::size_t v = 0; v < img.labels.size(); v += 200 + rng() % 200) img.labels[v] = speck++;
+  auto dump = [](const Tissue& t) {
+    std::ostringstream out;
+    out << std::hexfloat;
+    for (VertexId v : t.vertices()) out << t.position(v).transpose() << ';';
+    for (WallId w : t.walls()) {
+      out << '\n';
+      for (VertexId v : t.topology().faceVertices(FaceId(w.index()))) out << ' ' << v.index();
+    }
+    const auto& label = t.cellProperties().get<std::int64_t>("label");
+    for (CellId c : t.cells()) {
+      out << '\n' << label[c] << ':';
+      for (const OrientedFace f : t.topology().volumeFaces(VolumeId(c.index())))
+        out << ' ' << f.handle().index() << (f.reversed() ? '-' : '+');
+    }
+    return out.str();
+  };
+  const int threads = omp_get_max_threads();
+  for (const double simplify : {0.0, 1.0}) {
+    ImportOptions o;
+    o.simplify = simplify;
+    o.image.keep_pieces = true;
+    o.image.min_cell_size = 3;
+    o.image.small_cells = "merge";
+    omp_set_num_threads(1);
+    const ImportResult one = tissueFromLabelImage(img, o);
+    omp_set_num_threads(2);
+    const ImportResult two = tissueFromLabelImage(img, o);
+    INFO("simplify " << simplify);
+    CHECK(one.tissue.numCells() > 30);
+    CHECK(one.report.notes == two.report.notes);
+    CHECK(dump(one.tissue) == dump(two.tissue));
+  }
+  omp_set_num_threads(threads);
+}

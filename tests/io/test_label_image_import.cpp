@@ -8,10 +8,14 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
+#include <random>
 #include <set>
+#include <sstream>
 
 #include <catch2/catch.hpp>
+#include <omp.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkMetaImageWriter.h>
@@ -531,4 +535,161 @@ TEST_CASE("label image errors name the file, the label and the value", "[io][lab
     const auto areas = areasByLabel(r.tissue);
     CHECK(areas.at(2) == Approx(1.0));  // 4 pixels of 0.5 x 0.5
   }
+}
+
+namespace {
+
+// A random label image of `labels` labels in blobs (noise smoothed by a few majority votes over 3 x 3 pixels):
+// many cells, pieces, diagonal contacts and background.
+LabelImage blobs(std::uint32_t seed, std::int64_t w, std::int64_t h, int labels, int smoothing) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> pick(0, labels - 1);
+  LabelImage img;
+  img.name = "blobs " + std::to_string(seed);
+  img.dims = {w, h, 1};
+  img.labels.resize(static_cast<std::size_t>(w * h));
+  for (auto& l : img.labels) l = pick(rng);
+  for (int pass = 0; pass < smoothing; ++pass) {
+    std::vector<std::int64_t> next = img.labels;
+    for (std::int64_t j = 0; j < h; ++j)
+      for (std::int64_t i = 0; i < w; ++i) {
+        std::map<std::int64_t, int> votes;
+        for (std::int64_t dj = -1; dj <= 1; ++dj)
+          for (std::int64_t di = -1; di <= 1; ++di)
+            if (i + di >= 0 && i + di < w && j + dj >= 0 && j + dj < h)
+              ++votes[img.labels[static_cast<std::size_t>((j + dj) * w + i + di)]];
+        int most = 0;
+        for (const auto& [l, n] : votes)
+          if (n > most) most = n, next[static_cast<std::size_t>(j * w + i)] = l;
+      }
+    img.labels = std::move(next);
+  }
+  return img;
+}
+
+// What the image says directly, per label, in the import's rules (docs/import.md, "Algorithm"): its area,
+// the shoelace sum over its boundary pixel edges, each end of an edge at a pinched corner moved a quarter pixel
+// along the bridge's diagonal to the side the edge leaves the corner on; the pairs of labels sharing a pixel
+// edge; the labels on the border or next to background.
+struct ImageFacts {
+  std::map<std::int64_t, double> area;
+  std::set<std::pair<std::int64_t, std::int64_t>> pairs;
+  std::set<std::int64_t> border;
+};
+
+ImageFacts factsOf(const LabelImage& img, const std::vector<std::int64_t>& background) {
+  const std::int64_t w = img.dims[0], h = img.dims[1];
+  constexpr std::int64_t kOut = std::numeric_limits<std::int64_t>::min();
+  auto at = [&](std::int64_t i, std::int64_t j) {
+    if (i < 0 || j < 0 || i >= w || j >= h) return kOut;
+    const std::int64_t l = img.labels[static_cast<std::size_t>(j * w + i)];
+    return std::find(background.begin(), background.end(), l) != background.end() ? kOut : l;
+  };
+  // Corner (x, y) is the lower left corner of pixel (x, y); an edge leaves it down (0), right (1), up (2) or
+  // left (3).
+  auto corner = [&](std::int64_t x, std::int64_t y, int axis) {
+    const std::int64_t a = at(x - 1, y - 1), b = at(x, y - 1), c = at(x - 1, y), d = at(x, y);
+    const bool ad = a == d && b != a && c != a, bc = b == c && a != b && d != b;
+    const double px = static_cast<double>(x), py = static_cast<double>(y), q = 0.25;
+    if (!ad && !bc) return std::array<double, 2>{px, py};
+    const bool use_ad = ad && bc ? (b == kOut ? true : a == kOut ? false : a < b) : ad;
+    if (use_ad) return axis <= 1 ? std::array<double, 2>{px + q, py - q} : std::array<double, 2>{px - q, py + q};
+    return axis == 0 || axis == 3 ? std::array<double, 2>{px - q, py - q} : std::array<double, 2>{px + q, py + q};
+  };
+  ImageFacts f;
+  for (std::int64_t j = -1; j <= h; ++j)
+    for (std::int64_t i = -1; i <= w; ++i) {
+      const std::int64_t a = at(i, j);
+      for (const std::int64_t b : {at(i + 1, j), at(i, j + 1)}) {
+        if (a == b || (a == kOut && b == kOut)) continue;
+        if (a == kOut || b == kOut) f.border.insert(a == kOut ? b : a);
+        else f.pairs.insert(std::minmax(a, b));
+      }
+      if (a == kOut) continue;
+      // The pixel's edges counter-clockwise: bottom, right, top, left, each from (corner, axis leaving it) to
+      // (corner, axis), and the pixel across it.
+      struct Side {
+        std::int64_t x0, y0;
+        int axis0;
+        std::int64_t x1, y1;
+        int axis1;
+        std::int64_t other;
+      };
+      const Side sides[4] = {{i, j, 1, i + 1, j, 3, at(i, j - 1)},
+                             {i + 1, j, 2, i + 1, j + 1, 0, at(i + 1, j)},
+                             {i + 1, j + 1, 3, i, j + 1, 1, at(i, j + 1)},
+                             {i, j + 1, 0, i, j, 2, at(i - 1, j)}};
+      for (const Side& s : sides) {
+        if (s.other == a) continue;
+        const auto p = corner(s.x0, s.y0, s.axis0), q = corner(s.x1, s.y1, s.axis1);
+        f.area[a] += 0.5 * (p[0] * q[1] - q[0] * p[1]);
+      }
+    }
+  return f;
+}
+
+// Everything of a tissue, to compare two imports bit for bit.
+std::string dump(const Tissue& t) {
+  std::ostringstream out;
+  out << std::hexfloat;
+  for (VertexId v : t.vertices()) out << t.position(v).x() << ' ' << t.position(v).y() << ';';
+  const auto& label = t.cellProperties().get<std::int64_t>("label");
+  for (CellId c : t.cells()) {
+    out << '\n' << label[c] << ':';
+    for (VertexId v : t.topology().faceVertices(t.cellFace(c))) out << ' ' << v.index();
+  }
+  return out.str();
+}
+
+}  // namespace
+
+TEST_CASE("2D imports keep each label's pixel area and its pixel-edge neighbours", "[io][label_image]") {
+  int imported = 0;
+  for (std::uint32_t seed = 1; seed <= 60; ++seed) {
+    const std::int64_t w = 8 + seed % 23, h = 5 + (seed * 7) % 29;
+    const LabelImage img = blobs(seed, w, h, 3 + static_cast<int>(seed % 5), static_cast<int>(seed % 3));
+    LabelImageOptions options;
+    options.keep_pieces = true;
+    options.background = seed % 2 ? std::vector<std::int64_t>{0} : std::vector<std::int64_t>{};
+    INFO("seed " << seed);
+    ImportResult r{Tissue(2, Embedding::Planar), {}};
+    try {
+      r = tissueFromLabelImage(img, withImage(options));
+    } catch (const InputError& e) {
+      CHECK_THAT(e.what(), Contains("has a hole"));  // the one error random blobs may give
+      continue;
+    }
+    ++imported;
+    REQUIRE(validate(r.tissue).ok);
+    const ImageFacts want = factsOf(img, options.background);
+    std::map<std::int64_t, double> area;  // summed over the pieces of a label
+    const auto& label = r.tissue.cellProperties().get<std::int64_t>("label");
+    for (CellId c : r.tissue.cells()) area[label[c]] += cellMeasure(r.tissue, c);
+    REQUIRE(area.size() == want.area.size());
+    for (const auto& [l, a] : want.area) CHECK(area.at(l) == Approx(a).margin(1e-9));
+    std::set<std::pair<std::int64_t, std::int64_t>> pairs;
+    for (const auto& [pair, length] : neighbourPairs(r.tissue, true))
+      if (pair.first != pair.second) pairs.insert(pair);
+    CHECK(pairs == want.pairs);
+    CHECK(boundaryCells(r.tissue, true) == want.border);
+  }
+  CHECK(imported >= 20);
+}
+
+TEST_CASE("2D imports are the same bit for bit on one thread and on two", "[io][label_image]") {
+  const int threads = omp_get_max_threads();
+  const LabelImage voronoi = rasterise(voronoi200(), 512);
+  for (const bool merge : {false, true})
+    for (const double simplify : {0.0, 1.0, 2.5}) {
+      LabelImageOptions options;  // merged: the background too, and more cells into their neighbours
+      options.keep_pieces = true;
+      if (merge) options.background = {}, options.min_cell_size = 1500, options.small_cells = "merge";
+      omp_set_num_threads(1);
+      const std::string one = dump(tissueFromLabelImage(voronoi, withImage(options, simplify)).tissue);
+      omp_set_num_threads(2);
+      const std::string two = dump(tissueFromLabelImage(voronoi, withImage(options, simplify)).tissue);
+      INFO("merge " << merge << ", simplify " << simplify);
+      CHECK(one == two);
+    }
+  omp_set_num_threads(threads);
 }

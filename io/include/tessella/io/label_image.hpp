@@ -39,4 +39,10 @@ LabelImage readLabelImage(const std::string& path);
 /// image.name, the label and the value for each defect; nothing is built.
 ImportResult tissueFromLabelImage(const LabelImage& image, const ImportOptions& options);
 
+/// The same, releasing image.labels as soon as they are read (the first pass
+/// over the pixels), which lowers the peak memory of a large import by the
+/// image's size: what importTissue and the Python module do with an image
+/// they read.
+ImportResult tissueFromLabelImage(LabelImage&& image, const ImportOptions& options);
+
 }  // namespace tessella::io
