@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "tessella/networks/pin_expression.hpp"
 #include "tessella/networks/reaction_set.hpp"
 #include "tessella/tissue/errors.hpp"
 
@@ -19,8 +20,12 @@ double CsrMatrix::at(std::size_t r, std::size_t c) const {
 }
 
 namespace {
-int other(const NetworkInterface& f, std::size_t c) { return f.cell_i == static_cast<int>(c) ? f.cell_j : f.cell_i; }
-std::size_t otherCell(const NetworkInterface& f, std::size_t c) { return static_cast<std::size_t>(other(f, c)); }
+int other(const NetworkInterface& f, std::size_t c) {
+  return f.cell_i == static_cast<int>(c) ? f.cell_j : f.cell_i;
+}
+std::size_t otherCell(const NetworkInterface& f, std::size_t c) {
+  return static_cast<std::size_t>(other(f, c));
+}
 
 // J(r, c) += v on a fixed pattern.
 void addAt(CsrMatrix& J, std::size_t r, std::size_t c, double v) {
@@ -34,10 +39,11 @@ void addAt(CsrMatrix& J, std::size_t r, std::size_t c, double v) {
 
 const EnumTable<JacobianKind>& jacobianKinds() {
   static const EnumTable<JacobianKind> table(
-      "Jacobian", {{"exact", JacobianKind::Exact, "The exact derivative dF/dy."},
-                   {"neighbours", JacobianKind::Neighbours,
-                    "dF/dy without the second-neighbour terms of PIN transport: sparser, an approximation "
-                    "for the Newton iteration (conserves amounts all the same)."}});
+      "Jacobian",
+      {{"exact", JacobianKind::Exact, "The exact derivative dF/dy."},
+       {"neighbours", JacobianKind::Neighbours,
+        "dF/dy without the second-neighbour terms of PIN transport: sparser, an approximation "
+        "for the Newton iteration (conserves amounts all the same)."}});
   return table;
 }
 
@@ -47,11 +53,19 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
   graph_.validate();
   for (const std::string& p : model_.cell_properties)
     if (!graph_.properties.count(p))
-      throw InputError("network: the cell property '" + p + "' the reactions read is not in the graph");
+      throw InputError("network: the cell property '" + p +
+                       "' the reactions read is not in the graph");
   reactions_ = std::make_unique<ReactionSet>(model_);
-  for (const std::string& name : model_.cell_properties) property_columns_.push_back(&graph_.properties.at(name));
+  for (const std::string& name : model_.cell_properties)
+    property_columns_.push_back(&graph_.properties.at(name));
   property_values_.assign(property_columns_.size(), 0.0);
   pin_species_ = model_.pin.enabled() ? model_.speciesIndex(model_.pin.species) : -1;
+  const bool dynamic = model_.pin.dynamic();
+  if (dynamic && model_.pin.model == PinModel::Expression)
+    pin_expression_ = std::make_unique<PinExpression>(model_);
+  pin_cell_coupled_ =
+      dynamic && (model_.pin.model == PinModel::Expression ? pin_expression_->usesPinCell()
+                                                           : model_.pin.bounded);
   const std::size_t n = numCells(), S = numSpecies();
   neighbours_.assign(n, {});
   for (std::size_t f = 0; f < graph_.interfaces.size(); ++f) {
@@ -75,27 +89,52 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
         for (std::size_t f : neighbours_[c]) {
           const auto j = static_cast<std::size_t>(other(graph_.interfaces[f], c));
           cols.push_back(index(j, s));
-          if (pinned && jacobian_kind_ == JacobianKind::Exact)
-            for (std::size_t g : neighbours_[j]) cols.push_back(index(otherCell(graph_.interfaces[g], j), s));
+          if (pinned && dynamic) {
+            cols.push_back(pinIndex(f, 0));
+            cols.push_back(pinIndex(f, 1));
+          } else if (pinned && jacobian_kind_ == JacobianKind::Exact) {
+            for (std::size_t g : neighbours_[j])
+              cols.push_back(index(otherCell(graph_.interfaces[g], j), s));
+          }
         }
       std::sort(cols.begin(), cols.end());
       cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
       pattern_.column.insert(pattern_.column.end(), cols.begin(), cols.end());
       pattern_.row_start[index(c, s) + 1] = pattern_.column.size();
     }
+  // Dynamic PIN: the density on cell o's side of interface k reads both cells' amounts, both sides'
+  // densities and, when coupled, every density on o's side of its interfaces.
+  for (std::size_t k = 0; k < numPinStates() / 2; ++k)
+    for (int side = 0; side < 2; ++side) {
+      const NetworkInterface& f = graph_.interfaces[k];
+      const auto o = static_cast<std::size_t>(side == 0 ? f.cell_i : f.cell_j);
+      const auto a = static_cast<std::size_t>(pin_species_);
+      cols = {index(static_cast<std::size_t>(f.cell_i), a),
+              index(static_cast<std::size_t>(f.cell_j), a), pinIndex(k, 0), pinIndex(k, 1)};
+      if (pin_cell_coupled_)
+        for (std::size_t g : neighbours_[o])
+          cols.push_back(pinIndex(g, graph_.interfaces[g].cell_i == static_cast<int>(o) ? 0 : 1));
+      std::sort(cols.begin(), cols.end());
+      cols.erase(std::unique(cols.begin(), cols.end()), cols.end());
+      pattern_.column.insert(pattern_.column.end(), cols.begin(), cols.end());
+      pattern_.row_start[pinIndex(k, side) + 1] = pattern_.column.size();
+    }
   pattern_.value.assign(pattern_.column.size(), 0.0);
   pin_denominator_.assign(n, 0.0);
   pin_weight_.assign(n, 0.0);
   pin_weight_derivative_.assign(n, 0.0);
-  conc_.assign(size(), 0.0);
+  conc_.assign(n * S, 0.0);
+  pin_cell_.assign(n, 0.0);
 }
 
 NetworkSystem::~NetworkSystem() = default;
 
 void NetworkSystem::evaluateReactions(double t, std::size_t cell, std::span<const double> conc,
                                       std::span<double> rate) {
-  for (std::size_t k = 0; k < property_columns_.size(); ++k) property_values_[k] = (*property_columns_[k])[cell];
-  reactions_->evaluate(t, cell, graph_.measure[cell], graph_.centroid[cell], property_values_, conc, rate);
+  for (std::size_t k = 0; k < property_columns_.size(); ++k)
+    property_values_[k] = (*property_columns_[k])[cell];
+  reactions_->evaluate(t, cell, graph_.measure[cell], graph_.centroid[cell], property_values_, conc,
+                       rate);
 }
 
 void NetworkSystem::rhs(double t, std::span<const double> y, std::span<double> ydot) {
@@ -123,6 +162,25 @@ void NetworkSystem::rhs(double t, std::span<const double> y, std::span<double> y
       ydot[index(i, s)] -= J;
       ydot[index(j, s)] += J;
     }
+  }
+  if (model_.pin.dynamic()) {
+    // PIN as a state: T L_ij (p_ij c_i - p_ji c_j) from i to j, and the densities' rates.
+    const auto a = static_cast<std::size_t>(pin_species_);
+    const double T = model_.pin.rate;
+    for (std::size_t k = 0; k < graph_.interfaces.size(); ++k) {
+      const NetworkInterface& f = graph_.interfaces[k];
+      const auto i = static_cast<std::size_t>(f.cell_i), j = static_cast<std::size_t>(f.cell_j);
+      const double J =
+          T * f.measure *
+          (y[pinIndex(k, 0)] * conc_[index(i, a)] - y[pinIndex(k, 1)] * conc_[index(j, a)]);
+      ydot[index(i, a)] -= J;
+      ydot[index(j, a)] += J;
+    }
+    pinCellAmounts(y);
+    for (std::size_t k = 0; k < graph_.interfaces.size(); ++k)
+      for (int side = 0; side < 2; ++side)
+        ydot[pinIndex(k, side)] = pinRate(t, k, side, y, nullptr);
+    return;
   }
   // PIN efflux: T PIN_ij c_i from i to j, both directions of every interface.
   if (pin_species_ >= 0) {
@@ -152,9 +210,53 @@ void NetworkSystem::pinDenominators() {
   }
 }
 
+void NetworkSystem::pinCellAmounts(std::span<const double> y) {
+  std::fill(pin_cell_.begin(), pin_cell_.end(), 0.0);
+  for (std::size_t k = 0; k < graph_.interfaces.size(); ++k) {
+    const NetworkInterface& f = graph_.interfaces[k];
+    pin_cell_[static_cast<std::size_t>(f.cell_i)] += f.measure * y[pinIndex(k, 0)];
+    pin_cell_[static_cast<std::size_t>(f.cell_j)] += f.measure * y[pinIndex(k, 1)];
+  }
+}
+
+double NetworkSystem::pinRate(double t, std::size_t k, int side, std::span<const double> y,
+                              std::array<double, 8>* partial) {
+  using E = PinExpression;
+  const NetworkInterface& f = graph_.interfaces[k];
+  const auto o = static_cast<std::size_t>(side == 0 ? f.cell_i : f.cell_j);
+  const auto q = static_cast<std::size_t>(side == 0 ? f.cell_j : f.cell_i);
+  const auto a = static_cast<std::size_t>(pin_species_);
+  const PinTransport& pin = model_.pin;
+  E::Arguments v{};
+  v[E::kCi] = conc_[index(o, a)];
+  v[E::kCj] = conc_[index(q, a)];
+  v[E::kPin] = y[pinIndex(k, side)];
+  v[E::kPinOpposite] = y[pinIndex(k, 1 - side)];
+  v[E::kFlux] = pin.rate * (v[E::kPin] * v[E::kCi] - v[E::kPinOpposite] * v[E::kCj]) +
+                model_.species[a].permeability * (v[E::kCi] - v[E::kCj]);
+  v[E::kWall] = f.measure;
+  v[E::kMeasure] = graph_.measure[o];
+  v[E::kPinCell] = pin_cell_[o];
+  if (pin_expression_) {
+    if (partial) *partial = pin_expression_->derivatives(t, v, o, q);
+    return pin_expression_->evaluate(t, v, o, q);
+  }
+  // with_the_flux: (basal + production h(phi)) B - decay p.
+  const double B = pin.bounded ? 1.0 - v[E::kPinCell] / pin.total : 1.0;
+  const double made = pin.basal + pin.production * pin.fluxResponse(v[E::kFlux]);
+  if (partial) {
+    partial->fill(0.0);
+    (*partial)[E::kPin] = -pin.decay;
+    (*partial)[E::kFlux] = pin.production * pin.fluxResponseDerivative(v[E::kFlux]) * B;
+    if (pin.bounded) (*partial)[E::kPinCell] = -made / pin.total;
+  }
+  return made * B - pin.decay * v[E::kPin];
+}
+
 bool NetworkSystem::inPattern(std::size_t r, std::size_t c) const {
-  return std::binary_search(pattern_.column.begin() + static_cast<std::ptrdiff_t>(pattern_.row_start[r]),
-                            pattern_.column.begin() + static_cast<std::ptrdiff_t>(pattern_.row_start[r + 1]), c);
+  return std::binary_search(
+      pattern_.column.begin() + static_cast<std::ptrdiff_t>(pattern_.row_start[r]),
+      pattern_.column.begin() + static_cast<std::ptrdiff_t>(pattern_.row_start[r + 1]), c);
 }
 
 void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) {
@@ -177,7 +279,8 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
         cc[q] = keep - h;
         evaluateReactions(t, c, cc, down);
         cc[q] = keep;
-        for (std::size_t s = 0; s < S; ++s) addAt(J, index(c, s), index(c, q), (up[s] - down[s]) / (2 * h));
+        for (std::size_t s = 0; s < S; ++s)
+          addAt(J, index(c, s), index(c, q), (up[s] - down[s]) / (2 * h));
       }
     }
   }
@@ -193,7 +296,48 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
       addAt(J, index(j, s), index(j, s), dj);
     }
   }
-  if (pin_species_ >= 0) {
+  if (model_.pin.dynamic()) {
+    using E = PinExpression;
+    const auto a = static_cast<std::size_t>(pin_species_);
+    const double T = model_.pin.rate, P = model_.species[a].permeability;
+    for (std::size_t k = 0; k < graph_.interfaces.size(); ++k) {
+      const NetworkInterface& f = graph_.interfaces[k];
+      const auto i = static_cast<std::size_t>(f.cell_i), j = static_cast<std::size_t>(f.cell_j);
+      const double TL = T * f.measure;
+      // J = T L (p_ij c_i - p_ji c_j), taken from i and given to j.
+      auto add = [&](std::size_t col, double dJ) {
+        addAt(J, index(i, a), col, -dJ);
+        addAt(J, index(j, a), col, dJ);
+      };
+      add(index(i, a), TL * y[pinIndex(k, 0)] / graph_.measure[i]);
+      add(index(j, a), -TL * y[pinIndex(k, 1)] / graph_.measure[j]);
+      add(pinIndex(k, 0), TL * conc_[index(i, a)]);
+      add(pinIndex(k, 1), -TL * conc_[index(j, a)]);
+    }
+    pinCellAmounts(y);
+    std::array<double, 8> d{};
+    for (std::size_t k = 0; k < graph_.interfaces.size(); ++k)
+      for (int side = 0; side < 2; ++side) {
+        const NetworkInterface& f = graph_.interfaces[k];
+        const auto o = static_cast<std::size_t>(side == 0 ? f.cell_i : f.cell_j);
+        const auto q = static_cast<std::size_t>(side == 0 ? f.cell_j : f.cell_i);
+        pinRate(t, k, side, y, &d);
+        const std::size_t r = pinIndex(k, side);
+        const double p_own = y[pinIndex(k, side)], p_opp = y[pinIndex(k, 1 - side)];
+        const double c_o = conc_[index(o, a)], c_q = conc_[index(q, a)];
+        // phi = T (p_own c_o - p_opp c_q) + P (c_o - c_q).
+        addAt(J, r, index(o, a), (d[E::kCi] + d[E::kFlux] * (T * p_own + P)) / graph_.measure[o]);
+        addAt(J, r, index(q, a), (d[E::kCj] - d[E::kFlux] * (T * p_opp + P)) / graph_.measure[q]);
+        addAt(J, r, pinIndex(k, side), d[E::kPin] + d[E::kFlux] * T * c_o);
+        addAt(J, r, pinIndex(k, 1 - side), d[E::kPinOpposite] - d[E::kFlux] * T * c_q);
+        if (pin_cell_coupled_)
+          for (std::size_t g : neighbours_[o]) {
+            const NetworkInterface& h = graph_.interfaces[g];
+            addAt(J, r, pinIndex(g, h.cell_i == static_cast<int>(o) ? 0 : 1),
+                  d[E::kPinCell] * h.measure);
+          }
+      }
+  } else if (pin_species_ >= 0) {
     const auto p = static_cast<std::size_t>(pin_species_);
     const PinTransport& pin = model_.pin;
     for (std::size_t c = 0; c < n; ++c) {
@@ -220,9 +364,11 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
         add(j, TP * ci * L * pin_weight_derivative_[j] / D);
         for (std::size_t g : neighbours_[i]) {
           const auto m = static_cast<std::size_t>(other(graph_.interfaces[g], i));
-          // Neighbours: leave out the pair of entries when the receiver's row lacks m (a second neighbour).
+          // Neighbours: leave out the pair of entries when the receiver's row lacks m (a second
+          // neighbour).
           if (jacobian_kind_ == JacobianKind::Neighbours && !inPattern(rj, index(m, p))) continue;
-          add(m, -TP * ci * L * pin_weight_[j] * graph_.interfaces[g].measure * pin_weight_derivative_[m] / (D * D));
+          add(m, -TP * ci * L * pin_weight_[j] * graph_.interfaces[g].measure *
+                     pin_weight_derivative_[m] / (D * D));
         }
       }
     }
@@ -232,6 +378,13 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
 std::vector<PinSides> NetworkSystem::pin(std::span<const double> y) const {
   std::vector<PinSides> out(graph_.interfaces.size());
   if (pin_species_ < 0) return out;
+  if (model_.pin.dynamic()) {
+    for (std::size_t k = 0; k < out.size(); ++k) {
+      out[k].ij = graph_.interfaces[k].measure * y[pinIndex(k, 0)];
+      out[k].ji = graph_.interfaces[k].measure * y[pinIndex(k, 1)];
+    }
+    return out;
+  }
   const auto p = static_cast<std::size_t>(pin_species_);
   const PinTransport& pin = model_.pin;
   const std::size_t n = numCells();
@@ -246,6 +399,20 @@ std::vector<PinSides> NetworkSystem::pin(std::span<const double> y) const {
     const auto i = static_cast<std::size_t>(f.cell_i), j = static_cast<std::size_t>(f.cell_j);
     if (D[i] > 0) out[k].ij = pin.total * f.measure * w[j] / D[i];
     if (D[j] > 0) out[k].ji = pin.total * f.measure * w[i] / D[j];
+  }
+  return out;
+}
+
+std::vector<PinSides> NetworkSystem::pinDensity(std::span<const double> y) const {
+  if (model_.pin.dynamic()) {
+    std::vector<PinSides> out(graph_.interfaces.size());
+    for (std::size_t k = 0; k < out.size(); ++k) out[k] = {y[pinIndex(k, 0)], y[pinIndex(k, 1)]};
+    return out;
+  }
+  std::vector<PinSides> out = pin(y);
+  for (std::size_t k = 0; k < out.size(); ++k) {
+    const double L = graph_.interfaces[k].measure;
+    out[k] = L > 0 ? PinSides{out[k].ij / L, out[k].ji / L} : PinSides{};
   }
   return out;
 }
