@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tessella/sim/stages/network_stage.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -34,25 +35,50 @@ NetworkStage::NetworkStage(NetworkSpec spec) : spec_(std::move(spec)), schedule_
   if (spec_.every < 1) throw InputError("network: every must be >= 1");
   if (spec_.primordia.enabled()) {
     if (spec_.model.speciesIndex(spec_.primordia.species) < 0)
-      throw InputError("network: primordia species '" + spec_.primordia.species + "' is not a species");
+      throw InputError("network: primordia species '" + spec_.primordia.species +
+                       "' is not a species");
     spec_.primordia.options.validate();
   }
 }
 
 namespace {
 const std::string kPrimordiaKey = "network.primordia";
+const std::string kPinKey = "network.pin";
+
+PropertyColumn<double>& pinWallColumn(Tissue& tissue, const std::string& name, double initial) {
+  PropertyStore& store = tissue.wallProperties();
+  if (const PropertyColumnBase* c = store.find(name);
+      c && c->type() != std::type_index(typeid(double)))
+    throw InputError("wall property '" + name + "' exists and does not hold numbers (double)");
+  if (!store.has(name)) store.add<double>(name, initial, DivisionPolicy::Copy);
+  return store.get<double>(name);
+}
+
+// Whether the first of a wall's two saved densities is on its positive side: the first is on the
+// side of the cell with the smaller lineage id (a boundary wall: of its cell). Lineage ids survive
+// a snapshot, the wall's orientation need not.
+bool firstIsPositive(const Tissue& tissue, WallId w) {
+  const std::vector<CellId> two = tissue.wallCells(w);
+  if (two.empty()) return true;
+  CellId a = two[0];
+  if (two.size() == 2 && tissue.lineageId(two[1]) < tissue.lineageId(a)) a = two[1];
+  return networks::onPositiveSide(tissue, w, a);
+}
 
 PropertyColumn<int>& primordiumColumn(Tissue& tissue) {
   PropertyStore& store = tissue.cellProperties();
-  if (const PropertyColumnBase* c = store.find(kPrimordiumProperty); c && c->type() != std::type_index(typeid(int)))
-    throw InputError(std::string("cell property '") + kPrimordiumProperty + "' exists and does not hold ints");
+  if (const PropertyColumnBase* c = store.find(kPrimordiumProperty);
+      c && c->type() != std::type_index(typeid(int)))
+    throw InputError(std::string("cell property '") + kPrimordiumProperty +
+                     "' exists and does not hold ints");
   if (!store.has(kPrimordiumProperty)) store.add<int>(kPrimordiumProperty, 0, DivisionPolicy::Copy);
   return store.get<int>(kPrimordiumProperty);
 }
 }  // namespace
 
 void NetworkStage::detectPrimordia(Tissue& tissue, const std::vector<CellId>& cells,
-                                   const networks::NetworkSystem& system, const std::vector<double>& y, double time) {
+                                   const networks::NetworkSystem& system,
+                                   const std::vector<double>& y, double time) {
   const networks::NetworkGraph& graph = system.graph();
   const std::size_t S = system.numSpecies();
   const auto s = static_cast<std::size_t>(spec_.model.speciesIndex(spec_.primordia.species));
@@ -84,28 +110,80 @@ void NetworkStage::detectPrimordia(Tissue& tissue, const std::vector<CellId>& ce
     r.angle_deg = a.angle_deg;
     r.radius = a.radius;
     r.distance = a.distance;
-    r.divergence_deg = primordia_.empty() ? std::numeric_limits<double>::quiet_NaN()
-                                          : networks::divergenceDeg(primordia_.back().angle_deg, a.angle_deg);
+    r.divergence_deg = primordia_.empty()
+                           ? std::numeric_limits<double>::quiet_NaN()
+                           : networks::divergenceDeg(primordia_.back().angle_deg, a.angle_deg);
     id[cells[u]] = r.id;
     primordia_.push_back(r);
   }
 }
 
-void NetworkStage::saveState(const Tissue& /*tissue*/, const std::string& /*snapshot_path*/,
+std::string NetworkStage::pinWallProperty(const std::string& species, bool positive_side) {
+  return species + (positive_side ? "_pin_pos" : "_pin_neg");
+}
+
+void NetworkStage::saveState(const Tissue& tissue, const std::string& /*snapshot_path*/,
                              const io::VtuOptions& /*options*/, io::RunState& state) const {
+  const networks::PinTransport& pin = spec_.model.pin;
+  const PropertyStore& walls = tissue.wallProperties();
+  if (pin.dynamic() && walls.has(pinWallProperty(pin.species, true)) &&
+      walls.has(pinWallProperty(pin.species, false))) {
+    const auto& pos = walls.get<double>(pinWallProperty(pin.species, true));
+    const auto& neg = walls.get<double>(pinWallProperty(pin.species, false));
+    std::string text;
+    for (WallId w : tissue.walls()) {
+      const bool first = firstIsPositive(tissue, w);
+      if (!text.empty()) text += " ";
+      text += formatNumber(first ? pos[w] : neg[w]) + " " + formatNumber(first ? neg[w] : pos[w]);
+    }
+    state[kPinKey] = text;
+  }
   if (!spec_.primordia.enabled()) return;
   std::string text;
   for (const PrimordiumRecord& r : primordia_) {
     if (!text.empty()) text += ";";
-    text += std::to_string(r.id) + " " + formatNumber(r.time) + " " + std::to_string(r.lineage) + " " +
-            formatNumber(r.position.x()) + " " + formatNumber(r.position.y()) + " " + formatNumber(r.position.z()) +
-            " " + formatNumber(r.angle_deg) + " " + formatNumber(r.radius) + " " + formatNumber(r.distance) + " " +
+    text += std::to_string(r.id) + " " + formatNumber(r.time) + " " + std::to_string(r.lineage) +
+            " " + formatNumber(r.position.x()) + " " + formatNumber(r.position.y()) + " " +
+            formatNumber(r.position.z()) + " " + formatNumber(r.angle_deg) + " " +
+            formatNumber(r.radius) + " " + formatNumber(r.distance) + " " +
             (std::isnan(r.divergence_deg) ? std::string("nan") : formatNumber(r.divergence_deg));
   }
   state[kPrimordiaKey] = text;
 }
 
-void NetworkStage::continueFrom(const std::string& /*snapshot_path*/, const io::RunState& state) {
+void NetworkStage::restorePin(Tissue& tissue) {
+  const auto& [snapshot, text] = *restart_pin_;
+  const networks::PinTransport& pin = spec_.model.pin;
+  std::vector<double> values;
+  std::istringstream in(text);
+  std::string word;
+  while (in >> word) {
+    char* end = nullptr;
+    const double v = std::strtod(word.c_str(), &end);
+    if (word.empty() || *end != '\0' || !std::isfinite(v))
+      throw InputError("snapshot '" + snapshot + "': its run state " + kPinKey + " holds '" + word +
+                       "', not a number");
+    values.push_back(v);
+  }
+  if (values.size() != 2 * tissue.numWalls())
+    throw InputError("snapshot '" + snapshot + "': its run state has " +
+                     std::to_string(values.size()) + " PIN densities (" + kPinKey + ") for " +
+                     std::to_string(tissue.numWalls()) + " walls (two each)");
+  auto& pos = pinWallColumn(tissue, pinWallProperty(pin.species, true), pin.initial);
+  auto& neg = pinWallColumn(tissue, pinWallProperty(pin.species, false), pin.initial);
+  std::size_t k = 0;
+  for (WallId w : tissue.walls()) {
+    const bool first = firstIsPositive(tissue, w);
+    (first ? pos : neg)[w] = values[k];
+    (first ? neg : pos)[w] = values[k + 1];
+    k += 2;
+  }
+}
+
+void NetworkStage::continueFrom(const std::string& snapshot_path, const io::RunState& state) {
+  restart_pin_.reset();
+  if (const auto it = state.find(kPinKey); it != state.end() && spec_.model.pin.dynamic())
+    restart_pin_ = std::make_pair(snapshot_path, it->second);
   primordia_.clear();
   if (!spec_.primordia.enabled()) return;
   const auto it = state.find(kPrimordiaKey);
@@ -121,12 +199,14 @@ void NetworkStage::continueFrom(const std::string& /*snapshot_path*/, const io::
     auto number = [&](const std::string& t) {
       char* end = nullptr;
       const double v = std::strtod(t.c_str(), &end);
-      if (t.empty() || *end != '\0') throw InputError("run state " + kPrimordiaKey + ": '" + t + "' in '" + item +
-                                                      "' is not a number");
+      if (t.empty() || *end != '\0')
+        throw InputError("run state " + kPrimordiaKey + ": '" + t + "' in '" + item +
+                         "' is not a number");
       return v;
     };
     if (n != 10 || (in >> extra))
-      throw InputError("run state " + kPrimordiaKey + ": '" + item + "' is not 10 values (id time lineage x y z "
+      throw InputError("run state " + kPrimordiaKey + ": '" + item +
+                       "' is not 10 values (id time lineage x y z "
                        "angle radius distance divergence)");
     PrimordiumRecord r;
     r.id = static_cast<int>(number(f[0]));
@@ -150,8 +230,49 @@ std::vector<std::string> NetworkStage::cellPropertiesWritten() const {
   return out;
 }
 
-void NetworkStage::writeOutputs(Tissue& tissue, const std::vector<CellId>& cells, networks::NetworkSystem& system,
-                                const std::vector<double>& y) {
+std::vector<double> NetworkStage::readState(
+    Tissue& tissue, const std::vector<CellId>& cells,
+    const std::vector<std::vector<networks::InterfaceWall>>& walls,
+    const networks::NetworkSystem& system, const std::vector<double>& amounts) {
+  std::vector<double> y(system.size(), 0.0);
+  std::copy(amounts.begin(), amounts.end(), y.begin());
+  const networks::PinTransport& pin = spec_.model.pin;
+  if (!pin.dynamic() || cells.empty()) return y;
+  const auto& pos = pinWallColumn(tissue, pinWallProperty(pin.species, true), pin.initial);
+  const auto& neg = pinWallColumn(tissue, pinWallProperty(pin.species, false), pin.initial);
+  // An interface's density on a side: its walls' (equal after every solve), or their
+  // measure-weighted mean.
+  for (std::size_t k = 0; k < walls.size(); ++k)
+    for (int side = 0; side < 2; ++side) {
+      double sum = 0.0, measure = 0.0, first = 0.0;
+      bool equal = true;
+      for (std::size_t u = 0; u < walls[k].size(); ++u) {
+        const networks::InterfaceWall& w = walls[k][u];
+        const double v = (w.i_positive == (side == 0)) ? pos[w.wall] : neg[w.wall];
+        if (u == 0) first = v;
+        equal = equal && v == first;
+        sum += w.measure * v;
+        measure += w.measure;
+      }
+      y[system.pinIndex(k, side)] = equal || !(measure > 0) ? first : sum / measure;
+    }
+  return y;
+}
+
+void NetworkStage::writeOutputs(Tissue& tissue, const std::vector<CellId>& cells,
+                                const std::vector<std::vector<networks::InterfaceWall>>& walls,
+                                networks::NetworkSystem& system, const std::vector<double>& y,
+                                bool write_pin) {
+  const networks::PinTransport& pin = spec_.model.pin;
+  if (pin.dynamic() && write_pin) {
+    auto& pos = pinWallColumn(tissue, pinWallProperty(pin.species, true), pin.initial);
+    auto& neg = pinWallColumn(tissue, pinWallProperty(pin.species, false), pin.initial);
+    for (std::size_t k = 0; k < walls.size(); ++k)
+      for (const networks::InterfaceWall& w : walls[k]) {
+        (w.i_positive ? pos : neg)[w.wall] = y[system.pinIndex(k, 0)];
+        (w.i_positive ? neg : pos)[w.wall] = y[system.pinIndex(k, 1)];
+      }
+  }
   const std::size_t S = system.numSpecies();
   for (std::size_t s = 0; s < S; ++s) {
     const std::string& name = spec_.model.species[s].name;
@@ -165,7 +286,8 @@ void NetworkStage::writeOutputs(Tissue& tissue, const std::vector<CellId>& cells
   if (spec_.model.pin.enabled()) {
     const std::string name = spec_.model.pin.species + "_polarity";
     PropertyStore& store = tissue.cellProperties();
-    if (const PropertyColumnBase* c = store.find(name); c && c->type() != std::type_index(typeid(Vec3)))
+    if (const PropertyColumnBase* c = store.find(name);
+        c && c->type() != std::type_index(typeid(Vec3)))
       throw InputError("cell property '" + name + "' exists and does not hold vectors (Vec3)");
     if (!store.has(name)) store.add<Vec3>(name, Vec3::Zero(), DivisionPolicy::Copy);
     auto& polarity = store.get<Vec3>(name);
@@ -175,13 +297,22 @@ void NetworkStage::writeOutputs(Tissue& tissue, const std::vector<CellId>& cells
 }
 
 void NetworkStage::prepare(Tissue& tissue, double /*time*/) {
+  const networks::PinTransport& pin = spec_.model.pin;
+  if (pin.dynamic()) {
+    if (restart_pin_) restorePin(tissue);
+    pinWallColumn(tissue, pinWallProperty(pin.species, true), pin.initial);
+    pinWallColumn(tissue, pinWallProperty(pin.species, false), pin.initial);
+  }
   GeometryCache geometry;
   std::vector<CellId> cells;
-  networks::NetworkGraph graph = networks::networkGraph(tissue, geometry, spec_.model.cell_properties, &cells);
+  std::vector<std::vector<networks::InterfaceWall>> walls;
+  networks::NetworkGraph graph =
+      networks::networkGraph(tissue, geometry, spec_.model.cell_properties, &cells, &walls);
   const std::size_t S = spec_.model.species.size();
   bool present = true;
   for (const auto& s : spec_.model.species)
-    present = present && tissue.cellProperties().has(s.name + "_amount") && tissue.cellProperties().has(s.name);
+    present = present && tissue.cellProperties().has(s.name + "_amount") &&
+              tissue.cellProperties().has(s.name);
   std::vector<double> y(S * cells.size());
   if (present) {
     // A snapshot of the run: continue from its amounts.
@@ -195,7 +326,8 @@ void NetworkStage::prepare(Tissue& tissue, double /*time*/) {
     for (std::size_t s = 0; s < S; ++s) {
       std::vector<double> c;
       try {
-        c = networks::initialConcentrations(spec_.initial[s], graph, spec_.model.parameters, spec_.noise[s], rng);
+        c = networks::initialConcentrations(spec_.initial[s], graph, spec_.model.parameters,
+                                            spec_.noise[s], rng);
       } catch (const InputError& e) {
         throw InputError("network: species '" + spec_.model.species[s].name + "': " + e.what());
       }
@@ -203,7 +335,8 @@ void NetworkStage::prepare(Tissue& tissue, double /*time*/) {
     }
   }
   networks::NetworkSystem system(spec_.model, std::move(graph));
-  writeOutputs(tissue, cells, system, y);
+  // The walls keep their densities (a restart's, or pin.initial) until the first solve.
+  writeOutputs(tissue, cells, walls, system, readState(tissue, cells, walls, system, y), false);
   if (spec_.primordia.enabled()) primordiumColumn(tissue);  // in the first snapshot already
 }
 
@@ -213,23 +346,27 @@ void NetworkStage::apply(Tissue& tissue, const StepContext& context) {
   GeometryCache own;
   GeometryCache& geometry = context.geometry ? *context.geometry : own;
   std::vector<CellId> cells;
-  networks::NetworkGraph graph = networks::networkGraph(tissue, geometry, spec_.model.cell_properties, &cells);
+  std::vector<std::vector<networks::InterfaceWall>> walls;
+  networks::NetworkGraph graph =
+      networks::networkGraph(tissue, geometry, spec_.model.cell_properties, &cells, &walls);
   const std::size_t S = spec_.model.species.size();
-  std::vector<double> y(S * cells.size());
+  std::vector<double> amounts(S * cells.size());
   for (std::size_t s = 0; s < S; ++s) {
-    const auto& amount =
-        detail::doubleColumn(tissue, spec_.model.species[s].name + "_amount", DivisionPolicy::SplitByMeasure);
-    for (std::size_t k = 0; k < cells.size(); ++k) y[k * S + s] = amount[cells[k]];
+    const auto& amount = detail::doubleColumn(tissue, spec_.model.species[s].name + "_amount",
+                                              DivisionPolicy::SplitByMeasure);
+    for (std::size_t k = 0; k < cells.size(); ++k) amounts[k * S + s] = amount[cells[k]];
   }
   networks::NetworkSystem system(spec_.model, std::move(graph), spec_.jacobian);
+  std::vector<double> y = readState(tissue, cells, walls, system, amounts);
   if (elapsed > 0 && !cells.empty()) {
     networks::NetworkIntegrator integrator(system, spec_.integrator);
     const double t1 = context.time + context.dt;
     integrator.advance(y, t1 - elapsed, t1);
     stats_ += integrator.statistics();
   }
-  writeOutputs(tissue, cells, system, y);
-  if (spec_.primordia.enabled() && elapsed > 0) detectPrimordia(tissue, cells, system, y, context.end_time);
+  writeOutputs(tissue, cells, walls, system, y, true);
+  if (spec_.primordia.enabled() && elapsed > 0)
+    detectPrimordia(tissue, cells, system, y, context.end_time);
   schedule_.solved(context);
 }
 

@@ -8,16 +8,23 @@
 // division, so divisions conserve it) and its concentration (<species>,
 // amount / measure after each solve; growth dilutes it). With PIN transport
 // the polarity of each cell (sum of PIN times outward wall normal) is the
-// Vec3 cell property <species>_polarity. With primordium detection
+// Vec3 cell property <species>_polarity. With a dynamic PIN model
+// (with_the_flux, expression) the PIN densities are the double wall
+// properties <species>_pin_pos and <species>_pin_neg (the density on the
+// wall's positive and negative side, networks::onPositiveSide; copied when a
+// wall is split, so a density is kept; a new wall starts at pin.initial), and
+// the snapshot's run state carries them (network.pin) for restarts. With primordium detection
 // (NetworkSpec::primordia) each new primordium's cell gets its id in the int
 // cell property `primordium` (0: none; copied to daughters) and a record
 // (time, lineage id, position, angle, radius, divergence) that the snapshot's
 // run state carries across restarts. docs/networks.md.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "tessella/networks/network_graph.hpp"
 #include "tessella/networks/network_integrator.hpp"
 #include "tessella/networks/network_model.hpp"
 #include "tessella/networks/network_system.hpp"
@@ -36,14 +43,14 @@ struct PrimordiaSpec {
 
 /// One primordium as it started.
 struct PrimordiumRecord {
-  int id = 0;                 ///< 1, 2, ... in order of appearance (the cell property's value)
-  double time = 0.0;          ///< end of the solve that found it
-  std::int64_t lineage = 0;   ///< the cell's lineage id
+  int id = 0;                    ///< 1, 2, ... in order of appearance (the cell property's value)
+  double time = 0.0;             ///< end of the solve that found it
+  std::int64_t lineage = 0;      ///< the cell's lineage id
   Vec3 position = Vec3::Zero();  ///< the cell's centroid
-  double angle_deg = 0.0;     ///< about the dome's axis, [0, 360)
-  double radius = 0.0;        ///< distance from the axis
-  double distance = 0.0;      ///< straight-line distance from the apex
-  double divergence_deg = 0.0;  ///< from the previous primordium, [0, 360); NaN for the first
+  double angle_deg = 0.0;        ///< about the dome's axis, [0, 360)
+  double radius = 0.0;           ///< distance from the axis
+  double distance = 0.0;         ///< straight-line distance from the apex
+  double divergence_deg = 0.0;   ///< from the previous primordium, [0, 360); NaN for the first
 };
 
 /// The cell property holding each cell's primordium id.
@@ -83,22 +90,38 @@ class NetworkStage final : public Stage {
   const NetworkSpec& spec() const { return spec_; }
   /// The primordia found so far, in order of appearance.
   const std::vector<PrimordiumRecord>& primordia() const { return primordia_; }
-  /// The primordia records under "network.primordia" (exact numbers).
-  void saveState(const Tissue& tissue, const std::string& snapshot_path, const io::VtuOptions& options,
-                 io::RunState& state) const override;
-  /// Restores the records (InputError naming the key and the value when damaged).
+  /// The primordia records under "network.primordia" and, with a dynamic PIN
+  /// model, the PIN densities under "network.pin" (exact numbers; per live
+  /// wall in slot order, the density on the side of the cell with the smaller
+  /// lineage id, or a boundary wall's cell, then on the other side).
+  void saveState(const Tissue& tissue, const std::string& snapshot_path,
+                 const io::VtuOptions& options, io::RunState& state) const override;
+  /// Restores the records (InputError naming the key and the value when damaged)
+  /// and keeps the PIN densities for prepare().
   void continueFrom(const std::string& snapshot_path, const io::RunState& state) override;
+  /// The wall properties holding the PIN density on each side of the walls.
+  static std::string pinWallProperty(const std::string& species, bool positive_side);
 
  private:
-  void writeOutputs(Tissue& tissue, const std::vector<CellId>& cells, networks::NetworkSystem& system,
-                    const std::vector<double>& y);
-  void detectPrimordia(Tissue& tissue, const std::vector<CellId>& cells, const networks::NetworkSystem& system,
-                       const std::vector<double>& y, double time);
+  void writeOutputs(Tissue& tissue, const std::vector<CellId>& cells,
+                    const std::vector<std::vector<networks::InterfaceWall>>& walls,
+                    networks::NetworkSystem& system, const std::vector<double>& y, bool write_pin);
+  // The state: amounts from the cells, PIN densities (dynamic models) from the walls.
+  std::vector<double> readState(Tissue& tissue, const std::vector<CellId>& cells,
+                                const std::vector<std::vector<networks::InterfaceWall>>& walls,
+                                const networks::NetworkSystem& system,
+                                const std::vector<double>& amounts);
+  void restorePin(Tissue& tissue);
+  void detectPrimordia(Tissue& tissue, const std::vector<CellId>& cells,
+                       const networks::NetworkSystem& system, const std::vector<double>& y,
+                       double time);
 
   NetworkSpec spec_;
   SolveSchedule schedule_;
   networks::IntegratorStatistics stats_;
   std::vector<PrimordiumRecord> primordia_;
+  std::optional<std::pair<std::string, std::string>>
+      restart_pin_;  // snapshot path, its network.pin text
 };
 
 }  // namespace tessella::sim
