@@ -13,27 +13,26 @@ namespace tessella::networks {
 void NetworkGraph::validate() const {
   const auto n = static_cast<int>(measure.size());
   if (centroid.size() != measure.size())
-    throw InputError("network graph: " + std::to_string(centroid.size()) + " centroids for " +
-                     std::to_string(n) + " cells");
+    throw InputError("network graph: " + std::to_string(centroid.size()) + " centroids for " + std::to_string(n) +
+                     " cells");
   for (int c = 0; c < n; ++c)
     if (!(std::isfinite(measure[c]) && measure[c] > 0.0))
-      throw InputError("network graph: cell " + std::to_string(c) + " has measure " +
-                       std::to_string(measure[c]) + "; it must be > 0");
+      throw InputError("network graph: cell " + std::to_string(c) + " has measure " + std::to_string(measure[c]) +
+                       "; it must be > 0");
   for (std::size_t k = 0; k < interfaces.size(); ++k) {
     const NetworkInterface& f = interfaces[k];
     if (f.cell_i < 0 || f.cell_j < 0 || f.cell_i >= n || f.cell_j >= n || f.cell_i == f.cell_j)
-      throw InputError("network graph: interface " + std::to_string(k) + " joins cells " +
-                       std::to_string(f.cell_i) + " and " + std::to_string(f.cell_j) +
-                       "; they must be distinct and in [0, " + std::to_string(n) + ")");
+      throw InputError("network graph: interface " + std::to_string(k) + " joins cells " + std::to_string(f.cell_i) +
+                       " and " + std::to_string(f.cell_j) + "; they must be distinct and in [0, " +
+                       std::to_string(n) + ")");
     if (!(std::isfinite(f.measure) && f.measure >= 0.0))
       throw InputError("network graph: interface " + std::to_string(k) + " has measure " +
                        std::to_string(f.measure) + "; it must be >= 0");
   }
   for (const auto& [name, values] : properties)
     if (values.size() != measure.size())
-      throw InputError("network graph: property '" + name + "' has " +
-                       std::to_string(values.size()) + " values for " + std::to_string(n) +
-                       " cells");
+      throw InputError("network graph: property '" + name + "' has " + std::to_string(values.size()) +
+                       " values for " + std::to_string(n) + " cells");
 }
 
 namespace {
@@ -73,13 +72,10 @@ bool onPositiveSide(const Tissue& tissue, WallId wall, CellId cell) {
                    std::to_string(cell.index()));
 }
 
-NetworkGraph networkGraph(const Tissue& tissue, GeometryCache& geometry,
-                          const std::vector<std::string>& properties,
-                          std::vector<CellId>* cells_out,
-                          std::vector<std::vector<InterfaceWall>>* walls_out) {
+NetworkGraph networkGraph(const Tissue& tissue, GeometryCache& geometry, const std::vector<std::string>& properties,
+                          std::vector<CellId>* cells_out, std::vector<std::vector<InterfaceWall>>* walls_out) {
   if (walls_out) walls_out->clear();
-  geometry.require(
-      tissue, tissue.dim() == 2 ? kCellMeasures | GeometryQuantity::EdgeLengths : kCellMeasures);
+  geometry.require(tissue, tissue.dim() == 2 ? kCellMeasures | GeometryQuantity::EdgeLengths : kCellMeasures);
   NetworkGraph g;
   std::vector<int> index(tissue.cellSlots(), -1);
   std::vector<CellId> cells;
@@ -100,8 +96,7 @@ NetworkGraph networkGraph(const Tissue& tissue, GeometryCache& geometry,
       std::swap(i, j);
       cell_i = two[1];
     }
-    const double m =
-        tissue.dim() == 2 ? geometry.edge_length[w.index()] : geometry.face_area[w.index()];
+    const double m = tissue.dim() == 2 ? geometry.edge_length[w.index()] : geometry.face_area[w.index()];
     const Vec3 n = wallNormal(tissue, geometry, w, g.centroid[static_cast<std::size_t>(i)]);
     const std::uint64_t key = (static_cast<std::uint64_t>(i) << 32) | static_cast<std::uint32_t>(j);
     auto [it, fresh] = pair_index.emplace(key, g.interfaces.size());

@@ -8,8 +8,8 @@
 #include <sunlinsol/sunlinsol_klu.h>
 #include <sunlinsol/sunlinsol_spgmr.h>
 
-#include <sunmatrix/sunmatrix_sparse.h>
 #include <Eigen/Dense>
+#include <sunmatrix/sunmatrix_sparse.h>
 
 #include <chrono>
 #include <cmath>
@@ -42,16 +42,13 @@ const EnumTable<LinearSolver>& linearSolvers() {
       "linear solver",
       {{"klu", LinearSolver::Klu, "Sparse LU (KLU) of the Newton matrix: exact solves."},
        {"gmres", LinearSolver::Gmres,
-        "GMRES with a block-Jacobi preconditioner per cell: much cheaper per solve on large "
-        "tissues."}});
+        "GMRES with a block-Jacobi preconditioner per cell: much cheaper per solve on large tissues."}});
   return table;
 }
 
 namespace {
 using Clock = std::chrono::steady_clock;
-double since(Clock::time_point a) {
-  return std::chrono::duration<double>(Clock::now() - a).count();
-}
+double since(Clock::time_point a) { return std::chrono::duration<double>(Clock::now() - a).count(); }
 }  // namespace
 
 struct NetworkIntegrator::Impl {
@@ -65,16 +62,12 @@ struct NetworkIntegrator::Impl {
   std::exception_ptr failure;  // an exception thrown inside a callback
   std::string last_message;    // CVODE's last error message
   std::size_t species = 0;     // S: the size of a preconditioner block
-  std::size_t cells =
-      0;  // n: the amounts are the first n S entries of the state (then PIN densities)
-  std::vector<std::size_t>
-      conserved;  // GMRES: the species without reactions (their totals are kept)
-  std::vector<double>
-      block_inverse;  // GMRES: per cell, the S x S inverse of I - gamma J's block (column-major)
+  std::size_t cells = 0;       // n: the amounts are the first n S entries of the state (then PIN densities)
+  std::vector<std::size_t> conserved;  // GMRES: the species without reactions (their totals are kept)
+  std::vector<double> block_inverse;  // GMRES: per cell, the S x S inverse of I - gamma J's block (column-major)
   bool timers = false;
   IntegratorStatistics* stats = nullptr;  // where the timers add
-  // The linear solver's own setup and solve, wrapped by timedSetup / timedSolve (timers,
-  // conservation).
+  // The linear solver's own setup and solve, wrapped by timedSetup / timedSolve (timers, conservation).
   int (*inner_setup)(SUNLinearSolver, SUNMatrix) = nullptr;
   int (*inner_solve)(SUNLinearSolver, SUNMatrix, N_Vector, N_Vector, realtype) = nullptr;
   // The integrator whose linear solver runs (the wrappers receive only the solver).
@@ -91,8 +84,7 @@ struct NetworkIntegrator::Impl {
   static int timedSetup(SUNLinearSolver S, SUNMatrix A) {
     Impl* self = active;
     const auto a = Clock::now();
-    const double jacobian_before =
-        self->stats->jacobian_seconds;  // GMRES' setup evaluates the Jacobian
+    const double jacobian_before = self->stats->jacobian_seconds;  // GMRES' setup evaluates the Jacobian
     const int flag = self->inner_setup(S, A);
     self->stats->setup_seconds += since(a) - (self->stats->jacobian_seconds - jacobian_before);
     return flag;
@@ -105,17 +97,16 @@ struct NetworkIntegrator::Impl {
     double* out = N_VGetArrayPointer_Serial(Jv);
     for (std::size_t r = 0; r < J.rows; ++r) {
       double sum = 0.0;
-      for (std::size_t k = J.row_start[r]; k < J.row_start[r + 1]; ++k)
-        sum += J.value[k] * x[J.column[k]];
+      for (std::size_t k = J.row_start[r]; k < J.row_start[r + 1]; ++k) sum += J.value[k] * x[J.column[k]];
       out[r] = sum;
     }
     return 0;
   }
 
-  // GMRES' preconditioner setup: a new Jacobian unless CVODE says the last is good (jok), then per
-  // cell the inverse of the species block of I - gamma J.
-  static int psetup(realtype t, N_Vector y, N_Vector fy, booleantype jok, booleantype* jcur,
-                    realtype gamma, void* data) {
+  // GMRES' preconditioner setup: a new Jacobian unless CVODE says the last is good (jok), then per cell
+  // the inverse of the species block of I - gamma J.
+  static int psetup(realtype t, N_Vector y, N_Vector fy, booleantype jok, booleantype* jcur, realtype gamma,
+                    void* data) {
     auto* self = static_cast<Impl*>(data);
     if (!jok) {
       if (jac(t, y, fy, nullptr, data, nullptr, nullptr, nullptr) != 0) return -1;
@@ -131,8 +122,7 @@ struct NetworkIntegrator::Impl {
         for (std::size_t b = 0; b < S; ++b)
           block(a, b) = (a == b ? 1.0 : 0.0) - gamma * self->J.at(c * S + a, c * S + b);
       Eigen::PartialPivLU<Eigen::MatrixXd> lu(block);
-      if (!(std::abs(lu.determinant()) > 0))
-        return 1;  // recoverable: CVODE retries with a smaller step
+      if (!(std::abs(lu.determinant()) > 0)) return 1;  // recoverable: CVODE retries with a smaller step
       Eigen::Map<Eigen::MatrixXd>(&self->block_inverse[c * S * S], static_cast<Eigen::Index>(S),
                                   static_cast<Eigen::Index>(S)) = lu.inverse();
     }
@@ -145,8 +135,7 @@ struct NetworkIntegrator::Impl {
     return 0;
   }
 
-  static int psolve(realtype, N_Vector, N_Vector, N_Vector r, N_Vector z, realtype, realtype, int,
-                    void* data) {
+  static int psolve(realtype, N_Vector, N_Vector, N_Vector r, N_Vector z, realtype, realtype, int, void* data) {
     auto* self = static_cast<Impl*>(data);
     const std::size_t S = self->species, n = self->cells;
     const double* in = N_VGetArrayPointer_Serial(r);
@@ -159,8 +148,7 @@ struct NetworkIntegrator::Impl {
         out[c * S + a] = sum;
       }
     }
-    for (std::size_t k = n * S; k < self->J.rows; ++k)
-      out[k] = self->block_inverse[n * S * S + (k - n * S)] * in[k];
+    for (std::size_t k = n * S; k < self->J.rows; ++k) out[k] = self->block_inverse[n * S * S + (k - n * S)] * in[k];
     return 0;
   }
   static int timedSolve(SUNLinearSolver S, SUNMatrix A, N_Vector x, N_Vector b, realtype tol) {
@@ -175,11 +163,10 @@ struct NetworkIntegrator::Impl {
     return flag;
   }
 
-  // GMRES: for a species without reactions, the columns of I - gamma J sum to one over its rows
-  // (transport moves amounts), so an exact solve x of (I - gamma J) x = b has sum x = sum b over
-  // the cells: the Newton iteration keeps the total amount. GMRES' approximate x does not; adding
-  // the missing amount evenly to every cell restores the sum (a change within the linear solver's
-  // tolerance).
+  // GMRES: for a species without reactions, the columns of I - gamma J sum to one over its rows (transport
+  // moves amounts), so an exact solve x of (I - gamma J) x = b has sum x = sum b over the cells: the Newton
+  // iteration keeps the total amount. GMRES' approximate x does not; adding the missing amount evenly to
+  // every cell restores the sum (a change within the linear solver's tolerance).
   void conserve(N_Vector xv, N_Vector bv) const {
     const double* bb = N_VGetArrayPointer_Serial(bv);
     double* xx = N_VGetArrayPointer_Serial(xv);
@@ -214,8 +201,7 @@ struct NetworkIntegrator::Impl {
     }
   }
 
-  static int jac(realtype t, N_Vector y, N_Vector /*fy*/, SUNMatrix A, void* data, N_Vector,
-                 N_Vector, N_Vector) {
+  static int jac(realtype t, N_Vector y, N_Vector /*fy*/, SUNMatrix A, void* data, N_Vector, N_Vector, N_Vector) {
     auto* self = static_cast<Impl*>(data);
     const auto start = self->timers ? Clock::now() : Clock::time_point{};
     struct Timer {
@@ -233,8 +219,7 @@ struct NetworkIntegrator::Impl {
       sunindextype* rowptr = SUNSparseMatrix_IndexPointers(A);
       sunindextype* colidx = SUNSparseMatrix_IndexValues(A);
       realtype* values = SUNSparseMatrix_Data(A);
-      for (std::size_t r = 0; r <= J.rows; ++r)
-        rowptr[r] = static_cast<sunindextype>(J.row_start[r]);
+      for (std::size_t r = 0; r <= J.rows; ++r) rowptr[r] = static_cast<sunindextype>(J.row_start[r]);
       for (std::size_t k = 0; k < J.column.size(); ++k) {
         colidx[k] = static_cast<sunindextype>(J.column[k]);
         values[k] = J.value[k];
@@ -262,9 +247,8 @@ std::string flagName(int flag) {
 }
 
 void check(int flag, const char* what) {
-  if (flag < 0)
-    throw std::runtime_error(std::string("network integrator: ") + what + " failed (flag " +
-                             std::to_string(flag) + ")");
+  if (flag < 0) throw std::runtime_error(std::string("network integrator: ") + what + " failed (flag " +
+                                         std::to_string(flag) + ")");
 }
 }  // namespace
 
@@ -272,21 +256,19 @@ NetworkIntegrator::NetworkIntegrator(NetworkSystem& system, IntegratorOptions op
     : impl_(std::make_unique<Impl>()), system_(system), options_(options) {
   auto positive = [](double v, const char* what) {
     if (!(std::isfinite(v) && v > 0.0))
-      throw InputError(std::string("network integrator: ") + what + " " + formatNumber(v) +
-                       " must be > 0");
+      throw InputError(std::string("network integrator: ") + what + " " + formatNumber(v) + " must be > 0");
   };
   positive(options_.relative_tolerance, "relative_tolerance");
   positive(options_.absolute_tolerance, "absolute_tolerance");
   if (options_.max_steps < 1) throw InputError("network integrator: max_steps must be >= 1");
   if (options_.setup_frequency < 0)
-    throw InputError("network integrator: setup_frequency " +
-                     std::to_string(options_.setup_frequency) + " must be >= 0");
-  if (options_.jacobian_frequency < 0)
-    throw InputError("network integrator: jacobian_frequency " +
-                     std::to_string(options_.jacobian_frequency) + " must be >= 0");
-  if (!(std::isfinite(options_.max_step) && options_.max_step >= 0.0))
-    throw InputError("network integrator: max_step " + formatNumber(options_.max_step) +
+    throw InputError("network integrator: setup_frequency " + std::to_string(options_.setup_frequency) +
                      " must be >= 0");
+  if (options_.jacobian_frequency < 0)
+    throw InputError("network integrator: jacobian_frequency " + std::to_string(options_.jacobian_frequency) +
+                     " must be >= 0");
+  if (!(std::isfinite(options_.max_step) && options_.max_step >= 0.0))
+    throw InputError("network integrator: max_step " + formatNumber(options_.max_step) + " must be >= 0");
   if (system_.size() == 0) throw InputError("network integrator: the system has no cells");
   Impl& m = *impl_;
   m.system = &system_;
@@ -301,19 +283,16 @@ NetworkIntegrator::NetworkIntegrator(NetworkSystem& system, IntegratorOptions op
   m.cells = system_.numCells();
   const bool gmres = options_.linear_solver == LinearSolver::Gmres;
   if (gmres) {
-    m.block_inverse.assign(system_.numCells() * m.species * m.species + system_.numPinStates(),
-                           0.0);
+    m.block_inverse.assign(system_.numCells() * m.species * m.species + system_.numPinStates(), 0.0);
     m.solver = SUNLinSol_SPGMR(m.y, SUN_PREC_LEFT, 0, m.context);
     if (!m.solver) throw std::runtime_error("network integrator: SUNLinSol_SPGMR failed");
   } else {
-    m.A = SUNSparseMatrix(n, n,
-                          static_cast<sunindextype>(std::max<std::size_t>(m.J.column.size(), 1)),
-                          CSR_MAT, m.context);
+    m.A = SUNSparseMatrix(n, n, static_cast<sunindextype>(std::max<std::size_t>(m.J.column.size(), 1)), CSR_MAT,
+                          m.context);
     if (!m.A) throw std::runtime_error("network integrator: SUNSparseMatrix failed");
     m.solver = SUNLinSol_KLU(m.y, m.A, m.context);
     if (!m.solver) throw std::runtime_error("network integrator: SUNLinSol_KLU failed");
-    // AMD: the Jacobian's pattern is symmetric (cell adjacency), where AMD fills in less than
-    // COLAMD.
+    // AMD: the Jacobian's pattern is symmetric (cell adjacency), where AMD fills in less than COLAMD.
     check(SUNLinSol_KLUSetOrdering(m.solver, 0), "SUNLinSol_KLUSetOrdering");
   }
   if (gmres)
@@ -330,8 +309,7 @@ NetworkIntegrator::NetworkIntegrator(NetworkSystem& system, IntegratorOptions op
   check(CVodeSetErrHandlerFn(m.cvode, &Impl::errorHandler, &m), "CVodeSetErrHandlerFn");
   check(CVodeInit(m.cvode, &Impl::rhs, 0.0, m.y), "CVodeInit");
   check(CVodeSetUserData(m.cvode, &m), "CVodeSetUserData");
-  check(CVodeSStolerances(m.cvode, options_.relative_tolerance, options_.absolute_tolerance),
-        "CVodeSStolerances");
+  check(CVodeSStolerances(m.cvode, options_.relative_tolerance, options_.absolute_tolerance), "CVodeSStolerances");
   check(CVodeSetLinearSolver(m.cvode, m.solver, m.A), "CVodeSetLinearSolver");
   if (gmres) {
     check(CVodeSetPreconditioner(m.cvode, &Impl::psetup, &Impl::psolve), "CVodeSetPreconditioner");
@@ -344,16 +322,15 @@ NetworkIntegrator::NetworkIntegrator(NetworkSystem& system, IntegratorOptions op
   if (options_.setup_frequency > 0)
     check(CVodeSetLSetupFrequency(m.cvode, options_.setup_frequency), "CVodeSetLSetupFrequency");
   if (options_.jacobian_frequency > 0)
-    check(CVodeSetJacEvalFrequency(m.cvode, options_.jacobian_frequency),
-          "CVodeSetJacEvalFrequency");
+    check(CVodeSetJacEvalFrequency(m.cvode, options_.jacobian_frequency), "CVodeSetJacEvalFrequency");
 }
 
 NetworkIntegrator::~NetworkIntegrator() = default;
 
 void NetworkIntegrator::advance(std::span<double> y, double t0, double t1) {
   if (y.size() != system_.size())
-    throw InputError("network integrator: " + std::to_string(y.size()) +
-                     " amounts for a system of " + std::to_string(system_.size()));
+    throw InputError("network integrator: " + std::to_string(y.size()) + " amounts for a system of " +
+                     std::to_string(system_.size()));
   if (!(t1 > t0)) throw InputError("network integrator: advance needs t1 > t0");
   Impl& m = *impl_;
   double* state = N_VGetArrayPointer_Serial(m.y);
@@ -406,8 +383,8 @@ void NetworkIntegrator::advance(std::span<double> y, double t0, double t1) {
       const NetworkInterface& f = system_.graph().interfaces[k];
       cell = static_cast<std::size_t>(side_i ? f.cell_i : f.cell_j);
       species = system_.model().pin.species;
-      where = "the PIN of '" + species + "' on cell " + std::to_string(cell) +
-              "'s side of its interface with cell " + std::to_string(side_i ? f.cell_j : f.cell_i);
+      where = "the PIN of '" + species + "' on cell " + std::to_string(cell) + "'s side of its interface with cell " +
+              std::to_string(side_i ? f.cell_j : f.cell_i);
     }
     double reached = t;
     CVodeGetCurrentTime(m.cvode, &reached);
@@ -415,8 +392,8 @@ void NetworkIntegrator::advance(std::span<double> y, double t0, double t1) {
     msg << "network integration failed at t = " << formatNumber(reached) << " (integrating from "
         << formatNumber(t0) << " to " << formatNumber(t1) << "): CVODE " << flagName(flag);
     if (!m.last_message.empty()) msg << " (" << m.last_message << ")";
-    msg << "; largest weighted local error in " << where << " (" << formatNumber(worst_value)
-        << ")";
+    msg << "; largest weighted local error in " << where << " ("
+        << formatNumber(worst_value) << ")";
     throw NetworkIntegrationError(msg.str(), reached, flag, species, cell);
   }
   std::copy(state, state + y.size(), y.begin());

@@ -15,8 +15,7 @@ namespace tessella::networks {
 namespace {
 bool plainName(const std::string& s) {
   return !s.empty() && !std::isdigit(static_cast<unsigned char>(s[0])) &&
-         std::all_of(s.begin(), s.end(),
-                     [](unsigned char c) { return std::isalnum(c) || c == '_'; });
+         std::all_of(s.begin(), s.end(), [](unsigned char c) { return std::isalnum(c) || c == '_'; });
 }
 }  // namespace
 
@@ -40,16 +39,14 @@ void NetworkModel::validate() const {
       throw InputError("network: " + what + " '" + name +
                        "' is not a name (letters, digits and '_', not starting with a digit)");
     if (std::find(reserved.begin(), reserved.end(), name) != reserved.end())
-      throw InputError("network: " + what + " '" + name +
-                       "' is a reserved name (measure, x, y, z, t)");
-    if (!seen.insert(name).second)
-      throw InputError("network: " + what + " '" + name + "' is named twice");
+      throw InputError("network: " + what + " '" + name + "' is a reserved name (measure, x, y, z, t)");
+    if (!seen.insert(name).second) throw InputError("network: " + what + " '" + name + "' is named twice");
   };
   for (const NetworkSpecies& s : species) {
     claim(s.name, "species");
     if (!(std::isfinite(s.permeability) && s.permeability >= 0.0))
-      throw InputError("network: species '" + s.name + "': permeability " +
-                       std::to_string(s.permeability) + " must be finite and >= 0");
+      throw InputError("network: species '" + s.name + "': permeability " + std::to_string(s.permeability) +
+                       " must be finite and >= 0");
   }
   for (const auto& [name, value] : parameters) {
     claim(name, "parameter");
@@ -61,8 +58,7 @@ void NetworkModel::validate() const {
       throw InputError("network: PIN transport of '" + pin.species + "', which is not a species");
     auto nonneg = [&](double v, const char* what) {
       if (!(std::isfinite(v) && v >= 0.0))
-        throw InputError(std::string("network: PIN ") + what + " " + std::to_string(v) +
-                         " must be finite and >= 0");
+        throw InputError(std::string("network: PIN ") + what + " " + std::to_string(v) + " must be finite and >= 0");
     };
     nonneg(pin.rate, "rate");
     nonneg(pin.total, "total");
@@ -74,8 +70,8 @@ void NetworkModel::validate() const {
     if (pin.dynamic()) {
       auto atLeast = [&](double v, double low, const char* what) {
         if (!(std::isfinite(v) && v >= low))
-          throw InputError(std::string("network: PIN ") + what + " " + formatNumber(v) +
-                           " must be finite and >= " + formatNumber(low));
+          throw InputError(std::string("network: PIN ") + what + " " + formatNumber(v) + " must be finite and >= " +
+                           formatNumber(low));
       };
       atLeast(pin.basal, 0.0, "basal");
       atLeast(pin.production, 0.0, "production");
@@ -84,16 +80,14 @@ void NetworkModel::validate() const {
       atLeast(pin.flux_saturation, 0.0, "flux_saturation");
       atLeast(pin.initial, 0.0, "initial");
       if (pin.bounded && !(pin.total > 0.0))
-        throw InputError("network: bounded PIN needs total > 0 (total " + formatNumber(pin.total) +
-                         ")");
+        throw InputError("network: bounded PIN needs total > 0 (total " + formatNumber(pin.total) + ")");
       if (pin.model == PinModel::Expression) {
         if (pin.expression.find_first_not_of(" \t") == std::string::npos)
           throw InputError("network: the PIN model 'expression' needs pin.expression (dPIN_ij/dt)");
         const auto& vars = pinExpressionVariables();
         for (const auto& [name, value] : parameters)
           if (std::find(vars.begin(), vars.end(), name) != vars.end())
-            throw InputError("network: parameter '" + name +
-                             "' is a variable of the PIN expression (c_i, c_j, "
+            throw InputError("network: parameter '" + name + "' is a variable of the PIN expression (c_i, c_j, "
                              "pin, pin_opposite, flux, wall, measure, pin_cell)");
       }
     }

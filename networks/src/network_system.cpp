@@ -20,12 +20,8 @@ double CsrMatrix::at(std::size_t r, std::size_t c) const {
 }
 
 namespace {
-int other(const NetworkInterface& f, std::size_t c) {
-  return f.cell_i == static_cast<int>(c) ? f.cell_j : f.cell_i;
-}
-std::size_t otherCell(const NetworkInterface& f, std::size_t c) {
-  return static_cast<std::size_t>(other(f, c));
-}
+int other(const NetworkInterface& f, std::size_t c) { return f.cell_i == static_cast<int>(c) ? f.cell_j : f.cell_i; }
+std::size_t otherCell(const NetworkInterface& f, std::size_t c) { return static_cast<std::size_t>(other(f, c)); }
 
 // J(r, c) += v on a fixed pattern.
 void addAt(CsrMatrix& J, std::size_t r, std::size_t c, double v) {
@@ -39,11 +35,10 @@ void addAt(CsrMatrix& J, std::size_t r, std::size_t c, double v) {
 
 const EnumTable<JacobianKind>& jacobianKinds() {
   static const EnumTable<JacobianKind> table(
-      "Jacobian",
-      {{"exact", JacobianKind::Exact, "The exact derivative dF/dy."},
-       {"neighbours", JacobianKind::Neighbours,
-        "dF/dy without the second-neighbour terms of PIN transport: sparser, an approximation "
-        "for the Newton iteration (conserves amounts all the same)."}});
+      "Jacobian", {{"exact", JacobianKind::Exact, "The exact derivative dF/dy."},
+                   {"neighbours", JacobianKind::Neighbours,
+                    "dF/dy without the second-neighbour terms of PIN transport: sparser, an approximation "
+                    "for the Newton iteration (conserves amounts all the same)."}});
   return table;
 }
 
@@ -53,19 +48,15 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
   graph_.validate();
   for (const std::string& p : model_.cell_properties)
     if (!graph_.properties.count(p))
-      throw InputError("network: the cell property '" + p +
-                       "' the reactions read is not in the graph");
+      throw InputError("network: the cell property '" + p + "' the reactions read is not in the graph");
   reactions_ = std::make_unique<ReactionSet>(model_);
-  for (const std::string& name : model_.cell_properties)
-    property_columns_.push_back(&graph_.properties.at(name));
+  for (const std::string& name : model_.cell_properties) property_columns_.push_back(&graph_.properties.at(name));
   property_values_.assign(property_columns_.size(), 0.0);
   pin_species_ = model_.pin.enabled() ? model_.speciesIndex(model_.pin.species) : -1;
   const bool dynamic = model_.pin.dynamic();
-  if (dynamic && model_.pin.model == PinModel::Expression)
-    pin_expression_ = std::make_unique<PinExpression>(model_);
+  if (dynamic && model_.pin.model == PinModel::Expression) pin_expression_ = std::make_unique<PinExpression>(model_);
   pin_cell_coupled_ =
-      dynamic && (model_.pin.model == PinModel::Expression ? pin_expression_->usesPinCell()
-                                                           : model_.pin.bounded);
+      dynamic && (model_.pin.model == PinModel::Expression ? pin_expression_->usesPinCell() : model_.pin.bounded);
   const std::size_t n = numCells(), S = numSpecies();
   neighbours_.assign(n, {});
   for (std::size_t f = 0; f < graph_.interfaces.size(); ++f) {
@@ -93,8 +84,7 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
             cols.push_back(pinIndex(f, 0));
             cols.push_back(pinIndex(f, 1));
           } else if (pinned && jacobian_kind_ == JacobianKind::Exact) {
-            for (std::size_t g : neighbours_[j])
-              cols.push_back(index(otherCell(graph_.interfaces[g], j), s));
+            for (std::size_t g : neighbours_[j]) cols.push_back(index(otherCell(graph_.interfaces[g], j), s));
           }
         }
       std::sort(cols.begin(), cols.end());
@@ -102,15 +92,15 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
       pattern_.column.insert(pattern_.column.end(), cols.begin(), cols.end());
       pattern_.row_start[index(c, s) + 1] = pattern_.column.size();
     }
-  // Dynamic PIN: the density on cell o's side of interface k reads both cells' amounts, both sides'
-  // densities and, when coupled, every density on o's side of its interfaces.
+  // Dynamic PIN: the density on cell o's side of interface k reads both cells' amounts, both sides' densities
+  // and, when coupled, every density on o's side of its interfaces.
   for (std::size_t k = 0; k < numPinStates() / 2; ++k)
     for (int side = 0; side < 2; ++side) {
       const NetworkInterface& f = graph_.interfaces[k];
       const auto o = static_cast<std::size_t>(side == 0 ? f.cell_i : f.cell_j);
       const auto a = static_cast<std::size_t>(pin_species_);
-      cols = {index(static_cast<std::size_t>(f.cell_i), a),
-              index(static_cast<std::size_t>(f.cell_j), a), pinIndex(k, 0), pinIndex(k, 1)};
+      cols = {index(static_cast<std::size_t>(f.cell_i), a), index(static_cast<std::size_t>(f.cell_j), a),
+              pinIndex(k, 0), pinIndex(k, 1)};
       if (pin_cell_coupled_)
         for (std::size_t g : neighbours_[o])
           cols.push_back(pinIndex(g, graph_.interfaces[g].cell_i == static_cast<int>(o) ? 0 : 1));
@@ -131,10 +121,8 @@ NetworkSystem::~NetworkSystem() = default;
 
 void NetworkSystem::evaluateReactions(double t, std::size_t cell, std::span<const double> conc,
                                       std::span<double> rate) {
-  for (std::size_t k = 0; k < property_columns_.size(); ++k)
-    property_values_[k] = (*property_columns_[k])[cell];
-  reactions_->evaluate(t, cell, graph_.measure[cell], graph_.centroid[cell], property_values_, conc,
-                       rate);
+  for (std::size_t k = 0; k < property_columns_.size(); ++k) property_values_[k] = (*property_columns_[k])[cell];
+  reactions_->evaluate(t, cell, graph_.measure[cell], graph_.centroid[cell], property_values_, conc, rate);
 }
 
 void NetworkSystem::rhs(double t, std::span<const double> y, std::span<double> ydot) {
@@ -171,15 +159,13 @@ void NetworkSystem::rhs(double t, std::span<const double> y, std::span<double> y
       const NetworkInterface& f = graph_.interfaces[k];
       const auto i = static_cast<std::size_t>(f.cell_i), j = static_cast<std::size_t>(f.cell_j);
       const double J =
-          T * f.measure *
-          (y[pinIndex(k, 0)] * conc_[index(i, a)] - y[pinIndex(k, 1)] * conc_[index(j, a)]);
+          T * f.measure * (y[pinIndex(k, 0)] * conc_[index(i, a)] - y[pinIndex(k, 1)] * conc_[index(j, a)]);
       ydot[index(i, a)] -= J;
       ydot[index(j, a)] += J;
     }
     pinCellAmounts(y);
     for (std::size_t k = 0; k < graph_.interfaces.size(); ++k)
-      for (int side = 0; side < 2; ++side)
-        ydot[pinIndex(k, side)] = pinRate(t, k, side, y, nullptr);
+      for (int side = 0; side < 2; ++side) ydot[pinIndex(k, side)] = pinRate(t, k, side, y, nullptr);
     return;
   }
   // PIN efflux: T PIN_ij c_i from i to j, both directions of every interface.
@@ -254,9 +240,8 @@ double NetworkSystem::pinRate(double t, std::size_t k, int side, std::span<const
 }
 
 bool NetworkSystem::inPattern(std::size_t r, std::size_t c) const {
-  return std::binary_search(
-      pattern_.column.begin() + static_cast<std::ptrdiff_t>(pattern_.row_start[r]),
-      pattern_.column.begin() + static_cast<std::ptrdiff_t>(pattern_.row_start[r + 1]), c);
+  return std::binary_search(pattern_.column.begin() + static_cast<std::ptrdiff_t>(pattern_.row_start[r]),
+                            pattern_.column.begin() + static_cast<std::ptrdiff_t>(pattern_.row_start[r + 1]), c);
 }
 
 void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) {
@@ -279,8 +264,7 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
         cc[q] = keep - h;
         evaluateReactions(t, c, cc, down);
         cc[q] = keep;
-        for (std::size_t s = 0; s < S; ++s)
-          addAt(J, index(c, s), index(c, q), (up[s] - down[s]) / (2 * h));
+        for (std::size_t s = 0; s < S; ++s) addAt(J, index(c, s), index(c, q), (up[s] - down[s]) / (2 * h));
       }
     }
   }
@@ -333,8 +317,7 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
         if (pin_cell_coupled_)
           for (std::size_t g : neighbours_[o]) {
             const NetworkInterface& h = graph_.interfaces[g];
-            addAt(J, r, pinIndex(g, h.cell_i == static_cast<int>(o) ? 0 : 1),
-                  d[E::kPinCell] * h.measure);
+            addAt(J, r, pinIndex(g, h.cell_i == static_cast<int>(o) ? 0 : 1), d[E::kPinCell] * h.measure);
           }
       }
   } else if (pin_species_ >= 0) {
@@ -364,11 +347,9 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
         add(j, TP * ci * L * pin_weight_derivative_[j] / D);
         for (std::size_t g : neighbours_[i]) {
           const auto m = static_cast<std::size_t>(other(graph_.interfaces[g], i));
-          // Neighbours: leave out the pair of entries when the receiver's row lacks m (a second
-          // neighbour).
+          // Neighbours: leave out the pair of entries when the receiver's row lacks m (a second neighbour).
           if (jacobian_kind_ == JacobianKind::Neighbours && !inPattern(rj, index(m, p))) continue;
-          add(m, -TP * ci * L * pin_weight_[j] * graph_.interfaces[g].measure *
-                     pin_weight_derivative_[m] / (D * D));
+          add(m, -TP * ci * L * pin_weight_[j] * graph_.interfaces[g].measure * pin_weight_derivative_[m] / (D * D));
         }
       }
     }

@@ -10,9 +10,11 @@
 #include <cmath>
 #include <map>
 
+#include "tessella/io/wall_vtu.hpp"
 #include "tessella/networks/network_graph.hpp"
 #include "tessella/sim/simulation.hpp"
 #include "tessella/sim/stages/network_stage.hpp"
+#include "tessella/tissue/geometry.hpp"
 #include "test_support.hpp"
 
 using namespace tessella;
@@ -124,7 +126,8 @@ TEST_CASE("with_the_flux: a restart from a snapshot ends as the uninterrupted ru
   CHECK(different == 0);
   const auto pa = pinByLineage(a), pb = pinByLineage(b);
   CHECK(pa == pb);  // exact
-  CHECK(straight.snapshotState("x.vtu").at("network.pin") == second.snapshotState("x.vtu").at("network.pin"));
+  const std::string x = (dir.path() / "x.vtu").string();
+  CHECK(straight.snapshotState(x).at("network.pin") == second.snapshotState(x).at("network.pin"));
 }
 
 TEST_CASE("network.pin: dynamic models' errors at their keys", "[sim][network][pin][errors]") {
@@ -143,4 +146,82 @@ TEST_CASE("network.pin: dynamic models' errors at their keys", "[sim][network][p
   CHECK(e.keyPath() == "network.pin.bounded");
   e = error("model: with_the_flux, flux_exponent: 0.5");
   CHECK(e.keyPath() == "network.pin.flux_exponent");
+}
+
+TEST_CASE("The PIN walls file beside a snapshot: up_the_gradient against its formula", "[sim][network][pin][output]") {
+  // rate 0: no transport, the allocation of the initial gradient.
+  Simulation sim = Simulation::fromYaml(R"(
+tissue: {generator: hexagonal_grid, hexagonal_grid: {nx: 5, ny: 4}}
+network:
+  mode: transient
+  species: {auxin: {initial: "1 + 0.3 * x + 0.1 * y * y"}}
+  pin: {species: auxin, rate: 0, base: 2, total: 1.5, saturation: 0.2}
+time: {end: 1, dt: 1}
+)");
+  ScratchDir dir;
+  const std::string snapshot = (dir.path() / "tissue_000000.vtu").string();
+  sim.writeSnapshot(snapshot);
+  const io::WallsFile f = io::readWallsVtu((dir.path() / "tissue_000000.pin.vtu").string());
+  const Tissue& t = sim.tissue();
+  REQUIRE(f.wall_id.size() == t.numWalls());
+  GeometryCache g;
+  g.require(t, kCellMeasures | GeometryQuantity::EdgeLengths);
+  const auto& c = t.cellProperties().get<double>("auxin");
+  std::map<std::int64_t, CellId> by_lineage;
+  for (CellId cell : t.cells()) by_lineage[t.lineageId(cell)] = cell;
+  // D_i = kappa + sum over i's interior walls of L f(c_neighbour), f = 2^c.
+  auto denominator = [&](CellId i) {
+    double d = 0.2;
+    for (WallId w : t.cellWalls(i))
+      for (CellId j : t.wallCells(w))
+        if (j != i) d += g.edge_length[w.index()] * std::pow(2.0, c[j]);
+    return d;
+  };
+  const auto& pin_ij = f.arrays.scalars.at("pin_ij");
+  const auto& pin_ji = f.arrays.scalars.at("pin_ji");
+  const auto& cell_i = f.arrays.scalars.at("cell_i");
+  const auto& cell_j = f.arrays.scalars.at("cell_j");
+  const auto& net = f.arrays.vectors.at("pin_net");
+  std::size_t interior = 0;
+  for (std::size_t k = 0; k < f.wall_id.size(); ++k) {
+    const WallId w(static_cast<Index>(f.wall_id[k]));
+    const std::vector<CellId> two = t.wallCells(w);
+    if (two.size() != 2) {
+      CHECK(cell_j[k] == -1);
+      CHECK(pin_ij[k] == 0);
+      continue;
+    }
+    ++interior;
+    const CellId i = by_lineage.at(static_cast<std::int64_t>(cell_i[k]));
+    const CellId j = by_lineage.at(static_cast<std::int64_t>(cell_j[k]));
+    CHECK(t.lineageId(i) < t.lineageId(j));
+    CHECK(pin_ij[k] == Approx(1.5 * std::pow(2.0, c[j]) / denominator(i)).epsilon(1e-12));
+    CHECK(pin_ji[k] == Approx(1.5 * std::pow(2.0, c[i]) / denominator(j)).epsilon(1e-12));
+    // pin_net: (pin_ij - pin_ji) along the wall's unit normal from i into j.
+    const auto v = t.topology().edgeVertices(EdgeId(w.index()));
+    const Vec3 a = t.position(v[0]), b = t.position(v[1]);
+    const Vec3 n = net[k] / (pin_ij[k] - pin_ji[k]);
+    CHECK(n.norm() == Approx(1.0));
+    CHECK(std::abs(n.dot(b - a)) < 1e-12);
+    CHECK(n.dot(0.5 * (a + b) - cellCentroid(t, i)) > 0);
+  }
+  CHECK(interior > 20);
+}
+
+TEST_CASE("The PIN walls file holds the dynamic densities of the walls", "[sim][network][pin][output]") {
+  Simulation sim = Simulation::fromYaml(kFluxConfig + "time: {end: 2, dt: 0.5}\n");
+  sim.run();
+  ScratchDir dir;
+  sim.writeSnapshot((dir.path() / "end.vtu").string());
+  const io::WallsFile f = io::readWallsVtu((dir.path() / "end.pin.vtu").string());
+  const auto pin = pinByLineage(sim.tissue());
+  std::size_t interior = 0;
+  for (std::size_t k = 0; k < f.wall_id.size(); ++k) {
+    if (f.arrays.scalars.at("cell_j")[k] < 0) continue;
+    ++interior;
+    const auto key = std::make_pair(static_cast<std::int64_t>(f.arrays.scalars.at("cell_i")[k]),
+                                    static_cast<std::int64_t>(f.arrays.scalars.at("cell_j")[k]));
+    CHECK(pin.at(key) == std::make_pair(f.arrays.scalars.at("pin_ij")[k], f.arrays.scalars.at("pin_ji")[k]));
+  }
+  CHECK(interior >= pin.size());  // two walls between the same cells share a key
 }

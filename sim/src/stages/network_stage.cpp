@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "coupling_cells.hpp"
+#include "tessella/io/wall_vtu.hpp"
 #include "tessella/networks/initial_values.hpp"
 #include "tessella/networks/network_graph.hpp"
 #include "tessella/networks/network_system.hpp"
@@ -35,8 +36,7 @@ NetworkStage::NetworkStage(NetworkSpec spec) : spec_(std::move(spec)), schedule_
   if (spec_.every < 1) throw InputError("network: every must be >= 1");
   if (spec_.primordia.enabled()) {
     if (spec_.model.speciesIndex(spec_.primordia.species) < 0)
-      throw InputError("network: primordia species '" + spec_.primordia.species +
-                       "' is not a species");
+      throw InputError("network: primordia species '" + spec_.primordia.species + "' is not a species");
     spec_.primordia.options.validate();
   }
 }
@@ -47,16 +47,15 @@ const std::string kPinKey = "network.pin";
 
 PropertyColumn<double>& pinWallColumn(Tissue& tissue, const std::string& name, double initial) {
   PropertyStore& store = tissue.wallProperties();
-  if (const PropertyColumnBase* c = store.find(name);
-      c && c->type() != std::type_index(typeid(double)))
+  if (const PropertyColumnBase* c = store.find(name); c && c->type() != std::type_index(typeid(double)))
     throw InputError("wall property '" + name + "' exists and does not hold numbers (double)");
   if (!store.has(name)) store.add<double>(name, initial, DivisionPolicy::Copy);
   return store.get<double>(name);
 }
 
-// Whether the first of a wall's two saved densities is on its positive side: the first is on the
-// side of the cell with the smaller lineage id (a boundary wall: of its cell). Lineage ids survive
-// a snapshot, the wall's orientation need not.
+// Whether the first of a wall's two saved densities is on its positive side: the first is on the side of
+// the cell with the smaller lineage id (a boundary wall: of its cell). Lineage ids survive a snapshot, the
+// wall's orientation need not.
 bool firstIsPositive(const Tissue& tissue, WallId w) {
   const std::vector<CellId> two = tissue.wallCells(w);
   if (two.empty()) return true;
@@ -67,18 +66,15 @@ bool firstIsPositive(const Tissue& tissue, WallId w) {
 
 PropertyColumn<int>& primordiumColumn(Tissue& tissue) {
   PropertyStore& store = tissue.cellProperties();
-  if (const PropertyColumnBase* c = store.find(kPrimordiumProperty);
-      c && c->type() != std::type_index(typeid(int)))
-    throw InputError(std::string("cell property '") + kPrimordiumProperty +
-                     "' exists and does not hold ints");
+  if (const PropertyColumnBase* c = store.find(kPrimordiumProperty); c && c->type() != std::type_index(typeid(int)))
+    throw InputError(std::string("cell property '") + kPrimordiumProperty + "' exists and does not hold ints");
   if (!store.has(kPrimordiumProperty)) store.add<int>(kPrimordiumProperty, 0, DivisionPolicy::Copy);
   return store.get<int>(kPrimordiumProperty);
 }
 }  // namespace
 
 void NetworkStage::detectPrimordia(Tissue& tissue, const std::vector<CellId>& cells,
-                                   const networks::NetworkSystem& system,
-                                   const std::vector<double>& y, double time) {
+                                   const networks::NetworkSystem& system, const std::vector<double>& y, double time) {
   const networks::NetworkGraph& graph = system.graph();
   const std::size_t S = system.numSpecies();
   const auto s = static_cast<std::size_t>(spec_.model.speciesIndex(spec_.primordia.species));
@@ -110,9 +106,8 @@ void NetworkStage::detectPrimordia(Tissue& tissue, const std::vector<CellId>& ce
     r.angle_deg = a.angle_deg;
     r.radius = a.radius;
     r.distance = a.distance;
-    r.divergence_deg = primordia_.empty()
-                           ? std::numeric_limits<double>::quiet_NaN()
-                           : networks::divergenceDeg(primordia_.back().angle_deg, a.angle_deg);
+    r.divergence_deg = primordia_.empty() ? std::numeric_limits<double>::quiet_NaN()
+                                          : networks::divergenceDeg(primordia_.back().angle_deg, a.angle_deg);
     id[cells[u]] = r.id;
     primordia_.push_back(r);
   }
@@ -122,14 +117,63 @@ std::string NetworkStage::pinWallProperty(const std::string& species, bool posit
   return species + (positive_side ? "_pin_pos" : "_pin_neg");
 }
 
-void NetworkStage::saveState(const Tissue& tissue, const std::string& /*snapshot_path*/,
-                             const io::VtuOptions& /*options*/, io::RunState& state) const {
+void NetworkStage::writePinWalls(const Tissue& tissue, const std::string& snapshot_path,
+                                 const io::VtuOptions& options) const {
+  GeometryCache geometry;
+  std::vector<CellId> cells;
+  std::vector<std::vector<networks::InterfaceWall>> walls;
+  networks::NetworkGraph graph =
+      networks::networkGraph(tissue, geometry, spec_.model.cell_properties, &cells, &walls);
+  const std::size_t S = spec_.model.species.size();
+  std::vector<double> amounts(S * cells.size());
+  for (std::size_t s = 0; s < S; ++s) {
+    const auto& amount = tissue.cellProperties().get<double>(spec_.model.species[s].name + "_amount");
+    for (std::size_t k = 0; k < cells.size(); ++k) amounts[k * S + s] = amount[cells[k]];
+  }
+  networks::NetworkSystem system(spec_.model, std::move(graph));
+  const std::vector<double> y = readState(tissue, cells, walls, system, amounts);
+  const std::vector<networks::PinSides> density = system.pinDensity(y);
+  // Per live wall in slot order; i is the cell with the smaller lineage id.
+  std::vector<int> slot(tissue.topology().slots(tissue.dim() - 1), -1);
+  int count = 0;
+  for (WallId w : tissue.walls()) slot[w.index()] = count++;
+  const std::size_t n = tissue.numWalls();
+  io::WallArrays a;
+  auto& pin_ij = a.scalars["pin_ij"] = std::vector<double>(n, 0.0);
+  auto& pin_ji = a.scalars["pin_ji"] = std::vector<double>(n, 0.0);
+  auto& cell_i = a.scalars["cell_i"] = std::vector<double>(n, -1.0);
+  auto& cell_j = a.scalars["cell_j"] = std::vector<double>(n, -1.0);
+  auto& net = a.vectors["pin_net"] = std::vector<Vec3>(n, Vec3::Zero());
+  for (WallId w : tissue.walls()) {  // boundary walls: their one cell
+    const std::vector<CellId> two = tissue.wallCells(w);
+    if (!two.empty()) cell_i[static_cast<std::size_t>(slot[w.index()])] = static_cast<double>(tissue.lineageId(two[0]));
+  }
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    const networks::NetworkInterface& f = system.graph().interfaces[k];
+    const CellId gi = cells[static_cast<std::size_t>(f.cell_i)], gj = cells[static_cast<std::size_t>(f.cell_j)];
+    const bool flip = tissue.lineageId(gj) < tissue.lineageId(gi);  // the graph's cell_j is the file's i
+    const double ij = flip ? density[k].ji : density[k].ij, ji = flip ? density[k].ij : density[k].ji;
+    const Vec3 normal = flip ? Vec3(-f.normal) : f.normal;
+    for (const networks::InterfaceWall& w : walls[k]) {
+      const auto u = static_cast<std::size_t>(slot[w.wall.index()]);
+      pin_ij[u] = ij;
+      pin_ji[u] = ji;
+      cell_i[u] = static_cast<double>(tissue.lineageId(flip ? gj : gi));
+      cell_j[u] = static_cast<double>(tissue.lineageId(flip ? gi : gj));
+      net[u] = (ij - ji) * normal;
+    }
+  }
+  io::writeWallsVtu(tissue, io::besideSnapshotPath(snapshot_path, "pin"), a, options);
+}
+
+void NetworkStage::saveState(const Tissue& tissue, const std::string& snapshot_path, const io::VtuOptions& options,
+                             io::RunState& state) const {
   const networks::PinTransport& pin = spec_.model.pin;
-  const PropertyStore& walls = tissue.wallProperties();
-  if (pin.dynamic() && walls.has(pinWallProperty(pin.species, true)) &&
-      walls.has(pinWallProperty(pin.species, false))) {
-    const auto& pos = walls.get<double>(pinWallProperty(pin.species, true));
-    const auto& neg = walls.get<double>(pinWallProperty(pin.species, false));
+  const PropertyStore& wall_properties = tissue.wallProperties();
+  if (pin.dynamic() && wall_properties.has(pinWallProperty(pin.species, true)) &&
+      wall_properties.has(pinWallProperty(pin.species, false))) {
+    const auto& pos = wall_properties.get<double>(pinWallProperty(pin.species, true));
+    const auto& neg = wall_properties.get<double>(pinWallProperty(pin.species, false));
     std::string text;
     for (WallId w : tissue.walls()) {
       const bool first = firstIsPositive(tissue, w);
@@ -138,14 +182,14 @@ void NetworkStage::saveState(const Tissue& tissue, const std::string& /*snapshot
     }
     state[kPinKey] = text;
   }
+  if (pin.enabled() && tissue.numCells() > 0) writePinWalls(tissue, snapshot_path, options);
   if (!spec_.primordia.enabled()) return;
   std::string text;
   for (const PrimordiumRecord& r : primordia_) {
     if (!text.empty()) text += ";";
-    text += std::to_string(r.id) + " " + formatNumber(r.time) + " " + std::to_string(r.lineage) +
-            " " + formatNumber(r.position.x()) + " " + formatNumber(r.position.y()) + " " +
-            formatNumber(r.position.z()) + " " + formatNumber(r.angle_deg) + " " +
-            formatNumber(r.radius) + " " + formatNumber(r.distance) + " " +
+    text += std::to_string(r.id) + " " + formatNumber(r.time) + " " + std::to_string(r.lineage) + " " +
+            formatNumber(r.position.x()) + " " + formatNumber(r.position.y()) + " " + formatNumber(r.position.z()) +
+            " " + formatNumber(r.angle_deg) + " " + formatNumber(r.radius) + " " + formatNumber(r.distance) + " " +
             (std::isnan(r.divergence_deg) ? std::string("nan") : formatNumber(r.divergence_deg));
   }
   state[kPrimordiaKey] = text;
@@ -166,9 +210,9 @@ void NetworkStage::restorePin(Tissue& tissue) {
     values.push_back(v);
   }
   if (values.size() != 2 * tissue.numWalls())
-    throw InputError("snapshot '" + snapshot + "': its run state has " +
-                     std::to_string(values.size()) + " PIN densities (" + kPinKey + ") for " +
-                     std::to_string(tissue.numWalls()) + " walls (two each)");
+    throw InputError("snapshot '" + snapshot + "': its run state has " + std::to_string(values.size()) +
+                     " PIN densities (" + kPinKey + ") for " + std::to_string(tissue.numWalls()) +
+                     " walls (two each)");
   auto& pos = pinWallColumn(tissue, pinWallProperty(pin.species, true), pin.initial);
   auto& neg = pinWallColumn(tissue, pinWallProperty(pin.species, false), pin.initial);
   std::size_t k = 0;
@@ -199,14 +243,12 @@ void NetworkStage::continueFrom(const std::string& snapshot_path, const io::RunS
     auto number = [&](const std::string& t) {
       char* end = nullptr;
       const double v = std::strtod(t.c_str(), &end);
-      if (t.empty() || *end != '\0')
-        throw InputError("run state " + kPrimordiaKey + ": '" + t + "' in '" + item +
-                         "' is not a number");
+      if (t.empty() || *end != '\0') throw InputError("run state " + kPrimordiaKey + ": '" + t + "' in '" + item +
+                                                      "' is not a number");
       return v;
     };
     if (n != 10 || (in >> extra))
-      throw InputError("run state " + kPrimordiaKey + ": '" + item +
-                       "' is not 10 values (id time lineage x y z "
+      throw InputError("run state " + kPrimordiaKey + ": '" + item + "' is not 10 values (id time lineage x y z "
                        "angle radius distance divergence)");
     PrimordiumRecord r;
     r.id = static_cast<int>(number(f[0]));
@@ -230,18 +272,17 @@ std::vector<std::string> NetworkStage::cellPropertiesWritten() const {
   return out;
 }
 
-std::vector<double> NetworkStage::readState(
-    Tissue& tissue, const std::vector<CellId>& cells,
-    const std::vector<std::vector<networks::InterfaceWall>>& walls,
-    const networks::NetworkSystem& system, const std::vector<double>& amounts) {
+std::vector<double> NetworkStage::readState(const Tissue& tissue, const std::vector<CellId>& cells,
+                                            const std::vector<std::vector<networks::InterfaceWall>>& walls,
+                                            const networks::NetworkSystem& system,
+                                            const std::vector<double>& amounts) const {
   std::vector<double> y(system.size(), 0.0);
   std::copy(amounts.begin(), amounts.end(), y.begin());
   const networks::PinTransport& pin = spec_.model.pin;
   if (!pin.dynamic() || cells.empty()) return y;
-  const auto& pos = pinWallColumn(tissue, pinWallProperty(pin.species, true), pin.initial);
-  const auto& neg = pinWallColumn(tissue, pinWallProperty(pin.species, false), pin.initial);
-  // An interface's density on a side: its walls' (equal after every solve), or their
-  // measure-weighted mean.
+  const auto& pos = tissue.wallProperties().get<double>(pinWallProperty(pin.species, true));
+  const auto& neg = tissue.wallProperties().get<double>(pinWallProperty(pin.species, false));
+  // An interface's density on a side: its walls' (equal after every solve), or their measure-weighted mean.
   for (std::size_t k = 0; k < walls.size(); ++k)
     for (int side = 0; side < 2; ++side) {
       double sum = 0.0, measure = 0.0, first = 0.0;
@@ -261,8 +302,7 @@ std::vector<double> NetworkStage::readState(
 
 void NetworkStage::writeOutputs(Tissue& tissue, const std::vector<CellId>& cells,
                                 const std::vector<std::vector<networks::InterfaceWall>>& walls,
-                                networks::NetworkSystem& system, const std::vector<double>& y,
-                                bool write_pin) {
+                                networks::NetworkSystem& system, const std::vector<double>& y, bool write_pin) {
   const networks::PinTransport& pin = spec_.model.pin;
   if (pin.dynamic() && write_pin) {
     auto& pos = pinWallColumn(tissue, pinWallProperty(pin.species, true), pin.initial);
@@ -286,8 +326,7 @@ void NetworkStage::writeOutputs(Tissue& tissue, const std::vector<CellId>& cells
   if (spec_.model.pin.enabled()) {
     const std::string name = spec_.model.pin.species + "_polarity";
     PropertyStore& store = tissue.cellProperties();
-    if (const PropertyColumnBase* c = store.find(name);
-        c && c->type() != std::type_index(typeid(Vec3)))
+    if (const PropertyColumnBase* c = store.find(name); c && c->type() != std::type_index(typeid(Vec3)))
       throw InputError("cell property '" + name + "' exists and does not hold vectors (Vec3)");
     if (!store.has(name)) store.add<Vec3>(name, Vec3::Zero(), DivisionPolicy::Copy);
     auto& polarity = store.get<Vec3>(name);
@@ -311,8 +350,7 @@ void NetworkStage::prepare(Tissue& tissue, double /*time*/) {
   const std::size_t S = spec_.model.species.size();
   bool present = true;
   for (const auto& s : spec_.model.species)
-    present = present && tissue.cellProperties().has(s.name + "_amount") &&
-              tissue.cellProperties().has(s.name);
+    present = present && tissue.cellProperties().has(s.name + "_amount") && tissue.cellProperties().has(s.name);
   std::vector<double> y(S * cells.size());
   if (present) {
     // A snapshot of the run: continue from its amounts.
@@ -326,8 +364,7 @@ void NetworkStage::prepare(Tissue& tissue, double /*time*/) {
     for (std::size_t s = 0; s < S; ++s) {
       std::vector<double> c;
       try {
-        c = networks::initialConcentrations(spec_.initial[s], graph, spec_.model.parameters,
-                                            spec_.noise[s], rng);
+        c = networks::initialConcentrations(spec_.initial[s], graph, spec_.model.parameters, spec_.noise[s], rng);
       } catch (const InputError& e) {
         throw InputError("network: species '" + spec_.model.species[s].name + "': " + e.what());
       }
@@ -352,8 +389,8 @@ void NetworkStage::apply(Tissue& tissue, const StepContext& context) {
   const std::size_t S = spec_.model.species.size();
   std::vector<double> amounts(S * cells.size());
   for (std::size_t s = 0; s < S; ++s) {
-    const auto& amount = detail::doubleColumn(tissue, spec_.model.species[s].name + "_amount",
-                                              DivisionPolicy::SplitByMeasure);
+    const auto& amount =
+        detail::doubleColumn(tissue, spec_.model.species[s].name + "_amount", DivisionPolicy::SplitByMeasure);
     for (std::size_t k = 0; k < cells.size(); ++k) amounts[k * S + s] = amount[cells[k]];
   }
   networks::NetworkSystem system(spec_.model, std::move(graph), spec_.jacobian);
@@ -365,8 +402,7 @@ void NetworkStage::apply(Tissue& tissue, const StepContext& context) {
     stats_ += integrator.statistics();
   }
   writeOutputs(tissue, cells, walls, system, y, true);
-  if (spec_.primordia.enabled() && elapsed > 0)
-    detectPrimordia(tissue, cells, system, y, context.end_time);
+  if (spec_.primordia.enabled() && elapsed > 0) detectPrimordia(tissue, cells, system, y, context.end_time);
   schedule_.solved(context);
 }
 

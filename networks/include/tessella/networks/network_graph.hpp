@@ -58,8 +58,7 @@ bool onPositiveSide(const Tissue& tissue, WallId wall, CellId cell);
 /// cell properties named in `properties` (InputError when one is missing or
 /// does not hold doubles). `walls`, if given, receives per interface the
 /// walls it joins.
-NetworkGraph networkGraph(const Tissue& tissue, GeometryCache& geometry,
-                          const std::vector<std::string>& properties,
+NetworkGraph networkGraph(const Tissue& tissue, GeometryCache& geometry, const std::vector<std::string>& properties,
                           std::vector<CellId>* cells = nullptr,
                           std::vector<std::vector<InterfaceWall>>* walls = nullptr);
 

@@ -61,8 +61,7 @@ class NetworkSystem {
  public:
   /// Validates both, compiles the reactions (InputError naming the species
   /// and muparser's message), and builds the Jacobian's pattern.
-  NetworkSystem(NetworkModel model, NetworkGraph graph,
-                JacobianKind jacobian = JacobianKind::Exact);
+  NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKind jacobian = JacobianKind::Exact);
   ~NetworkSystem();
   NetworkSystem(const NetworkSystem&) = delete;
   NetworkSystem& operator=(const NetworkSystem&) = delete;
@@ -73,13 +72,9 @@ class NetworkSystem {
   std::size_t numCells() const { return graph_.numCells(); }
   /// Amounts, then PIN densities (numPinStates()).
   std::size_t size() const { return numSpecies() * numCells() + numPinStates(); }
-  std::size_t index(std::size_t cell, std::size_t species) const {
-    return cell * numSpecies() + species;
-  }
+  std::size_t index(std::size_t cell, std::size_t species) const { return cell * numSpecies() + species; }
   /// 2 per interface with a dynamic PIN model (PinTransport::dynamic()), else 0.
-  std::size_t numPinStates() const {
-    return model_.pin.dynamic() ? 2 * graph_.interfaces.size() : 0;
-  }
+  std::size_t numPinStates() const { return model_.pin.dynamic() ? 2 * graph_.interfaces.size() : 0; }
   /// The state index of the PIN density on side 0 (cell_i's) or 1 (cell_j's) of interface k.
   std::size_t pinIndex(std::size_t k, int side) const {
     return numSpecies() * numCells() + 2 * k + static_cast<std::size_t>(side);
@@ -112,29 +107,25 @@ class NetworkSystem {
  private:
   bool inPattern(std::size_t r, std::size_t c) const;
   void pinDenominators();  // pin_denominator_ from pin_weight_
-  void evaluateReactions(double t, std::size_t cell, std::span<const double> conc,
-                         std::span<double> rate);
-  // Dynamic PIN: pin_cell_ from y; the rate of the density on `side` of interface k and, if
-  // `partial`, its derivatives with respect to the PinExpression arguments.
+  void evaluateReactions(double t, std::size_t cell, std::span<const double> conc, std::span<double> rate);
+  // Dynamic PIN: pin_cell_ from y; the rate of the density on `side` of interface k and, if `partial`, its
+  // derivatives with respect to the PinExpression arguments.
   void pinCellAmounts(std::span<const double> y);
-  double pinRate(double t, std::size_t k, int side, std::span<const double> y,
-                 std::array<double, 8>* partial);
+  double pinRate(double t, std::size_t k, int side, std::span<const double> y, std::array<double, 8>* partial);
 
   NetworkModel model_;
   NetworkGraph graph_;
   std::unique_ptr<ReactionSet> reactions_;
-  std::vector<std::vector<std::size_t>> neighbours_;  // per cell: interface indices
+  std::vector<std::vector<std::size_t>> neighbours_;       // per cell: interface indices
   CsrMatrix pattern_;
   JacobianKind jacobian_kind_ = JacobianKind::Exact;
   int pin_species_ = -1;
   std::vector<double> pin_denominator_, pin_weight_, pin_weight_derivative_, conc_;
   std::unique_ptr<PinExpression> pin_expression_;
-  bool pin_cell_coupled_ =
-      false;  // a PIN rate reads every PIN of its cell (bounded, or pin_cell in the expression)
-  std::vector<double> pin_cell_;  // per cell: sum_k L_ik p_ik
-  std::vector<const std::vector<double>*>
-      property_columns_;                 // the model's cell properties in the graph
-  std::vector<double> property_values_;  // one cell's values of them
+  bool pin_cell_coupled_ = false;  // a PIN rate reads every PIN of its cell (bounded, or pin_cell in the expression)
+  std::vector<double> pin_cell_;   // per cell: sum_k L_ik p_ik
+  std::vector<const std::vector<double>*> property_columns_;  // the model's cell properties in the graph
+  std::vector<double> property_values_;                       // one cell's values of them
 };
 
 }  // namespace tessella::networks

@@ -43,14 +43,14 @@ struct PrimordiaSpec {
 
 /// One primordium as it started.
 struct PrimordiumRecord {
-  int id = 0;                    ///< 1, 2, ... in order of appearance (the cell property's value)
-  double time = 0.0;             ///< end of the solve that found it
-  std::int64_t lineage = 0;      ///< the cell's lineage id
+  int id = 0;                 ///< 1, 2, ... in order of appearance (the cell property's value)
+  double time = 0.0;          ///< end of the solve that found it
+  std::int64_t lineage = 0;   ///< the cell's lineage id
   Vec3 position = Vec3::Zero();  ///< the cell's centroid
-  double angle_deg = 0.0;        ///< about the dome's axis, [0, 360)
-  double radius = 0.0;           ///< distance from the axis
-  double distance = 0.0;         ///< straight-line distance from the apex
-  double divergence_deg = 0.0;   ///< from the previous primordium, [0, 360); NaN for the first
+  double angle_deg = 0.0;     ///< about the dome's axis, [0, 360)
+  double radius = 0.0;        ///< distance from the axis
+  double distance = 0.0;      ///< straight-line distance from the apex
+  double divergence_deg = 0.0;  ///< from the previous primordium, [0, 360); NaN for the first
 };
 
 /// The cell property holding each cell's primordium id.
@@ -90,12 +90,14 @@ class NetworkStage final : public Stage {
   const NetworkSpec& spec() const { return spec_; }
   /// The primordia found so far, in order of appearance.
   const std::vector<PrimordiumRecord>& primordia() const { return primordia_; }
-  /// The primordia records under "network.primordia" and, with a dynamic PIN
-  /// model, the PIN densities under "network.pin" (exact numbers; per live
-  /// wall in slot order, the density on the side of the cell with the smaller
-  /// lineage id, or a boundary wall's cell, then on the other side).
-  void saveState(const Tissue& tissue, const std::string& snapshot_path,
-                 const io::VtuOptions& options, io::RunState& state) const override;
+  /// With PIN transport, writes the PIN density on both sides of every wall
+  /// beside the snapshot, <stem>.pin.vtu (docs/output.md). The primordia
+  /// records under "network.primordia" and, with a dynamic PIN model, the PIN
+  /// densities under "network.pin" (exact numbers; per live wall in slot
+  /// order, the density on the side of the cell with the smaller lineage id,
+  /// or a boundary wall's cell, then on the other side).
+  void saveState(const Tissue& tissue, const std::string& snapshot_path, const io::VtuOptions& options,
+                 io::RunState& state) const override;
   /// Restores the records (InputError naming the key and the value when damaged)
   /// and keeps the PIN densities for prepare().
   void continueFrom(const std::string& snapshot_path, const io::RunState& state) override;
@@ -104,24 +106,23 @@ class NetworkStage final : public Stage {
 
  private:
   void writeOutputs(Tissue& tissue, const std::vector<CellId>& cells,
-                    const std::vector<std::vector<networks::InterfaceWall>>& walls,
-                    networks::NetworkSystem& system, const std::vector<double>& y, bool write_pin);
-  // The state: amounts from the cells, PIN densities (dynamic models) from the walls.
-  std::vector<double> readState(Tissue& tissue, const std::vector<CellId>& cells,
+                    const std::vector<std::vector<networks::InterfaceWall>>& walls, networks::NetworkSystem& system,
+                    const std::vector<double>& y, bool write_pin);
+  // The state: amounts from the cells, PIN densities (dynamic models) from the walls' properties.
+  std::vector<double> readState(const Tissue& tissue, const std::vector<CellId>& cells,
                                 const std::vector<std::vector<networks::InterfaceWall>>& walls,
-                                const networks::NetworkSystem& system,
-                                const std::vector<double>& amounts);
+                                const networks::NetworkSystem& system, const std::vector<double>& amounts) const;
+  // The PIN per wall side beside a snapshot: <stem>.pin.vtu (io::writeWallsVtu).
+  void writePinWalls(const Tissue& tissue, const std::string& snapshot_path, const io::VtuOptions& options) const;
   void restorePin(Tissue& tissue);
-  void detectPrimordia(Tissue& tissue, const std::vector<CellId>& cells,
-                       const networks::NetworkSystem& system, const std::vector<double>& y,
-                       double time);
+  void detectPrimordia(Tissue& tissue, const std::vector<CellId>& cells, const networks::NetworkSystem& system,
+                       const std::vector<double>& y, double time);
 
   NetworkSpec spec_;
   SolveSchedule schedule_;
   networks::IntegratorStatistics stats_;
   std::vector<PrimordiumRecord> primordia_;
-  std::optional<std::pair<std::string, std::string>>
-      restart_pin_;  // snapshot path, its network.pin text
+  std::optional<std::pair<std::string, std::string>> restart_pin_;  // snapshot path, its network.pin text
 };
 
 }  // namespace tessella::sim
