@@ -11,11 +11,9 @@ const EnumTable<PinModel>& pinModels() {
   static const EnumTable<PinModel> table(
       "PIN model",
       {{"up_the_gradient", PinModel::UpTheGradient,
-        "PIN toward neighbour j grows with f(c_j) (Joensson et al. 2006, Smith et al. 2006); no "
-        "PIN state."},
+        "PIN toward neighbour j grows with f(c_j) (Joensson et al. 2006, Smith et al. 2006); no PIN state."},
        {"with_the_flux", PinModel::WithTheFlux,
-        "PIN density on each wall side is a state produced with the net flux through the wall "
-        "(canalization: "
+        "PIN density on each wall side is a state produced with the net flux through the wall (canalization: "
         "Mitchison 1980, Rolland-Lagan & Prusinkiewicz 2005, Bayer et al. 2009) and decaying."},
        {"expression", PinModel::Expression,
         "PIN density on each wall side is a state whose rate of change is a muparser expression "
@@ -25,9 +23,8 @@ const EnumTable<PinModel>& pinModels() {
 
 const EnumTable<PinFunction>& pinFunctions() {
   static const EnumTable<PinFunction> table(
-      "PIN weight function",
-      {{"exponential", PinFunction::Exponential, "f(c) = base^c (Smith et al. 2006)."},
-       {"power", PinFunction::Power, "f(c) = c^exponent (Joensson et al. 2006: exponent 1)."}});
+      "PIN weight function", {{"exponential", PinFunction::Exponential, "f(c) = base^c (Smith et al. 2006)."},
+                              {"power", PinFunction::Power, "f(c) = c^exponent (Joensson et al. 2006: exponent 1)."}});
   return table;
 }
 
