@@ -48,6 +48,15 @@ void NetworkModel::validate() const {
       throw InputError("network: species '" + s.name + "': permeability " + std::to_string(s.permeability) +
                        " must be finite and >= 0");
   }
+  // The neighbourhood terms of the reactions are names too.
+  for (const NetworkSpecies& s : species) {
+    for (const char* prefix : {"sum_", "mean_"}) {
+      const std::string name = prefix + s.name;
+      if (!seen.insert(name).second)
+        throw InputError("network: '" + name + "' names both a species and the neighbourhood term " + prefix +
+                         "<" + s.name + ">");
+    }
+  }
   for (const auto& [name, value] : parameters) {
     claim(name, "parameter");
     if (!std::isfinite(value)) throw InputError("network: parameter '" + name + "' is not finite");

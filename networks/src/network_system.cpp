@@ -74,6 +74,10 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
         cols.push_back(index(c, s));
       else
         for (std::size_t q = 0; q < S; ++q) cols.push_back(index(c, q));
+      // Neighbourhood terms: a reaction reading sum_q / mean_q depends on q in every neighbour.
+      for (std::size_t q = 0; q < S; ++q)
+        if (reactions_->usesNeighbourhood(q))
+          for (std::size_t f : neighbours_[c]) cols.push_back(index(otherCell(graph_.interfaces[f], c), q));
       const bool passive = model_.species[s].permeability > 0;
       const bool pinned = static_cast<int>(s) == pin_species_;
       if (passive || pinned)
@@ -114,15 +118,40 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
   pin_weight_.assign(n, 0.0);
   pin_weight_derivative_.assign(n, 0.0);
   conc_.assign(n * S, 0.0);
+  neighbourhood_.assign(reactions_->usesAnyNeighbourhood() ? n * 2 * S : 0, 0.0);
+  wall_total_.assign(n, 0.0);
+  for (const NetworkInterface& f : graph_.interfaces) {
+    wall_total_[static_cast<std::size_t>(f.cell_i)] += f.measure;
+    wall_total_[static_cast<std::size_t>(f.cell_j)] += f.measure;
+  }
   pin_cell_.assign(n, 0.0);
 }
 
 NetworkSystem::~NetworkSystem() = default;
 
 void NetworkSystem::evaluateReactions(double t, std::size_t cell, std::span<const double> conc,
-                                      std::span<double> rate) {
+                                      std::span<double> rate, std::span<const double> neighbourhood) {
   for (std::size_t k = 0; k < property_columns_.size(); ++k) property_values_[k] = (*property_columns_[k])[cell];
-  reactions_->evaluate(t, cell, graph_.measure[cell], graph_.centroid[cell], property_values_, conc, rate);
+  if (neighbourhood.empty() && !neighbourhood_.empty())
+    neighbourhood = std::span<const double>(&neighbourhood_[cell * 2 * numSpecies()], 2 * numSpecies());
+  reactions_->evaluate(t, cell, graph_.measure[cell], graph_.centroid[cell], property_values_, conc, rate,
+                       neighbourhood);
+}
+
+void NetworkSystem::neighbourhoodTerms() {
+  if (neighbourhood_.empty()) return;
+  const std::size_t S = numSpecies();
+  std::fill(neighbourhood_.begin(), neighbourhood_.end(), 0.0);
+  for (const NetworkInterface& f : graph_.interfaces) {
+    const auto i = static_cast<std::size_t>(f.cell_i), j = static_cast<std::size_t>(f.cell_j);
+    for (std::size_t s = 0; s < S; ++s) {
+      neighbourhood_[i * 2 * S + s] += f.measure * conc_[index(j, s)];
+      neighbourhood_[j * 2 * S + s] += f.measure * conc_[index(i, s)];
+    }
+  }
+  for (std::size_t c = 0; c < numCells(); ++c)
+    for (std::size_t s = 0; s < S; ++s)
+      neighbourhood_[c * 2 * S + S + s] = wall_total_[c] > 0 ? neighbourhood_[c * 2 * S + s] / wall_total_[c] : 0.0;
 }
 
 void NetworkSystem::rhs(double t, std::span<const double> y, std::span<double> ydot) {
@@ -131,6 +160,7 @@ void NetworkSystem::rhs(double t, std::span<const double> y, std::span<double> y
     for (std::size_t s = 0; s < S; ++s) conc_[index(c, s)] = y[index(c, s)] / graph_.measure[c];
   // Reactions: the amount changes at measure * rate.
   if (!reactions_->empty()) {
+    neighbourhoodTerms();
     for (std::size_t c = 0; c < n; ++c) {
       std::span<const double> conc(&conc_[index(c, 0)], S);
       std::span<double> rate(&ydot[index(c, 0)], S);
@@ -252,6 +282,7 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
     for (std::size_t s = 0; s < S; ++s) conc_[index(c, s)] = y[index(c, s)] / graph_.measure[c];
   // Reactions: d(V r_s)/dy_q = dr_s/dc_q, by central differences in the cell's concentrations.
   if (!reactions_->empty()) {
+    neighbourhoodTerms();
     std::vector<double> cc(S), up(S), down(S);
     const double root = std::cbrt(std::numeric_limits<double>::epsilon());
     for (std::size_t c = 0; c < n; ++c) {
@@ -265,6 +296,37 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
         evaluateReactions(t, c, cc, down);
         cc[q] = keep;
         for (std::size_t s = 0; s < S; ++s) addAt(J, index(c, s), index(c, q), (up[s] - down[s]) / (2 * h));
+      }
+    }
+    // Neighbourhood terms: d(V_c r_s)/dy_jq = V_c (dr_s/dsum_q + dr_s/dmean_q / W_c) L_cj / V_j, W_c = sum_j L_cj,
+    // the partial derivatives by central differences in sum_q and mean_q.
+    if (!neighbourhood_.empty()) {
+      std::vector<double> nb(2 * S), dsum(S), dmean(S);
+      for (std::size_t c = 0; c < n; ++c) {
+        for (std::size_t q = 0; q < S; ++q) cc[q] = conc_[index(c, q)];
+        std::copy_n(&neighbourhood_[c * 2 * S], 2 * S, nb.begin());
+        for (std::size_t q = 0; q < S; ++q) {
+          if (!reactions_->usesNeighbourhood(q)) continue;
+          for (std::size_t which = 0; which < 2; ++which) {
+            const std::size_t v = which * S + q;
+            const double h = root * std::max(std::abs(nb[v]), 1.0);
+            const double keep = nb[v];
+            nb[v] = keep + h;
+            evaluateReactions(t, c, cc, up, nb);
+            nb[v] = keep - h;
+            evaluateReactions(t, c, cc, down, nb);
+            nb[v] = keep;
+            for (std::size_t s = 0; s < S; ++s) (which == 0 ? dsum : dmean)[s] = (up[s] - down[s]) / (2 * h);
+          }
+          for (std::size_t f : neighbours_[c]) {
+            const std::size_t j = otherCell(graph_.interfaces[f], c);
+            const double L = graph_.interfaces[f].measure;
+            for (std::size_t s = 0; s < S; ++s) {
+              const double per_c = dsum[s] + (wall_total_[c] > 0 ? dmean[s] / wall_total_[c] : 0.0);
+              addAt(J, index(c, s), index(j, q), graph_.measure[c] * per_c * L / graph_.measure[j]);
+            }
+          }
+        }
       }
     }
   }

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <random>
 
+#include "jacobian_check.hpp"
 #include "network_fixtures.hpp"
 #include "tessella/generators/grids.hpp"
 #include "tessella/networks/network_integrator.hpp"
@@ -48,39 +49,6 @@ std::vector<double> randomState(const NetworkSystem& s, unsigned seed) {
   std::vector<double> y(s.size());
   for (double& v : y) v = u(rng);
   return y;
-}
-
-void compareWithDifferences(NetworkSystem& system, const std::vector<double>& y) {
-  CsrMatrix J;
-  system.jacobian(0.0, y, J);
-  const std::size_t n = system.size();
-  double largest = 0.0;
-  for (double v : J.value) largest = std::max(largest, std::abs(v));
-  REQUIRE(largest > 0.0);
-  std::vector<double> yp = y, fp(n), fm(n);
-  std::size_t outside = 0, compared = 0;
-  for (std::size_t col = 0; col < n; ++col) {
-    const double h = 1e-6 * std::max(1.0, std::abs(y[col]));
-    yp[col] = y[col] + h;
-    system.rhs(0.0, yp, fp);
-    yp[col] = y[col] - h;
-    system.rhs(0.0, yp, fm);
-    yp[col] = y[col];
-    for (std::size_t row = 0; row < n; ++row) {
-      const double fd = (fp[row] - fm[row]) / (2 * h);
-      INFO("row " << row << " column " << col << " (amounts end at " << system.numSpecies() * system.numCells()
-                  << ")");
-      CHECK(std::abs(J.at(row, col) - fd) <= 1e-6 * largest);
-      if (std::abs(fd) > 1e-9 * largest) {
-        ++compared;
-        const auto first = J.column.begin() + static_cast<std::ptrdiff_t>(J.row_start[row]);
-        const auto last = J.column.begin() + static_cast<std::ptrdiff_t>(J.row_start[row + 1]);
-        if (!std::binary_search(first, last, col)) ++outside;
-      }
-    }
-  }
-  CHECK(compared > n);
-  CHECK(outside == 0);
 }
 
 }  // namespace
@@ -134,7 +102,7 @@ TEST_CASE("Dynamic PIN: the Jacobian matches central differences", "[networks][p
   }
   INFO("bounded " << bounded << ", expression " << expression);
   NetworkSystem system(m, networkGraph(t, geometry, {}));
-  compareWithDifferences(system, randomState(system, 7));
+  testing::compareWithDifferences(system, randomState(system, 7));
 }
 
 TEST_CASE("The expression model reproduces with_the_flux written as an expression", "[networks][pin]") {

@@ -196,3 +196,16 @@ def test_with_the_flux_transport_conserves_the_amount():
         system.rhs(0.0, y0[:N])
     with pytest.raises(tessella.InputError, match="needs pin.expression"):
         tessella.NetworkModel([tessella.NetworkSpecies("auxin")], pin=flux_pin(model="expression"))
+
+
+def test_neighbourhood_terms_relax_a_ring_mode_in_closed_form():
+    # dc_i/dt = k (mean_a - a) on a ring of equal cells and walls: c_i = 2 + exp(-k (1 - cos th) t) cos(th i).
+    n, mode, k, t1 = 12, 3, 0.7, 2.5
+    th = 2 * math.pi * mode / n
+    graph = tessella.NetworkGraph([1.0] * n, [(min(i, (i + 1) % n), max(i, (i + 1) % n), 1.0) for i in range(n)])
+    system = tessella.NetworkSystem(
+        tessella.NetworkModel([tessella.NetworkSpecies("a", "k * (mean_a - a)")], {"k": k}), graph)
+    y = system.integrate([2 + math.cos(th * i) for i in range(n)], 0.0, t1, relative_tolerance=1e-10,
+                         absolute_tolerance=1e-12)
+    exact = [2 + math.exp(-k * (1 - math.cos(th)) * t1) * math.cos(th * i) for i in range(n)]
+    np.testing.assert_allclose(y, exact, rtol=1e-7)

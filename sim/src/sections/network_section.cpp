@@ -84,8 +84,9 @@ void declareNetworkSection(Schema& s) {
       .atLeast(0);
   s.key(e + ".reaction", ValueType::String,
         "Rate of change of the concentration inside a cell: a muparser expression over the species, the "
-        "parameters, the properties named in network.properties, measure, x, y, z and t, e.g. "
-        "\"p - d * auxin\".")
+        "parameters, the properties named in network.properties, measure, x, y, z, t and the neighbourhood "
+        "terms sum_<species> (sum over the neighbours j of L_ij c_j, L_ij the interface's length or area) and "
+        "mean_<species> (the same divided by sum_j L_ij), e.g. \"p - d * auxin\" or \"k * (mean_auxin - auxin)\".")
       .whenAbsent("no reaction");
   s.key(e + ".permeability", ValueType::Float,
         "Passive permeability P: a wall of length (2D) or area (3D) L between cells i and j carries "

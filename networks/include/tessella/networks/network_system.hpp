@@ -85,11 +85,15 @@ class NetworkSystem {
   void rhs(double t, std::span<const double> y, std::span<double> ydot);
   /// The pattern of dF/dy (values zero): the species of a cell couple with
   /// each other (reactions), a transported species with its neighbours, and
-  /// the PIN species with the neighbours of its neighbours (JacobianKind::Exact).
+  /// the PIN species with the neighbours of its neighbours (up_the_gradient,
+  /// JacobianKind::Exact) or with its interfaces' PIN densities (dynamic PIN);
+  /// a reaction reading sum_q / mean_q with q in the neighbours.
   const CsrMatrix& pattern() const { return pattern_; }
   /// dF/dy at (t, y) on pattern(): transport and PIN exactly, reactions by
-  /// central differences per cell (each reaction depends on its own cell
-  /// only); with JacobianKind::Neighbours without the second-neighbour terms.
+  /// central differences per cell in the cell's concentrations and in its
+  /// neighbourhood terms (then chained exactly), a PIN expression by central
+  /// differences in its arguments; with JacobianKind::Neighbours without the
+  /// second-neighbour terms of up_the_gradient.
   void jacobian(double t, std::span<const double> y, CsrMatrix& J);
 
   /// PIN on both sides of every interface at state y (zeros without PIN transport): the amount
@@ -107,7 +111,10 @@ class NetworkSystem {
  private:
   bool inPattern(std::size_t r, std::size_t c) const;
   void pinDenominators();  // pin_denominator_ from pin_weight_
-  void evaluateReactions(double t, std::size_t cell, std::span<const double> conc, std::span<double> rate);
+  // The reactions of one cell; `neighbourhood` empty: the cell's values in neighbourhood_.
+  void evaluateReactions(double t, std::size_t cell, std::span<const double> conc, std::span<double> rate,
+                         std::span<const double> neighbourhood = {});
+  void neighbourhoodTerms();  // neighbourhood_ from conc_
   // Dynamic PIN: pin_cell_ from y; the rate of the density on `side` of interface k and, if `partial`, its
   // derivatives with respect to the PinExpression arguments.
   void pinCellAmounts(std::span<const double> y);
@@ -124,6 +131,9 @@ class NetworkSystem {
   std::unique_ptr<PinExpression> pin_expression_;
   bool pin_cell_coupled_ = false;  // a PIN rate reads every PIN of its cell (bounded, or pin_cell in the expression)
   std::vector<double> pin_cell_;   // per cell: sum_k L_ik p_ik
+  // Per cell, the reactions' sum_<s> then mean_<s> of every species (empty when no reaction reads them), and
+  // the cell's summed interface measure.
+  std::vector<double> neighbourhood_, wall_total_;
   std::vector<const std::vector<double>*> property_columns_;  // the model's cell properties in the graph
   std::vector<double> property_values_;                       // one cell's values of them
 };
