@@ -225,3 +225,36 @@ TEST_CASE("The PIN walls file holds the dynamic densities of the walls", "[sim][
   }
   CHECK(interior >= pin.size());  // two walls between the same cells share a key
 }
+
+TEST_CASE("canalization_2d.yaml: a file of high-PIN walls joins the source to the sink", "[sim][network][pin][configs]") {
+  Simulation sim = Simulation::fromFile(tessella::sim::test::sourcePath("configs/canalization_2d.yaml"));
+  sim.run();
+  const Tissue& t = sim.tissue();
+  GeometryCache g;
+  g.require(t, kCellMeasures | GeometryQuantity::EdgeLengths);
+  const auto& pos = t.wallProperties().get<double>(NetworkStage::pinWallProperty("auxin", true));
+  const auto& neg = t.wallProperties().get<double>(NetworkStage::pinWallProperty("auxin", false));
+  std::size_t channel = 0, high = 0, interior = 0;
+  for (WallId w : t.walls()) {
+    const std::vector<CellId> two = t.wallCells(w);
+    if (two.size() != 2) continue;
+    ++interior;
+    // The side of the cell on the left (smaller x) and of the cell on the right.
+    const Vec3 a = cellCentroid(t, two[0]), b = cellCentroid(t, two[1]);
+    const bool first_left = a.x() < b.x();
+    const double pa = networks::onPositiveSide(t, w, two[0]) ? pos[w] : neg[w];
+    const double pb = networks::onPositiveSide(t, w, two[1]) ? pos[w] : neg[w];
+    const double left = first_left ? pa : pb, right = first_left ? pb : pa;
+    const double bound = 2.0 / g.edge_length[w.index()];  // total / L: all of a cell's PIN on this wall
+    if (std::max(pa, pb) > 0.75 * bound) ++high;
+    // The walls between the source's row of cells (4 < y < 5), from the source to the sink.
+    if (std::abs(a.y() - b.y()) < 1e-9 && a.y() > 4 && a.y() < 5) {
+      ++channel;
+      CHECK(left > 0.75 * bound);   // PIN points from the source toward the sink
+      CHECK(right < 0.05 * bound);
+    }
+  }
+  CHECK(channel == 11);
+  CHECK(high < 15);  // the channel, and a few walls into the sink
+  CHECK(interior > 150);
+}
