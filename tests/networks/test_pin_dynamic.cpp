@@ -202,3 +202,24 @@ TEST_CASE("Dynamic PIN models are validated", "[networks][pin]") {
   std::vector<double> y{1, 1, 1, 1}, ydot(4);
   CHECK_THROWS_WITH(s.rhs(0.0, y, ydot), Catch::Contains("gave") && Catch::Contains("cell 0's side"));
 }
+
+TEST_CASE("A CVODE failure in a PIN density names the side and the interface", "[networks][pin][errors]") {
+  // dp/dt = 1000 p^2 blows up at t = 1e-3 / p0; the amounts do not move (no transport, no reaction).
+  NetworkModel m = testing::oneSpecies("auxin", 0.0);
+  m.pin = flux(false);
+  m.pin.rate = 0.0;
+  m.pin.model = PinModel::Expression;
+  m.pin.expression = "1000 * pin^2";
+  NetworkSystem system(m, testing::chainGraph({1, 1, 1}, {1, 1}));
+  std::vector<double> y{1, 1, 1, 0.5, 1.0, 0.5, 0.5};  // cell 1's side of interface 0 is the largest
+  IntegratorOptions o;
+  o.max_steps = 20;
+  try {
+    NetworkIntegrator(system, o).advance(y, 0.0, 1.0);
+    FAIL("no error");
+  } catch (const NetworkIntegrationError& e) {
+    CHECK_THAT(e.what(), Catch::Contains("the PIN of 'auxin' on cell 1's side of its interface with cell 0"));
+    CHECK(e.cell() == 1);
+    CHECK(e.species() == "auxin");
+  }
+}
