@@ -3,9 +3,9 @@
 // Cell-level regulatory networks from Python (networks/): the model as code
 // (species, parameters, reactions, transport, PIN), its graph (from a tissue
 // or from arrays), and the system: right-hand side, Jacobian, PIN, polarity,
-// and integration by CVODE; primordium detection on a dome (primordia.hpp). States are AMOUNTS per cell and species, laid
-// out cell by cell: y[cell * num_species + species], then (with_the_flux / expression PIN) two PIN densities per
-// interface: y[num_cells * num_species + 2 k + side].
+// and integration by CVODE; primordium detection on a dome (primordia.hpp). States are AMOUNTS per cell and
+// species, laid out cell by cell: y[cell * num_species + species], then (with_the_flux / expression PIN) two PIN
+// densities per interface: y[num_cells * num_species + 2 k + side].
 #include <array>
 
 #include "bindings.hpp"

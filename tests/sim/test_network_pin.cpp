@@ -226,7 +226,8 @@ TEST_CASE("The PIN walls file holds the dynamic densities of the walls", "[sim][
   CHECK(interior >= pin.size());  // two walls between the same cells share a key
 }
 
-TEST_CASE("canalization_2d.yaml: a file of high-PIN walls joins the source to the sink", "[sim][network][pin][configs]") {
+TEST_CASE("canalization_2d.yaml: a file of high-PIN walls joins the source to the sink",
+          "[sim][network][pin][configs]") {
   Simulation sim = Simulation::fromFile(tessella::sim::test::sourcePath("configs/canalization_2d.yaml"));
   sim.run();
   const Tissue& t = sim.tissue();
