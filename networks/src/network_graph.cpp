@@ -59,8 +59,22 @@ Vec3 wallNormal(const Tissue& t, const GeometryCache& g, WallId w, const Vec3& f
 }
 }  // namespace
 
+bool onPositiveSide(const Tissue& tissue, WallId wall, CellId cell) {
+  const CellComplex& t = tissue.topology();
+  if (tissue.dim() == 2) {
+    for (OrientedEdge e : t.faceEdges(FaceId(cell.index())))
+      if (e.handle().index() == wall.index()) return !e.reversed();
+  } else {
+    for (OrientedFace f : t.volumeFaces(VolumeId(cell.index())))
+      if (f.handle().index() == wall.index()) return !f.reversed();
+  }
+  throw InputError("network: wall " + std::to_string(wall.index()) + " does not bound cell " +
+                   std::to_string(cell.index()));
+}
+
 NetworkGraph networkGraph(const Tissue& tissue, GeometryCache& geometry, const std::vector<std::string>& properties,
-                          std::vector<CellId>* cells_out) {
+                          std::vector<CellId>* cells_out, std::vector<std::vector<InterfaceWall>>* walls_out) {
+  if (walls_out) walls_out->clear();
   geometry.require(tissue, tissue.dim() == 2 ? kCellMeasures | GeometryQuantity::EdgeLengths : kCellMeasures);
   NetworkGraph g;
   std::vector<int> index(tissue.cellSlots(), -1);
@@ -77,12 +91,20 @@ NetworkGraph networkGraph(const Tissue& tissue, GeometryCache& geometry, const s
     const std::vector<CellId> two = tissue.wallCells(w);
     if (two.size() != 2) continue;
     int i = index[two[0].index()], j = index[two[1].index()];
-    if (i > j) std::swap(i, j);
+    CellId cell_i = two[0];
+    if (i > j) {
+      std::swap(i, j);
+      cell_i = two[1];
+    }
     const double m = tissue.dim() == 2 ? geometry.edge_length[w.index()] : geometry.face_area[w.index()];
     const Vec3 n = wallNormal(tissue, geometry, w, g.centroid[static_cast<std::size_t>(i)]);
     const std::uint64_t key = (static_cast<std::uint64_t>(i) << 32) | static_cast<std::uint32_t>(j);
     auto [it, fresh] = pair_index.emplace(key, g.interfaces.size());
     if (fresh) g.interfaces.push_back({i, j, 0.0, Vec3::Zero()});
+    if (walls_out) {
+      if (fresh) walls_out->emplace_back();
+      (*walls_out)[it->second].push_back({w, m, onPositiveSide(tissue, w, cell_i)});
+    }
     NetworkInterface& f = g.interfaces[it->second];
     f.measure += m;
     f.normal += m * n;

@@ -62,6 +62,7 @@ struct NetworkIntegrator::Impl {
   std::exception_ptr failure;  // an exception thrown inside a callback
   std::string last_message;    // CVODE's last error message
   std::size_t species = 0;     // S: the size of a preconditioner block
+  std::size_t cells = 0;       // n: the amounts are the first n S entries of the state (then PIN densities)
   std::vector<std::size_t> conserved;  // GMRES: the species without reactions (their totals are kept)
   std::vector<double> block_inverse;  // GMRES: per cell, the S x S inverse of I - gamma J's block (column-major)
   bool timers = false;
@@ -114,7 +115,7 @@ struct NetworkIntegrator::Impl {
     } else {
       *jcur = SUNFALSE;
     }
-    const std::size_t S = self->species, n = self->J.rows / S;
+    const std::size_t S = self->species, n = self->cells;
     Eigen::MatrixXd block(S, S);
     for (std::size_t c = 0; c < n; ++c) {
       for (std::size_t a = 0; a < S; ++a)
@@ -125,12 +126,18 @@ struct NetworkIntegrator::Impl {
       Eigen::Map<Eigen::MatrixXd>(&self->block_inverse[c * S * S], static_cast<Eigen::Index>(S),
                                   static_cast<Eigen::Index>(S)) = lu.inverse();
     }
+    // PIN densities (after the amounts): the inverse of their diagonal entry.
+    for (std::size_t r = n * S; r < self->J.rows; ++r) {
+      const double d = 1.0 - gamma * self->J.at(r, r);
+      if (!(std::abs(d) > 0)) return 1;
+      self->block_inverse[n * S * S + (r - n * S)] = 1.0 / d;
+    }
     return 0;
   }
 
   static int psolve(realtype, N_Vector, N_Vector, N_Vector r, N_Vector z, realtype, realtype, int, void* data) {
     auto* self = static_cast<Impl*>(data);
-    const std::size_t S = self->species, n = self->J.rows / S;
+    const std::size_t S = self->species, n = self->cells;
     const double* in = N_VGetArrayPointer_Serial(r);
     double* out = N_VGetArrayPointer_Serial(z);
     for (std::size_t c = 0; c < n; ++c) {
@@ -141,6 +148,7 @@ struct NetworkIntegrator::Impl {
         out[c * S + a] = sum;
       }
     }
+    for (std::size_t k = n * S; k < self->J.rows; ++k) out[k] = self->block_inverse[n * S * S + (k - n * S)] * in[k];
     return 0;
   }
   static int timedSolve(SUNLinearSolver S, SUNMatrix A, N_Vector x, N_Vector b, realtype tol) {
@@ -162,7 +170,7 @@ struct NetworkIntegrator::Impl {
   void conserve(N_Vector xv, N_Vector bv) const {
     const double* bb = N_VGetArrayPointer_Serial(bv);
     double* xx = N_VGetArrayPointer_Serial(xv);
-    const std::size_t S = species, n = J.rows / S;
+    const std::size_t S = species, n = cells;
     for (std::size_t s : conserved) {
       double missing = 0.0;
       for (std::size_t c = 0; c < n; ++c) missing += bb[c * S + s] - xx[c * S + s];
@@ -272,9 +280,10 @@ NetworkIntegrator::NetworkIntegrator(NetworkSystem& system, IntegratorOptions op
   if (!m.y) throw std::runtime_error("network integrator: N_VNew_Serial failed");
   m.J = system_.pattern();
   m.species = system_.numSpecies();
+  m.cells = system_.numCells();
   const bool gmres = options_.linear_solver == LinearSolver::Gmres;
   if (gmres) {
-    m.block_inverse.assign(system_.numCells() * m.species * m.species, 0.0);
+    m.block_inverse.assign(system_.numCells() * m.species * m.species + system_.numPinStates(), 0.0);
     m.solver = SUNLinSol_SPGMR(m.y, SUN_PREC_LEFT, 0, m.context);
     if (!m.solver) throw std::runtime_error("network integrator: SUNLinSol_SPGMR failed");
   } else {
@@ -364,16 +373,26 @@ void NetworkIntegrator::advance(std::span<double> y, double t0, double t1) {
     }
     N_VDestroy(ele);
     N_VDestroy(w);
-    const std::size_t S = system_.numSpecies();
-    const std::size_t cell = S ? worst / S : 0;
-    const std::string& species = system_.model().species[S ? worst % S : 0].name;
+    const std::size_t S = system_.numSpecies(), amounts = S * system_.numCells();
+    std::size_t cell = S ? worst / S : 0;
+    std::string species = system_.model().species[S ? worst % S : 0].name;
+    std::string where = "species '" + species + "' of cell " + std::to_string(cell);
+    if (worst >= amounts) {  // a PIN density
+      const std::size_t k = (worst - amounts) / 2;
+      const bool side_i = (worst - amounts) % 2 == 0;
+      const NetworkInterface& f = system_.graph().interfaces[k];
+      cell = static_cast<std::size_t>(side_i ? f.cell_i : f.cell_j);
+      species = system_.model().pin.species;
+      where = "the PIN of '" + species + "' on cell " + std::to_string(cell) + "'s side of its interface with cell " +
+              std::to_string(side_i ? f.cell_j : f.cell_i);
+    }
     double reached = t;
     CVodeGetCurrentTime(m.cvode, &reached);
     std::ostringstream msg;
     msg << "network integration failed at t = " << formatNumber(reached) << " (integrating from "
         << formatNumber(t0) << " to " << formatNumber(t1) << "): CVODE " << flagName(flag);
     if (!m.last_message.empty()) msg << " (" << m.last_message << ")";
-    msg << "; largest weighted local error in species '" << species << "' of cell " << cell << " ("
+    msg << "; largest weighted local error in " << where << " ("
         << formatNumber(worst_value) << ")";
     throw NetworkIntegrationError(msg.str(), reached, flag, species, cell);
   }

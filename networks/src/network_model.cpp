@@ -8,6 +8,7 @@
 #include <set>
 
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::networks {
 
@@ -47,6 +48,15 @@ void NetworkModel::validate() const {
       throw InputError("network: species '" + s.name + "': permeability " + std::to_string(s.permeability) +
                        " must be finite and >= 0");
   }
+  // The neighbourhood terms of the reactions are names too.
+  for (const NetworkSpecies& s : species) {
+    for (const char* prefix : {"sum_", "mean_"}) {
+      const std::string name = prefix + s.name;
+      if (!seen.insert(name).second)
+        throw InputError("network: '" + name + "' names both a species and the neighbourhood term " + prefix +
+                         "<" + s.name + ">");
+    }
+  }
   for (const auto& [name, value] : parameters) {
     claim(name, "parameter");
     if (!std::isfinite(value)) throw InputError("network: parameter '" + name + "' is not finite");
@@ -66,6 +76,30 @@ void NetworkModel::validate() const {
       throw InputError("network: PIN base " + std::to_string(pin.base) + " must be > 0");
     if (pin.function == PinFunction::Power && !(std::isfinite(pin.exponent) && pin.exponent > 0.0))
       throw InputError("network: PIN exponent " + std::to_string(pin.exponent) + " must be > 0");
+    if (pin.dynamic()) {
+      auto atLeast = [&](double v, double low, const char* what) {
+        if (!(std::isfinite(v) && v >= low))
+          throw InputError(std::string("network: PIN ") + what + " " + formatNumber(v) + " must be finite and >= " +
+                           formatNumber(low));
+      };
+      atLeast(pin.basal, 0.0, "basal");
+      atLeast(pin.production, 0.0, "production");
+      atLeast(pin.decay, 0.0, "decay");
+      atLeast(pin.flux_exponent, 1.0, "flux_exponent");
+      atLeast(pin.flux_saturation, 0.0, "flux_saturation");
+      atLeast(pin.initial, 0.0, "initial");
+      if (pin.bounded && !(pin.total > 0.0))
+        throw InputError("network: bounded PIN needs total > 0 (total " + formatNumber(pin.total) + ")");
+      if (pin.model == PinModel::Expression) {
+        if (pin.expression.find_first_not_of(" \t") == std::string::npos)
+          throw InputError("network: the PIN model 'expression' needs pin.expression (dPIN_ij/dt)");
+        const auto& vars = pinExpressionVariables();
+        for (const auto& [name, value] : parameters)
+          if (std::find(vars.begin(), vars.end(), name) != vars.end())
+            throw InputError("network: parameter '" + name + "' is a variable of the PIN expression (c_i, c_j, "
+                             "pin, pin_opposite, flux, wall, measure, pin_cell)");
+      }
+    }
   }
 }
 

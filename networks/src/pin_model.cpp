@@ -9,8 +9,15 @@ namespace tessella::networks {
 
 const EnumTable<PinModel>& pinModels() {
   static const EnumTable<PinModel> table(
-      "PIN model", {{"up_the_gradient", PinModel::UpTheGradient,
-                     "PIN toward neighbour j grows with f(c_j) (Joensson et al. 2006, Smith et al. 2006)."}});
+      "PIN model",
+      {{"up_the_gradient", PinModel::UpTheGradient,
+        "PIN toward neighbour j grows with f(c_j) (Joensson et al. 2006, Smith et al. 2006); no PIN state."},
+       {"with_the_flux", PinModel::WithTheFlux,
+        "PIN density on each wall side is a state produced with the net flux through the wall (canalization: "
+        "Mitchison 1980, Rolland-Lagan & Prusinkiewicz 2005, Bayer et al. 2009) and decaying."},
+       {"expression", PinModel::Expression,
+        "PIN density on each wall side is a state whose rate of change is a muparser expression "
+        "(pin.expression)."}});
   return table;
 }
 
@@ -19,6 +26,12 @@ const EnumTable<PinFunction>& pinFunctions() {
       "PIN weight function", {{"exponential", PinFunction::Exponential, "f(c) = base^c (Smith et al. 2006)."},
                               {"power", PinFunction::Power, "f(c) = c^exponent (Joensson et al. 2006: exponent 1)."}});
   return table;
+}
+
+const std::vector<std::string>& pinExpressionVariables() {
+  static const std::vector<std::string> names = {"c_i",  "c_j",  "pin",     "pin_opposite",
+                                                 "flux", "wall", "measure", "pin_cell"};
+  return names;
 }
 
 double PinTransport::weight(double c) const {
@@ -30,6 +43,19 @@ double PinTransport::weightDerivative(double c) const {
   if (function == PinFunction::Exponential) return std::log(base) * std::pow(base, c);
   if (c <= 0.0) return exponent == 1.0 ? 1.0 : 0.0;
   return exponent * std::pow(c, exponent - 1.0);
+}
+
+double PinTransport::fluxResponse(double phi) const {
+  if (!(phi > 0.0)) return 0.0;
+  const double q = std::pow(phi, flux_exponent);
+  return q / (1.0 + flux_saturation * q);
+}
+
+double PinTransport::fluxResponseDerivative(double phi) const {
+  if (!(phi > 0.0)) return 0.0;
+  const double q = std::pow(phi, flux_exponent);
+  const double d = 1.0 + flux_saturation * q;
+  return flux_exponent * std::pow(phi, flux_exponent - 1.0) / (d * d);
 }
 
 }  // namespace tessella::networks

@@ -15,6 +15,9 @@ ReactionSet::ReactionSet(const NetworkModel& model)
     : properties_(model.cell_properties),
       conc_(model.species.size(), 0.0),
       props_(model.cell_properties.size(), 0.0),
+      neighbourhood_(2 * model.species.size(), 0.0),
+      uses_sum_(model.species.size(), false),
+      uses_mean_(model.species.size(), false),
       params_(model.parameters.size(), 0.0) {
   for (const NetworkSpecies& s : model.species) {
     species_.push_back(s.name);
@@ -26,7 +29,11 @@ ReactionSet::ReactionSet(const NetworkModel& model)
     if (model.species[s].reaction.empty()) continue;
     auto parser = std::make_unique<mu::Parser>();
     try {
-      for (std::size_t v = 0; v < species_.size(); ++v) parser->DefineVar(species_[v], &conc_[v]);
+      for (std::size_t v = 0; v < species_.size(); ++v) {
+        parser->DefineVar(species_[v], &conc_[v]);
+        parser->DefineVar("sum_" + species_[v], &neighbourhood_[v]);
+        parser->DefineVar("mean_" + species_[v], &neighbourhood_[species_.size() + v]);
+      }
       std::size_t k = 0;
       for (const auto& [name, value] : model.parameters) parser->DefineVar(name, &params_[k++]);
       for (std::size_t v = 0; v < properties_.size(); ++v) parser->DefineVar(properties_[v], &props_[v]);
@@ -37,12 +44,17 @@ ReactionSet::ReactionSet(const NetworkModel& model)
       parser->DefineVar("t", &t_);
       parser->SetExpr(model.species[s].reaction);
       parser->Eval();  // forces the parse: syntax errors and unknown names surface here
+      const auto used = parser->GetUsedVar();
+      for (std::size_t v = 0; v < species_.size(); ++v) {
+        if (used.count("sum_" + species_[v])) uses_sum_[v] = true;
+        if (used.count("mean_" + species_[v])) uses_mean_[v] = true;
+      }
     } catch (const mu::Parser::exception_type& e) {
       const std::string token = e.GetToken().empty() ? "" : "near '" + e.GetToken() + "', ";
       throw InputError("network: reaction of species '" + species_[s] + "', \"" + model.species[s].reaction +
                        "\": " + e.GetMsg() + " (" + token + "at position " + std::to_string(e.GetPos()) +
                        "; the variables are the species, the parameters, the cell properties named, measure, x, "
-                       "y, z and t)");
+                       "y, z, t, and sum_<species> and mean_<species>)");
     }
     parsers_.push_back(std::move(parser));
     target_.push_back(s);
@@ -51,9 +63,18 @@ ReactionSet::ReactionSet(const NetworkModel& model)
 
 ReactionSet::~ReactionSet() = default;
 
+bool ReactionSet::usesAnyNeighbourhood() const {
+  for (std::size_t s = 0; s < uses_sum_.size(); ++s)
+    if (usesNeighbourhood(s)) return true;
+  return false;
+}
+
 void ReactionSet::evaluate(double t, std::size_t cell, double measure, const Vec3& centroid,
-                           std::span<const double> properties, std::span<const double> conc, std::span<double> rate) {
+                           std::span<const double> properties, std::span<const double> conc, std::span<double> rate,
+                           std::span<const double> neighbourhood) {
   for (std::size_t v = 0; v < conc_.size(); ++v) conc_[v] = conc[v];
+  for (std::size_t v = 0; v < neighbourhood_.size(); ++v)
+    neighbourhood_[v] = neighbourhood.empty() ? 0.0 : neighbourhood[v];
   for (std::size_t v = 0; v < props_.size(); ++v) props_[v] = properties[v];
   t_ = t;
   measure_ = measure;

@@ -3,8 +3,9 @@
 // Cell-level regulatory networks from Python (networks/): the model as code
 // (species, parameters, reactions, transport, PIN), its graph (from a tissue
 // or from arrays), and the system: right-hand side, Jacobian, PIN, polarity,
-// and integration by CVODE; primordium detection on a dome (primordia.hpp). States are AMOUNTS per cell and species, laid
-// out cell by cell: y[cell * num_species + species].
+// and integration by CVODE; primordium detection on a dome (primordia.hpp). States are AMOUNTS per cell and
+// species, laid out cell by cell: y[cell * num_species + species], then (with_the_flux / expression PIN) two PIN
+// densities per interface: y[num_cells * num_species + 2 k + side].
 #include <array>
 
 #include "bindings.hpp"
@@ -22,8 +23,9 @@ namespace {
 
 std::vector<double> checkedState(const NetworkSystem& s, const std::vector<double>& y) {
   if (y.size() != s.size())
-    throw InputError("network: " + std::to_string(y.size()) + " amounts for a system of " +
-                     std::to_string(s.numCells()) + " cells x " + std::to_string(s.numSpecies()) + " species");
+    throw InputError("network: " + std::to_string(y.size()) + " values for a system of " +
+                     std::to_string(s.numCells()) + " cells x " + std::to_string(s.numSpecies()) + " species + " +
+                     std::to_string(s.numPinStates()) + " PIN densities");
   return y;
 }
 
@@ -50,11 +52,20 @@ void bindNetworks(py::module_& m) {
       .def_readwrite("permeability", &NetworkSpecies::permeability);
 
   py::class_<PinTransport>(m, "PinTransport", R"doc(
-Up-the-gradient PIN efflux of one species: PIN_ij = total * L_ij f(c_j) / (saturation + sum_k L_ik f(c_k)),
-f(c) = base**c ("exponential") or c**exponent ("power"); the efflux from i into j is rate * PIN_ij * c_i.
+PIN efflux of one species (docs/networks.md).
+model "up_the_gradient": PIN_ij = total * L_ij f(c_j) / (saturation + sum_k L_ik f(c_k)), f(c) = base**c
+("exponential") or c**exponent ("power"); the efflux from i into j is rate * PIN_ij * c_i.
+model "with_the_flux": the PIN density p_ij on each interface side is a state,
+dp_ij/dt = (basal + production h(phi_ij)) B_i - decay p_ij, h(phi) = phi**flux_exponent / (1 + flux_saturation
+phi**flux_exponent) for a net flux density phi > 0 from i into j (else 0), B_i = 1 - sum_k L_ik p_ik / total when
+bounded (else 1); the efflux from i into j is rate * L_ij * p_ij * c_i.
+model "expression": dp_ij/dt = expression, over c_i, c_j, pin, pin_opposite, flux, wall, measure, pin_cell, t and
+the parameters. `initial` is the densities' starting value in a simulation.
 )doc")
       .def(py::init([](std::string species, const std::string& model, const std::string& function, double base,
-                       double exponent, double rate, double total, double saturation) {
+                       double exponent, double rate, double total, double saturation, double basal,
+                       double production, double decay, double flux_exponent, double flux_saturation, bool bounded,
+                       double initial, std::string expression) {
              PinTransport p;
              p.species = std::move(species);
              p.model = pinModels().parse(model);
@@ -64,11 +75,33 @@ f(c) = base**c ("exponential") or c**exponent ("power"); the efflux from i into 
              p.rate = rate;
              p.total = total;
              p.saturation = saturation;
+             p.basal = basal;
+             p.production = production;
+             p.decay = decay;
+             p.flux_exponent = flux_exponent;
+             p.flux_saturation = flux_saturation;
+             p.bounded = bounded;
+             p.initial = initial;
+             p.expression = std::move(expression);
              return p;
            }),
            py::arg("species"), py::arg("model") = "up_the_gradient", py::arg("function") = "exponential",
            py::arg("base") = 3.0, py::arg("exponent") = 1.0, py::arg("rate") = 1.0, py::arg("total") = 1.0,
-           py::arg("saturation") = 0.0)
+           py::arg("saturation") = 0.0, py::arg("basal") = 0.0, py::arg("production") = 1.0,
+           py::arg("decay") = 1.0, py::arg("flux_exponent") = 2.0, py::arg("flux_saturation") = 0.0,
+           py::arg("bounded") = false, py::arg("initial") = 0.0, py::arg("expression") = "")
+      .def_property(
+          "model", [](const PinTransport& p) { return pinModels().name(p.model); },
+          [](PinTransport& p, const std::string& name) { p.model = pinModels().parse(name); })
+      .def_property_readonly("dynamic", &PinTransport::dynamic, "PIN is a state (with_the_flux, expression).")
+      .def_readwrite("basal", &PinTransport::basal)
+      .def_readwrite("production", &PinTransport::production)
+      .def_readwrite("decay", &PinTransport::decay)
+      .def_readwrite("flux_exponent", &PinTransport::flux_exponent)
+      .def_readwrite("flux_saturation", &PinTransport::flux_saturation)
+      .def_readwrite("bounded", &PinTransport::bounded)
+      .def_readwrite("initial", &PinTransport::initial)
+      .def_readwrite("expression", &PinTransport::expression)
       .def_readwrite("species", &PinTransport::species)
       .def_readwrite("base", &PinTransport::base)
       .def_readwrite("exponent", &PinTransport::exponent)
@@ -158,7 +191,8 @@ f(c) = base**c ("exponential") or c**exponent ("power"); the efflux from i into 
 
   py::class_<NetworkSystem>(m, "NetworkSystem", R"doc(
 The ODE system of a model on a graph: dy/dt = F(t, y) for the AMOUNTS y[cell * num_species + species]
-(concentration = amount / measure). Integrate with integrate() (CVODE BDF, Newton with KLU or GMRES).
+(concentration = amount / measure), then, with a with_the_flux / expression PIN model, the PIN densities
+y[pin_index(interface, side)]. Integrate with integrate() (CVODE BDF, Newton with KLU or GMRES).
 )doc")
       .def(py::init([](const NetworkModel& model, const NetworkGraph& graph, const std::string& jacobian) {
              return std::make_unique<NetworkSystem>(model, graph, jacobianKinds().parse(jacobian));
@@ -168,6 +202,10 @@ The ODE system of a model on a graph: dy/dt = F(t, y) for the AMOUNTS y[cell * n
       .def_property_readonly("size", &NetworkSystem::size)
       .def_property_readonly("num_cells", &NetworkSystem::numCells)
       .def_property_readonly("num_species", &NetworkSystem::numSpecies)
+      .def_property_readonly("num_pin_states", &NetworkSystem::numPinStates,
+                             "2 per interface with a with_the_flux / expression PIN model, else 0.")
+      .def("pin_index", &NetworkSystem::pinIndex, py::arg("interface"), py::arg("side"),
+           "State index of the PIN density on side 0 (cell_i's) or 1 (cell_j's) of an interface.")
       .def("rhs",
            [](NetworkSystem& s, double t, const std::vector<double>& y) {
              const std::vector<double> state = checkedState(s, y);
@@ -199,7 +237,20 @@ The ODE system of a model on a graph: dy/dt = F(t, y) for the AMOUNTS y[cell * n
              }
              return out;
            },
-           py::arg("y"), "PIN per interface: column 0 on cell_i's side (toward j), column 1 on cell_j's side.")
+           py::arg("y"),
+           "PIN per interface (amount: wall measure times density): column 0 on cell_i's side (toward j), column 1 "
+           "on cell_j's side.")
+      .def("pin_density",
+           [](const NetworkSystem& s, const std::vector<double>& y) {
+             const auto sides = s.pinDensity(checkedState(s, y));
+             Eigen::MatrixXd out(static_cast<Eigen::Index>(sides.size()), 2);
+             for (std::size_t k = 0; k < sides.size(); ++k) {
+               out(static_cast<Eigen::Index>(k), 0) = sides[k].ij;
+               out(static_cast<Eigen::Index>(k), 1) = sides[k].ji;
+             }
+             return out;
+           },
+           py::arg("y"), "PIN per unit interface measure, columns as pin().")
       .def("polarity",
            [](const NetworkSystem& s, const std::vector<double>& y) {
              return vec3Array(s.polarity(checkedState(s, y)));

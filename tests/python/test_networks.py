@@ -123,3 +123,89 @@ def test_graph_of_a_tissue_and_bad_input():
         tessella.NetworkSystem(tessella.NetworkModel([tessella.NetworkSpecies("a", "a * nope")]), graph)
     with pytest.raises(tessella.InputError, match="not a species"):
         tessella.NetworkModel([tessella.NetworkSpecies("a")], pin=tessella.PinTransport("b"))
+
+
+# --- PIN as a state: with_the_flux and expression -------------------------------------------------
+
+
+def flux_pin(**kw):
+    args = dict(model="with_the_flux", rate=2.0, basal=0.1, production=3.0, decay=0.5, flux_exponent=2.0,
+                flux_saturation=0.2, total=2.0, initial=0.3)
+    args.update(kw)
+    return tessella.PinTransport("auxin", **args)
+
+
+@pytest.mark.parametrize("bounded", [False, True])
+def test_with_the_flux_two_cells_reach_the_closed_form_steady_state(bounded):
+    # A source cell (p per unit measure) and a sink cell (-d c): the net flux density through the wall carries
+    # all that is made, phi = p V0 / L; docs/networks.md, "PIN as a state".
+    V0, V1, L, p, d, D = 1.0, 1.5, 0.8, 1.0, 0.5, 0.1
+    pin = flux_pin(bounded=bounded)
+    assert pin.dynamic and pin.model == "with_the_flux"
+    model = tessella.NetworkModel([tessella.NetworkSpecies("auxin", "p * source - d * (1 - source) * auxin", D)],
+                                  {"p": p, "d": d}, ["source"], pin)
+    graph = tessella.NetworkGraph([V0, V1], [(0, 1, L)], properties={"source": [1.0, 0.0]})
+    system = tessella.NetworkSystem(model, graph)
+    assert system.size == 4 and system.num_pin_states == 2
+    y = system.integrate([0.5 * V0, 0.5 * V1, 0.3, 0.3], 0.0, 400.0, relative_tolerance=1e-11,
+                         absolute_tolerance=1e-13)
+    phi = p * V0 / L
+    a = pin.basal + pin.production * phi**2 / (1 + pin.flux_saturation * phi**2)
+    p10 = pin.basal / (pin.decay + (pin.basal * L / pin.total if bounded else 0.0))
+    p01 = a / (pin.decay + (a * L / pin.total if bounded else 0.0))
+    c1 = p * V0 / (d * V1)
+    c0 = (phi + (pin.rate * p10 + D) * c1) / (pin.rate * p01 + D)
+    assert y[0] / V0 == pytest.approx(c0, rel=1e-8)
+    assert y[1] / V1 == pytest.approx(c1, rel=1e-8)
+    assert y[system.pin_index(0, 0)] == pytest.approx(p01, rel=1e-8)
+    assert y[system.pin_index(0, 1)] == pytest.approx(p10, rel=1e-8)
+    np.testing.assert_allclose(system.pin_density(y)[0], [p01, p10], rtol=1e-8)
+    np.testing.assert_allclose(system.pin(y)[0], [L * p01, L * p10], rtol=1e-8)
+
+
+def test_expression_pin_matches_with_the_flux_and_its_jacobian_matches_differences():
+    species = [tessella.NetworkSpecies("auxin", "1 - 0.3 * auxin", 0.2)]
+    expression = ("(0.1 + 3 * (flux > 0 ? flux^2 : 0) / (1 + 0.2 * (flux > 0 ? flux^2 : 0))) * (1 - pin_cell / 2)"
+                  " - 0.5 * pin")
+    graph = tessella.NetworkGraph(list(MEASURE), INTERFACES)
+    flux = tessella.NetworkSystem(tessella.NetworkModel(species, pin=flux_pin(bounded=True)), graph)
+    expr = tessella.NetworkSystem(
+        tessella.NetworkModel(species, pin=flux_pin(model="expression", expression=expression)), graph)
+    rng = np.random.default_rng(4)
+    y = list(rng.uniform(0.2, 2.0, flux.size))
+    np.testing.assert_allclose(expr.rhs(0.0, y), flux.rhs(0.0, y), rtol=1e-13, atol=1e-14)
+    for system in (flux, expr):
+        J = system.jacobian(0.0, y)
+        fd = np.zeros_like(J)
+        for k in range(system.size):
+            h = 1e-6 * max(1.0, abs(y[k]))
+            up, down = list(y), list(y)
+            up[k] += h
+            down[k] -= h
+            fd[:, k] = (np.array(system.rhs(0.0, up)) - np.array(system.rhs(0.0, down))) / (2 * h)
+        assert np.max(np.abs(J - fd)) <= 1e-6 * np.max(np.abs(J))
+
+
+def test_with_the_flux_transport_conserves_the_amount():
+    model = tessella.NetworkModel([tessella.NetworkSpecies("auxin", "", 0.05)], pin=flux_pin(bounded=True))
+    system = tessella.NetworkSystem(model, tessella.NetworkGraph(list(MEASURE), INTERFACES))
+    y0 = list(np.random.default_rng(2).uniform(0.2, 2.0, system.size))
+    y = system.integrate(y0, 0.0, 20.0)
+    assert abs(system.total_amount(y, 0) - system.total_amount(y0, 0)) <= 1e-12 * system.total_amount(y0, 0)
+    with pytest.raises(tessella.InputError, match="PIN densities"):
+        system.rhs(0.0, y0[:N])
+    with pytest.raises(tessella.InputError, match="needs pin.expression"):
+        tessella.NetworkModel([tessella.NetworkSpecies("auxin")], pin=flux_pin(model="expression"))
+
+
+def test_neighbourhood_terms_relax_a_ring_mode_in_closed_form():
+    # dc_i/dt = k (mean_a - a) on a ring of equal cells and walls: c_i = 2 + exp(-k (1 - cos th) t) cos(th i).
+    n, mode, k, t1 = 12, 3, 0.7, 2.5
+    th = 2 * math.pi * mode / n
+    graph = tessella.NetworkGraph([1.0] * n, [(min(i, (i + 1) % n), max(i, (i + 1) % n), 1.0) for i in range(n)])
+    system = tessella.NetworkSystem(
+        tessella.NetworkModel([tessella.NetworkSpecies("a", "k * (mean_a - a)")], {"k": k}), graph)
+    y = system.integrate([2 + math.cos(th * i) for i in range(n)], 0.0, t1, relative_tolerance=1e-10,
+                         absolute_tolerance=1e-12)
+    exact = [2 + math.exp(-k * (1 - math.cos(th)) * t1) * math.cos(th * i) for i in range(n)]
+    np.testing.assert_allclose(y, exact, rtol=1e-7)

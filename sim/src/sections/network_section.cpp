@@ -7,6 +7,7 @@
 
 #include "coupling_values.hpp"
 #include "tessella/networks/initial_values.hpp"
+#include "tessella/networks/pin_expression.hpp"
 #include "tessella/networks/reaction_set.hpp"
 #include "tessella/sim/config/registry_config.hpp"
 #include "tessella/sim/sections/section_unit.hpp"
@@ -84,8 +85,9 @@ void declareNetworkSection(Schema& s) {
       .atLeast(0);
   s.key(e + ".reaction", ValueType::String,
         "Rate of change of the concentration inside a cell: a muparser expression over the species, the "
-        "parameters, the properties named in network.properties, measure, x, y, z and t, e.g. "
-        "\"p - d * auxin\".")
+        "parameters, the properties named in network.properties, measure, x, y, z, t and the neighbourhood "
+        "terms sum_<species> (sum over the neighbours j of L_ij c_j, L_ij the interface's length or area) and "
+        "mean_<species> (the same divided by sum_j L_ij), e.g. \"p - d * auxin\" or \"k * (mean_auxin - auxin)\".")
       .whenAbsent("no reaction");
   s.key(e + ".permeability", ValueType::Float,
         "Passive permeability P: a wall of length (2D) or area (3D) L between cells i and j carries "
@@ -95,7 +97,12 @@ void declareNetworkSection(Schema& s) {
   s.section("network.pin",
             "Carrier-mediated efflux of one species by PIN. up_the_gradient: PIN_ij = total L_ij f(c_j) / "
             "(saturation + sum_k L_ik f(c_k)) on cell i's side of its wall to neighbour j, and the efflux from i "
-            "into j is rate PIN_ij c_i (docs/networks.md).")
+            "into j is rate PIN_ij c_i. with_the_flux and expression: the PIN density p_ij on each wall side is a "
+            "state, dp_ij/dt = (basal + production h(phi_ij)) B_i - decay p_ij (h(phi) = phi^m / (1 + s phi^m) "
+            "for a net flux density phi > 0 from i into j, else 0; B_i = 1 - sum_k L_ik p_ik / total when "
+            "bounded, else 1) or the user's expression, and the efflux from i into j is rate L_ij p_ij c_i; the "
+            "densities are the wall properties <species>_pin_pos / _pin_neg and the snapshot's run state "
+            "network.pin (docs/networks.md).")
       .activeWhen(on.key, on.values);
   s.key("network.pin.species", ValueType::String, "The transported species.").whenAbsent("no PIN transport");
   s.key("network.pin.model", ValueType::Enum, "How PIN is allocated to the walls.")
@@ -114,6 +121,34 @@ void declareNetworkSection(Schema& s) {
   s.key("network.pin.saturation", ValueType::Float, "kappa: added to the denominator, in units of wall measure.")
       .byDefault(0.0)
       .atLeast(0);
+  s.key("network.pin.initial", ValueType::Float,
+        "with_the_flux, expression: the PIN density on every wall side at the start and on each new wall.")
+      .byDefault(0.0)
+      .atLeast(0);
+  s.key("network.pin.basal", ValueType::Float, "with_the_flux: rho_0, PIN density made per unit time without flux.")
+      .byDefault(0.0)
+      .atLeast(0);
+  s.key("network.pin.production", ValueType::Float, "with_the_flux: rho, PIN density made per unit time and unit h.")
+      .byDefault(1.0)
+      .atLeast(0);
+  s.key("network.pin.decay", ValueType::Float, "with_the_flux: mu, the PIN density decays at mu p.")
+      .byDefault(1.0)
+      .atLeast(0);
+  s.key("network.pin.flux_exponent", ValueType::Float, "with_the_flux: m of h(phi) = phi^m / (1 + s phi^m).")
+      .byDefault(2.0)
+      .atLeast(1);
+  s.key("network.pin.flux_saturation", ValueType::Float, "with_the_flux: s of h(phi) (0: no saturation).")
+      .byDefault(0.0)
+      .atLeast(0);
+  s.key("network.pin.bounded", ValueType::Bool,
+        "with_the_flux: production times 1 - (PIN on the cell's walls) / total, so a cell's PIN stays below "
+        "`total`.")
+      .byDefault(false);
+  s.key("network.pin.expression", ValueType::String,
+        "expression: dp_ij/dt, a muparser expression over c_i, c_j (the species in the cell and its neighbour), "
+        "pin (p_ij), pin_opposite (p_ji), flux (net flux density from i into j), wall (L_ij), measure (V_i), "
+        "pin_cell (sum_k L_ik p_ik), t and the parameters.")
+      .whenAbsent("required with model: expression");
   s.section("network.primordia",
             "Primordium detection after each solve: a cell whose concentration of `species` is above `threshold` "
             "and above every neighbour's, at a distance from the apex in [min_radius, max_radius] and at "
@@ -199,6 +234,18 @@ NetworkSpec readNetworkSection(const Config& c, std::uint64_t noise_seed) {
     m.pin.rate = c.getFloat("network.pin.rate");
     m.pin.total = c.getFloat("network.pin.total");
     m.pin.saturation = c.getFloat("network.pin.saturation");
+    m.pin.initial = c.getFloat("network.pin.initial");
+    m.pin.basal = c.getFloat("network.pin.basal");
+    m.pin.production = c.getFloat("network.pin.production");
+    m.pin.decay = c.getFloat("network.pin.decay");
+    m.pin.flux_exponent = c.getFloat("network.pin.flux_exponent");
+    m.pin.flux_saturation = c.getFloat("network.pin.flux_saturation");
+    m.pin.bounded = c.getBool("network.pin.bounded");
+    if (c.has("network.pin.expression")) m.pin.expression = c.getString("network.pin.expression");
+    if (m.pin.model == networks::PinModel::Expression && trimmed(m.pin.expression).empty())
+      throw c.errorAt("network.pin.model", "the PIN model 'expression' needs network.pin.expression (dp_ij/dt)");
+    if (m.pin.bounded && !(m.pin.total > 0))
+      throw c.errorAt("network.pin.bounded", "bounded PIN needs network.pin.total > 0");
   }
   if (c.has("network.primordia.species")) {
     PrimordiaSpec& pr = n.primordia;
@@ -225,6 +272,13 @@ NetworkSpec readNetworkSection(const Config& c, std::uint64_t noise_seed) {
     m.validate();
   } catch (const InputError& e) {
     throw c.errorAt(c.has("network.parameters") ? "network.parameters" : "network.mode", e.what());
+  }
+  if (m.pin.model == networks::PinModel::Expression && m.pin.enabled()) {
+    try {
+      networks::PinExpression check(m);
+    } catch (const InputError& e) {
+      throw c.errorAt("network.pin.expression", e.what());
+    }
   }
   // Each reaction and initial value compiles now, so a bad one is an error at its key.
   for (std::size_t s = 0; s < m.species.size(); ++s) {

@@ -2,6 +2,7 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tessella/sim/stages/network_stage.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -9,6 +10,7 @@
 #include <sstream>
 
 #include "coupling_cells.hpp"
+#include "tessella/io/wall_vtu.hpp"
 #include "tessella/networks/initial_values.hpp"
 #include "tessella/networks/network_graph.hpp"
 #include "tessella/networks/network_system.hpp"
@@ -41,6 +43,26 @@ NetworkStage::NetworkStage(NetworkSpec spec) : spec_(std::move(spec)), schedule_
 
 namespace {
 const std::string kPrimordiaKey = "network.primordia";
+const std::string kPinKey = "network.pin";
+
+PropertyColumn<double>& pinWallColumn(Tissue& tissue, const std::string& name, double initial) {
+  PropertyStore& store = tissue.wallProperties();
+  if (const PropertyColumnBase* c = store.find(name); c && c->type() != std::type_index(typeid(double)))
+    throw InputError("wall property '" + name + "' exists and does not hold numbers (double)");
+  if (!store.has(name)) store.add<double>(name, initial, DivisionPolicy::Copy);
+  return store.get<double>(name);
+}
+
+// Whether the first of a wall's two saved densities is on its positive side: the first is on the side of
+// the cell with the smaller lineage id (a boundary wall: of its cell). Lineage ids survive a snapshot, the
+// wall's orientation need not.
+bool firstIsPositive(const Tissue& tissue, WallId w) {
+  const std::vector<CellId> two = tissue.wallCells(w);
+  if (two.empty()) return true;
+  CellId a = two[0];
+  if (two.size() == 2 && tissue.lineageId(two[1]) < tissue.lineageId(a)) a = two[1];
+  return networks::onPositiveSide(tissue, w, a);
+}
 
 PropertyColumn<int>& primordiumColumn(Tissue& tissue) {
   PropertyStore& store = tissue.cellProperties();
@@ -91,8 +113,76 @@ void NetworkStage::detectPrimordia(Tissue& tissue, const std::vector<CellId>& ce
   }
 }
 
-void NetworkStage::saveState(const Tissue& /*tissue*/, const std::string& /*snapshot_path*/,
-                             const io::VtuOptions& /*options*/, io::RunState& state) const {
+std::string NetworkStage::pinWallProperty(const std::string& species, bool positive_side) {
+  return species + (positive_side ? "_pin_pos" : "_pin_neg");
+}
+
+void NetworkStage::writePinWalls(const Tissue& tissue, const std::string& snapshot_path,
+                                 const io::VtuOptions& options) const {
+  GeometryCache geometry;
+  std::vector<CellId> cells;
+  std::vector<std::vector<networks::InterfaceWall>> walls;
+  networks::NetworkGraph graph =
+      networks::networkGraph(tissue, geometry, spec_.model.cell_properties, &cells, &walls);
+  const std::size_t S = spec_.model.species.size();
+  std::vector<double> amounts(S * cells.size());
+  for (std::size_t s = 0; s < S; ++s) {
+    const auto& amount = tissue.cellProperties().get<double>(spec_.model.species[s].name + "_amount");
+    for (std::size_t k = 0; k < cells.size(); ++k) amounts[k * S + s] = amount[cells[k]];
+  }
+  networks::NetworkSystem system(spec_.model, std::move(graph));
+  const std::vector<double> y = readState(tissue, cells, walls, system, amounts);
+  const std::vector<networks::PinSides> density = system.pinDensity(y);
+  // Per live wall in slot order; i is the cell with the smaller lineage id.
+  std::vector<int> slot(tissue.topology().slots(tissue.dim() - 1), -1);
+  int count = 0;
+  for (WallId w : tissue.walls()) slot[w.index()] = count++;
+  const std::size_t n = tissue.numWalls();
+  io::WallArrays a;
+  auto& pin_ij = a.scalars["pin_ij"] = std::vector<double>(n, 0.0);
+  auto& pin_ji = a.scalars["pin_ji"] = std::vector<double>(n, 0.0);
+  auto& cell_i = a.scalars["cell_i"] = std::vector<double>(n, -1.0);
+  auto& cell_j = a.scalars["cell_j"] = std::vector<double>(n, -1.0);
+  auto& net = a.vectors["pin_net"] = std::vector<Vec3>(n, Vec3::Zero());
+  for (WallId w : tissue.walls()) {  // boundary walls: their one cell
+    const std::vector<CellId> two = tissue.wallCells(w);
+    if (!two.empty()) cell_i[static_cast<std::size_t>(slot[w.index()])] = static_cast<double>(tissue.lineageId(two[0]));
+  }
+  for (std::size_t k = 0; k < walls.size(); ++k) {
+    const networks::NetworkInterface& f = system.graph().interfaces[k];
+    const CellId gi = cells[static_cast<std::size_t>(f.cell_i)], gj = cells[static_cast<std::size_t>(f.cell_j)];
+    const bool flip = tissue.lineageId(gj) < tissue.lineageId(gi);  // the graph's cell_j is the file's i
+    const double ij = flip ? density[k].ji : density[k].ij, ji = flip ? density[k].ij : density[k].ji;
+    const Vec3 normal = flip ? Vec3(-f.normal) : f.normal;
+    for (const networks::InterfaceWall& w : walls[k]) {
+      const auto u = static_cast<std::size_t>(slot[w.wall.index()]);
+      pin_ij[u] = ij;
+      pin_ji[u] = ji;
+      cell_i[u] = static_cast<double>(tissue.lineageId(flip ? gj : gi));
+      cell_j[u] = static_cast<double>(tissue.lineageId(flip ? gi : gj));
+      net[u] = (ij - ji) * normal;
+    }
+  }
+  io::writeWallsVtu(tissue, io::besideSnapshotPath(snapshot_path, "pin"), a, options);
+}
+
+void NetworkStage::saveState(const Tissue& tissue, const std::string& snapshot_path, const io::VtuOptions& options,
+                             io::RunState& state) const {
+  const networks::PinTransport& pin = spec_.model.pin;
+  const PropertyStore& wall_properties = tissue.wallProperties();
+  if (pin.dynamic() && wall_properties.has(pinWallProperty(pin.species, true)) &&
+      wall_properties.has(pinWallProperty(pin.species, false))) {
+    const auto& pos = wall_properties.get<double>(pinWallProperty(pin.species, true));
+    const auto& neg = wall_properties.get<double>(pinWallProperty(pin.species, false));
+    std::string text;
+    for (WallId w : tissue.walls()) {
+      const bool first = firstIsPositive(tissue, w);
+      if (!text.empty()) text += " ";
+      text += formatNumber(first ? pos[w] : neg[w]) + " " + formatNumber(first ? neg[w] : pos[w]);
+    }
+    state[kPinKey] = text;
+  }
+  if (pin.enabled() && tissue.numCells() > 0) writePinWalls(tissue, snapshot_path, options);
   if (!spec_.primordia.enabled()) return;
   std::string text;
   for (const PrimordiumRecord& r : primordia_) {
@@ -105,7 +195,39 @@ void NetworkStage::saveState(const Tissue& /*tissue*/, const std::string& /*snap
   state[kPrimordiaKey] = text;
 }
 
-void NetworkStage::continueFrom(const std::string& /*snapshot_path*/, const io::RunState& state) {
+void NetworkStage::restorePin(Tissue& tissue) {
+  const auto& [snapshot, text] = *restart_pin_;
+  const networks::PinTransport& pin = spec_.model.pin;
+  std::vector<double> values;
+  std::istringstream in(text);
+  std::string word;
+  while (in >> word) {
+    char* end = nullptr;
+    const double v = std::strtod(word.c_str(), &end);
+    if (word.empty() || *end != '\0' || !std::isfinite(v))
+      throw InputError("snapshot '" + snapshot + "': its run state " + kPinKey + " holds '" + word +
+                       "', not a number");
+    values.push_back(v);
+  }
+  if (values.size() != 2 * tissue.numWalls())
+    throw InputError("snapshot '" + snapshot + "': its run state has " + std::to_string(values.size()) +
+                     " PIN densities (" + kPinKey + ") for " + std::to_string(tissue.numWalls()) +
+                     " walls (two each)");
+  auto& pos = pinWallColumn(tissue, pinWallProperty(pin.species, true), pin.initial);
+  auto& neg = pinWallColumn(tissue, pinWallProperty(pin.species, false), pin.initial);
+  std::size_t k = 0;
+  for (WallId w : tissue.walls()) {
+    const bool first = firstIsPositive(tissue, w);
+    (first ? pos : neg)[w] = values[k];
+    (first ? neg : pos)[w] = values[k + 1];
+    k += 2;
+  }
+}
+
+void NetworkStage::continueFrom(const std::string& snapshot_path, const io::RunState& state) {
+  restart_pin_.reset();
+  if (const auto it = state.find(kPinKey); it != state.end() && spec_.model.pin.dynamic())
+    restart_pin_ = std::make_pair(snapshot_path, it->second);
   primordia_.clear();
   if (!spec_.primordia.enabled()) return;
   const auto it = state.find(kPrimordiaKey);
@@ -150,8 +272,47 @@ std::vector<std::string> NetworkStage::cellPropertiesWritten() const {
   return out;
 }
 
-void NetworkStage::writeOutputs(Tissue& tissue, const std::vector<CellId>& cells, networks::NetworkSystem& system,
-                                const std::vector<double>& y) {
+std::vector<double> NetworkStage::readState(const Tissue& tissue, const std::vector<CellId>& cells,
+                                            const std::vector<std::vector<networks::InterfaceWall>>& walls,
+                                            const networks::NetworkSystem& system,
+                                            const std::vector<double>& amounts) const {
+  std::vector<double> y(system.size(), 0.0);
+  std::copy(amounts.begin(), amounts.end(), y.begin());
+  const networks::PinTransport& pin = spec_.model.pin;
+  if (!pin.dynamic() || cells.empty()) return y;
+  const auto& pos = tissue.wallProperties().get<double>(pinWallProperty(pin.species, true));
+  const auto& neg = tissue.wallProperties().get<double>(pinWallProperty(pin.species, false));
+  // An interface's density on a side: its walls' (equal after every solve), or their measure-weighted mean.
+  for (std::size_t k = 0; k < walls.size(); ++k)
+    for (int side = 0; side < 2; ++side) {
+      double sum = 0.0, measure = 0.0, first = 0.0;
+      bool equal = true;
+      for (std::size_t u = 0; u < walls[k].size(); ++u) {
+        const networks::InterfaceWall& w = walls[k][u];
+        const double v = (w.i_positive == (side == 0)) ? pos[w.wall] : neg[w.wall];
+        if (u == 0) first = v;
+        equal = equal && v == first;
+        sum += w.measure * v;
+        measure += w.measure;
+      }
+      y[system.pinIndex(k, side)] = equal || !(measure > 0) ? first : sum / measure;
+    }
+  return y;
+}
+
+void NetworkStage::writeOutputs(Tissue& tissue, const std::vector<CellId>& cells,
+                                const std::vector<std::vector<networks::InterfaceWall>>& walls,
+                                networks::NetworkSystem& system, const std::vector<double>& y, bool write_pin) {
+  const networks::PinTransport& pin = spec_.model.pin;
+  if (pin.dynamic() && write_pin) {
+    auto& pos = pinWallColumn(tissue, pinWallProperty(pin.species, true), pin.initial);
+    auto& neg = pinWallColumn(tissue, pinWallProperty(pin.species, false), pin.initial);
+    for (std::size_t k = 0; k < walls.size(); ++k)
+      for (const networks::InterfaceWall& w : walls[k]) {
+        (w.i_positive ? pos : neg)[w.wall] = y[system.pinIndex(k, 0)];
+        (w.i_positive ? neg : pos)[w.wall] = y[system.pinIndex(k, 1)];
+      }
+  }
   const std::size_t S = system.numSpecies();
   for (std::size_t s = 0; s < S; ++s) {
     const std::string& name = spec_.model.species[s].name;
@@ -177,9 +338,17 @@ void NetworkStage::writeOutputs(Tissue& tissue, const std::vector<CellId>& cells
 void NetworkStage::prepare(Tissue& tissue, double /*time*/) {
   // In the first snapshot already, and before the graph: the reactions may read it.
   if (spec_.primordia.enabled()) primordiumColumn(tissue);
+  const networks::PinTransport& pin = spec_.model.pin;
+  if (pin.dynamic()) {
+    if (restart_pin_) restorePin(tissue);
+    pinWallColumn(tissue, pinWallProperty(pin.species, true), pin.initial);
+    pinWallColumn(tissue, pinWallProperty(pin.species, false), pin.initial);
+  }
   GeometryCache geometry;
   std::vector<CellId> cells;
-  networks::NetworkGraph graph = networks::networkGraph(tissue, geometry, spec_.model.cell_properties, &cells);
+  std::vector<std::vector<networks::InterfaceWall>> walls;
+  networks::NetworkGraph graph =
+      networks::networkGraph(tissue, geometry, spec_.model.cell_properties, &cells, &walls);
   const std::size_t S = spec_.model.species.size();
   bool present = true;
   for (const auto& s : spec_.model.species)
@@ -205,7 +374,8 @@ void NetworkStage::prepare(Tissue& tissue, double /*time*/) {
     }
   }
   networks::NetworkSystem system(spec_.model, std::move(graph));
-  writeOutputs(tissue, cells, system, y);
+  // The walls keep their densities (a restart's, or pin.initial) until the first solve.
+  writeOutputs(tissue, cells, walls, system, readState(tissue, cells, walls, system, y), false);
 }
 
 void NetworkStage::apply(Tissue& tissue, const StepContext& context) {
@@ -214,22 +384,25 @@ void NetworkStage::apply(Tissue& tissue, const StepContext& context) {
   GeometryCache own;
   GeometryCache& geometry = context.geometry ? *context.geometry : own;
   std::vector<CellId> cells;
-  networks::NetworkGraph graph = networks::networkGraph(tissue, geometry, spec_.model.cell_properties, &cells);
+  std::vector<std::vector<networks::InterfaceWall>> walls;
+  networks::NetworkGraph graph =
+      networks::networkGraph(tissue, geometry, spec_.model.cell_properties, &cells, &walls);
   const std::size_t S = spec_.model.species.size();
-  std::vector<double> y(S * cells.size());
+  std::vector<double> amounts(S * cells.size());
   for (std::size_t s = 0; s < S; ++s) {
     const auto& amount =
         detail::doubleColumn(tissue, spec_.model.species[s].name + "_amount", DivisionPolicy::SplitByMeasure);
-    for (std::size_t k = 0; k < cells.size(); ++k) y[k * S + s] = amount[cells[k]];
+    for (std::size_t k = 0; k < cells.size(); ++k) amounts[k * S + s] = amount[cells[k]];
   }
   networks::NetworkSystem system(spec_.model, std::move(graph), spec_.jacobian);
+  std::vector<double> y = readState(tissue, cells, walls, system, amounts);
   if (elapsed > 0 && !cells.empty()) {
     networks::NetworkIntegrator integrator(system, spec_.integrator);
     const double t1 = context.time + context.dt;
     integrator.advance(y, t1 - elapsed, t1);
     stats_ += integrator.statistics();
   }
-  writeOutputs(tissue, cells, system, y);
+  writeOutputs(tissue, cells, walls, system, y, true);
   if (spec_.primordia.enabled() && elapsed > 0) detectPrimordia(tissue, cells, system, y, context.end_time);
   schedule_.solved(context);
 }

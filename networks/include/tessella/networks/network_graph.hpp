@@ -37,12 +37,29 @@ struct NetworkGraph {
   void validate() const;
 };
 
+/// One wall of an interface: its handle, its measure, and whether the
+/// interface's cell_i is on the wall's positive side (onPositiveSide).
+struct InterfaceWall {
+  WallId wall;
+  double measure = 0.0;
+  bool i_positive = true;
+};
+
+/// Whether `cell` (one of the wall's cells) is on the positive side of
+/// `wall`: 2D, the cell's loop runs along the edge from its first vertex to
+/// its second; 3D, the face's normal points out of the cell. Each wall of a
+/// valid tissue has at most one cell on either side, and splitting walls
+/// keeps the sides, so per-side wall properties follow divisions.
+bool onPositiveSide(const Tissue& tissue, WallId wall, CellId cell);
+
 /// The graph of the live cells of `tissue` in their iteration order
 /// (`cells`, if given, receives them), reading measures, centroids, wall
 /// lengths / areas and normals from `geometry` (required here) and the double
 /// cell properties named in `properties` (InputError when one is missing or
-/// does not hold doubles).
+/// does not hold doubles). `walls`, if given, receives per interface the
+/// walls it joins.
 NetworkGraph networkGraph(const Tissue& tissue, GeometryCache& geometry, const std::vector<std::string>& properties,
-                          std::vector<CellId>* cells = nullptr);
+                          std::vector<CellId>* cells = nullptr,
+                          std::vector<std::vector<InterfaceWall>>* walls = nullptr);
 
 }  // namespace tessella::networks

@@ -6,10 +6,14 @@
 // in every cell, y[c * S + s] (S species); the concentration is
 // c = y / measure. Transport moves amount from one cell to another, so every
 // transport term leaves the sum of a species' amounts unchanged (the
-// Jacobian's transport part has zero column sums). Equations: docs/networks.md.
+// Jacobian's transport part has zero column sums). With a PIN model that makes
+// PIN a state (with_the_flux, expression) the PIN densities follow the amounts:
+// y[numCells() * S + 2 k + side], the density on cell_i's (side 0) and on
+// cell_j's (side 1) side of interface k. Equations: docs/networks.md.
 //
 // Not thread-safe (the reactions' muparser variables are members).
 
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <span>
@@ -41,6 +45,7 @@ struct PinSides {
 };
 
 class ReactionSet;
+class PinExpression;
 
 /// What jacobian() computes: `Exact`, dF/dy; `Neighbours`, dF/dy without the
 /// entries that couple a cell with the neighbours of its neighbours (the
@@ -65,23 +70,37 @@ class NetworkSystem {
   const NetworkGraph& graph() const { return graph_; }
   std::size_t numSpecies() const { return model_.species.size(); }
   std::size_t numCells() const { return graph_.numCells(); }
-  std::size_t size() const { return numSpecies() * numCells(); }
+  /// Amounts, then PIN densities (numPinStates()).
+  std::size_t size() const { return numSpecies() * numCells() + numPinStates(); }
   std::size_t index(std::size_t cell, std::size_t species) const { return cell * numSpecies() + species; }
+  /// 2 per interface with a dynamic PIN model (PinTransport::dynamic()), else 0.
+  std::size_t numPinStates() const { return model_.pin.dynamic() ? 2 * graph_.interfaces.size() : 0; }
+  /// The state index of the PIN density on side 0 (cell_i's) or 1 (cell_j's) of interface k.
+  std::size_t pinIndex(std::size_t k, int side) const {
+    return numSpecies() * numCells() + 2 * k + static_cast<std::size_t>(side);
+  }
 
   /// dy/dt at (t, y) into ydot (both of size()). A reaction rate that is not
   /// finite is an InputError naming the species, the cell and the values.
   void rhs(double t, std::span<const double> y, std::span<double> ydot);
   /// The pattern of dF/dy (values zero): the species of a cell couple with
   /// each other (reactions), a transported species with its neighbours, and
-  /// the PIN species with the neighbours of its neighbours (JacobianKind::Exact).
+  /// the PIN species with the neighbours of its neighbours (up_the_gradient,
+  /// JacobianKind::Exact) or with its interfaces' PIN densities (dynamic PIN);
+  /// a reaction reading sum_q / mean_q with q in the neighbours.
   const CsrMatrix& pattern() const { return pattern_; }
   /// dF/dy at (t, y) on pattern(): transport and PIN exactly, reactions by
-  /// central differences per cell (each reaction depends on its own cell
-  /// only); with JacobianKind::Neighbours without the second-neighbour terms.
+  /// central differences per cell in the cell's concentrations and in its
+  /// neighbourhood terms (then chained exactly), a PIN expression by central
+  /// differences in its arguments; with JacobianKind::Neighbours without the
+  /// second-neighbour terms of up_the_gradient.
   void jacobian(double t, std::span<const double> y, CsrMatrix& J);
 
-  /// PIN on both sides of every interface at state y (zeros without PIN transport).
+  /// PIN on both sides of every interface at state y (zeros without PIN transport): the amount
+  /// on the side, L_ij times the density.
   std::vector<PinSides> pin(std::span<const double> y) const;
+  /// PIN per unit interface measure on both sides (0 on an interface of measure 0).
+  std::vector<PinSides> pinDensity(std::span<const double> y) const;
   /// Per cell, sum over its interfaces of PIN (its side) times the unit
   /// normal pointing out of it: the cell's polarity vector.
   std::vector<Vec3> polarity(std::span<const double> y) const;
@@ -92,7 +111,14 @@ class NetworkSystem {
  private:
   bool inPattern(std::size_t r, std::size_t c) const;
   void pinDenominators();  // pin_denominator_ from pin_weight_
-  void evaluateReactions(double t, std::size_t cell, std::span<const double> conc, std::span<double> rate);
+  // The reactions of one cell; `neighbourhood` empty: the cell's values in neighbourhood_.
+  void evaluateReactions(double t, std::size_t cell, std::span<const double> conc, std::span<double> rate,
+                         std::span<const double> neighbourhood = {});
+  void neighbourhoodTerms();  // neighbourhood_ from conc_
+  // Dynamic PIN: pin_cell_ from y; the rate of the density on `side` of interface k and, if `partial`, its
+  // derivatives with respect to the PinExpression arguments.
+  void pinCellAmounts(std::span<const double> y);
+  double pinRate(double t, std::size_t k, int side, std::span<const double> y, std::array<double, 8>* partial);
 
   NetworkModel model_;
   NetworkGraph graph_;
@@ -102,6 +128,12 @@ class NetworkSystem {
   JacobianKind jacobian_kind_ = JacobianKind::Exact;
   int pin_species_ = -1;
   std::vector<double> pin_denominator_, pin_weight_, pin_weight_derivative_, conc_;
+  std::unique_ptr<PinExpression> pin_expression_;
+  bool pin_cell_coupled_ = false;  // a PIN rate reads every PIN of its cell (bounded, or pin_cell in the expression)
+  std::vector<double> pin_cell_;   // per cell: sum_k L_ik p_ik
+  // Per cell, the reactions' sum_<s> then mean_<s> of every species (empty when no reaction reads them), and
+  // the cell's summed interface measure.
+  std::vector<double> neighbourhood_, wall_total_;
   std::vector<const std::vector<double>*> property_columns_;  // the model's cell properties in the graph
   std::vector<double> property_values_;                       // one cell's values of them
 };

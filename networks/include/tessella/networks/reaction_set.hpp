@@ -4,7 +4,9 @@
 // ReactionSet: the reactions of a NetworkModel compiled once to muparser
 // bytecode and evaluated cell by cell. Variables: the species (the cell's
 // concentrations), the model's parameters, `measure`, `x`, `y`, `z` (the
-// cell's centroid), `t` and the cell properties the model names. Not
+// cell's centroid), `t`, the cell properties the model names, and per species
+// s the neighbourhood terms `sum_<s>` (sum over the cell's neighbours j of
+// L_ij c_j,s) and `mean_<s>` (the same divided by sum_j L_ij). Not
 // thread-safe (the variables are members).
 
 #include <cstddef>
@@ -32,16 +34,22 @@ class ReactionSet {
   ReactionSet& operator=(const ReactionSet&) = delete;
 
   bool empty() const { return parsers_.empty(); }
+  /// Some reaction reads sum_<s> or mean_<s> of species s.
+  bool usesNeighbourhood(std::size_t s) const { return uses_sum_[s] || uses_mean_[s]; }
+  bool usesAnyNeighbourhood() const;
   /// Sets the cell's values (concentrations `conc`, one per species; its
-  /// properties in model.cell_properties order), then the rates of all
-  /// species into `rate` (0 for a species without a reaction). A rate that is
-  /// not finite is an InputError naming the species, `cell` and the values.
+  /// properties in model.cell_properties order; `neighbourhood`: sum_<s> of
+  /// every species then mean_<s> of every species, or empty for zeros), then
+  /// the rates of all species into `rate` (0 for a species without a
+  /// reaction). A rate that is not finite is an InputError naming the
+  /// species, `cell` and the values.
   void evaluate(double t, std::size_t cell, double measure, const Vec3& centroid, std::span<const double> properties,
-                std::span<const double> conc, std::span<double> rate);
+                std::span<const double> conc, std::span<double> rate, std::span<const double> neighbourhood = {});
 
  private:
   std::vector<std::string> species_, expressions_, properties_;
-  std::vector<double> conc_, props_;
+  std::vector<double> conc_, props_, neighbourhood_;
+  std::vector<bool> uses_sum_, uses_mean_;
   double t_ = 0, measure_ = 0, x_ = 0, y_ = 0, z_ = 0;
   std::vector<double> params_;
   std::vector<std::unique_ptr<mu::Parser>> parsers_;

@@ -8,16 +8,23 @@
 // division, so divisions conserve it) and its concentration (<species>,
 // amount / measure after each solve; growth dilutes it). With PIN transport
 // the polarity of each cell (sum of PIN times outward wall normal) is the
-// Vec3 cell property <species>_polarity. With primordium detection
+// Vec3 cell property <species>_polarity. With a dynamic PIN model
+// (with_the_flux, expression) the PIN densities are the double wall
+// properties <species>_pin_pos and <species>_pin_neg (the density on the
+// wall's positive and negative side, networks::onPositiveSide; copied when a
+// wall is split, so a density is kept; a new wall starts at pin.initial), and
+// the snapshot's run state carries them (network.pin) for restarts. With primordium detection
 // (NetworkSpec::primordia) each new primordium's cell gets its id in the int
 // cell property `primordium` (0: none; copied to daughters) and a record
 // (time, lineage id, position, angle, radius, divergence) that the snapshot's
 // run state carries across restarts. docs/networks.md.
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "tessella/networks/network_graph.hpp"
 #include "tessella/networks/network_integrator.hpp"
 #include "tessella/networks/network_model.hpp"
 #include "tessella/networks/network_system.hpp"
@@ -83,15 +90,31 @@ class NetworkStage final : public Stage {
   const NetworkSpec& spec() const { return spec_; }
   /// The primordia found so far, in order of appearance.
   const std::vector<PrimordiumRecord>& primordia() const { return primordia_; }
-  /// The primordia records under "network.primordia" (exact numbers).
+  /// With PIN transport, writes the PIN density on both sides of every wall
+  /// beside the snapshot, <stem>.pin.vtu (docs/output.md). The primordia
+  /// records under "network.primordia" and, with a dynamic PIN model, the PIN
+  /// densities under "network.pin" (exact numbers; per live wall in slot
+  /// order, the density on the side of the cell with the smaller lineage id,
+  /// or a boundary wall's cell, then on the other side).
   void saveState(const Tissue& tissue, const std::string& snapshot_path, const io::VtuOptions& options,
                  io::RunState& state) const override;
-  /// Restores the records (InputError naming the key and the value when damaged).
+  /// Restores the records (InputError naming the key and the value when damaged)
+  /// and keeps the PIN densities for prepare().
   void continueFrom(const std::string& snapshot_path, const io::RunState& state) override;
+  /// The wall properties holding the PIN density on each side of the walls.
+  static std::string pinWallProperty(const std::string& species, bool positive_side);
 
  private:
-  void writeOutputs(Tissue& tissue, const std::vector<CellId>& cells, networks::NetworkSystem& system,
-                    const std::vector<double>& y);
+  void writeOutputs(Tissue& tissue, const std::vector<CellId>& cells,
+                    const std::vector<std::vector<networks::InterfaceWall>>& walls, networks::NetworkSystem& system,
+                    const std::vector<double>& y, bool write_pin);
+  // The state: amounts from the cells, PIN densities (dynamic models) from the walls' properties.
+  std::vector<double> readState(const Tissue& tissue, const std::vector<CellId>& cells,
+                                const std::vector<std::vector<networks::InterfaceWall>>& walls,
+                                const networks::NetworkSystem& system, const std::vector<double>& amounts) const;
+  // The PIN per wall side beside a snapshot: <stem>.pin.vtu (io::writeWallsVtu).
+  void writePinWalls(const Tissue& tissue, const std::string& snapshot_path, const io::VtuOptions& options) const;
+  void restorePin(Tissue& tissue);
   void detectPrimordia(Tissue& tissue, const std::vector<CellId>& cells, const networks::NetworkSystem& system,
                        const std::vector<double>& y, double time);
 
@@ -99,6 +122,7 @@ class NetworkStage final : public Stage {
   SolveSchedule schedule_;
   networks::IntegratorStatistics stats_;
   std::vector<PrimordiumRecord> primordia_;
+  std::optional<std::pair<std::string, std::string>> restart_pin_;  // snapshot path, its network.pin text
 };
 
 }  // namespace tessella::sim

@@ -1,0 +1,117 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
+#include "tessella/io/wall_vtu.hpp"
+
+#include <filesystem>
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkCellType.h>
+#include <vtkDoubleArray.h>
+#include <vtkIdList.h>
+#include <vtkPoints.h>
+#include <vtkSmartPointer.h>
+#include <vtkTypeInt32Array.h>
+#include <vtkUnstructuredGrid.h>
+
+#include "tessella/tissue/errors.hpp"
+#include "vtu_file.hpp"
+
+namespace tessella::io {
+
+std::string besideSnapshotPath(const std::string& snapshot_path, const std::string& tag) {
+  std::filesystem::path path(snapshot_path);
+  return (path.parent_path() / (path.stem().string() + "." + tag + ".vtu")).string();
+}
+
+void writeWallsVtu(const Tissue& tissue, const std::string& path, const WallArrays& arrays,
+                   const VtuOptions& options) {
+  const std::size_t walls = tissue.numWalls();
+  auto check = [&](const std::string& name, std::size_t size) {
+    if (name.empty() || name == "wall_id")
+      throw InputError("walls file '" + path + "': array name '" + name + "' is empty or reserved");
+    if (size != walls)
+      throw InputError("walls file '" + path + "': array '" + name + "' has " + std::to_string(size) +
+                       " values for " + std::to_string(walls) + " walls");
+  };
+  for (const auto& [name, values] : arrays.scalars) check(name, values.size());
+  for (const auto& [name, values] : arrays.vectors) check(name, values.size());
+  // Points: the live vertices in slot order.
+  std::vector<vtkIdType> point(tissue.topology().slots(0), -1);
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  for (VertexId v : tissue.vertices()) {
+    point[v.index()] = points->GetNumberOfPoints();
+    const Vec3& x = tissue.position(v);
+    points->InsertNextPoint(x.x(), x.y(), x.z());
+  }
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  grid->SetPoints(points);
+  grid->Allocate(static_cast<vtkIdType>(walls));
+  auto ids = vtkSmartPointer<vtkTypeInt32Array>::New();
+  ids->SetName("wall_id");
+  auto list = vtkSmartPointer<vtkIdList>::New();
+  for (WallId w : tissue.walls()) {
+    list->Reset();
+    if (tissue.dim() == 2) {
+      for (VertexId v : tissue.topology().edgeVertices(EdgeId(w.index()))) list->InsertNextId(point[v.index()]);
+      grid->InsertNextCell(VTK_LINE, list);
+    } else {
+      for (VertexId v : tissue.topology().faceVertices(FaceId(w.index()))) list->InsertNextId(point[v.index()]);
+      grid->InsertNextCell(VTK_POLYGON, list);
+    }
+    ids->InsertNextValue(static_cast<int>(w.index()));
+  }
+  grid->GetCellData()->AddArray(ids);
+  for (const auto& [name, values] : arrays.scalars) {
+    auto a = vtkSmartPointer<vtkDoubleArray>::New();
+    a->SetName(name.c_str());
+    for (double v : values) a->InsertNextValue(v);
+    grid->GetCellData()->AddArray(a);
+  }
+  for (const auto& [name, values] : arrays.vectors) {
+    auto a = vtkSmartPointer<vtkDoubleArray>::New();
+    a->SetName(name.c_str());
+    a->SetNumberOfComponents(3);
+    for (const Vec3& v : values) a->InsertNextTuple3(v.x(), v.y(), v.z());
+    grid->GetCellData()->AddArray(a);
+  }
+  detail::writeGridFile(grid, path, options);
+}
+
+WallsFile readWallsVtu(const std::string& path) {
+  vtkSmartPointer<vtkUnstructuredGrid> grid = detail::readGridFile(path);
+  detail::checkCellArrays(grid, path);
+  WallsFile out;
+  out.points = static_cast<std::size_t>(grid->GetNumberOfPoints());
+  vtkCellData* data = grid->GetCellData();
+  auto* ids = data->GetArray("wall_id");
+  if (!ids || ids->GetNumberOfComponents() != 1 || ids->GetNumberOfTuples() != grid->GetNumberOfCells())
+    throw InputError("'" + path + "': no wall_id array with one value per cell; not a walls file");
+  auto points = vtkSmartPointer<vtkIdList>::New();
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
+    out.wall_id.push_back(static_cast<int>(ids->GetTuple1(c)));
+    grid->GetCellPoints(c, points);
+    out.points_per_wall.push_back(static_cast<int>(points->GetNumberOfIds()));
+  }
+  for (int k = 0; k < data->GetNumberOfArrays(); ++k) {
+    vtkDataArray* a = data->GetArray(k);
+    if (!a || !a->GetName() || std::string(a->GetName()) == "wall_id") continue;
+    if (a->GetNumberOfTuples() != grid->GetNumberOfCells())
+      throw InputError("'" + path + "': array '" + a->GetName() + "' has " + std::to_string(a->GetNumberOfTuples()) +
+                       " values for " + std::to_string(grid->GetNumberOfCells()) + " walls");
+    if (a->GetNumberOfComponents() == 1) {
+      auto& v = out.arrays.scalars[a->GetName()];
+      for (vtkIdType c = 0; c < a->GetNumberOfTuples(); ++c) v.push_back(a->GetTuple1(c));
+    } else if (a->GetNumberOfComponents() == 3) {
+      auto& v = out.arrays.vectors[a->GetName()];
+      for (vtkIdType c = 0; c < a->GetNumberOfTuples(); ++c) {
+        const double* t = a->GetTuple3(c);
+        v.emplace_back(t[0], t[1], t[2]);
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace tessella::io
