@@ -11,9 +11,11 @@
 // mutation of the array.
 
 #include <algorithm>
+#include <atomic>
 #include <cassert>
 #include <cstdint>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "tessella/tissue/handles.hpp"
@@ -97,6 +99,57 @@ class RaggedArray {
   }
   void clearList(std::size_t i) { slots_[i].size = 0; }
 
+  // --- batch edits (Tissue::splitCells): room is made serially, then lists are
+  // written from several threads, each list by one thread.
+
+  /// Appends one list per entry of `sizes`, holding default items; returns
+  /// the index of the first.
+  std::size_t appendLists(std::span<const std::uint32_t> sizes) {
+    const std::size_t first = slots_.size();
+    std::size_t total = 0;
+    for (std::uint32_t n : sizes) total += n;
+    slots_.reserve(first + sizes.size());
+    std::uint32_t offset = static_cast<std::uint32_t>(data_.size());
+    data_.resize(data_.size() + total);
+    for (std::uint32_t n : sizes) {
+      slots_.push_back(Slot{offset, n, n});
+      offset += n;
+    }
+    return first;
+  }
+  /// Makes list lists[k] hold sizes[k] items: a list without the room moves
+  /// to the end of the pool (in the order given) keeping its items; items
+  /// past the old size are unspecified until written.
+  void resizeLists(std::span<const Index> lists, std::span<const std::uint32_t> sizes) {
+    assert(lists.size() == sizes.size());
+    if (garbage_ > 1024 && garbage_ * 2 > data_.size()) repack();  // once: a repack resets capacities
+    for (std::size_t k = 0; k < lists.size(); ++k) {
+      if (sizes[k] > slots_[lists[k]].capacity) relocate(lists[k], sizes[k], false);
+      slots_[lists[k]].size = sizes[k];
+    }
+  }
+  /// Sets the size of list i to n <= its capacity (a list shortened after a
+  /// batch write); safe from the thread that writes list i.
+  void setListSize(std::size_t i, std::uint32_t n) {
+    assert(n <= slots_[i].capacity);
+    slots_[i].size = n;
+  }
+  /// replaceValue for lists that other threads edit at the same time, each
+  /// thread replacing values no other thread looks for (relaxed atomic reads
+  /// and writes of single items).
+  bool replaceValueShared(std::size_t i, const T& old_value, const T& new_value) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    const Slot s = slots_[i];
+    for (std::uint32_t k = 0; k < s.size; ++k) {
+      std::atomic_ref<T> item(data_[s.offset + k]);
+      if (item.load(std::memory_order_relaxed) == old_value) {
+        item.store(new_value, std::memory_order_relaxed);
+        return true;
+      }
+    }
+    return false;
+  }
+
   /// Renumbers lists: list i moves to old_to_new[i] (kInvalidIndex drops it),
   /// and the pool is repacked in the new order. `transform` maps each item.
   template <typename Transform>
@@ -167,8 +220,8 @@ class RaggedArray {
   };
 
   // Moves list i to the end of the pool with room for at least min_capacity.
-  void relocate(std::size_t i, std::size_t min_capacity) {
-    if (garbage_ > 1024 && garbage_ * 2 > data_.size()) repack();
+  void relocate(std::size_t i, std::size_t min_capacity, bool may_repack = true) {
+    if (may_repack && garbage_ > 1024 && garbage_ * 2 > data_.size()) repack();
     Slot& s = slots_[i];
     const std::uint32_t capacity =
         static_cast<std::uint32_t>(std::max<std::size_t>(min_capacity + 2, s.size * 3 / 2));
