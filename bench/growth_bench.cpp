@@ -7,9 +7,9 @@
 //   OpenMP threads; growth + division steps per second on the same tissues;
 //   then the cost of one division (rule + splitCell) per rule, 2D and 3D.
 //   Each figure is printed beside its target (issue #4).
-// Usage: growth_bench [--quick | --steps | --divisions]
+// Usage: growth_bench [--quick | --steps | --divisions | --grow-divide]
 //   --quick skips the 1e6-cell tissue; --steps runs only the growth steps,
-//   --divisions only the division costs.
+//   --divisions only the division costs, --grow-divide only growth + division.
 
 #include <omp.h>
 
@@ -156,21 +156,7 @@ void divisionCosts() {
   for (const std::string& rule : divisionRuleNames()) divisionCost("3D", box, rule);
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  const std::string flag = tessella::bench::flagArgument(
-      argc, argv, {"--quick", "--divisions", "--steps"},
-      "growth_bench [--quick | --divisions | --steps]   (smaller tissues | division costs only | step rates only)");
-  const bool quick = flag == "--quick";
-  const bool divisions_only = flag == "--divisions";
-  const bool steps_only = flag == "--steps";
-  std::printf("growth_bench (OpenMP max threads %d)\n\n", omp_get_max_threads());
-  if (divisions_only) {
-    divisionCosts();
-    return 0;
-  }
-
+void growthSteps(bool quick) {
   std::printf("Growth step: move vertices + recompute geometry + check thresholds (fastest step, mean)\n");
   struct Case { const char* name; Tissue tissue; double target_ms_2thr; };
   std::vector<Case> cases;
@@ -195,9 +181,9 @@ int main(int argc, char** argv) {
                                      two.best_ms, "ms", c.target_ms_2thr);
     }
   }
+}
 
-  if (steps_only) return 0;
-
+void growthAndDivision(bool quick) {
   std::printf("\nGrowth + division (uniform expansion, main axis, noisy threshold)\n");
   std::vector<std::pair<std::string, double>> ms[2];  // per thread count: label, ms per step
   for (int threads : {1, 2}) {
@@ -213,7 +199,19 @@ int main(int argc, char** argv) {
     tessella::bench::printFigure("growth.grow_divide." + ms[1][i].first + ".2threads", ms[1][i].second, "ms/step",
                                  ms[0][i].second, "1_thread",
                                  ms[0][i].first[0] == '2' ? 1.0 / 1.7 : tessella::bench::kNoTarget);
+}
 
-  divisionCosts();
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::string flag = tessella::bench::flagArgument(
+      argc, argv, {"--quick", "--divisions", "--steps", "--grow-divide"},
+      "growth_bench [--quick | --divisions | --steps | --grow-divide]   (smaller tissues | division costs only | "
+      "step rates only | growth + division only)");
+  const bool quick = flag == "--quick";
+  std::printf("growth_bench (OpenMP max threads %d)\n\n", omp_get_max_threads());
+  if (flag != "--divisions" && flag != "--grow-divide") growthSteps(quick);
+  if (flag != "--divisions" && flag != "--steps") growthAndDivision(quick);
+  if (flag != "--steps" && flag != "--grow-divide") divisionCosts();
   return 0;
 }

@@ -124,6 +124,7 @@ std::vector<CellSplit> Tissue::splitCells(std::span<const CellSplitPlan2D> plans
   paranoidCheck("splitCells");
 
   std::vector<CellSplit> out(plans.size());
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     out[i].daughter = CellId(splits[i].face.index());
     out[i].wall = WallId(splits[i].chord.index());
