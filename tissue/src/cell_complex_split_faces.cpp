@@ -123,11 +123,20 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
     }
     return -1;
   };
+  // Also per new end: how many faces its edge bounds, and the neighbour across it.
   std::vector<std::int32_t> partner(2 * chords.size(), -1);
+  std::vector<std::uint32_t> edge_face_count(2 * chords.size(), 0);
+  std::vector<Index> across(2 * chords.size(), kInvalidIndex);
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (std::ptrdiff_t i = 0; i < n; ++i)
-    for (int k = 0; k < 2; ++k)
-      if (chords[i].ends[k].isNew()) partner[2 * i + k] = partnerOf(i, k);
+    for (int k = 0; k < 2; ++k) {
+      if (!chords[i].ends[k].isNew()) continue;
+      partner[2 * i + k] = partnerOf(i, k);
+      const auto faces = edge_faces_[chords[i].ends[k].edge.index()];
+      edge_face_count[2 * i + k] = static_cast<std::uint32_t>(faces.size());
+      for (FaceId g : faces)
+        if (chord_of[g.index()] < 0) across[2 * i + k] = g.index();
+    }
 
   // Numbering, in the order of the one-by-one sequence: per chord the vertex
   // and edge of end 0, of end 1, then the chord's edge and the new face.
@@ -147,7 +156,7 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
       } else {
         s.vertex[k] = VertexId(v0 + nv++);
         s.new_edge[k] = EdgeId(e0 + ne++);
-        edge_face_sizes.push_back(static_cast<std::uint32_t>(edge_faces_[end.edge.index()].size()));
+        edge_face_sizes.push_back(edge_face_count[2 * i + k]);
         const std::int32_t p = partner[2 * i + k];
         s.first_on_edge[k] = p < 0 || p > 2 * i + k;
         if (s.first_on_edge[k] && p >= 0) s.next_on_edge[k] = p;
@@ -209,20 +218,27 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
   };
 
   // The faces whose loops change: the split faces, then the neighbours across cut edges.
+  // Each neighbour once, where it first appears (in chord order): claimed in
+  // parallel by the smallest position (chord_of holds -2 - position), then
+  // gathered in order.
+  const std::ptrdiff_t n2 = 2 * n;
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+  for (std::ptrdiff_t p = 0; p < n2; ++p) {
+    if (across[p] == kInvalidIndex) continue;
+    std::atomic_ref<std::int32_t> owner(chord_of[across[p]]);
+    const std::int32_t mine = static_cast<std::int32_t>(-2 - p);
+    std::int32_t seen = owner.load(std::memory_order_relaxed);
+    while ((seen == -1 || seen < mine) && !owner.compare_exchange_weak(seen, mine, std::memory_order_relaxed)) {
+    }
+  }
   std::vector<Index> affected;
   affected.reserve(2 * chords.size());
   for (std::ptrdiff_t i = 0; i < n; ++i) affected.push_back(chords[i].face.index());
-  for (std::ptrdiff_t i = 0; i < n; ++i)
-    for (int k = 0; k < 2; ++k) {
-      if (!chords[i].ends[k].isNew()) continue;
-      for (FaceId g : edge_faces_[chords[i].ends[k].edge.index()])
-        if (chord_of[g.index()] == -1) {
-          chord_of[g.index()] = -2;
-          affected.push_back(g.index());
-        }
-    }
-  for (Index g : affected)
-    if (chord_of[g] == -2) chord_of[g] = -1;
+  for (std::ptrdiff_t p = 0; p < n2; ++p)
+    if (across[p] != kInvalidIndex && chord_of[across[p]] == -2 - p) affected.push_back(across[p]);
+  const std::ptrdiff_t na = static_cast<std::ptrdiff_t>(affected.size());
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+  for (std::ptrdiff_t q = n; q < na; ++q) chord_of[affected[q]] = -1;
 
   // A face's loop with every cut edge replaced by its pieces (and new vertices).
   // `size`: the loop's length before the batch (its list may have been resized since).
@@ -270,7 +286,6 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
 
   // Sizes of the new loops: a split face keeps from..to plus the chord, its
   // new face gets to..from plus the chord.
-  const std::ptrdiff_t na = static_cast<std::ptrdiff_t>(affected.size());
   std::vector<std::uint32_t> old_sizes(affected.size()), loop_sizes(affected.size()), new_face_sizes(chords.size());
 #pragma omp parallel if (n >= kParallelMin)
   {

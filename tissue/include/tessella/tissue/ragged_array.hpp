@@ -117,16 +117,40 @@ class RaggedArray {
     }
     return first;
   }
-  /// Makes list lists[k] hold sizes[k] items: a list without the room moves
-  /// to the end of the pool (in the order given) keeping its items; items
-  /// past the old size are unspecified until written.
+  /// Makes list lists[k] hold sizes[k] items (the lists distinct): a list
+  /// without the room moves to the end of the pool keeping its items (the
+  /// moved lists back to back in the order given, so the pool is the same
+  /// for any number of threads); items past the old size are unspecified
+  /// until written. The copies run in parallel (OpenMP) for many lists.
   void resizeLists(std::span<const Index> lists, std::span<const std::uint32_t> sizes) {
     assert(lists.size() == sizes.size());
-    if (garbage_ > 1024 && garbage_ * 2 > data_.size()) repack();  // once: a repack resets capacities
-    for (std::size_t k = 0; k < lists.size(); ++k) {
-      if (sizes[k] > slots_[lists[k]].capacity) relocate(lists[k], sizes[k], false);
-      slots_[lists[k]].size = sizes[k];
+    if (garbage_ > 1024 && garbage_ * 2 > data_.size()) repack();  // first: a repack resets capacities
+    const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(lists.size());
+    std::vector<std::uint32_t> room(lists.size()), at(lists.size());
+#pragma omp parallel for schedule(static) if (m >= 4096)
+    for (std::ptrdiff_t k = 0; k < m; ++k) {
+      const Slot& s = slots_[lists[k]];
+      room[k] = sizes[k] > s.capacity ? std::max<std::uint32_t>(sizes[k] + 2, s.size * 3 / 2) : 0;
     }
+    std::size_t end = data_.size();
+    for (std::ptrdiff_t k = 0; k < m; ++k) {
+      at[k] = static_cast<std::uint32_t>(end);
+      end += room[k];
+    }
+    data_.resize(end);
+    std::size_t freed = 0;
+#pragma omp parallel for schedule(static) reduction(+ : freed) if (m >= 4096)
+    for (std::ptrdiff_t k = 0; k < m; ++k) {
+      Slot& s = slots_[lists[k]];
+      if (room[k] > 0) {
+        std::copy(data_.begin() + s.offset, data_.begin() + s.offset + s.size, data_.begin() + at[k]);
+        freed += s.capacity;
+        s.offset = at[k];
+        s.capacity = room[k];
+      }
+      s.size = sizes[k];
+    }
+    garbage_ += freed;
   }
   /// Sets the size of list i to n <= its capacity (a list shortened after a
   /// batch write); safe from the thread that writes list i.
@@ -220,8 +244,8 @@ class RaggedArray {
   };
 
   // Moves list i to the end of the pool with room for at least min_capacity.
-  void relocate(std::size_t i, std::size_t min_capacity, bool may_repack = true) {
-    if (may_repack && garbage_ > 1024 && garbage_ * 2 > data_.size()) repack();
+  void relocate(std::size_t i, std::size_t min_capacity) {
+    if (garbage_ > 1024 && garbage_ * 2 > data_.size()) repack();
     Slot& s = slots_[i];
     const std::uint32_t capacity =
         static_cast<std::uint32_t>(std::max<std::size_t>(min_capacity + 2, s.size * 3 / 2));
