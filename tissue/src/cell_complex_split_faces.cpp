@@ -57,7 +57,8 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
   auto facesOf = [&](EdgeId e, FaceId* faces) {
     auto list = edge_faces_.mutableList(e.index());
     int m = 0;
-    for (FaceId& g : list.first(std::min<std::size_t>(list.size(), 2))) faces[m++] = std::atomic_ref<FaceId>(g).load(std::memory_order_relaxed);
+    for (FaceId& g : list.first(std::min<std::size_t>(list.size(), 2)))
+      faces[m++] = std::atomic_ref<FaceId>(g).load(std::memory_order_relaxed);
     return m;
   };
 
