@@ -3,10 +3,13 @@
 #include "tessella/growth/division_scheduler.hpp"
 
 #include <cmath>
+#include <exception>
 #include <Eigen/Geometry>
 
 #include "tessella/growth/cell_frame.hpp"
 #include "tessella/growth/division_walls.hpp"
+#include "tessella/growth/parallel_threshold.hpp"
+#include "tessella/tissue/cell_split_plan.hpp"
 #include "tessella/tissue/errors.hpp"
 
 namespace tessella::growth {
@@ -70,18 +73,127 @@ DivisionRecord DivisionScheduler::divide(Tissue& t, CellId c, Rng& rng) {
 DivisionReport DivisionScheduler::step(Tissue& t, GeometryCache& geometry, Rng& rng) {
   DivisionReport report;
   const std::vector<CellId> due = trigger_.cellsDue(t, geometry.require(t, kCellMeasures), rng);
-  for (CellId c : due) {
-    if (options_.gate && !options_.gate(t, c)) continue;
-    try {
-      report.divided.push_back(divide(t, c, rng));
-    } catch (const GeometryError& e) {
-      report.skipped.push_back(SkippedDivision{c, t.lineageId(c), e.what()});
+  if (t.dim() == 2) {
+    divideAll(t, due, rng, report);
+  } else {
+    for (CellId c : due) {
+      if (options_.gate && !options_.gate(t, c)) continue;
+      try {
+        report.divided.push_back(divide(t, c, rng));
+      } catch (const GeometryError& e) {
+        report.skipped.push_back(SkippedDivision{c, t.lineageId(c), e.what()});
+      }
     }
   }
   // New cells (daughters) draw their noisy thresholds now, so they are set
   // before any caller reads them.
   if (!report.divided.empty()) trigger_.prepare(t, rng);
   return report;
+}
+
+void DivisionScheduler::divideAll(Tissue& t, const std::vector<CellId>& due, Rng& rng, DivisionReport& report) {
+  std::vector<CellId> cells;
+  cells.reserve(due.size());
+  for (CellId c : due)
+    if (!options_.gate || options_.gate(t, c)) cells.push_back(c);
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(cells.size());
+  if (n == 0) return;
+  // Everything is decided on the tissue as it is: the rule's planes (in
+  // parallel when the rule allows it, else in the order of the cells, so the
+  // random stream is drawn as always), then each cell's plan with its
+  // retries. A GeometryError skips the cell; any other error stops the step
+  // (the first in cell order), before the tissue changes.
+  std::vector<Plane> planes(cells.size());
+  std::vector<std::string> errors(cells.size());
+  std::vector<std::exception_ptr> failures(cells.size());
+  auto findPlane = [&](std::ptrdiff_t i) {
+    try {
+      planes[i] = withCanonicalSide(rule_->plane(t, cells[i], rng));
+    } catch (const GeometryError& e) {
+      errors[i] = e.what();
+    } catch (...) {
+      failures[i] = std::current_exception();
+    }
+  };
+  if (rule_->concurrent()) {
+#pragma omp parallel for schedule(dynamic, 64) if (n >= kParallelMinItems)
+    for (std::ptrdiff_t i = 0; i < n; ++i) findPlane(i);
+  } else {
+    for (std::ptrdiff_t i = 0; i < n; ++i) findPlane(i);
+  }
+  std::vector<CellSplitPlan2D> plans(cells.size());
+  std::vector<int> attempts(cells.size(), 0);
+#pragma omp parallel for schedule(dynamic, 64) if (n >= kParallelMinItems)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    if (failures[i] || !errors[i].empty()) continue;
+    try {
+      attempts[i] = planDivision(t, cells[i], planes[i], plans[i], errors[i]);
+    } catch (...) {
+      failures[i] = std::current_exception();
+    }
+  }
+  for (const std::exception_ptr& failure : failures)
+    if (failure) std::rethrow_exception(failure);
+
+  // The cells that divide, in order (the plans of skipped cells dropped).
+  std::vector<std::int64_t> mothers;
+  mothers.reserve(cells.size());
+  std::size_t kept = 0;
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    if (attempts[i] == 0) {
+      report.skipped.push_back(SkippedDivision{cells[i], t.lineageId(cells[i]), errors[i]});
+      continue;
+    }
+    mothers.push_back(t.lineageId(cells[i]));
+    if (kept != static_cast<std::size_t>(i)) {
+      plans[kept] = std::move(plans[i]);
+      cells[kept] = cells[i];
+      attempts[kept] = attempts[i];
+    }
+    ++kept;
+  }
+  plans.resize(kept);
+  if (options_.tag_walls) divisionWallTags(t);
+  const std::vector<CellSplit> splits = t.splitCells(plans);
+  report.divided.reserve(kept);
+  for (std::size_t k = 0; k < kept; ++k)
+    report.divided.push_back(DivisionRecord{mothers[k], cells[k], splits[k].daughter, splits[k].wall, attempts[k]});
+  if (options_.tag_walls) {
+    auto& tags = divisionWallTags(t);
+    for (const DivisionRecord& d : report.divided) tags[d.wall] = d.mother_lineage;
+  }
+}
+
+int DivisionScheduler::planDivision(const Tissue& t, CellId c, const Plane& base, CellSplitPlan2D& plan,
+                                    std::string& error) const {
+  // The retries of divide(), planned without changing the tissue.
+  const Vec3 n0 = base.normal.normalized();
+  Vec3 axis = Vec3::Zero();
+  double size = 0;
+  std::string last_error;
+  for (int attempt = 0; attempt < options_.max_attempts; ++attempt) {
+    Plane p = base;
+    if (attempt > 0) {
+      if (attempt == 1) {
+        axis = cellFrame(t, c).normal;
+        size = std::sqrt(std::abs(cellMeasure(t, c)));
+      }
+      const int k = (attempt + 1) / 2;
+      const double sign = attempt % 2 == 1 ? 1.0 : -1.0;
+      p.normal = Eigen::AngleAxisd(sign * k * options_.retry_angle, axis) * n0;
+      p.point = base.point + sign * k * options_.retry_shift * size * n0;
+    }
+    try {
+      plan = planCellSplit2D(t, c, p, options_.split);
+      return attempt + 1;
+    } catch (const GeometryError& e) {
+      last_error = e.what();
+    }
+  }
+  error = "cell " + std::to_string(c.index()) + " (lineage id " + std::to_string(t.lineageId(c)) +
+          ") could not be divided by rule '" + rule_->name() + "' in " + std::to_string(options_.max_attempts) +
+          " attempts: " + last_error;
+  return 0;
 }
 
 }  // namespace tessella::growth

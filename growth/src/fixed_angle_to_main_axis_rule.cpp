@@ -43,6 +43,7 @@ class FixedAngleToMainAxisRule final : public DivisionRule {
     // planeThroughCentroid makes it tangent to a 2D cell: exactly a1's tangent part turned about N.
     return planeThroughCentroid(t, c, cos_ * a1 + sin_ * pivot.cross(a1), "fixed_angle_to_main_axis rule");
   }
+  bool concurrent() const override { return true; }
   std::string name() const override { return "fixed_angle_to_main_axis"; }
 
  private:

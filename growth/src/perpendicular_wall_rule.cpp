@@ -45,6 +45,8 @@ double junctionFreeShift(const std::vector<double>& d, double tol) {
 
 }  // namespace
 
+bool PerpendicularWallRule::concurrent() const { return fallback_->concurrent(); }
+
 Plane PerpendicularWallRule::plane(const Tissue& t, CellId c, Rng& rng) const {
   const std::vector<WallId> birth = birthWalls(t, c);
   if (birth.empty()) return fallback_->plane(t, c, rng);

@@ -2,14 +2,42 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tessella/growth/size_threshold.hpp"
 
+#include <omp.h>
+
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <vector>
 
+#include "tessella/growth/parallel_threshold.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
 
 namespace tessella::growth {
+
+namespace {
+// The live cells for which `pred` holds, in slot order (threads scan
+// contiguous blocks in thread order, so the list is the serial one).
+template <typename Pred>
+std::vector<CellId> cellsWhere(const Tissue& t, Pred pred) {
+  const std::ptrdiff_t slots = static_cast<std::ptrdiff_t>(t.cellSlots());
+  std::vector<std::vector<CellId>> parts;
+#pragma omp parallel if (slots >= kParallelMinItems)
+  {
+#pragma omp single
+    parts.resize(static_cast<std::size_t>(omp_get_num_threads()));
+    std::vector<CellId>& mine = parts[static_cast<std::size_t>(omp_get_thread_num())];
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t i = 0; i < slots; ++i) {
+      const CellId c(static_cast<Index>(i));
+      if (t.alive(c) && pred(c)) mine.push_back(c);
+    }
+  }
+  std::vector<CellId> out;
+  for (const auto& part : parts) out.insert(out.end(), part.begin(), part.end());
+  return out;
+}
+}  // namespace
 
 SizeThreshold SizeThreshold::fixed(double size) {
   if (!(size > 0) || !std::isfinite(size))
@@ -56,11 +84,15 @@ void SizeThreshold::prepare(Tissue& t, Rng& rng) const {
     cells.add<double>(property_, std::numeric_limits<double>::quiet_NaN(), DivisionPolicy::Reset);
   auto& column = cells.get<double>(property_);
   std::normal_distribution<double> draw(size_, stddev_);
-  for (CellId c : t.cells()) {
+  // NaN marks "not drawn yet"; a value that is no size (0 from a column
+  // read back without its default, say) is redrawn too, never used. Found in
+  // parallel, drawn in cell order.
+  const std::vector<CellId> undrawn = cellsWhere(t, [&](CellId c) {
+    const double v = column[c];
+    return !(v > 0 && std::isfinite(v));
+  });
+  for (CellId c : undrawn) {
     double& v = column[c];
-    // NaN marks "not drawn yet"; a value that is no size (0 from a column
-    // read back without its default, say) is redrawn too, never used.
-    if (v > 0 && std::isfinite(v)) continue;
     do v = draw(rng);
     while (!(v > 0));  // a size threshold must be positive
   }
@@ -73,16 +105,9 @@ double SizeThreshold::threshold(const Tissue& t, CellId c) const {
 
 std::vector<CellId> SizeThreshold::cellsDue(Tissue& t, const GeometryCache& g, Rng& rng) const {
   prepare(t, rng);
-  std::vector<CellId> due;
-  if (kind_ == Kind::Fixed) {
-    for (CellId c : t.cells())
-      if (g.cellMeasure(t, c) > size_) due.push_back(c);
-    return due;
-  }
+  if (kind_ == Kind::Fixed) return cellsWhere(t, [&](CellId c) { return g.cellMeasure(t, c) > size_; });
   const auto& column = t.cellProperties().get<double>(property_);
-  for (CellId c : t.cells())
-    if (g.cellMeasure(t, c) > column[c]) due.push_back(c);  // NaN never triggers
-  return due;
+  return cellsWhere(t, [&](CellId c) { return g.cellMeasure(t, c) > column[c]; });  // NaN never triggers
 }
 
 std::string SizeThreshold::describe() const {

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include <catch2/catch.hpp>
 
+#include <omp.h>
+
 #include <cmath>
 #include <set>
 
@@ -135,4 +137,49 @@ TEST_CASE("a division gate lets only the cells it accepts divide", "[growth][sch
   for (const DivisionRecord& d : r.divided) CHECK(cellCentroid(t, d.cell).x() < 2.0);
   CHECK(t.numCells() == 6);
   REQUIRE(validate(t).ok);
+}
+
+namespace {
+// Two steps on 6400 cells (enough for every parallel loop of a 2D step): all
+// divide by the main axis (planes in parallel), then the squares they make by
+// the random rule (planes drawn one after the other).
+struct TwoSteps {
+  Tissue tissue;
+  std::vector<DivisionReport> reports;
+};
+TwoSteps twoSteps(int threads) {
+  const int saved = omp_get_max_threads();
+  omp_set_num_threads(threads);
+  TwoSteps out{rectangularGrid(80, 80, 1.0, 0.5), {}};
+  GeometryCache g;
+  DivisionScheduler first(SizeThreshold::fixed(0.4), makeDivisionRule("main_axis"));
+  out.reports.push_back(first.step(out.tissue, g));
+  DivisionScheduler second(SizeThreshold::fixed(0.2), makeDivisionRule("random"), DivisionOptions{.seed = 3});
+  out.reports.push_back(second.step(out.tissue, g));
+  omp_set_num_threads(saved);
+  return out;
+}
+}  // namespace
+
+TEST_CASE("a 2D division step is the same with one and two threads", "[growth][scheduler]") {
+  const TwoSteps one = twoSteps(1), two = twoSteps(2);
+  REQUIRE(one.reports[0].divided.size() == 6400);
+  REQUIRE(one.reports[1].divided.size() == 12800);
+  REQUIRE(one.tissue.topology().layout() == two.tissue.topology().layout());
+  CHECK(std::vector<Vec3>(one.tissue.positions().begin(), one.tissue.positions().end()) ==
+        std::vector<Vec3>(two.tissue.positions().begin(), two.tissue.positions().end()));
+  for (const char* name : {Tissue::kLineageName, Tissue::kParentName})
+    CHECK(one.tissue.cellProperties().get<std::int64_t>(name).values() ==
+          two.tissue.cellProperties().get<std::int64_t>(name).values());
+  CHECK(one.tissue.wallProperties().get<std::int64_t>(kDivisionWallProperty).values() ==
+        two.tissue.wallProperties().get<std::int64_t>(kDivisionWallProperty).values());
+  for (std::size_t s = 0; s < 2; ++s) {
+    REQUIRE(one.reports[s].divided.size() == two.reports[s].divided.size());
+    for (std::size_t i = 0; i < one.reports[s].divided.size(); ++i) {
+      const DivisionRecord &a = one.reports[s].divided[i], &b = two.reports[s].divided[i];
+      CHECK((a.cell == b.cell && a.daughter == b.daughter && a.wall == b.wall && a.attempts == b.attempts));
+    }
+  }
+  REQUIRE(validate(one.tissue).ok);
+  CHECK(one.tissue.numCells() == 25600);
 }

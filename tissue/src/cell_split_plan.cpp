@@ -191,6 +191,9 @@ CellSplitPlan2D planCellSplit2D(const Tissue& t, CellId c, const Plane& plane, c
                         {2, f.index()});
 
   CellSplitPlan2D plan;
+  plan.cell = c;
+  plan.plane = Plane{plane.point, normal};
+  plan.snap_distance = options.snap_tolerance * std::sqrt(m.area);
   plan.a = cutNode(loop, A);
   plan.b = cutNode(loop, B);
   // The mother keeps the negative side.

@@ -24,6 +24,11 @@ class DivisionRule {
   /// the rule has no answer for this cell (e.g. a fixed direction normal to
   /// a surface cell).
   virtual Plane plane(const Tissue& t, CellId c, Rng& rng) const = 0;
+  /// True when plane() may run on several threads at once and draws nothing
+  /// from `rng`: the scheduler then finds a step's planes in parallel. A rule
+  /// that draws, keeps state or calls back (Python) says false (the default)
+  /// and its planes are found one after the other, in the order of the cells.
+  virtual bool concurrent() const { return false; }
   /// The rule's configuration name ("main_axis", "shortest_wall", ...).
   virtual std::string name() const = 0;
 };

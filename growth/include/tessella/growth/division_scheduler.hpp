@@ -24,6 +24,10 @@
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/tissue.hpp"
 
+namespace tessella {
+struct CellSplitPlan2D;
+}
+
 namespace tessella::growth {
 
 struct DivisionOptions {
@@ -80,6 +84,12 @@ class DivisionScheduler {
   Rng& rng() { return rng_; }
 
  private:
+  // A 2D step: every plan made on the tissue as it is, then Tissue::splitCells.
+  void divideAll(Tissue& t, const std::vector<CellId>& due, Rng& rng, DivisionReport& report);
+  // The plan of divide()'s attempts for one cell: the number of attempts, or
+  // 0 (and the message) when every one failed.
+  int planDivision(const Tissue& t, CellId c, const Plane& base, CellSplitPlan2D& plan, std::string& error) const;
+
   SizeThreshold trigger_;
   std::shared_ptr<const DivisionRule> rule_;
   DivisionOptions options_;

@@ -16,6 +16,7 @@ class FixedDirectionRule final : public DivisionRule {
   /// InputError for a zero or non-finite normal.
   explicit FixedDirectionRule(const Vec3& normal);
   Plane plane(const Tissue& t, CellId c, Rng& rng) const override;
+  bool concurrent() const override { return true; }
   std::string name() const override { return "fixed"; }
   const Vec3& normal() const { return normal_; }
 

@@ -13,6 +13,7 @@ namespace tessella::growth {
 class MainAxisRule final : public DivisionRule {
  public:
   Plane plane(const Tissue& t, CellId c, Rng& rng) const override;
+  bool concurrent() const override { return true; }
   std::string name() const override { return "main_axis"; }
 };
 

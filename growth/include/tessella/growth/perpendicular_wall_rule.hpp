@@ -27,6 +27,7 @@ class PerpendicularWallRule final : public DivisionRule {
   explicit PerpendicularWallRule(double junction_tolerance = 0.05,
                                  std::shared_ptr<const DivisionRule> fallback = nullptr);
   Plane plane(const Tissue& t, CellId c, Rng& rng) const override;
+  bool concurrent() const override;
   std::string name() const override { return "perpendicular_to_mother_wall"; }
 
  private:

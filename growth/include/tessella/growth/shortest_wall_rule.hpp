@@ -14,6 +14,7 @@ class ShortestWallRule final : public DivisionRule {
  public:
   explicit ShortestWallRule(ShortestWallSearchOptions options = {}) : options_(options) {}
   Plane plane(const Tissue& t, CellId c, Rng& rng) const override;
+  bool concurrent() const override { return true; }
   std::string name() const override { return "shortest_wall"; }
 
  private:

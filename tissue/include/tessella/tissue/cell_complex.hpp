@@ -60,6 +60,43 @@ struct ComplexLayout {
   bool operator==(const ComplexLayout&) const = default;
 };
 
+/// One end of a chord of CellComplex::splitFaces: an existing vertex of the
+/// face's loop, a new vertex on one of its loop edges, or the new vertex an
+/// earlier chord of the batch makes on that edge.
+struct ChordEnd {
+  VertexId vertex;  ///< the existing vertex; invalid otherwise
+  EdgeId edge;      ///< the loop edge the new vertex splits (also for `same_as`)
+  /// Where the new vertex lies along `edge`, from its first vertex (0) to its
+  /// second (1): orders two new vertices on one edge.
+  double t = 0.5;
+  /// 2 j + k: the vertex is the one end k of the earlier chord j makes on `edge`.
+  std::int32_t same_as = -1;
+  bool isNew() const { return !vertex && same_as < 0; }
+};
+
+/// A face split by a chord between two points of its loop (CellComplex::splitFaces).
+struct FaceChord {
+  FaceId face;
+  ChordEnd ends[2];
+  /// Which part of the loop the new face gets: from end 0 to end 1, or from end 1 to end 0.
+  bool new_face_from_0_to_1 = false;
+};
+
+/// What CellComplex::splitFaces made for one chord.
+struct ChordSplit {
+  VertexId vertex[2];  ///< the chord's ends
+  /// For an end that made a new vertex: the edge it split, which ran from
+  /// split_from to split_to at that moment and now ends at the vertex, and
+  /// the new edge from the vertex to split_to. Invalid for other ends.
+  EdgeId split_edge[2], new_edge[2];
+  VertexId split_from[2], split_to[2];
+  /// The end (2 j + k) that split the same edge after this one, or -1.
+  std::int32_t next_on_edge[2] = {-1, -1};
+  bool first_on_edge[2] = {false, false};  ///< a new vertex, the first on its edge
+  EdgeId chord;  ///< the new edge between the ends
+  FaceId face;   ///< the new face
+};
+
 class CellComplex {
  public:
   /// dim = 2 (vertices, edges, faces) or 3 (and volumes).
@@ -164,6 +201,16 @@ class CellComplex {
   /// the new volume with the opposite sign.
   std::pair<FaceId, VolumeId> splitVolume(VolumeId c, std::span<const FaceId> moving,
                                           std::span<const OrientedEdge> cut_loop, int cut_sign);
+
+  /// Many face splits of a 2D complex at once, in parallel (OpenMP). The
+  /// result (element numbering, every list and its order) is the one of
+  /// taking the chords in order and, for each, splitting the edges of its new
+  /// ends (the piece of the edge holding `t` when an earlier chord split it
+  /// already) with splitEdge, then the face with splitFace(face, from, to),
+  /// the new face getting the part from `from` to `to`. Faces are distinct;
+  /// the two ends of a chord are on different, non-adjacent places of its
+  /// loop. Checked before anything changes (TopologyError naming the face).
+  std::vector<ChordSplit> splitFaces(std::span<const FaceChord> chords);
 
   /// Drops tombstones and renumbers every degree, preserving order.
   Renumbering compact();

@@ -27,6 +27,12 @@ struct CutNode {
 
 /// Dividing a 2D cell: a chord between two points of its boundary.
 struct CellSplitPlan2D {
+  CellId cell;  ///< the cell divided
+  /// The plane (unit normal) and the distance within which a vertex counts as
+  /// on it: Tissue::splitCells reuses a vertex another cell of the batch makes
+  /// on a shared edge when it lies that close to this plane.
+  Plane plane;
+  double snap_distance = 0;
   /// The chord's ends, in the order of the cell's loop (new vertices are made
   /// in this order).
   CutNode a, b;

@@ -11,9 +11,11 @@
 // mutation of the array.
 
 #include <algorithm>
+#include <atomic>
 #include <cassert>
 #include <cstdint>
 #include <span>
+#include <type_traits>
 #include <vector>
 
 #include "tessella/tissue/handles.hpp"
@@ -96,6 +98,81 @@ class RaggedArray {
     return true;
   }
   void clearList(std::size_t i) { slots_[i].size = 0; }
+
+  // --- batch edits (Tissue::splitCells): room is made serially, then lists are
+  // written from several threads, each list by one thread.
+
+  /// Appends one list per entry of `sizes`, holding default items; returns
+  /// the index of the first.
+  std::size_t appendLists(std::span<const std::uint32_t> sizes) {
+    const std::size_t first = slots_.size();
+    std::size_t total = 0;
+    for (std::uint32_t n : sizes) total += n;
+    slots_.reserve(first + sizes.size());
+    std::uint32_t offset = static_cast<std::uint32_t>(data_.size());
+    data_.resize(data_.size() + total);
+    for (std::uint32_t n : sizes) {
+      slots_.push_back(Slot{offset, n, n});
+      offset += n;
+    }
+    return first;
+  }
+  /// Makes list lists[k] hold sizes[k] items (the lists distinct): a list
+  /// without the room moves to the end of the pool keeping its items (the
+  /// moved lists back to back in the order given, so the pool is the same
+  /// for any number of threads); items past the old size are unspecified
+  /// until written. The copies run in parallel (OpenMP) for many lists.
+  void resizeLists(std::span<const Index> lists, std::span<const std::uint32_t> sizes) {
+    assert(lists.size() == sizes.size());
+    if (garbage_ > 1024 && garbage_ * 2 > data_.size()) repack();  // first: a repack resets capacities
+    const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(lists.size());
+    std::vector<std::uint32_t> room(lists.size()), at(lists.size());
+#pragma omp parallel for schedule(static) if (m >= 4096)
+    for (std::ptrdiff_t k = 0; k < m; ++k) {
+      const Slot& s = slots_[lists[k]];
+      room[k] = sizes[k] > s.capacity ? std::max<std::uint32_t>(sizes[k] + 2, s.size * 3 / 2) : 0;
+    }
+    std::size_t end = data_.size();
+    for (std::ptrdiff_t k = 0; k < m; ++k) {
+      at[k] = static_cast<std::uint32_t>(end);
+      end += room[k];
+    }
+    data_.resize(end);
+    std::size_t freed = 0;
+#pragma omp parallel for schedule(static) reduction(+ : freed) if (m >= 4096)
+    for (std::ptrdiff_t k = 0; k < m; ++k) {
+      Slot& s = slots_[lists[k]];
+      if (room[k] > 0) {
+        std::copy(data_.begin() + s.offset, data_.begin() + s.offset + s.size, data_.begin() + at[k]);
+        freed += s.capacity;
+        s.offset = at[k];
+        s.capacity = room[k];
+      }
+      s.size = sizes[k];
+    }
+    garbage_ += freed;
+  }
+  /// Sets the size of list i to n <= its capacity (a list shortened after a
+  /// batch write); safe from the thread that writes list i.
+  void setListSize(std::size_t i, std::uint32_t n) {
+    assert(n <= slots_[i].capacity);
+    slots_[i].size = n;
+  }
+  /// replaceValue for lists that other threads edit at the same time, each
+  /// thread replacing values no other thread looks for (relaxed atomic reads
+  /// and writes of single items).
+  bool replaceValueShared(std::size_t i, const T& old_value, const T& new_value) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    const Slot s = slots_[i];
+    for (std::uint32_t k = 0; k < s.size; ++k) {
+      std::atomic_ref<T> item(data_[s.offset + k]);
+      if (item.load(std::memory_order_relaxed) == old_value) {
+        item.store(new_value, std::memory_order_relaxed);
+        return true;
+      }
+    }
+    return false;
+  }
 
   /// Renumbers lists: list i moves to old_to_new[i] (kInvalidIndex drops it),
   /// and the pool is repacked in the new order. `transform` maps each item.

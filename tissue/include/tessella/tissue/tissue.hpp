@@ -237,6 +237,19 @@ class Tissue {
   /// options.min_fraction, or cuts a non-convex cell into more than two
   /// pieces where the choice is ambiguous (see docs/ARCHITECTURE.md).
   CellSplit splitCell(CellId c, const Plane& plane, const SplitOptions& options = {});
+  /// Divides many cells of a 2D tissue at once, in parallel (OpenMP), by plans
+  /// made on the tissue as it is (planCellSplit2D, one per cell, each cell
+  /// once). The result, bit for bit and whatever the number of threads, is
+  /// the one of applying the plans one after the other in their order: each
+  /// new chord end splits (splitEdge) the piece of its edge that holds its
+  /// point, unless an earlier plan of the batch made a vertex on that edge
+  /// within the plan's snap distance of its plane, which it then reuses;
+  /// then the cell is split between the chord's ends (the daughter gets the
+  /// plan's side), its properties divided by the plan's mother_fraction, and
+  /// it gets its lineage ids (mother, then daughter, plan after plan).
+  /// Element numbering and every list order are those of that sequence
+  /// (docs/growth.md, "Division in parallel"). Results in plan order.
+  std::vector<CellSplit> splitCells(std::span<const CellSplitPlan2D> plans);
 
   // --- removal and compaction -------------------------------------------------
   /// Removes a cell, then every wall, edge and vertex left bounding nothing.

@@ -1,0 +1,426 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
+// CellComplex::splitFaces: many chords of a 2D complex at once. Ids are handed
+// out serially by prefix sums over the chords (the numbering the one-by-one
+// splitEdge / splitFace sequence gives), room for every list is made serially,
+// then the lists are written in parallel, each by one thread: the edges cut by
+// the chords (one thread per cut edge), then the face loops (one per face).
+
+#include <algorithm>
+#include <atomic>
+#include <string>
+
+#include "tessella/tissue/cell_complex.hpp"
+#include "tessella/tissue/errors.hpp"
+
+namespace tessella {
+
+namespace {
+
+constexpr std::ptrdiff_t kParallelMin = 1024;  // fewer chords: one thread (a team costs more)
+
+// Up to two new vertices on one edge, ordered along it: the pieces the edge
+// becomes (from its first vertex to its second) and the vertices between them.
+struct EdgeChain {
+  int cuts = 0;
+  EdgeId piece[3];
+  VertexId inner[2];
+};
+
+}  // namespace
+
+std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chords) {
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(chords.size());
+  std::vector<ChordSplit> out(chords.size());
+  if (n == 0) return out;
+  if (dim_ != 2) throw TopologyError("splitFaces: the complex is 3D (chords split the faces of 2D complexes)", {});
+  const Index f0 = static_cast<Index>(slots(2));
+
+  // Face -> chord; faces of the batch are distinct and alive.
+  std::vector<std::int32_t> chord_of(slots(2), -1);
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    const FaceId f = chords[i].face;
+    if (!alive(f)) throw TopologyError("splitFaces: chord " + std::to_string(i) + ": face " +
+                                           std::to_string(f.index()) + " is not alive", {2, f.index()});
+    if (chord_of[f.index()] >= 0)
+      throw TopologyError("splitFaces: face " + std::to_string(f.index()) + " is split by chords " +
+                              std::to_string(chord_of[f.index()]) + " and " + std::to_string(i),
+                          {2, f.index()});
+    chord_of[f.index()] = static_cast<std::int32_t>(i);
+  }
+  // The chord splitting a face (or the new face a chord made), -1 for none.
+  // Edge-face lists are read with atomic loads: pass B rewrites other items of them.
+  auto chordOfFace = [&](FaceId g) -> std::int32_t {
+    if (g.index() >= f0) return static_cast<std::int32_t>(g.index() - f0);
+    return chord_of[g.index()];
+  };
+  auto facesOf = [&](EdgeId e, FaceId* faces) {
+    auto list = edge_faces_.mutableList(e.index());
+    int m = 0;
+    for (FaceId& g : list.first(std::min<std::size_t>(list.size(), 2)))
+      faces[m++] = std::atomic_ref<FaceId>(g).load(std::memory_order_relaxed);
+    return m;
+  };
+
+  // Checks, before anything changes.
+  auto problem = [&](std::ptrdiff_t i) -> std::string {
+    const FaceChord& ch = chords[i];
+    const FaceId f = ch.face;
+    const std::string who = "splitFaces: chord " + std::to_string(i) + " of face " + std::to_string(f.index());
+    for (int k = 0; k < 2; ++k) {
+      const ChordEnd& end = ch.ends[k];
+      if (end.vertex) {
+        if (loopPosition(f, end.vertex) < 0)
+          return who + ": vertex " + std::to_string(end.vertex.index()) + " is not on its loop";
+      } else {
+        if (!end.edge || loopPosition(f, end.edge) < 0)
+          return who + ": edge " + std::to_string(end.edge.index()) + " is not on its loop";
+        if (end.same_as >= 0) {
+          const std::int32_t j = end.same_as / 2;
+          if (j >= i || !chords[j].ends[end.same_as % 2].isNew() || chords[j].ends[end.same_as % 2].edge != end.edge)
+            return who + ": end " + std::to_string(k) + " reuses end " + std::to_string(end.same_as) +
+                   ", which makes no vertex on edge " + std::to_string(end.edge.index()) + " before it";
+        }
+      }
+    }
+    const ChordEnd &a = ch.ends[0], &b = ch.ends[1];
+    if (a.vertex && b.vertex) {
+      const int n_loop = static_cast<int>(face_vertices_[f.index()].size());
+      const int ia = loopPosition(f, a.vertex), ib = loopPosition(f, b.vertex);
+      if (ia == ib || (ia + 1) % n_loop == ib || (ib + 1) % n_loop == ia)
+        return who + ": vertices " + std::to_string(a.vertex.index()) + " and " + std::to_string(b.vertex.index()) +
+               " are equal or adjacent on its loop";
+      if (findEdge(a.vertex, b.vertex))
+        return who + ": vertices " + std::to_string(a.vertex.index()) + " and " + std::to_string(b.vertex.index()) +
+               " are already joined by an edge";
+    } else if (!a.vertex && !b.vertex) {
+      if (a.edge == b.edge) return who + ": both ends on edge " + std::to_string(a.edge.index());
+    } else {
+      const VertexId v = a.vertex ? a.vertex : b.vertex;
+      const EdgeId e = a.vertex ? b.edge : a.edge;
+      if (edgeFrom(e) == v || edgeTo(e) == v)
+        return who + ": vertex " + std::to_string(v.index()) + " is an end of the cut edge " +
+               std::to_string(e.index());
+    }
+    return {};
+  };
+  std::vector<std::uint8_t> bad(chords.size(), 0);
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+  for (std::ptrdiff_t i = 0; i < n; ++i) bad[i] = !problem(i).empty();
+  for (std::ptrdiff_t i = 0; i < n; ++i)
+    if (bad[i]) throw TopologyError(problem(i), {2, chords[i].face.index()});
+
+  // The other new end on the same edge (a face's chord cuts an edge once; an
+  // edge of a 2D complex bounds at most two faces).
+  auto partnerOf = [&](std::ptrdiff_t i, int k) -> std::int32_t {
+    const EdgeId e = chords[i].ends[k].edge;
+    FaceId faces[2];
+    const int m = facesOf(e, faces);
+    for (int q = 0; q < m; ++q) {
+      const std::int32_t j = chordOfFace(faces[q]);
+      if (j < 0 || j == i) continue;
+      for (int kk = 0; kk < 2; ++kk)
+        if (chords[j].ends[kk].isNew() && chords[j].ends[kk].edge == e) return 2 * j + kk;
+    }
+    return -1;
+  };
+  // Also per new end: how many faces its edge bounds, and the neighbour across it.
+  std::vector<std::int32_t> partner(2 * chords.size(), -1);
+  std::vector<std::uint32_t> edge_face_count(2 * chords.size(), 0);
+  std::vector<Index> across(2 * chords.size(), kInvalidIndex);
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+  for (std::ptrdiff_t i = 0; i < n; ++i)
+    for (int k = 0; k < 2; ++k) {
+      if (!chords[i].ends[k].isNew()) continue;
+      partner[2 * i + k] = partnerOf(i, k);
+      const auto faces = edge_faces_[chords[i].ends[k].edge.index()];
+      edge_face_count[2 * i + k] = static_cast<std::uint32_t>(faces.size());
+      for (FaceId g : faces)
+        if (chord_of[g.index()] < 0) across[2 * i + k] = g.index();
+    }
+
+  // Numbering, in the order of the one-by-one sequence: per chord the vertex
+  // and edge of end 0, of end 1, then the chord's edge and the new face.
+  const Index v0 = static_cast<Index>(slots(0)), e0 = static_cast<Index>(slots(1));
+  Index nv = 0, ne = 0;
+  std::vector<std::uint32_t> edge_face_sizes;
+  std::vector<std::int32_t> reused_by(2 * chords.size(), -1);  // the later end that reuses this end's vertex
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    ChordSplit& s = out[i];
+    for (int k = 0; k < 2; ++k) {
+      const ChordEnd& end = chords[i].ends[k];
+      if (end.vertex) {
+        s.vertex[k] = end.vertex;
+      } else if (end.same_as >= 0) {
+        s.vertex[k] = out[end.same_as / 2].vertex[end.same_as % 2];
+        reused_by[end.same_as] = static_cast<std::int32_t>(2 * i + k);
+      } else {
+        s.vertex[k] = VertexId(v0 + nv++);
+        s.new_edge[k] = EdgeId(e0 + ne++);
+        edge_face_sizes.push_back(edge_face_count[2 * i + k]);
+        const std::int32_t p = partner[2 * i + k];
+        s.first_on_edge[k] = p < 0 || p > 2 * i + k;
+        if (s.first_on_edge[k] && p >= 0) s.next_on_edge[k] = p;
+      }
+    }
+    s.chord = EdgeId(e0 + ne++);
+    edge_face_sizes.push_back(2);
+    s.face = FaceId(f0 + static_cast<Index>(i));
+  }
+  std::vector<std::uint32_t> vertex_edge_sizes(nv, 3);
+  for (std::ptrdiff_t i = 0; i < n; ++i)
+    for (int k = 0; k < 2; ++k)
+      if (chords[i].ends[k].same_as >= 0) ++vertex_edge_sizes[out[i].vertex[k].index() - v0];
+
+  // The pieces of a cut edge, from the chords that cut it (one or two).
+  auto chainOf = [&](std::int32_t first_end) {
+    const std::ptrdiff_t i = first_end / 2;
+    const int k = first_end % 2;
+    const ChordSplit& s = out[i];
+    EdgeChain c;
+    c.piece[0] = chords[i].ends[k].edge;
+    const std::int32_t next = s.next_on_edge[k];
+    if (next < 0) {
+      c.cuts = 1;
+      c.piece[1] = s.new_edge[k];
+      c.inner[0] = s.vertex[k];
+      return c;
+    }
+    c.cuts = 2;
+    const ChordSplit& s2 = out[next / 2];
+    const int k2 = next % 2;
+    if (chords[next / 2].ends[k2].t > chords[i].ends[k].t) {
+      c.piece[1] = s.new_edge[k];
+      c.piece[2] = s2.new_edge[k2];
+      c.inner[0] = s.vertex[k];
+      c.inner[1] = s2.vertex[k2];
+    } else {
+      c.piece[1] = s2.new_edge[k2];
+      c.piece[2] = s.new_edge[k];
+      c.inner[0] = s2.vertex[k2];
+      c.inner[1] = s.vertex[k];
+    }
+    return c;
+  };
+  // The first end cutting edge e (seen from a face whose loop holds e), or -1.
+  auto firstCutOn = [&](EdgeId e) -> std::int32_t {
+    FaceId faces[2];
+    const int m = facesOf(e, faces);
+    std::int32_t best = -1;
+    for (int q = 0; q < m; ++q) {
+      const std::int32_t j = chordOfFace(faces[q]);
+      if (j < 0) continue;
+      for (int kk = 0; kk < 2; ++kk) {
+        const ChordEnd& end = chords[j].ends[kk];
+        if (end.isNew() && end.edge == e && out[j].first_on_edge[kk]) best = 2 * j + kk;
+      }
+    }
+    return best;
+  };
+
+  // The faces whose loops change: the split faces, then the neighbours across cut edges.
+  // Each neighbour once, where it first appears (in chord order): claimed in
+  // parallel by the smallest position (chord_of holds -2 - position), then
+  // gathered in order.
+  const std::ptrdiff_t n2 = 2 * n;
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+  for (std::ptrdiff_t p = 0; p < n2; ++p) {
+    if (across[p] == kInvalidIndex) continue;
+    std::atomic_ref<std::int32_t> owner(chord_of[across[p]]);
+    const std::int32_t mine = static_cast<std::int32_t>(-2 - p);
+    std::int32_t seen = owner.load(std::memory_order_relaxed);
+    while ((seen == -1 || seen < mine) && !owner.compare_exchange_weak(seen, mine, std::memory_order_relaxed)) {
+    }
+  }
+  std::vector<Index> affected;
+  affected.reserve(2 * chords.size());
+  for (std::ptrdiff_t i = 0; i < n; ++i) affected.push_back(chords[i].face.index());
+  for (std::ptrdiff_t p = 0; p < n2; ++p)
+    if (across[p] != kInvalidIndex && chord_of[across[p]] == -2 - p) affected.push_back(across[p]);
+  const std::ptrdiff_t na = static_cast<std::ptrdiff_t>(affected.size());
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+  for (std::ptrdiff_t q = n; q < na; ++q) chord_of[affected[q]] = -1;
+
+  // A face's loop with every cut edge replaced by its pieces (and new vertices).
+  // `size`: the loop's length before the batch (its list may have been resized since).
+  auto expandedLoop = [&](FaceId f, std::size_t size, std::vector<OrientedEdge>& edges,
+                          std::vector<VertexId>& verts) {
+    edges.clear();
+    verts.clear();
+    const OrientedEdge* loop_e = face_edges_.mutableList(f.index()).data();
+    const VertexId* loop_v = face_vertices_.mutableList(f.index()).data();
+    for (std::size_t r = 0; r < size; ++r) {
+      const OrientedEdge oe = loop_e[r];
+      const std::int32_t first = firstCutOn(oe.handle());
+      if (first < 0) {
+        edges.push_back(oe);
+        verts.push_back(loop_v[r]);
+        continue;
+      }
+      const EdgeChain c = chainOf(first);
+      if (!oe.reversed()) {
+        edges.push_back(oe);
+        verts.push_back(loop_v[r]);
+        for (int q = 0; q < c.cuts; ++q) {
+          edges.emplace_back(c.piece[q + 1], false);
+          verts.push_back(c.inner[q]);
+        }
+      } else {
+        edges.emplace_back(c.piece[c.cuts], true);
+        verts.push_back(loop_v[r]);
+        for (int q = c.cuts - 1; q >= 0; --q) {
+          edges.emplace_back(c.piece[q], true);
+          verts.push_back(c.inner[q]);
+        }
+      }
+    }
+  };
+  auto fromTo = [&](std::ptrdiff_t i) {
+    const bool swap = chords[i].new_face_from_0_to_1;
+    return std::pair<VertexId, VertexId>(out[i].vertex[swap ? 1 : 0], out[i].vertex[swap ? 0 : 1]);
+  };
+  auto position = [](const std::vector<VertexId>& verts, VertexId v) {
+    for (std::size_t r = 0; r < verts.size(); ++r)
+      if (verts[r] == v) return static_cast<std::ptrdiff_t>(r);
+    return std::ptrdiff_t{-1};
+  };
+
+  // Sizes of the new loops: a split face keeps from..to plus the chord, its
+  // new face gets to..from plus the chord.
+  std::vector<std::uint32_t> old_sizes(affected.size()), loop_sizes(affected.size()), new_face_sizes(chords.size());
+#pragma omp parallel if (n >= kParallelMin)
+  {
+    std::vector<OrientedEdge> edges;
+    std::vector<VertexId> verts;
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t q = 0; q < na; ++q) {
+      old_sizes[q] = face_edges_.listSize(affected[q]);
+      expandedLoop(FaceId(affected[q]), old_sizes[q], edges, verts);
+      const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(edges.size());
+      if (q >= n) {
+        loop_sizes[q] = static_cast<std::uint32_t>(m);
+        continue;
+      }
+      const auto [from, to] = fromTo(q);
+      const std::ptrdiff_t ia = position(verts, from), ib = position(verts, to);
+      const std::ptrdiff_t keep = (ib - ia + m) % m;
+      loop_sizes[q] = static_cast<std::uint32_t>(keep + 1);
+      new_face_sizes[q] = static_cast<std::uint32_t>(m - keep + 1);
+    }
+  }
+
+  // Room for everything, serially.
+  for (auto [degree, count] : {std::pair{0, nv}, std::pair{1, ne}, std::pair{2, static_cast<Index>(n)}}) {
+    alive_[degree].resize(alive_[degree].size() + count, 1);
+    live_count_[degree] += count;
+  }
+  ++version_;
+  edge_vertices_.resize(slots(1));
+  vertex_edges_.appendLists(vertex_edge_sizes);
+  edge_faces_.appendLists(edge_face_sizes);
+  face_edges_.resizeLists(affected, loop_sizes);
+  face_vertices_.resizeLists(affected, loop_sizes);
+  face_edges_.appendLists(new_face_sizes);
+  face_vertices_.appendLists(new_face_sizes);
+  face_volumes_.appendLists(std::vector<std::uint32_t>(chords.size(), 0));
+
+  // Pass A: the cut edges (by the thread of the first chord cutting each) and the chords' edges.
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    ChordSplit& s = out[i];
+    for (int k = 0; k < 2; ++k) {
+      if (!s.first_on_edge[k]) continue;
+      const EdgeId e = chords[i].ends[k].edge;
+      const VertexId a = edgeFrom(e), b = edgeTo(e);
+      const EdgeChain c = chainOf(static_cast<std::int32_t>(2 * i + k));
+      VertexId along[4] = {a};
+      for (int q = 0; q < c.cuts; ++q) along[q + 1] = c.inner[q];
+      along[c.cuts + 1] = b;
+      const auto faces = edge_faces_[e.index()];
+      for (int q = 0; q <= c.cuts; ++q) {
+        edge_vertices_[c.piece[q].index()] = {along[q], along[q + 1]};
+        if (q > 0) std::copy(faces.begin(), faces.end(), edge_faces_.mutableList(c.piece[q].index()).begin());
+      }
+      for (int q = 0; q < c.cuts; ++q) {
+        // A new vertex: its two pieces, its chord, and the chord of a later end reusing it.
+        const VertexId v = c.inner[q];
+        const bool mine = v == s.vertex[k];
+        const std::int32_t end = mine ? static_cast<std::int32_t>(2 * i + k) : s.next_on_edge[k];
+        auto list = vertex_edges_.mutableList(v.index());
+        list[0] = c.piece[q];
+        list[1] = c.piece[q + 1];
+        list[2] = out[end / 2].chord;
+        if (reused_by[end] >= 0) list[3] = out[reused_by[end] / 2].chord;
+      }
+      vertex_edges_.replaceValueShared(b.index(), e, c.piece[c.cuts]);
+      // The one-by-one sequence's edge splits: which edge each end split, and its ends then.
+      s.split_edge[k] = e;
+      s.split_from[k] = a;
+      s.split_to[k] = b;
+      if (c.cuts == 2) {
+        ChordSplit& s2 = out[s.next_on_edge[k] / 2];
+        const int k2 = s.next_on_edge[k] % 2;
+        const bool after = c.inner[1] == s2.vertex[k2];
+        s2.split_edge[k2] = after ? s.new_edge[k] : e;
+        s2.split_from[k2] = after ? s.vertex[k] : a;
+        s2.split_to[k2] = after ? b : s.vertex[k];
+      }
+    }
+    const auto [from, to] = fromTo(i);
+    edge_vertices_[s.chord.index()] = {from, to};
+    auto list = edge_faces_.mutableList(s.chord.index());
+    list[0] = chords[i].face;
+    list[1] = s.face;
+  }
+
+  // Pass B: the loops of the affected faces; a split face hands its part from
+  // `to` to `from` (and the edges in it) to its new face.
+#pragma omp parallel if (n >= kParallelMin)
+  {
+    std::vector<OrientedEdge> edges;
+    std::vector<VertexId> verts;
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t q = 0; q < na; ++q) {
+      const FaceId f(affected[q]);
+      expandedLoop(f, old_sizes[q], edges, verts);
+      if (q >= n) {
+        std::copy(edges.begin(), edges.end(), face_edges_.mutableList(f.index()).begin());
+        std::copy(verts.begin(), verts.end(), face_vertices_.mutableList(f.index()).begin());
+        continue;
+      }
+      const ChordSplit& s = out[q];
+      const auto [from, to] = fromTo(q);
+      const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(edges.size());
+      const std::ptrdiff_t ia = position(verts, from), ib = position(verts, to);
+      auto keep_e = face_edges_.mutableList(f.index());
+      auto keep_v = face_vertices_.mutableList(f.index());
+      std::size_t w = 0;
+      for (std::ptrdiff_t r = ia; r != ib; r = (r + 1) % m, ++w) {
+        keep_e[w] = edges[r];
+        keep_v[w] = verts[r];
+      }
+      keep_e[w] = OrientedEdge(s.chord, true);  // to -> from
+      keep_v[w] = to;
+      auto move_e = face_edges_.mutableList(s.face.index());
+      auto move_v = face_vertices_.mutableList(s.face.index());
+      w = 0;
+      for (std::ptrdiff_t r = ib; r != ia; r = (r + 1) % m, ++w) {
+        move_e[w] = edges[r];
+        move_v[w] = verts[r];
+        edge_faces_.replaceValueShared(edges[r].handle().index(), f, s.face);
+      }
+      move_e[w] = OrientedEdge(s.chord, false);  // from -> to
+      move_v[w] = from;
+    }
+  }
+
+  // Pass C, serial and in chord order: existing vertices join the chords at them.
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    const auto [from, to] = fromTo(i);
+    for (VertexId v : {from, to})
+      if (v.index() < v0) vertex_edges_.pushBack(v.index(), out[i].chord);
+  }
+  return out;
+}
+
+}  // namespace tessella
