@@ -347,11 +347,14 @@ case "$case_name" in
     : >"$tmp/out/keep.txt"
     # A previous run's primordia table goes too, though this run records none.
     printf 'id,time\n0,1\n' >"$tmp/out/primordia.csv"; : >"$tmp/out/primordia.csv.tmp"
+    # And its PIN walls files (network.pin), this run writing none.
+    : >"$tmp/out/tissue_000009.pin.vtu"; : >"$tmp/out/tissue_000010.pin.vtu.tmp-123-6"
     "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/out" -q --overwrite || fail "--overwrite failed"
     left=$(find "$tmp/out" -name '*.tmp*')
     [ -z "$left" ] || fail "temporaries left: $left"
     [ -f "$tmp/out/keep.txt" ] || fail "a file of the user's was removed"
     [ ! -e "$tmp/out/primordia.csv" ] || fail "the previous run's primordia.csv was left"
+    [ ! -e "$tmp/out/tissue_000009.pin.vtu" ] || fail "the previous run's PIN walls file was left"
     ;;
   disk_full)
     # A full disk: the error names the file and says "No space left on device", without VTK's dump,

@@ -33,7 +33,7 @@ std::vector<fs::path> previousRunFiles(const fs::path& dir, const std::string& n
   if (!fs::is_directory(dir, ec)) return files;
   const std::string tmp = R"((\.tmp-\d+-\d+)?)";
   const std::regex series(std::regex_replace(name, std::regex(R"([.^$|()\[\]{}*+?\\-])"), R"(\$&)") +
-                          R"((\.pvd|_\d+(\.fields)?\.vtu))" + tmp);
+                          R"((\.pvd|_\d+(\.fields|\.pin)?\.vtu))" + tmp);
   const std::regex fields(std::string(kFieldSeriesName) + R"((_walls)?(\.pvd|_\d+\.vtu))" + tmp);
   const std::regex record(std::regex_replace(kRunRecordName, std::regex(R"(\.)"), R"(\.)") +
                           R"((\.tmp|\.tmp-\d+-\d+)?)");
