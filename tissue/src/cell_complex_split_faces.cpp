@@ -202,21 +202,14 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
     }
     return c;
   };
-  // The first end cutting edge e (seen from a face whose loop holds e), or -1.
-  auto firstCutOn = [&](EdgeId e) -> std::int32_t {
-    FaceId faces[2];
-    const int m = facesOf(e, faces);
-    std::int32_t best = -1;
-    for (int q = 0; q < m; ++q) {
-      const std::int32_t j = chordOfFace(faces[q]);
-      if (j < 0) continue;
-      for (int kk = 0; kk < 2; ++kk) {
-        const ChordEnd& end = chords[j].ends[kk];
-        if (end.isNew() && end.edge == e && out[j].first_on_edge[kk]) best = 2 * j + kk;
-      }
-    }
-    return best;
-  };
+  // The first end cutting each edge that existed before the batch, or -1
+  // (one end per edge is first on it, so each entry is written once).
+  std::vector<std::int32_t> first_cut(e0, -1);
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+  for (std::ptrdiff_t i = 0; i < n; ++i)
+    for (int k = 0; k < 2; ++k)
+      if (out[i].first_on_edge[k]) first_cut[chords[i].ends[k].edge.index()] = static_cast<std::int32_t>(2 * i + k);
+  auto firstCutOn = [&](EdgeId e) -> std::int32_t { return e.index() < e0 ? first_cut[e.index()] : -1; };
 
   // The faces whose loops change: the split faces, then the neighbours across cut edges.
   // Each neighbour once, where it first appears (in chord order): claimed in
