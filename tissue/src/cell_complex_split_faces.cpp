@@ -6,8 +6,11 @@
 // then the lists are written in parallel, each by one thread: the edges cut by
 // the chords (one thread per cut edge), then the face loops (one per face).
 
+#include <omp.h>
+
 #include <algorithm>
 #include <atomic>
+#include <span>
 #include <string>
 
 #include "tessella/tissue/cell_complex.hpp"
@@ -234,12 +237,10 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (std::ptrdiff_t q = n; q < na; ++q) chord_of[affected[q]] = -1;
 
-  // A face's loop with every cut edge replaced by its pieces (and new vertices).
-  // `size`: the loop's length before the batch (its list may have been resized since).
-  auto expandedLoop = [&](FaceId f, std::size_t size, std::vector<OrientedEdge>& edges,
-                          std::vector<VertexId>& verts) {
-    edges.clear();
-    verts.clear();
+  // A face's loop with every cut edge replaced by its pieces (and new
+  // vertices), appended to edges and verts.
+  auto expandedLoop = [&](FaceId f, std::vector<OrientedEdge>& edges, std::vector<VertexId>& verts) {
+    const std::size_t size = face_edges_.listSize(f.index());
     const OrientedEdge* loop_e = face_edges_.mutableList(f.index()).data();
     const VertexId* loop_v = face_vertices_.mutableList(f.index()).data();
     for (std::size_t r = 0; r < size; ++r) {
@@ -272,29 +273,56 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
     const bool swap = chords[i].new_face_from_0_to_1;
     return std::pair<VertexId, VertexId>(out[i].vertex[swap ? 1 : 0], out[i].vertex[swap ? 0 : 1]);
   };
-  auto position = [](const std::vector<VertexId>& verts, VertexId v) {
+  auto position = [](std::span<const VertexId> verts, VertexId v) {
     for (std::size_t r = 0; r < verts.size(); ++r)
       if (verts[r] == v) return static_cast<std::ptrdiff_t>(r);
     return std::ptrdiff_t{-1};
   };
 
-  // Sizes of the new loops: a split face keeps from..to plus the chord, its
-  // new face gets to..from plus the chord.
-  std::vector<std::uint32_t> old_sizes(affected.size()), loop_sizes(affected.size()), new_face_sizes(chords.size());
-#pragma omp parallel if (n >= kParallelMin)
-  {
+  // The expanded loops, built once: each thread appends those of its faces
+  // to its own pool (where each lies is kept for pass B).
+  struct Outlines {
     std::vector<OrientedEdge> edges;
     std::vector<VertexId> verts;
+  };
+  struct OutlineAt {
+    std::uint32_t pool = 0, at = 0, size = 0;
+  };
+  std::vector<Outlines> pools;
+  std::vector<OutlineAt> outline(affected.size());
+  auto outlineEdges = [&](std::ptrdiff_t q) {
+    const OutlineAt& o = outline[q];
+    return std::span<const OrientedEdge>(pools[o.pool].edges.data() + o.at, o.size);
+  };
+  auto outlineVerts = [&](std::ptrdiff_t q) {
+    const OutlineAt& o = outline[q];
+    return std::span<const VertexId>(pools[o.pool].verts.data() + o.at, o.size);
+  };
+
+  // Sizes of the new loops: a split face keeps from..to plus the chord, its
+  // new face gets to..from plus the chord.
+  std::vector<std::uint32_t> loop_sizes(affected.size()), new_face_sizes(chords.size());
+#pragma omp parallel if (n >= kParallelMin)
+  {
+#pragma omp single
+    pools.resize(static_cast<std::size_t>(omp_get_num_threads()));
+    const int tid = omp_get_thread_num();
+    Outlines& mine = pools[static_cast<std::size_t>(tid)];
+    const std::size_t share = static_cast<std::size_t>(na) / pools.size() + 1;
+    mine.edges.reserve(8 * share);
+    mine.verts.reserve(8 * share);
 #pragma omp for schedule(static)
     for (std::ptrdiff_t q = 0; q < na; ++q) {
-      old_sizes[q] = face_edges_.listSize(affected[q]);
-      expandedLoop(FaceId(affected[q]), old_sizes[q], edges, verts);
-      const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(edges.size());
+      const std::size_t at = mine.edges.size();
+      expandedLoop(FaceId(affected[q]), mine.edges, mine.verts);
+      const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(mine.edges.size() - at);
+      outline[q] = {static_cast<std::uint32_t>(tid), static_cast<std::uint32_t>(at), static_cast<std::uint32_t>(m)};
       if (q >= n) {
         loop_sizes[q] = static_cast<std::uint32_t>(m);
         continue;
       }
       const auto [from, to] = fromTo(q);
+      const std::span<const VertexId> verts(mine.verts.data() + at, static_cast<std::size_t>(m));
       const std::ptrdiff_t ia = position(verts, from), ib = position(verts, to);
       const std::ptrdiff_t keep = (ib - ia + m) % m;
       loop_sizes[q] = static_cast<std::uint32_t>(keep + 1);
@@ -368,43 +396,39 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
 
   // Pass B: the loops of the affected faces; a split face hands its part from
   // `to` to `from` (and the edges in it) to its new face.
-#pragma omp parallel if (n >= kParallelMin)
-  {
-    std::vector<OrientedEdge> edges;
-    std::vector<VertexId> verts;
-#pragma omp for schedule(static)
-    for (std::ptrdiff_t q = 0; q < na; ++q) {
-      const FaceId f(affected[q]);
-      expandedLoop(f, old_sizes[q], edges, verts);
-      if (q >= n) {
-        std::copy(edges.begin(), edges.end(), face_edges_.mutableList(f.index()).begin());
-        std::copy(verts.begin(), verts.end(), face_vertices_.mutableList(f.index()).begin());
-        continue;
-      }
-      const ChordSplit& s = out[q];
-      const auto [from, to] = fromTo(q);
-      const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(edges.size());
-      const std::ptrdiff_t ia = position(verts, from), ib = position(verts, to);
-      auto keep_e = face_edges_.mutableList(f.index());
-      auto keep_v = face_vertices_.mutableList(f.index());
-      std::size_t w = 0;
-      for (std::ptrdiff_t r = ia; r != ib; r = (r + 1) % m, ++w) {
-        keep_e[w] = edges[r];
-        keep_v[w] = verts[r];
-      }
-      keep_e[w] = OrientedEdge(s.chord, true);  // to -> from
-      keep_v[w] = to;
-      auto move_e = face_edges_.mutableList(s.face.index());
-      auto move_v = face_vertices_.mutableList(s.face.index());
-      w = 0;
-      for (std::ptrdiff_t r = ib; r != ia; r = (r + 1) % m, ++w) {
-        move_e[w] = edges[r];
-        move_v[w] = verts[r];
-        edge_faces_.replaceValueShared(edges[r].handle().index(), f, s.face);
-      }
-      move_e[w] = OrientedEdge(s.chord, false);  // from -> to
-      move_v[w] = from;
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+  for (std::ptrdiff_t q = 0; q < na; ++q) {
+    const FaceId f(affected[q]);
+    const std::span<const OrientedEdge> edges = outlineEdges(q);
+    const std::span<const VertexId> verts = outlineVerts(q);
+    if (q >= n) {
+      std::copy(edges.begin(), edges.end(), face_edges_.mutableList(f.index()).begin());
+      std::copy(verts.begin(), verts.end(), face_vertices_.mutableList(f.index()).begin());
+      continue;
     }
+    const ChordSplit& s = out[q];
+    const auto [from, to] = fromTo(q);
+    const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(edges.size());
+    const std::ptrdiff_t ia = position(verts, from), ib = position(verts, to);
+    auto keep_e = face_edges_.mutableList(f.index());
+    auto keep_v = face_vertices_.mutableList(f.index());
+    std::size_t w = 0;
+    for (std::ptrdiff_t r = ia; r != ib; r = (r + 1) % m, ++w) {
+      keep_e[w] = edges[r];
+      keep_v[w] = verts[r];
+    }
+    keep_e[w] = OrientedEdge(s.chord, true);  // to -> from
+    keep_v[w] = to;
+    auto move_e = face_edges_.mutableList(s.face.index());
+    auto move_v = face_vertices_.mutableList(s.face.index());
+    w = 0;
+    for (std::ptrdiff_t r = ib; r != ia; r = (r + 1) % m, ++w) {
+      move_e[w] = edges[r];
+      move_v[w] = verts[r];
+      edge_faces_.replaceValueShared(edges[r].handle().index(), f, s.face);
+    }
+    move_e[w] = OrientedEdge(s.chord, false);  // from -> to
+    move_v[w] = from;
   }
 
   // Pass C, serial and in chord order: existing vertices join the chords at them.
