@@ -69,19 +69,21 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
   auto problem = [&](std::ptrdiff_t i) -> std::string {
     const FaceChord& ch = chords[i];
     const FaceId f = ch.face;
-    const std::string who = "splitFaces: chord " + std::to_string(i) + " of face " + std::to_string(f.index());
+    auto who = [&] {  // spelled out only for an error
+      return "splitFaces: chord " + std::to_string(i) + " of face " + std::to_string(f.index());
+    };
     for (int k = 0; k < 2; ++k) {
       const ChordEnd& end = ch.ends[k];
       if (end.vertex) {
         if (loopPosition(f, end.vertex) < 0)
-          return who + ": vertex " + std::to_string(end.vertex.index()) + " is not on its loop";
+          return who() + ": vertex " + std::to_string(end.vertex.index()) + " is not on its loop";
       } else {
         if (!end.edge || loopPosition(f, end.edge) < 0)
-          return who + ": edge " + std::to_string(end.edge.index()) + " is not on its loop";
+          return who() + ": edge " + std::to_string(end.edge.index()) + " is not on its loop";
         if (end.same_as >= 0) {
           const std::int32_t j = end.same_as / 2;
           if (j >= i || !chords[j].ends[end.same_as % 2].isNew() || chords[j].ends[end.same_as % 2].edge != end.edge)
-            return who + ": end " + std::to_string(k) + " reuses end " + std::to_string(end.same_as) +
+            return who() + ": end " + std::to_string(k) + " reuses end " + std::to_string(end.same_as) +
                    ", which makes no vertex on edge " + std::to_string(end.edge.index()) + " before it";
         }
       }
@@ -91,18 +93,18 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
       const int n_loop = static_cast<int>(face_vertices_[f.index()].size());
       const int ia = loopPosition(f, a.vertex), ib = loopPosition(f, b.vertex);
       if (ia == ib || (ia + 1) % n_loop == ib || (ib + 1) % n_loop == ia)
-        return who + ": vertices " + std::to_string(a.vertex.index()) + " and " + std::to_string(b.vertex.index()) +
+        return who() + ": vertices " + std::to_string(a.vertex.index()) + " and " + std::to_string(b.vertex.index()) +
                " are equal or adjacent on its loop";
       if (findEdge(a.vertex, b.vertex))
-        return who + ": vertices " + std::to_string(a.vertex.index()) + " and " + std::to_string(b.vertex.index()) +
+        return who() + ": vertices " + std::to_string(a.vertex.index()) + " and " + std::to_string(b.vertex.index()) +
                " are already joined by an edge";
     } else if (!a.vertex && !b.vertex) {
-      if (a.edge == b.edge) return who + ": both ends on edge " + std::to_string(a.edge.index());
+      if (a.edge == b.edge) return who() + ": both ends on edge " + std::to_string(a.edge.index());
     } else {
       const VertexId v = a.vertex ? a.vertex : b.vertex;
       const EdgeId e = a.vertex ? b.edge : a.edge;
       if (edgeFrom(e) == v || edgeTo(e) == v)
-        return who + ": vertex " + std::to_string(v.index()) + " is an end of the cut edge " +
+        return who() + ": vertex " + std::to_string(v.index()) + " is an end of the cut edge " +
                std::to_string(e.index());
     }
     return {};

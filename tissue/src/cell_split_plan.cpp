@@ -92,7 +92,8 @@ Loop2 signedLoop(const Tissue& t, FaceId f, const Vec3& normal, const Plane& pla
   }
   for (int i = 0; i < n; ++i)
     if (loop.d[i] == 0 && loop.d[(i + 1) % n] == 0)
-      throw GeometryError("division plane runs along wall " + std::to_string(loop.edges[i].index()) + " of " + who.str(),
+      throw GeometryError("division plane runs along wall " +
+                              std::to_string(loop.edges[i].index()) + " of " + who.str(),
                           {1, loop.edges[i].index()});
   return loop;
 }
@@ -124,7 +125,9 @@ std::pair<std::size_t, std::size_t> chosenChord(const std::vector<Crossing>& cro
                                                 FaceId f) {
   if (crossings.size() == 2) return {0, 1};
   if (crossings.size() % 2)
-    throw GeometryError("division plane crosses the boundary of " + who.str() + " an odd number of times", {2, f.index()});
+    throw GeometryError(
+        "division plane crosses the boundary of " + who.str() + " an odd number of times",
+        {2, f.index()});
   std::vector<std::size_t> order(crossings.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](auto a, auto b) { return crossings[a].u < crossings[b].u; });
@@ -169,7 +172,9 @@ CellSplitPlan2D planCellSplit2D(const Tissue& t, CellId c, const Plane& plane, c
   const FaceId f(c.index());
   const CellName who{t, c};
   const PolygonMeasures m = polygonMeasures(t, f);
-  if (!(m.area > 0)) throw GeometryError(who.str() + " has non-positive area " + formatNumber(m.area, 6), {2, f.index()});
+  if (!(m.area > 0))
+    throw GeometryError(who.str() + " has non-positive area " + formatNumber(m.area, 6),
+                        {2, f.index()});
   const Vec3 normal = plane.normal.normalized();
   const Vec3 u = normal.cross(m.normal);
   if (u.norm() < 1e-9) throw GeometryError("division plane is parallel to " + who.str(), {2, f.index()});
@@ -243,7 +248,8 @@ SmallMap<Index, double> signedDistances(const Tissue& t, CellId c, const Vec3& n
     for (OrientedFace of : t.topology().volumeFaces(VolumeId(c.index()))) {
       const auto loop = t.topology().faceVertices(of.handle());
       if (std::all_of(loop.begin(), loop.end(), [&](VertexId v) { return dist.at(v.index()) == 0; }))
-        throw GeometryError("division plane runs along wall " + std::to_string(of.handle().index()) + " of " + who.str(),
+        throw GeometryError("division plane runs along wall " +
+                                std::to_string(of.handle().index()) + " of " + who.str(),
                             {2, of.handle().index()});
     }
     throw GeometryError("division plane through " + pointText(plane.point) + " misses " + who.str(), {3, c.index()});
@@ -279,7 +285,9 @@ void traceWalls(const Tissue& t, const std::vector<OrientedFace>& faces, WallTra
       w.segments.emplace_back(nodes[0], nodes[1]);
       w.face_cuts.emplace_back(f, nodes[0], nodes[1]);
     } else if (!pos && !neg) {
-      throw GeometryError("division plane runs along wall " + std::to_string(f.index()) + " of " + who.str(), {2, f.index()});
+      throw GeometryError(
+          "division plane runs along wall " + std::to_string(f.index()) + " of " + who.str(),
+          {2, f.index()});
     } else {
       w.face_side[f.index()] = pos ? 1 : -1;
     }
@@ -308,7 +316,9 @@ std::vector<Key> cutRing(const WallTraces& w, const Vec3& normal, const CellName
   }
   for (const auto& [k, nb] : adj)
     if (nb.size() != 2)
-      throw GeometryError("division plane does not cut " + who.str() + " along a single closed polygon", {3, c.index()});
+      throw GeometryError(
+          "division plane does not cut " + who.str() + " along a single closed polygon",
+          {3, c.index()});
   std::vector<Key> ring{adj.begin()->first};
   Key prev = ring[0], cur = adj.begin()->second[0];
   while (cur != ring[0]) {
@@ -365,7 +375,9 @@ CellSplitPlan3D planCellSplit3D(const Tissue& t, CellId c, const Plane& plane, c
   const VolumeId vol(c.index());
   const CellName who{t, c};
   const double volume = cellMeasure(t, c);
-  if (!(volume > 0)) throw GeometryError(who.str() + " has non-positive volume " + formatNumber(volume, 6), {3, c.index()});
+  if (!(volume > 0))
+    throw GeometryError(who.str() + " has non-positive volume " + formatNumber(volume, 6),
+                        {3, c.index()});
   const Vec3 normal = plane.normal.normalized();
   const double tol = options.snap_tolerance * std::cbrt(volume);
 
