@@ -6,8 +6,11 @@
 // then the lists are written in parallel, each by one thread: the edges cut by
 // the chords (one thread per cut edge), then the face loops (one per face).
 
+#include <omp.h>
+
 #include <algorithm>
 #include <atomic>
+#include <span>
 #include <string>
 
 #include "tessella/tissue/cell_complex.hpp"
@@ -66,19 +69,21 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
   auto problem = [&](std::ptrdiff_t i) -> std::string {
     const FaceChord& ch = chords[i];
     const FaceId f = ch.face;
-    const std::string who = "splitFaces: chord " + std::to_string(i) + " of face " + std::to_string(f.index());
+    auto who = [&] {  // spelled out only for an error
+      return "splitFaces: chord " + std::to_string(i) + " of face " + std::to_string(f.index());
+    };
     for (int k = 0; k < 2; ++k) {
       const ChordEnd& end = ch.ends[k];
       if (end.vertex) {
         if (loopPosition(f, end.vertex) < 0)
-          return who + ": vertex " + std::to_string(end.vertex.index()) + " is not on its loop";
+          return who() + ": vertex " + std::to_string(end.vertex.index()) + " is not on its loop";
       } else {
         if (!end.edge || loopPosition(f, end.edge) < 0)
-          return who + ": edge " + std::to_string(end.edge.index()) + " is not on its loop";
+          return who() + ": edge " + std::to_string(end.edge.index()) + " is not on its loop";
         if (end.same_as >= 0) {
           const std::int32_t j = end.same_as / 2;
           if (j >= i || !chords[j].ends[end.same_as % 2].isNew() || chords[j].ends[end.same_as % 2].edge != end.edge)
-            return who + ": end " + std::to_string(k) + " reuses end " + std::to_string(end.same_as) +
+            return who() + ": end " + std::to_string(k) + " reuses end " + std::to_string(end.same_as) +
                    ", which makes no vertex on edge " + std::to_string(end.edge.index()) + " before it";
         }
       }
@@ -88,18 +93,18 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
       const int n_loop = static_cast<int>(face_vertices_[f.index()].size());
       const int ia = loopPosition(f, a.vertex), ib = loopPosition(f, b.vertex);
       if (ia == ib || (ia + 1) % n_loop == ib || (ib + 1) % n_loop == ia)
-        return who + ": vertices " + std::to_string(a.vertex.index()) + " and " + std::to_string(b.vertex.index()) +
+        return who() + ": vertices " + std::to_string(a.vertex.index()) + " and " + std::to_string(b.vertex.index()) +
                " are equal or adjacent on its loop";
       if (findEdge(a.vertex, b.vertex))
-        return who + ": vertices " + std::to_string(a.vertex.index()) + " and " + std::to_string(b.vertex.index()) +
+        return who() + ": vertices " + std::to_string(a.vertex.index()) + " and " + std::to_string(b.vertex.index()) +
                " are already joined by an edge";
     } else if (!a.vertex && !b.vertex) {
-      if (a.edge == b.edge) return who + ": both ends on edge " + std::to_string(a.edge.index());
+      if (a.edge == b.edge) return who() + ": both ends on edge " + std::to_string(a.edge.index());
     } else {
       const VertexId v = a.vertex ? a.vertex : b.vertex;
       const EdgeId e = a.vertex ? b.edge : a.edge;
       if (edgeFrom(e) == v || edgeTo(e) == v)
-        return who + ": vertex " + std::to_string(v.index()) + " is an end of the cut edge " +
+        return who() + ": vertex " + std::to_string(v.index()) + " is an end of the cut edge " +
                std::to_string(e.index());
     }
     return {};
@@ -202,21 +207,14 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
     }
     return c;
   };
-  // The first end cutting edge e (seen from a face whose loop holds e), or -1.
-  auto firstCutOn = [&](EdgeId e) -> std::int32_t {
-    FaceId faces[2];
-    const int m = facesOf(e, faces);
-    std::int32_t best = -1;
-    for (int q = 0; q < m; ++q) {
-      const std::int32_t j = chordOfFace(faces[q]);
-      if (j < 0) continue;
-      for (int kk = 0; kk < 2; ++kk) {
-        const ChordEnd& end = chords[j].ends[kk];
-        if (end.isNew() && end.edge == e && out[j].first_on_edge[kk]) best = 2 * j + kk;
-      }
-    }
-    return best;
-  };
+  // The first end cutting each edge that existed before the batch, or -1
+  // (one end per edge is first on it, so each entry is written once).
+  std::vector<std::int32_t> first_cut(e0, -1);
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+  for (std::ptrdiff_t i = 0; i < n; ++i)
+    for (int k = 0; k < 2; ++k)
+      if (out[i].first_on_edge[k]) first_cut[chords[i].ends[k].edge.index()] = static_cast<std::int32_t>(2 * i + k);
+  auto firstCutOn = [&](EdgeId e) -> std::int32_t { return e.index() < e0 ? first_cut[e.index()] : -1; };
 
   // The faces whose loops change: the split faces, then the neighbours across cut edges.
   // Each neighbour once, where it first appears (in chord order): claimed in
@@ -241,12 +239,10 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (std::ptrdiff_t q = n; q < na; ++q) chord_of[affected[q]] = -1;
 
-  // A face's loop with every cut edge replaced by its pieces (and new vertices).
-  // `size`: the loop's length before the batch (its list may have been resized since).
-  auto expandedLoop = [&](FaceId f, std::size_t size, std::vector<OrientedEdge>& edges,
-                          std::vector<VertexId>& verts) {
-    edges.clear();
-    verts.clear();
+  // A face's loop with every cut edge replaced by its pieces (and new
+  // vertices), appended to edges and verts.
+  auto expandedLoop = [&](FaceId f, std::vector<OrientedEdge>& edges, std::vector<VertexId>& verts) {
+    const std::size_t size = face_edges_.listSize(f.index());
     const OrientedEdge* loop_e = face_edges_.mutableList(f.index()).data();
     const VertexId* loop_v = face_vertices_.mutableList(f.index()).data();
     for (std::size_t r = 0; r < size; ++r) {
@@ -279,29 +275,56 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
     const bool swap = chords[i].new_face_from_0_to_1;
     return std::pair<VertexId, VertexId>(out[i].vertex[swap ? 1 : 0], out[i].vertex[swap ? 0 : 1]);
   };
-  auto position = [](const std::vector<VertexId>& verts, VertexId v) {
+  auto position = [](std::span<const VertexId> verts, VertexId v) {
     for (std::size_t r = 0; r < verts.size(); ++r)
       if (verts[r] == v) return static_cast<std::ptrdiff_t>(r);
     return std::ptrdiff_t{-1};
   };
 
-  // Sizes of the new loops: a split face keeps from..to plus the chord, its
-  // new face gets to..from plus the chord.
-  std::vector<std::uint32_t> old_sizes(affected.size()), loop_sizes(affected.size()), new_face_sizes(chords.size());
-#pragma omp parallel if (n >= kParallelMin)
-  {
+  // The expanded loops, built once: each thread appends those of its faces
+  // to its own pool (where each lies is kept for pass B).
+  struct Outlines {
     std::vector<OrientedEdge> edges;
     std::vector<VertexId> verts;
+  };
+  struct OutlineAt {
+    std::uint32_t pool = 0, at = 0, size = 0;
+  };
+  std::vector<Outlines> pools;
+  std::vector<OutlineAt> outline(affected.size());
+  auto outlineEdges = [&](std::ptrdiff_t q) {
+    const OutlineAt& o = outline[q];
+    return std::span<const OrientedEdge>(pools[o.pool].edges.data() + o.at, o.size);
+  };
+  auto outlineVerts = [&](std::ptrdiff_t q) {
+    const OutlineAt& o = outline[q];
+    return std::span<const VertexId>(pools[o.pool].verts.data() + o.at, o.size);
+  };
+
+  // Sizes of the new loops: a split face keeps from..to plus the chord, its
+  // new face gets to..from plus the chord.
+  std::vector<std::uint32_t> loop_sizes(affected.size()), new_face_sizes(chords.size());
+#pragma omp parallel if (n >= kParallelMin)
+  {
+#pragma omp single
+    pools.resize(static_cast<std::size_t>(omp_get_num_threads()));
+    const int tid = omp_get_thread_num();
+    Outlines& mine = pools[static_cast<std::size_t>(tid)];
+    const std::size_t share = static_cast<std::size_t>(na) / pools.size() + 1;
+    mine.edges.reserve(8 * share);
+    mine.verts.reserve(8 * share);
 #pragma omp for schedule(static)
     for (std::ptrdiff_t q = 0; q < na; ++q) {
-      old_sizes[q] = face_edges_.listSize(affected[q]);
-      expandedLoop(FaceId(affected[q]), old_sizes[q], edges, verts);
-      const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(edges.size());
+      const std::size_t at = mine.edges.size();
+      expandedLoop(FaceId(affected[q]), mine.edges, mine.verts);
+      const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(mine.edges.size() - at);
+      outline[q] = {static_cast<std::uint32_t>(tid), static_cast<std::uint32_t>(at), static_cast<std::uint32_t>(m)};
       if (q >= n) {
         loop_sizes[q] = static_cast<std::uint32_t>(m);
         continue;
       }
       const auto [from, to] = fromTo(q);
+      const std::span<const VertexId> verts(mine.verts.data() + at, static_cast<std::size_t>(m));
       const std::ptrdiff_t ia = position(verts, from), ib = position(verts, to);
       const std::ptrdiff_t keep = (ib - ia + m) % m;
       loop_sizes[q] = static_cast<std::uint32_t>(keep + 1);
@@ -375,43 +398,39 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
 
   // Pass B: the loops of the affected faces; a split face hands its part from
   // `to` to `from` (and the edges in it) to its new face.
-#pragma omp parallel if (n >= kParallelMin)
-  {
-    std::vector<OrientedEdge> edges;
-    std::vector<VertexId> verts;
-#pragma omp for schedule(static)
-    for (std::ptrdiff_t q = 0; q < na; ++q) {
-      const FaceId f(affected[q]);
-      expandedLoop(f, old_sizes[q], edges, verts);
-      if (q >= n) {
-        std::copy(edges.begin(), edges.end(), face_edges_.mutableList(f.index()).begin());
-        std::copy(verts.begin(), verts.end(), face_vertices_.mutableList(f.index()).begin());
-        continue;
-      }
-      const ChordSplit& s = out[q];
-      const auto [from, to] = fromTo(q);
-      const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(edges.size());
-      const std::ptrdiff_t ia = position(verts, from), ib = position(verts, to);
-      auto keep_e = face_edges_.mutableList(f.index());
-      auto keep_v = face_vertices_.mutableList(f.index());
-      std::size_t w = 0;
-      for (std::ptrdiff_t r = ia; r != ib; r = (r + 1) % m, ++w) {
-        keep_e[w] = edges[r];
-        keep_v[w] = verts[r];
-      }
-      keep_e[w] = OrientedEdge(s.chord, true);  // to -> from
-      keep_v[w] = to;
-      auto move_e = face_edges_.mutableList(s.face.index());
-      auto move_v = face_vertices_.mutableList(s.face.index());
-      w = 0;
-      for (std::ptrdiff_t r = ib; r != ia; r = (r + 1) % m, ++w) {
-        move_e[w] = edges[r];
-        move_v[w] = verts[r];
-        edge_faces_.replaceValueShared(edges[r].handle().index(), f, s.face);
-      }
-      move_e[w] = OrientedEdge(s.chord, false);  // from -> to
-      move_v[w] = from;
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+  for (std::ptrdiff_t q = 0; q < na; ++q) {
+    const FaceId f(affected[q]);
+    const std::span<const OrientedEdge> edges = outlineEdges(q);
+    const std::span<const VertexId> verts = outlineVerts(q);
+    if (q >= n) {
+      std::copy(edges.begin(), edges.end(), face_edges_.mutableList(f.index()).begin());
+      std::copy(verts.begin(), verts.end(), face_vertices_.mutableList(f.index()).begin());
+      continue;
     }
+    const ChordSplit& s = out[q];
+    const auto [from, to] = fromTo(q);
+    const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(edges.size());
+    const std::ptrdiff_t ia = position(verts, from), ib = position(verts, to);
+    auto keep_e = face_edges_.mutableList(f.index());
+    auto keep_v = face_vertices_.mutableList(f.index());
+    std::size_t w = 0;
+    for (std::ptrdiff_t r = ia; r != ib; r = (r + 1) % m, ++w) {
+      keep_e[w] = edges[r];
+      keep_v[w] = verts[r];
+    }
+    keep_e[w] = OrientedEdge(s.chord, true);  // to -> from
+    keep_v[w] = to;
+    auto move_e = face_edges_.mutableList(s.face.index());
+    auto move_v = face_vertices_.mutableList(s.face.index());
+    w = 0;
+    for (std::ptrdiff_t r = ib; r != ia; r = (r + 1) % m, ++w) {
+      move_e[w] = edges[r];
+      move_v[w] = verts[r];
+      edge_faces_.replaceValueShared(edges[r].handle().index(), f, s.face);
+    }
+    move_e[w] = OrientedEdge(s.chord, false);  // from -> to
+    move_v[w] = from;
   }
 
   // Pass C, serial and in chord order: existing vertices join the chords at them.

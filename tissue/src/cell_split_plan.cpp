@@ -50,9 +50,15 @@ void checkSplitInput(const Tissue& t, CellId c, const Plane& plane, const SplitO
                         {t.dim(), c.index()});
 }
 
-std::string cellName(const Tissue& t, CellId c) {
-  return "cell " + std::to_string(c.index()) + " (lineage " + std::to_string(t.lineageId(c)) + ")";
-}
+// A cell as error messages name it, spelled out only when one is thrown
+// (planning succeeds far more often than not).
+struct CellName {
+  const Tissue& t;
+  CellId c;
+  std::string str() const {
+    return "cell " + std::to_string(c.index()) + " (lineage " + std::to_string(t.lineageId(c)) + ")";
+  }
+};
 
 // --- 2D ------------------------------------------------------------------------
 
@@ -73,7 +79,7 @@ struct Loop2 {
 };
 
 Loop2 signedLoop(const Tissue& t, FaceId f, const Vec3& normal, const Plane& plane, double tol,
-                 const std::string& who) {
+                 const CellName& who) {
   const CellComplex& cx = t.topology();
   Loop2 loop;
   loop.verts.assign(cx.faceVertices(f).begin(), cx.faceVertices(f).end());
@@ -86,7 +92,8 @@ Loop2 signedLoop(const Tissue& t, FaceId f, const Vec3& normal, const Plane& pla
   }
   for (int i = 0; i < n; ++i)
     if (loop.d[i] == 0 && loop.d[(i + 1) % n] == 0)
-      throw GeometryError("division plane runs along wall " + std::to_string(loop.edges[i].index()) + " of " + who,
+      throw GeometryError("division plane runs along wall " +
+                              std::to_string(loop.edges[i].index()) + " of " + who.str(),
                           {1, loop.edges[i].index()});
   return loop;
 }
@@ -114,11 +121,13 @@ std::vector<Crossing> crossings(const Tissue& t, const Loop2& loop) {
 // inside/outside along the line; the chord through the plane's point (or the
 // nearest one if the point lies outside the cell) is kept. Its two crossings,
 // in loop order.
-std::pair<std::size_t, std::size_t> chosenChord(const std::vector<Crossing>& crossings, const std::string& who,
+std::pair<std::size_t, std::size_t> chosenChord(const std::vector<Crossing>& crossings, const CellName& who,
                                                 FaceId f) {
   if (crossings.size() == 2) return {0, 1};
   if (crossings.size() % 2)
-    throw GeometryError("division plane crosses the boundary of " + who + " an odd number of times", {2, f.index()});
+    throw GeometryError(
+        "division plane crosses the boundary of " + who.str() + " an odd number of times",
+        {2, f.index()});
   std::vector<std::size_t> order(crossings.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::sort(order.begin(), order.end(), [&](auto a, auto b) { return crossings[a].u < crossings[b].u; });
@@ -161,17 +170,19 @@ CutNode cutNode(const Loop2& loop, const Crossing& x) {
 CellSplitPlan2D planCellSplit2D(const Tissue& t, CellId c, const Plane& plane, const SplitOptions& options) {
   checkSplitInput(t, c, plane, options, 2);
   const FaceId f(c.index());
-  const std::string who = cellName(t, c);
+  const CellName who{t, c};
   const PolygonMeasures m = polygonMeasures(t, f);
-  if (!(m.area > 0)) throw GeometryError(who + " has non-positive area " + formatNumber(m.area, 6), {2, f.index()});
+  if (!(m.area > 0))
+    throw GeometryError(who.str() + " has non-positive area " + formatNumber(m.area, 6),
+                        {2, f.index()});
   const Vec3 normal = plane.normal.normalized();
   const Vec3 u = normal.cross(m.normal);
-  if (u.norm() < 1e-9) throw GeometryError("division plane is parallel to " + who, {2, f.index()});
+  if (u.norm() < 1e-9) throw GeometryError("division plane is parallel to " + who.str(), {2, f.index()});
   const Loop2 loop = signedLoop(t, f, normal, plane, options.snap_tolerance * std::sqrt(m.area), who);
 
   std::vector<Crossing> found = crossings(t, loop);
   if (found.size() < 2)
-    throw GeometryError("division plane through " + pointText(plane.point) + " misses " + who, {2, f.index()});
+    throw GeometryError("division plane through " + pointText(plane.point) + " misses " + who.str(), {2, f.index()});
   for (Crossing& x : found) x.u = u.dot(x.point - plane.point);
   const auto [first, second] = chosenChord(found, who, f);
   const Crossing A = found[first], B = found[second];
@@ -182,10 +193,10 @@ CellSplitPlan2D planCellSplit2D(const Tissue& t, CellId c, const Plane& plane, c
   const bool flat = t.embedding() == Embedding::Planar;
   const LoopArea lab = loopArea(pab, flat), lba = loopArea(pba, flat);
   if (!(lab.area > 0 && lba.area > 0 && lab.normal.dot(m.normal) > 0 && lba.normal.dot(m.normal) > 0))
-    throw GeometryError("division plane does not cut " + who + " into two positive parts", {2, f.index()});
+    throw GeometryError("division plane does not cut " + who.str() + " into two positive parts", {2, f.index()});
   const double total = lab.area + lba.area;
   if (std::min(lab.area, lba.area) < options.min_fraction * total)
-    throw GeometryError("division of " + who + " would leave a sliver of " +
+    throw GeometryError("division of " + who.str() + " would leave a sliver of " +
                             formatNumber(std::min(lab.area, lba.area) / total, 6) + " of its area (minimum " +
                             formatNumber(options.min_fraction) + ")",
                         {2, f.index()});
@@ -222,7 +233,7 @@ struct WallTraces {
 };
 
 SmallMap<Index, double> signedDistances(const Tissue& t, CellId c, const Vec3& normal, const Plane& plane,
-                                        double tol, const std::string& who) {
+                                        double tol, const CellName& who) {
   SmallMap<Index, double> dist;
   bool any_pos = false, any_neg = false;
   for (VertexId v : t.cellVertices(c)) {
@@ -237,15 +248,16 @@ SmallMap<Index, double> signedDistances(const Tissue& t, CellId c, const Vec3& n
     for (OrientedFace of : t.topology().volumeFaces(VolumeId(c.index()))) {
       const auto loop = t.topology().faceVertices(of.handle());
       if (std::all_of(loop.begin(), loop.end(), [&](VertexId v) { return dist.at(v.index()) == 0; }))
-        throw GeometryError("division plane runs along wall " + std::to_string(of.handle().index()) + " of " + who,
+        throw GeometryError("division plane runs along wall " +
+                                std::to_string(of.handle().index()) + " of " + who.str(),
                             {2, of.handle().index()});
     }
-    throw GeometryError("division plane through " + pointText(plane.point) + " misses " + who, {3, c.index()});
+    throw GeometryError("division plane through " + pointText(plane.point) + " misses " + who.str(), {3, c.index()});
   }
   return dist;
 }
 
-void traceWalls(const Tissue& t, const std::vector<OrientedFace>& faces, WallTraces& w, const std::string& who) {
+void traceWalls(const Tissue& t, const std::vector<OrientedFace>& faces, WallTraces& w, const CellName& who) {
   const CellComplex& cx = t.topology();
   for (OrientedFace of : faces) {
     const FaceId f = of.handle();
@@ -267,13 +279,15 @@ void traceWalls(const Tissue& t, const std::vector<OrientedFace>& faces, WallTra
     }
     if (pos && neg) {
       if (nodes.size() != 2)
-        throw GeometryError("division plane crosses wall " + std::to_string(f.index()) + " of " + who + " " +
+        throw GeometryError("division plane crosses wall " + std::to_string(f.index()) + " of " + who.str() + " " +
                                 std::to_string(nodes.size()) + " times (a non-convex wall)",
                             {2, f.index()});
       w.segments.emplace_back(nodes[0], nodes[1]);
       w.face_cuts.emplace_back(f, nodes[0], nodes[1]);
     } else if (!pos && !neg) {
-      throw GeometryError("division plane runs along wall " + std::to_string(f.index()) + " of " + who, {2, f.index()});
+      throw GeometryError(
+          "division plane runs along wall " + std::to_string(f.index()) + " of " + who.str(),
+          {2, f.index()});
     } else {
       w.face_side[f.index()] = pos ? 1 : -1;
     }
@@ -294,7 +308,7 @@ void traceWalls(const Tissue& t, const std::vector<OrientedFace>& faces, WallTra
 
 // The segments as one closed loop of nodes, counter-clockwise seen from the
 // positive side; refused when they make none or several.
-std::vector<Key> cutRing(const WallTraces& w, const Vec3& normal, const std::string& who, CellId c) {
+std::vector<Key> cutRing(const WallTraces& w, const Vec3& normal, const CellName& who, CellId c) {
   SmallMap<Key, std::vector<Key>> adj;
   for (auto [a, b] : w.segments) {
     adj[a].push_back(b);
@@ -302,7 +316,9 @@ std::vector<Key> cutRing(const WallTraces& w, const Vec3& normal, const std::str
   }
   for (const auto& [k, nb] : adj)
     if (nb.size() != 2)
-      throw GeometryError("division plane does not cut " + who + " along a single closed polygon", {3, c.index()});
+      throw GeometryError(
+          "division plane does not cut " + who.str() + " along a single closed polygon",
+          {3, c.index()});
   std::vector<Key> ring{adj.begin()->first};
   Key prev = ring[0], cur = adj.begin()->second[0];
   while (cur != ring[0]) {
@@ -314,8 +330,8 @@ std::vector<Key> cutRing(const WallTraces& w, const Vec3& normal, const std::str
     if (ring.size() > adj.size()) break;
   }
   if (ring.size() != adj.size())
-    throw GeometryError("division plane cuts " + who + " into more than two pieces", {3, c.index()});
-  if (ring.size() < 3) throw GeometryError("division plane only grazes " + who, {3, c.index()});
+    throw GeometryError("division plane cuts " + who.str() + " into more than two pieces", {3, c.index()});
+  if (ring.size() < 3) throw GeometryError("division plane only grazes " + who.str(), {3, c.index()});
   Vec3 area = Vec3::Zero();
   for (std::size_t i = 0; i < ring.size(); ++i)
     area += w.node_point.at(ring[i]).cross(w.node_point.at(ring[(i + 1) % ring.size()]));
@@ -357,9 +373,11 @@ double positiveVolume(const Tissue& t, const std::vector<OrientedFace>& faces, c
 CellSplitPlan3D planCellSplit3D(const Tissue& t, CellId c, const Plane& plane, const SplitOptions& options) {
   checkSplitInput(t, c, plane, options, 3);
   const VolumeId vol(c.index());
-  const std::string who = cellName(t, c);
+  const CellName who{t, c};
   const double volume = cellMeasure(t, c);
-  if (!(volume > 0)) throw GeometryError(who + " has non-positive volume " + formatNumber(volume, 6), {3, c.index()});
+  if (!(volume > 0))
+    throw GeometryError(who.str() + " has non-positive volume " + formatNumber(volume, 6),
+                        {3, c.index()});
   const Vec3 normal = plane.normal.normalized();
   const double tol = options.snap_tolerance * std::cbrt(volume);
 
@@ -370,7 +388,7 @@ CellSplitPlan3D planCellSplit3D(const Tissue& t, CellId c, const Plane& plane, c
   const std::vector<Key> ring = cutRing(w, normal, who, c);
   const double positive = positiveVolume(t, faces, normal, plane), smaller = std::min(positive, volume - positive);
   if (smaller < options.min_fraction * volume)
-    throw GeometryError("division of " + who + " would leave a sliver of " + formatNumber(smaller / volume, 6) +
+    throw GeometryError("division of " + who.str() + " would leave a sliver of " + formatNumber(smaller / volume, 6) +
                             " of its volume (minimum " + formatNumber(options.min_fraction) + ")",
                         {3, c.index()});
 
