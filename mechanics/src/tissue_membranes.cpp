@@ -111,6 +111,17 @@ void MembraneGrowthParams::check() const {
     throw InputError("mechanics: the fibre direction (or axis) must not be zero");
 }
 
+const EnumTable<MembraneGrowthParams::Support>& membraneSupports() {
+  static const EnumTable<MembraneGrowthParams::Support> table(
+      "membrane support",
+      {{"base", MembraneGrowthParams::Support::Base,
+        "the vertices within base_distance above the base plane (a dome's or cylinder's base ring, a 3D "
+        "tissue's bottom)"},
+       {"boundary", MembraneGrowthParams::Support::Boundary,
+        "every vertex on a sheet's boundary walls (the rim of a cropped patch; sheets only)"}});
+  return table;
+}
+
 std::vector<FaceId> membraneFaces(const Tissue& tissue) {
   std::vector<FaceId> faces;
   if (tissue.dim() == 2) {

@@ -327,7 +327,7 @@ void declareMechanicsSection(Schema& s) {
         "What holds the membranes. `base`: the vertices within `base_distance` above the lowest vertex; "
         "`boundary`: every vertex on the sheet's boundary walls (its rims: a cropped patch of a larger "
         "surface, such as an imported meristem; sheets only). A rim whose vertices are all fixed is not loaded.")
-      .oneOf({"base", "boundary"})
+      .oneOf(mechanics::membraneSupports().names())
       .byDefault(std::string("base"))
       .activeWhen("mechanics.model", membranes);
   s.key("mechanics.base_distance", ValueType::Float,
@@ -395,9 +395,7 @@ MechanicsSpec readMechanicsSection(const Config& c) {
     p.pressure = m.params.pressure;
     p.growth = m.params.growth;
     p.solver = m.params.solver;
-    p.support = c.getString("mechanics.membrane_support") == "boundary"
-                    ? mechanics::MembraneGrowthParams::Support::Boundary
-                    : mechanics::MembraneGrowthParams::Support::Base;
+    p.support = parseFromConfig(c, mechanics::membraneSupports(), "mechanics.membrane_support");
     if (p.support == mechanics::MembraneGrowthParams::Support::Base)
       p.base_distance = c.getFloat("mechanics.base_distance");
     p.feedback.rate = c.getFloat("mechanics.feedback_rate");

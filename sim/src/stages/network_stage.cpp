@@ -42,6 +42,19 @@ NetworkStage::NetworkStage(NetworkSpec spec) : spec_(std::move(spec)), schedule_
 }
 
 namespace {
+
+// The amounts y[k S + s] of `cells` (species s), from the species' `_amount` columns.
+std::vector<double> cellAmounts(const Tissue& tissue, const networks::NetworkModel& model,
+                                const std::vector<CellId>& cells) {
+  const std::size_t S = model.species.size();
+  std::vector<double> y(S * cells.size());
+  for (std::size_t s = 0; s < S; ++s) {
+    const auto& amount = tissue.cellProperties().get<double>(model.species[s].name + "_amount");
+    for (std::size_t k = 0; k < cells.size(); ++k) y[k * S + s] = amount[cells[k]];
+  }
+  return y;
+}
+
 const std::string kPrimordiaKey = "network.primordia";
 const std::string kPinKey = "network.pin";
 
@@ -124,14 +137,8 @@ void NetworkStage::writePinWalls(const Tissue& tissue, const std::string& snapsh
   std::vector<std::vector<networks::InterfaceWall>> walls;
   networks::NetworkGraph graph =
       networks::networkGraph(tissue, geometry, spec_.model.cell_properties, &cells, &walls);
-  const std::size_t S = spec_.model.species.size();
-  std::vector<double> amounts(S * cells.size());
-  for (std::size_t s = 0; s < S; ++s) {
-    const auto& amount = tissue.cellProperties().get<double>(spec_.model.species[s].name + "_amount");
-    for (std::size_t k = 0; k < cells.size(); ++k) amounts[k * S + s] = amount[cells[k]];
-  }
   networks::NetworkSystem system(spec_.model, std::move(graph));
-  const std::vector<double> y = readState(tissue, cells, walls, system, amounts);
+  const std::vector<double> y = readState(tissue, cells, walls, system, cellAmounts(tissue, spec_.model, cells));
   const std::vector<networks::PinSides> density = system.pinDensity(y);
   // Per live wall in slot order; i is the cell with the smaller lineage id.
   std::vector<int> slot(tissue.topology().slots(tissue.dim() - 1), -1);
@@ -356,11 +363,9 @@ void NetworkStage::prepare(Tissue& tissue, double /*time*/) {
   std::vector<double> y(S * cells.size());
   if (present) {
     // A snapshot of the run: continue from its amounts.
-    for (std::size_t s = 0; s < S; ++s) {
-      const auto& amount = detail::doubleColumn(tissue, spec_.model.species[s].name + "_amount",
-                                                DivisionPolicy::SplitByMeasure);
-      for (std::size_t k = 0; k < cells.size(); ++k) y[k * S + s] = amount[cells[k]];
-    }
+    for (const auto& species : spec_.model.species)
+      detail::doubleColumn(tissue, species.name + "_amount", DivisionPolicy::SplitByMeasure);  // numbers?
+    y = cellAmounts(tissue, spec_.model, cells);
   } else {
     std::mt19937_64 rng(spec_.noise_seed ^ 0x6e6574776f726b73ull);  // "networks"
     for (std::size_t s = 0; s < S; ++s) {
@@ -387,13 +392,9 @@ void NetworkStage::apply(Tissue& tissue, const StepContext& context) {
   std::vector<std::vector<networks::InterfaceWall>> walls;
   networks::NetworkGraph graph =
       networks::networkGraph(tissue, geometry, spec_.model.cell_properties, &cells, &walls);
-  const std::size_t S = spec_.model.species.size();
-  std::vector<double> amounts(S * cells.size());
-  for (std::size_t s = 0; s < S; ++s) {
-    const auto& amount =
-        detail::doubleColumn(tissue, spec_.model.species[s].name + "_amount", DivisionPolicy::SplitByMeasure);
-    for (std::size_t k = 0; k < cells.size(); ++k) amounts[k * S + s] = amount[cells[k]];
-  }
+  for (const auto& species : spec_.model.species)
+    detail::doubleColumn(tissue, species.name + "_amount", DivisionPolicy::SplitByMeasure);
+  std::vector<double> amounts = cellAmounts(tissue, spec_.model, cells);
   networks::NetworkSystem system(spec_.model, std::move(graph), spec_.jacobian);
   std::vector<double> y = readState(tissue, cells, walls, system, amounts);
   if (elapsed > 0 && !cells.empty()) {

@@ -24,15 +24,16 @@
 // new face (the wall a 3D division adds) starts at rest.
 
 #include <cstdint>
+#include <optional>
 #include <random>
 #include <string>
-#include <optional>
 #include <vector>
 
 #include "tessella/mechanics/equilibrium.hpp"
 #include "tessella/mechanics/fan_membrane_model.hpp"
 #include "tessella/mechanics/fibre_feedback.hpp"
 #include "tessella/mechanics/strain_growth.hpp"
+#include "tessella/tissue/enum_table.hpp"
 
 namespace tessella {
 class Tissue;
@@ -106,6 +107,9 @@ struct MembraneStepReport {
   std::size_t fixed_vertices = 0;
   double max_growth_rate = 0.0;
 };
+
+/// The names of the supports (`mechanics.membrane_support`): base, boundary.
+const EnumTable<MembraneGrowthParams::Support>& membraneSupports();
 
 /// The faces that are membranes: a sheet's cells, a 3D tissue's walls.
 /// MechanicsError for a planar tissue (use the wall-spring model).
