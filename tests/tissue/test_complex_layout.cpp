@@ -12,6 +12,7 @@
 #include "fixtures.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
+#include "tessella/tissue/validate.hpp"
 
 using namespace tessella;
 
@@ -116,4 +117,59 @@ TEST_CASE("a damaged layout is a located TopologyError", "[tissue][layout]") {
   ComplexLayout short_offsets = good;
   short_offsets.edge_face_offsets.pop_back();
   failsWith(short_offsets, "edge_faces has");
+}
+
+TEST_CASE("a layout changed at random is refused or rebuilt as given, and valid", "[tissue][layout]") {
+  // fromLayout checks a layout in bulk and copies it, or, at a defect, builds
+  // it element by element to name the defect: whatever it accepts must be a
+  // complex holding exactly the lists given, with every invariant of validate().
+  Tissue hex = hexagonalGrid(4, 4);
+  hex.splitCell(CellId(5), Plane{cellCentroid(hex, CellId(5)), Vec3(1, 0.3, 0)});
+  const Tissue boxes = dividedBoxes();
+  std::mt19937_64 rng(11);
+  for (const Tissue* t : {static_cast<const Tissue*>(&hex), &boxes}) {
+    const ComplexLayout good = t->topology().layout();
+    std::vector<Vec3> positions;
+    for (std::size_t v = 0; v < t->topology().slots(0); ++v)
+      if (const VertexId vertex(static_cast<Index>(v)); t->topology().alive(vertex))
+        positions.push_back(t->position(vertex));
+    int accepted = 0, refused = 0;
+    for (int trial = 0; trial < 3000; ++trial) {
+      ComplexLayout bad = good;
+      std::vector<std::vector<Index>*> arrays{&bad.edge_vertices, &bad.face_edges, &bad.vertex_edges,
+                                              &bad.edge_faces};
+      if (good.dim == 3) {
+        arrays.push_back(&bad.volume_faces);
+        arrays.push_back(&bad.face_volumes);
+      }
+      std::vector<Index>& a = *arrays[rng() % arrays.size()];
+      std::size_t i = rng() % a.size(), j = rng() % a.size();
+      if (trial % 4 == 0) {  // two items of one region list: the same complex, listed in another order
+        const bool at_vertex = rng() % 2 == 0;
+        const auto& offsets = at_vertex ? bad.vertex_edge_offsets : bad.edge_face_offsets;
+        auto& items = at_vertex ? bad.vertex_edges : bad.edge_faces;
+        const std::size_t k = rng() % (offsets.size() - 1);
+        if (offsets[k + 1] - offsets[k] < 2) continue;
+        std::swap(items[offsets[k]], items[offsets[k + 1] - 1]);
+      } else switch (rng() % 3) {
+        case 0: a[i] ^= 1u << (rng() % 3); break;  // a nearby number, or the other orientation
+        case 1: a[i] = a[j]; break;                // an item of another list
+        default: std::swap(a[i], a[j]); break;     // within one list only the order changes
+      }
+      try {
+        const CellComplex rebuilt = CellComplex::fromLayout(bad);
+        ++accepted;
+        REQUIRE(rebuilt.layout() == bad);
+        const Tissue again(rebuilt, positions, t->embedding());
+        const ValidationReport report = validate(again);
+        INFO(report.message);
+        REQUIRE(report.ok);
+      } catch (const TopologyError&) {
+        ++refused;
+      }
+    }
+    INFO("accepted " << accepted << ", refused " << refused);
+    CHECK(accepted > 300);  // list orders swapped within a list (and changes to the same value)
+    CHECK(refused > 1000);
+  }
 }

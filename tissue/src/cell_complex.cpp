@@ -9,6 +9,7 @@
 #include <string>
 #include <utility>
 
+#include "closed_surface.hpp"
 #include "tessella/tissue/errors.hpp"
 
 namespace tessella {
@@ -16,34 +17,6 @@ namespace tessella {
 namespace {
 
 std::string id(const char* kind, Index i) { return std::string(kind) + " " + std::to_string(i); }
-
-// An oriented surface is closed and consistently oriented when every edge is
-// traversed exactly once in each direction by its faces' loops.
-template <typename LoopOf>
-bool closedOrientedSurface(std::span<const OrientedFace> faces, LoopOf loopOf, Index* bad_edge) {
-  std::vector<std::pair<Index, int>> uses;  // (edge, +1 forward / -1 backward)
-  for (OrientedFace of : faces) {
-    for (OrientedEdge oe : loopOf(of.handle())) {
-      const bool forward = oe.reversed() == of.reversed();
-      uses.emplace_back(oe.handle().index(), forward ? 1 : -1);
-    }
-  }
-  std::sort(uses.begin(), uses.end());
-  for (std::size_t i = 0; i < uses.size();) {
-    std::size_t j = i;
-    int fwd = 0, bwd = 0;
-    while (j < uses.size() && uses[j].first == uses[i].first) {
-      (uses[j].second > 0 ? fwd : bwd)++;
-      ++j;
-    }
-    if (fwd != 1 || bwd != 1) {
-      if (bad_edge) *bad_edge = uses[i].first;
-      return false;
-    }
-    i = j;
-  }
-  return true;
-}
 
 }  // namespace
 
@@ -174,7 +147,7 @@ VolumeId CellComplex::addVolume(std::span<const OrientedFace> faces) {
   if (auto it = std::adjacent_find(seen.begin(), seen.end()); it != seen.end())
     throw TopologyError("volume uses " + id("face", *it) + " twice", {2, *it});
   Index bad = kInvalidIndex;
-  if (!closedOrientedSurface(faces, [&](FaceId f) { return faceEdges(f); }, &bad))
+  if (!detail::closedOrientedSurface(faces, [&](FaceId f) { return faceEdges(f); }, &bad))
     throw TopologyError("volume surface is not closed and consistently oriented at " + id("edge", bad),
                         {1, bad});
   const Index c = newSlot(3);
@@ -364,7 +337,7 @@ void CellComplex::addVolumes(std::span<const Index> offsets, std::span<const Ori
     if (bad[k]) continue;
     std::sort(seen.begin(), seen.end());
     if (std::adjacent_find(seen.begin(), seen.end()) != seen.end() ||
-        !closedOrientedSurface(list, [&](FaceId f) { return faceEdges(f); }, nullptr))
+        !detail::closedOrientedSurface(list, [&](FaceId f) { return faceEdges(f); }, nullptr))
       bad[k] = 1;
   }
   std::vector<std::uint32_t> uses(face_volumes_.size(), 0);
@@ -386,7 +359,7 @@ void CellComplex::addVolumes(std::span<const Index> offsets, std::span<const Ori
       if (auto it = std::adjacent_find(seen.begin(), seen.end()); it != seen.end())
         throw TopologyError(vol + " uses " + id("face", *it) + " twice", where);
       Index bad_edge = kInvalidIndex;
-      closedOrientedSurface(list, [&](FaceId f) { return faceEdges(f); }, &bad_edge);
+      detail::closedOrientedSurface(list, [&](FaceId f) { return faceEdges(f); }, &bad_edge);
       throw TopologyError(vol + ": surface is not closed and consistently oriented at " + id("edge", bad_edge),
                           where);
     }
@@ -543,8 +516,8 @@ std::pair<FaceId, VolumeId> CellComplex::splitVolume(VolumeId c, std::span<const
   stay.push_back(OrientedFace(FaceId(kCutFace), cut_sign < 0));
   go.push_back(OrientedFace(FaceId(kCutFace), cut_sign > 0));
   Index bad = kInvalidIndex;
-  if (!closedOrientedSurface(std::span<const OrientedFace>(stay), loopOf, &bad) ||
-      !closedOrientedSurface(std::span<const OrientedFace>(go), loopOf, &bad))
+  if (!detail::closedOrientedSurface(std::span<const OrientedFace>(stay), loopOf, &bad) ||
+      !detail::closedOrientedSurface(std::span<const OrientedFace>(go), loopOf, &bad))
     throw TopologyError("splitting " + id("volume", c.index()) +
                             " would leave an open surface at " + id("edge", bad),
                         {3, c.index()});
@@ -602,103 +575,6 @@ ComplexLayout CellComplex::layout() const {
     out.face_volume_offsets.assign(1, 0);
   }
   return out;
-}
-
-namespace {
-
-// The CSR pair of a layout: `count` lists covering the items exactly.
-void checkLists(const char* name, std::span<const Index> offsets, std::size_t num_items, std::size_t count) {
-  if (offsets.size() != count + 1)
-    throw TopologyError(std::string("layout: ") + name + " has " +
-                        std::to_string(offsets.empty() ? 0 : offsets.size() - 1) + " lists, not " +
-                        std::to_string(count));
-  if (offsets[0] != 0 || offsets[count] != num_items)
-    throw TopologyError(std::string("layout: the offsets of ") + name + " do not cover its " +
-                        std::to_string(num_items) + " items");
-  for (std::size_t k = 0; k < count; ++k)
-    if (offsets[k + 1] < offsets[k])
-      throw TopologyError(std::string("layout: the offsets of ") + name + " decrease at list " + std::to_string(k));
-}
-
-template <typename H>
-void unpack(std::span<const Index> items, std::vector<Oriented<H>>& out) {
-  out.clear();
-  for (Index packed : items) out.emplace_back(H(packed >> 1), (packed & 1u) != 0);
-}
-
-}  // namespace
-
-CellComplex CellComplex::fromLayout(const ComplexLayout& layout) {
-  CellComplex c(layout.dim);
-  if (layout.edge_vertices.size() % 2 != 0)
-    throw TopologyError("layout: the edge list holds an odd number of vertices");
-  const std::size_t nv = layout.num_vertices, ne = layout.edge_vertices.size() / 2;
-  const std::size_t nf = layout.face_edge_offsets.empty() ? 0 : layout.face_edge_offsets.size() - 1;
-  const std::size_t nc = layout.volume_face_offsets.empty() ? 0 : layout.volume_face_offsets.size() - 1;
-  if (layout.dim == 2 && nc != 0) throw TopologyError("layout: a 2D complex has no volumes");
-  checkLists("face_edges", layout.face_edge_offsets, layout.face_edges.size(), nf);
-  checkLists("volume_faces", layout.volume_face_offsets, layout.volume_faces.size(), nc);
-  checkLists("vertex_edges", layout.vertex_edge_offsets, layout.vertex_edges.size(), nv);
-  checkLists("edge_faces", layout.edge_face_offsets, layout.edge_faces.size(), ne);
-  if (layout.dim == 3) checkLists("face_volumes", layout.face_volume_offsets, layout.face_volumes.size(), nf);
-  auto list = [](const std::vector<Index>& offsets, const std::vector<Index>& items, std::size_t k) {
-    return std::span<const Index>(items).subspan(offsets[k], offsets[k + 1] - offsets[k]);
-  };
-  // Borders element by element: the checked construction, in numbering order.
-  for (std::size_t v = 0; v < nv; ++v) c.addVertex();
-  for (std::size_t e = 0; e < ne; ++e) {
-    const Index from = layout.edge_vertices[2 * e], to = layout.edge_vertices[2 * e + 1];
-    try {
-      c.addEdge(VertexId(from), VertexId(to));
-    } catch (const TopologyError& error) {
-      throw TopologyError(id("edge", static_cast<Index>(e)) + ": " + error.what(), {1, static_cast<Index>(e)});
-    }
-  }
-  // (Scratch lists reused across elements: a snapshot of 1e6 cells has millions.)
-  std::vector<OrientedEdge> loop;
-  for (std::size_t f = 0; f < nf; ++f) {
-    unpack<EdgeId>(list(layout.face_edge_offsets, layout.face_edges, f), loop);
-    try {
-      c.addFace(loop);
-    } catch (const TopologyError& error) {
-      throw TopologyError(id("face", static_cast<Index>(f)) + ": " + error.what(), {2, static_cast<Index>(f)});
-    }
-  }
-  std::vector<OrientedFace> faces;
-  for (std::size_t k = 0; k < nc; ++k) {
-    unpack<FaceId>(list(layout.volume_face_offsets, layout.volume_faces, k), faces);
-    try {
-      c.addVolume(faces);
-    } catch (const TopologyError& error) {
-      throw TopologyError(id("volume", static_cast<Index>(k)) + ": " + error.what(), {3, static_cast<Index>(k)});
-    }
-  }
-  // Regions: the same elements the borders gave, in the listed order.
-  std::vector<Index> built, wanted;
-  auto reorder = [&](int degree, auto& ragged, std::size_t count, const std::vector<Index>& offsets,
-                     const std::vector<Index>& items, const char* what) {
-    using Item = typename std::decay_t<decltype(ragged[0][0])>;
-    std::vector<Item> ordered;
-    for (std::size_t i = 0; i < count; ++i) {
-      const auto stored = list(offsets, items, i);
-      built.clear();
-      for (Item x : ragged[i]) built.push_back(x.index());
-      wanted.assign(stored.begin(), stored.end());
-      std::sort(built.begin(), built.end());
-      std::sort(wanted.begin(), wanted.end());
-      if (built != wanted)
-        throw TopologyError(id(degreeName(degree), static_cast<Index>(i)) + ": its " + what +
-                                " list does not hold the elements its borders give",
-                            {degree, static_cast<Index>(i)});
-      ordered.clear();
-      for (Index x : stored) ordered.emplace_back(x);
-      ragged.assign(i, std::span<const Item>(ordered));
-    }
-  };
-  reorder(0, c.vertex_edges_, nv, layout.vertex_edge_offsets, layout.vertex_edges, "edge");
-  reorder(1, c.edge_faces_, ne, layout.edge_face_offsets, layout.edge_faces, "face");
-  if (layout.dim == 3) reorder(2, c.face_volumes_, nf, layout.face_volume_offsets, layout.face_volumes, "volume");
-  return c;
 }
 
 Renumbering CellComplex::compact() {
