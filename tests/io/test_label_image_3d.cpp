@@ -8,11 +8,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <random>
 #include <set>
 #include <sstream>
 
+#include <Eigen/SVD>
 #include <catch2/catch.hpp>
 #include <omp.h>
 #include <vtkImageData.h>
@@ -157,6 +159,76 @@ Fit compare(const Tissue& original, const Tissue& imported, double resolved) {
   return fit;
 }
 
+// The junction points of a tissue: vertices where three or more edges meet
+// (every vertex of a Voronoi tissue; in an import, the ends of junction
+// lines, not the corners along them).
+std::vector<Vec3> junctions(const Tissue& t) {
+  std::vector<Vec3> out;
+  for (VertexId v : t.vertices())
+    if (t.topology().vertexEdges(v).size() >= 3) out.push_back(t.position(v));
+  return out;
+}
+
+// How far a resolved junction may move (docs/import.md, "3D label images"):
+// an imported junction q is a voxel corner shared by voxels of the four
+// labels meeting at the original junction p. A corner shared by voxels of
+// labels A and B is within half a voxel diagonal, sqrt(3)/2 h, of their
+// bisector plane (the signed distance is 1-Lipschitz, non-negative at A's
+// voxel centre and non-positive at B's, both sqrt(3)/2 h from q); a box face
+// holds the outer walls exactly. With N the unit normals of three of the
+// planes through p, N (q - p) = delta, |delta_i| <= sqrt(3)/2 h, so
+// |q - p| <= 1.5 h / sigma_min(N), for the best-conditioned triple.
+double junctionBound(const Tissue& original, const std::vector<Vec3>& seeds, VertexId v, double h) {
+  std::set<std::size_t> cells;
+  std::vector<Vec3> normals;
+  for (EdgeId e : original.topology().vertexEdges(v))
+    for (FaceId f : original.topology().edgeFaces(e))
+      for (CellId c : original.wallCells(WallId(f.index()))) cells.insert(c.index());
+  const Vec3 p = original.position(v);
+  for (int axis = 0; axis < 3; ++axis)
+    if (std::abs(p[axis]) < 1e-12 || std::abs(p[axis] - 1) < 1e-12) normals.push_back(Vec3::Unit(axis));
+  for (auto i = cells.begin(); i != cells.end(); ++i)
+    for (auto j = std::next(i); j != cells.end(); ++j) normals.push_back((seeds[*j] - seeds[*i]).normalized());
+  double best = 0;
+  for (std::size_t a = 0; a < normals.size(); ++a)
+    for (std::size_t b = a + 1; b < normals.size(); ++b)
+      for (std::size_t c = b + 1; c < normals.size(); ++c) {
+        Eigen::Matrix3d n;
+        n.row(0) = normals[a].transpose();
+        n.row(1) = normals[b].transpose();
+        n.row(2) = normals[c].transpose();
+        best = std::max(best, Eigen::JacobiSVD<Eigen::Matrix3d>(n).singularValues()(2));
+      }
+  return best > 0 ? 1.5 * h / best : std::numeric_limits<double>::infinity();
+}
+
+struct JunctionFit {
+  std::size_t checked = 0, within_voxel = 0;
+  double farthest = 0;      // in voxels
+  double worst_ratio = 0;   // distance / junctionBound
+};
+
+// Every original junction whose edges are all at least two voxels long (so
+// its four labels meet in the image) against the nearest imported junction.
+JunctionFit junctionOffsets(const Tissue& original, const std::vector<Vec3>& seeds, const Tissue& imported,
+                            double h) {
+  const std::vector<Vec3> got = junctions(imported);
+  JunctionFit fit;
+  for (VertexId v : original.vertices()) {
+    const auto edges = original.topology().vertexEdges(v);
+    if (edges.size() < 3 ||
+        std::any_of(edges.begin(), edges.end(), [&](EdgeId e) { return edgeLength(original, e) < 2 * h; }))
+      continue;
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const Vec3& p : got) nearest = std::min(nearest, (p - original.position(v)).norm());
+    fit.farthest = std::max(fit.farthest, nearest / h);
+    fit.worst_ratio = std::max(fit.worst_ratio, nearest / junctionBound(original, seeds, v, h));
+    fit.within_voxel += nearest <= h ? 1 : 0;
+    ++fit.checked;
+  }
+  return fit;
+}
+
 ImportOptions withImage(const LabelImageOptions& image, double simplify = 0) {
   ImportOptions o;
   o.image = image;
@@ -192,6 +264,13 @@ void checkAgainstVoronoi(std::size_t cells, std::uint64_t rng_seed, std::int64_t
       // The outer walls lie on the box faces exactly: the cells fill the cube.
       CHECK(fit.total_volume == Approx(1.0).epsilon(simplify == 0 ? 1e-9 : 0.02));
       fits[simplify].push_back(fit);
+      // Junctions (issue #15: "within a voxel of the originals"): each within its bound above.
+      const JunctionFit jf = junctionOffsets(v.tissue, v.seeds, r.tissue, h);
+      WARN("n " << n << " simplify " << simplify << ": " << jf.checked << " resolved junctions, "
+                << jf.within_voxel << " within a voxel of an imported one, the farthest " << jf.farthest
+                << " voxels, at most " << jf.worst_ratio << " of its bound");
+      CHECK(jf.checked > cells);
+      CHECK(jf.worst_ratio <= 1.0);
       WARN("n " << n << " simplify " << simplify << ": volume error mean " << fit.mean_volume_error << " max "
                 << fit.max_volume_error << ", " << fit.pairs_differing << " pairs differ, "
                 << r.tissue.numVertices() << " vertices, " << r.tissue.numWalls() << " walls");
