@@ -393,3 +393,14 @@ TEST_CASE("a missing, damaged or mismatched diffusion state beside a snapshot is
   io::writeTissueVtu(first.tissue(), plain);
   Simulation::fromFile(config, {"tissue.generator=snapshot", "tissue.snapshot.file=" + plain});
 }
+
+TEST_CASE("neo-Hookean membranes restart exactly: a growing cylinder and a dividing dome",
+          "[sim][restart][mechanics][neo-hookean]") {
+  SECTION("hypocotyl cylinder, hoop fibres ratio 10") {
+    requireExactRestart(sourcePath("configs/hypocotyl_cylinder.yaml"), {"mechanics.material=neo_hookean"}, 10);
+  }
+  SECTION("dome sheet, soft summit, divisions") {
+    requireExactRestart(sourcePath("configs/turgor_dome_2p5d.yaml"),
+                        {"mechanics.material=neo_hookean", "time.end=2.0"}, 10);
+  }
+}
