@@ -153,8 +153,8 @@ double MembraneModel::forceScale(const Eigen::VectorXd& x) const {
   return s.norm();
 }
 
-// K_ab = t A0 (B_a^T D B_b + (g_a . S g_b) I), D = dS/dE (St Venant-Kirchhoff: Q); pressure: d2V/dx_a dx_b = -[x_c]x / 6,
-// d2V/dx_a dx_c = [x_b]x / 6 for (a, b, c) cyclic.
+// K_ab = t A0 (B_a^T D B_b + (g_a . S g_b) I), D = dS/dE (St Venant-Kirchhoff: Q);
+// pressure: d2V/dx_a dx_b = -[x_c]x / 6, d2V/dx_a dx_c = [x_b]x / 6 for (a, b, c) cyclic.
 void MembraneModel::hessian(const Eigen::VectorXd& x, std::vector<Triplet>& entries) const {
   entries.reserve(entries.size() + 2 * 81 * triangles_.size());
   const double t = material_.thickness;

@@ -679,7 +679,8 @@ TEST_CASE("tissue membranes: a cylinder whose halves have fibre ratios 1 and 10 
       MembraneMaterial m = params.material;
       m.fibre_ratio = half == 0 ? 1.0 : 10.0;
       const double r = hoop_stretch * R, t = m.thickness;
-      const Eigen::Vector3d predicted = m.smallStrainMatrix().inverse() * Eigen::Vector3d(P * r / t, P * r / (2 * t), 0);
+      const Eigen::Vector3d predicted =
+          m.smallStrainMatrix().inverse() * Eigen::Vector3d(P * r / t, P * r / (2 * t), 0);
       const double hoop_green = 0.5 * (hoop_stretch * hoop_stretch - 1);
       const double axial_green = 0.5 * (axial_stretch * axial_stretch - 1);
       std::cout << "cylinder halves (" << (law == MembraneLaw::NeoHookean ? "neo-Hookean" : "SVK") << "), ratio "
