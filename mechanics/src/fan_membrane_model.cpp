@@ -17,7 +17,6 @@ namespace tessella::mechanics {
 namespace {
 
 using detail::cross;
-using detail::greenStrain;
 using detail::point;
 using detail::strainMatrix;
 using detail::stressTensor;
@@ -65,7 +64,6 @@ FanMembraneModel::FanMembraneModel(const Eigen::VectorXd& positions, std::vector
                                    MembraneMaterial material, const Vec3& origin)
     : size_(positions.size()), polygons_(std::move(polygons)), material_(material), origin_(origin) {
   material_.check();
-  q_ = material_.planeStressMatrix();
   const Index points = static_cast<Index>(size_ / 3);
   first_element_.assign(1, 0);
   for (std::size_t f = 0; f < polygons_.size(); ++f) {
@@ -80,6 +78,16 @@ FanMembraneModel::FanMembraneModel(const Eigen::VectorXd& positions, std::vector
     if (!(p.young_scale > 0.0 && std::isfinite(p.young_scale)))
       throw InputError(name + ": Young's modulus scale " + formatNumber(p.young_scale) + " must be > 0");
     if (!std::isfinite(p.pressure)) throw InputError(name + ": pressure " + formatNumber(p.pressure));
+    MembraneMaterial own = material_;
+    if (p.fibre_ratio != 0.0) {
+      own.fibre_ratio = p.fibre_ratio;
+      try {
+        own.check();
+      } catch (const InputError& e) {
+        throw InputError(name + ": " + e.what());
+      }
+    }
+    laws_.push_back(MembraneElementLaw::of(own, p.young_scale));
     for (Index v : p.loop)
       if (v >= points) throw InputError(name + ": vertex slot " + std::to_string(v) + " out of range");
     const Eigen::Vector3d apex = apexPoint(positions, p.loop, p.triangulation);
@@ -162,7 +170,7 @@ double FanMembraneModel::polygonTerms(const Eigen::VectorXd& x, std::size_t f, E
   // The apex's weight at loop vertex k.
   auto w_apex = [&poly](int k) { return poly.triangulation.apexWeight(static_cast<std::size_t>(k), poly.loop.size()); };
   const double t = material_.thickness;
-  const Eigen::Matrix3d Q = poly.young_scale * q_;
+  const MembraneElementLaw& law = laws_[f];
   const double p = poly.pressure;
   double energy = 0.0;
   Eigen::Matrix3d apex_apex = Eigen::Matrix3d::Zero();  // sum_i H_00 over corners at the apex
@@ -182,15 +190,14 @@ double FanMembraneModel::polygonTerms(const Eigen::VectorXd& x, std::size_t f, E
     const Element& el = elements_[first_element_[f] + static_cast<std::size_t>(i)];
     const auto c = corners(x, f, static_cast<std::size_t>(i));
     const Mat32 F = deformationGradient(c, el);
-    const Eigen::Vector3d eps = greenStrain(F);
-    const Eigen::Vector3d sv = Q * eps;
-    const double w = t * el.area * 0.5 * eps.dot(sv);
+    const MembraneResponse response = poly.elastic ? law.at(F, tangent != nullptr) : MembraneResponse{};
+    const double w = poly.elastic ? t * el.area * response.energy : 0.0;
     const std::array<Eigen::Vector3d, 3> r = {c[0] - origin_, c[1] - origin_, c[2] - origin_};
     const double pv = p * r[0].dot(r[1].cross(r[2])) / 6.0;
     energy += w - pv;
     if (energy_magnitude) *energy_magnitude += std::abs(w) + std::abs(pv);
     if (!grad && !magnitude && !tangent) continue;
-    const Eigen::Matrix2d S = stressTensor(sv);
+    const Eigen::Matrix2d S = poly.elastic ? stressTensor(response.stress) : Eigen::Matrix2d::Zero();
     std::array<Eigen::Vector3d, 3> elastic, pressure;
     for (int a = 0; a < 3; ++a) {
       elastic[a] = t * el.area * F * (S * el.g[a]);
@@ -207,7 +214,7 @@ double FanMembraneModel::polygonTerms(const Eigen::VectorXd& x, std::size_t f, E
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b)
         H[a][b] = t * el.area *
-                  (B[a].transpose() * Q * B[b] + el.g[a].dot(S * el.g[b]) * Eigen::Matrix3d::Identity());
+                  (B[a].transpose() * response.tangent * B[b] + el.g[a].dot(S * el.g[b]) * Eigen::Matrix3d::Identity());
     for (int a = 0; a < 3; ++a) {
       const int b = (a + 1) % 3, cc = (a + 2) % 3;
       H[a][b] += p / 6.0 * cross(r[cc]);
@@ -289,8 +296,7 @@ void FanMembraneModel::hessian(const Eigen::VectorXd& x, std::vector<Triplet>& e
 Eigen::Matrix3d FanMembraneModel::tension(const Eigen::VectorXd& x, std::size_t f, std::size_t i) const {
   const Element& el = elements_[first_element_[f] + i];
   const Mat32 F = deformationGradient(corners(x, f, i), el);
-  const Eigen::Vector3d sv = polygons_[f].young_scale * q_ * greenStrain(F);
-  const Eigen::Matrix2d S = stressTensor(sv);
+  const Eigen::Matrix2d S = stressTensor(laws_[f].at(F, false).stress);
   const double J = std::sqrt((F.transpose() * F).determinant());
   return material_.thickness / J * F * S * F.transpose();
 }

@@ -16,7 +16,6 @@ namespace tessella::mechanics {
 namespace {
 
 using detail::cross;
-using detail::greenStrain;
 using detail::Mat32;
 using detail::point;
 using detail::strainMatrix;
@@ -24,34 +23,11 @@ using detail::stressTensor;
 
 }  // namespace
 
-Eigen::Matrix3d MembraneMaterial::planeStressMatrix() const {
-  const double e1 = fibre_ratio * young, e2 = young;
-  const double nu12 = poisson, nu21 = poisson / fibre_ratio;
-  const double d = 1.0 - nu12 * nu21;
-  Eigen::Matrix3d q = Eigen::Matrix3d::Zero();
-  q(0, 0) = e1 / d;
-  q(1, 1) = e2 / d;
-  q(0, 1) = q(1, 0) = nu12 * e2 / d;
-  q(2, 2) = young / (2.0 * (1.0 + poisson));
-  return q;
-}
-
-void MembraneMaterial::check() const {
-  auto bad = [](const char* name, double v, const char* why) {
-    throw InputError(std::string("membrane material: ") + name + " " + formatNumber(v) + " " + why);
-  };
-  if (!(young > 0.0 && std::isfinite(young))) bad("young", young, "must be > 0");
-  if (!(thickness > 0.0 && std::isfinite(thickness))) bad("thickness", thickness, "must be > 0");
-  if (!(fibre_ratio > 0.0 && std::isfinite(fibre_ratio))) bad("fibre_ratio", fibre_ratio, "must be > 0");
-  if (!(poisson > -1.0 && poisson <= 0.5)) bad("poisson", poisson, "must be in (-1, 0.5]");
-  if (!(poisson * poisson < fibre_ratio)) bad("poisson", poisson, "squared must be below fibre_ratio");
-}
-
 MembraneModel::MembraneModel(std::vector<Vec3> reference, std::vector<std::array<Index, 3>> triangles,
                              MembraneMaterial material, double pressure, const std::vector<Vec3>& fibres)
     : reference_(std::move(reference)), triangles_(std::move(triangles)), material_(material), pressure_(pressure) {
   material_.check();
-  q_ = material_.planeStressMatrix();
+  law_ = MembraneElementLaw::of(material_);
   if (!std::isfinite(pressure_)) throw InputError("membrane: pressure " + formatNumber(pressure_) + " is not finite");
   if (!fibres.empty() && fibres.size() != triangles_.size())
     throw InputError("membrane: " + std::to_string(fibres.size()) + " fibre directions for " +
@@ -135,8 +111,7 @@ double MembraneModel::energy(const Eigen::VectorXd& x) const {
   double w = 0.0;
   const double t = material_.thickness;
   for (std::size_t e = 0; e < triangles_.size(); ++e) {
-    const Eigen::Vector3d eps = greenStrain(deformationGradient(x, e));
-    w += t * elements_[e].area * 0.5 * eps.dot(q_ * eps);
+    w += t * elements_[e].area * law_.at(deformationGradient(x, e), false).energy;
   }
   return w - pressure_ * volume(x);
 }
@@ -150,8 +125,7 @@ void MembraneModel::gradient(const Eigen::VectorXd& x, Eigen::VectorXd& g) const
   const double t = material_.thickness;
   for (std::size_t e = 0; e < triangles_.size(); ++e) {
     const Mat32 F = deformationGradient(x, e);
-    const Eigen::Vector3d s = q_ * greenStrain(F);
-    const Eigen::Matrix2d S = stressTensor(s);
+    const Eigen::Matrix2d S = stressTensor(law_.at(F, false).stress);
     const auto& tri = triangles_[e];
     for (int a = 0; a < 3; ++a)
       g.segment<3>(3 * static_cast<Eigen::Index>(tri[a])) += t * elements_[e].area * F * (S * elements_[e].g[a]);
@@ -167,8 +141,7 @@ double MembraneModel::forceScale(const Eigen::VectorXd& x) const {
   const double t = material_.thickness;
   for (std::size_t e = 0; e < triangles_.size(); ++e) {
     const Mat32 F = deformationGradient(x, e);
-    const Eigen::Vector3d sv = q_ * greenStrain(F);
-    const Eigen::Matrix2d S = stressTensor(sv);
+    const Eigen::Matrix2d S = stressTensor(law_.at(F, false).stress);
     const auto& tri = triangles_[e];
     for (int a = 0; a < 3; ++a) {
       const Eigen::Index i = 3 * static_cast<Eigen::Index>(tri[a]);
@@ -180,8 +153,8 @@ double MembraneModel::forceScale(const Eigen::VectorXd& x) const {
   return s.norm();
 }
 
-// K_ab = t A0 (B_a^T Q B_b + (g_a . S g_b) I); pressure: d2V/dx_a dx_b = -[x_c]x / 6,
-// d2V/dx_a dx_c = [x_b]x / 6 for (a, b, c) cyclic.
+// K_ab = t A0 (B_a^T D B_b + (g_a . S g_b) I), D = dS/dE (St Venant-Kirchhoff: Q);
+// pressure: d2V/dx_a dx_b = -[x_c]x / 6, d2V/dx_a dx_c = [x_b]x / 6 for (a, b, c) cyclic.
 void MembraneModel::hessian(const Eigen::VectorXd& x, std::vector<Triplet>& entries) const {
   entries.reserve(entries.size() + 2 * 81 * triangles_.size());
   const double t = material_.thickness;
@@ -191,8 +164,8 @@ void MembraneModel::hessian(const Eigen::VectorXd& x, std::vector<Triplet>& entr
   };
   for (std::size_t e = 0; e < triangles_.size(); ++e) {
     const Mat32 F = deformationGradient(x, e);
-    const Eigen::Vector3d sv = q_ * greenStrain(F);
-    const Eigen::Matrix2d S = stressTensor(sv);
+    const MembraneResponse response = law_.at(F, true);
+    const Eigen::Matrix2d S = stressTensor(response.stress);
     const Element& el = elements_[e];
     const auto& tri = triangles_[e];
     std::array<Eigen::Matrix3d, 3> B;
@@ -200,7 +173,7 @@ void MembraneModel::hessian(const Eigen::VectorXd& x, std::vector<Triplet>& entr
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) {
         const Eigen::Matrix3d K = t * el.area *
-                                  (B[a].transpose() * q_ * B[b] +
+                                  (B[a].transpose() * response.tangent * B[b] +
                                    el.g[a].dot(S * el.g[b]) * Eigen::Matrix3d::Identity());
         add(tri[a], tri[b], K);
       }
@@ -214,8 +187,7 @@ void MembraneModel::hessian(const Eigen::VectorXd& x, std::vector<Triplet>& entr
 
 Eigen::Matrix3d MembraneModel::tension(const Eigen::VectorXd& x, std::size_t e) const {
   const Mat32 F = deformationGradient(x, e);
-  const Eigen::Vector3d sv = q_ * greenStrain(F);
-  const Eigen::Matrix2d S = stressTensor(sv);
+  const Eigen::Matrix2d S = stressTensor(law_.at(F, false).stress);
   const double J = std::sqrt((F.transpose() * F).determinant());
   return material_.thickness / J * F * S * F.transpose();
 }

@@ -209,6 +209,9 @@ FanMembraneModel buildTissueMembranes(Tissue& tissue, const MembraneGrowthParams
   const auto& pressure = cellOutput(tissue, kTurgorPressureName, params.pressure);
   const PropertyColumn<double>* young =
       tissue.cellProperties().has(kYoungScaleName) ? &tissue.cellProperties().get<double>(kYoungScaleName) : nullptr;
+  // A sheet's cells are its faces: one store serves both (cells of a sheet, walls of a 3D tissue).
+  const PropertyColumn<double>* fibre_ratio =
+      face_props.has(kFibreRatioName) ? &face_props.get<double>(kFibreRatioName) : nullptr;
   const Vec3 origin = tissue.dim() == 2 ? sheetOrigin(tissue) : Vec3::Zero();
   const std::vector<double> p = facePressures(tissue, faces, pressure.values(), origin);
   state.loops.resize(tissue.slots(2));
@@ -248,6 +251,18 @@ FanMembraneModel buildTissueMembranes(Tissue& tissue, const MembraneGrowthParams
       state.fibres[slot] = poly.fibre;
     }
     poly.pressure = p[i];
+    if (fibre_ratio) {
+      const double r = (*fibre_ratio)[f];
+      MembraneMaterial own = params.material;
+      own.fibre_ratio = r;
+      try {
+        own.check();
+      } catch (const InputError& e) {
+        throw MechanicsError("mechanics: " + faceName(tissue, f) + ": property " + kFibreRatioName + " " +
+                             formatNumber(r) + ": " + e.what());
+      }
+      poly.fibre_ratio = r;
+    }
     if (young) {
       if (tissue.dim() == 2) {
         poly.young_scale = (*young)[CellId(slot)];

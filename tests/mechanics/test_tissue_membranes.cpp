@@ -24,6 +24,7 @@
 #include <omp.h>
 
 #include <cmath>
+#include <iostream>
 #include <random>
 
 using namespace tessella;
@@ -548,4 +549,174 @@ TEST_CASE("stress feedback in a growth step: a cylinder's fibres turn toward the
             Approx(theta0 * std::exp(-params.feedback.rate * dt * step)).epsilon(1e-6));
     }
   }
+}
+
+TEST_CASE("tissue membranes: derivatives with neo-Hookean walls and per-polygon fibre ratios (sheet, 3D)",
+          "[mechanics][neo-hookean]") {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (MembraneLaw law : {MembraneLaw::NeoHookean, MembraneLaw::StVenantKirchhoff}) {
+    MembraneGrowthParams params;
+    params.material.law = law;
+    params.material.young = 50.0;
+    params.material.thickness = 0.1;
+    params.material.fibre_ratio = 2.0;
+    params.fibres.kind = FibreRule::Kind::Circumferential;
+    for (int dim : {2, 3}) {
+      CAPTURE(static_cast<int>(law), dim);
+      Tissue tissue = dim == 2 ? domeSheet(12, 3) : voronoiBox(6, 4);
+      auto& pressure = cellOutput(tissue, kTurgorPressureName, 0.0);
+      for (CellId c : tissue.cells()) pressure[c] = 0.5 + 0.3 * u(rng);
+      // The ratio per sheet cell / per 3D wall: one face store serves both.
+      auto& ratio = tissue.properties(2).add<double>(kFibreRatioName, 1.0, DivisionPolicy::Copy);
+      for (FaceId f : membraneFaces(tissue)) ratio[f] = 4.5 + 3.5 * u(rng);
+      MembraneRestState state;
+      buildTissueMembranes(tissue, params, state);
+      for (auto& r : state.rest)
+        for (RestMetric& m : r) m *= 0.81;
+      Eigen::VectorXd x = spatialDofs(tissue);
+      for (Eigen::Index i = 0; i < x.size(); ++i) x(i) += 0.02 * u(rng);
+      const FanMembraneModel model = buildTissueMembranes(tissue, params, state);
+      const std::vector<FaceId> faces = membraneFaces(tissue);
+      for (std::size_t i = 0; i < faces.size(); ++i) CHECK(model.polygon(i).fibre_ratio == ratio[faces[i]]);
+      checkDerivatives(model, x);
+    }
+  }
+}
+
+TEST_CASE("tissue membranes: each polygon's fibre ratio gives the closed-form energy of a stretch along and across "
+          "its fibres",
+          "[mechanics][neo-hookean]") {
+  // Three flat unit squares with fibres along x, ratios: the material's (3), 1 and 10. Stretched by lambda along
+  // x (or y) every fan triangle has C = diag(lambda^2, 1) (or diag(1, lambda^2)) in its fibre frame.
+  std::vector<Vec3> points;
+  std::vector<MembranePolygon> polygons(3);
+  for (int k = 0; k < 3; ++k) {
+    const Vec3 o(2.0 * k, 0, 0);
+    for (const Vec3& q : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)}) points.push_back(o + q);
+    polygons[k].loop = {Index(4 * k), Index(4 * k + 1), Index(4 * k + 2), Index(4 * k + 3)};
+    polygons[k].fibre = Vec3(1, 0, 0);
+  }
+  polygons[1].fibre_ratio = 1.0;
+  polygons[2].fibre_ratio = 10.0;
+  Eigen::VectorXd x0(3 * static_cast<Eigen::Index>(points.size()));
+  for (std::size_t i = 0; i < points.size(); ++i) x0.segment<3>(3 * static_cast<Eigen::Index>(i)) = points[i];
+  for (MembranePolygon& p : polygons) p.rest = FanMembraneModel::currentMetrics(x0, p.loop);
+  for (MembraneLaw law : {MembraneLaw::StVenantKirchhoff, MembraneLaw::NeoHookean}) {
+    MembraneMaterial material;
+    material.law = law;
+    material.young = 6.0;
+    material.thickness = 0.1;
+    material.fibre_ratio = 3.0;
+    const FanMembraneModel model(x0, polygons, material, Vec3::Zero());
+    for (int axis : {0, 1}) {
+      const double lambda = 1.3;
+      Eigen::VectorXd x = x0;
+      for (Eigen::Index i = 0; i < x.size(); i += 3) x(i + axis) *= lambda;
+      double expected = 0.0;
+      for (double r : {3.0, 1.0, 10.0}) {
+        MembraneMaterial m = material;
+        m.fibre_ratio = r;
+        const double e = 0.5 * (lambda * lambda - 1);  // the Green strain along the stretch
+        double w = 0.0;
+        if (law == MembraneLaw::StVenantKirchhoff) {
+          w = 0.5 * m.planeStressMatrix()(axis, axis) * e * e;
+        } else {
+          w = 0.5 * m.shearModulus() * (lambda * lambda + 1 / (lambda * lambda) - 2);
+          if (axis == 0) w += m.fibreStiffness() / 8 * (lambda * lambda - 1) * (lambda * lambda - 1);
+        }
+        expected += material.thickness * 1.0 * w;  // t A0 W, A0 = 1
+      }
+      CAPTURE(static_cast<int>(law), axis);
+      CHECK(model.energy(x) == Approx(expected).epsilon(1e-12));
+    }
+  }
+  polygons[2].fibre_ratio = 0.5;
+  MembraneMaterial nh;
+  nh.law = MembraneLaw::NeoHookean;
+  CHECK_THROWS_WITH(FanMembraneModel(x0, polygons, nh, Vec3::Zero()),
+                    Catch::Contains("membrane polygon 2") && Catch::Contains("fibre_ratio 0.5"));
+}
+
+TEST_CASE("tissue membranes: a cylinder whose halves have fibre ratios 1 and 10 strains as each half's law says",
+          "[mechanics][neo-hookean]") {
+  // Hoop fibres; away from the ends and the junction the tensions are the
+  // statically determinate hoop P r and axial P r / 2 in both halves, so the
+  // Green strains are the compliance D^-1 (of each half's small-strain law)
+  // times (P r / t, P r / (2 t)): the stiff half swells a tenth (SVK) or
+  // less as much and elongates more.
+  for (MembraneLaw law : {MembraneLaw::StVenantKirchhoff, MembraneLaw::NeoHookean}) {
+    CAPTURE(static_cast<int>(law));
+    const double R = 1.0, L = 8.0, P = 0.01;
+    Tissue tissue = cylinderGrid(32, 32, R, L);
+    MembraneGrowthParams params;
+    params.material.law = law;
+    params.material.young = 10.0;
+    params.material.thickness = 0.1;
+    params.pressure = P;
+    params.fibres.kind = FibreRule::Kind::Circumferential;
+    params.solver.relative_tolerance = 1e-12;
+    auto& ratio = tissue.cellProperties().add<double>(kFibreRatioName, 1.0, DivisionPolicy::Copy);
+    for (CellId c : tissue.cells()) ratio[c] = cellCentroid(tissue, c).z() > L / 2 ? 10.0 : 1.0;
+    const std::vector<Vec3> before(tissue.positions().begin(), tissue.positions().end());
+    MembraneRestState state;
+    membraneGrowthStep(tissue, params, state, 0.0);
+    for (int half : {0, 1}) {
+      // The rings at a quarter of the half's length from its middle, and the middle ring.
+      const double z_mid = L / 4 + half * L / 2, dz = L / 8;
+      double hoop = 0.0, z_lo = 0.0, z_hi = 0.0;
+      int rings = 0, lo = 0, hi = 0;
+      for (VertexId v : tissue.vertices()) {
+        const Vec3 &X = before[v.index()], &x = tissue.position(v);
+        if (std::abs(X.z() - z_mid) < 1e-9) hoop += std::hypot(x.x(), x.y()) / R, ++rings;
+        if (std::abs(X.z() - (z_mid - dz)) < 1e-9) z_lo += x.z(), ++lo;
+        if (std::abs(X.z() - (z_mid + dz)) < 1e-9) z_hi += x.z(), ++hi;
+      }
+      REQUIRE(rings > 0);
+      REQUIRE(lo > 0);
+      REQUIRE(hi > 0);
+      const double hoop_stretch = hoop / rings, axial_stretch = (z_hi / hi - z_lo / lo) / (2 * dz);
+      MembraneMaterial m = params.material;
+      m.fibre_ratio = half == 0 ? 1.0 : 10.0;
+      const double r = hoop_stretch * R, t = m.thickness;
+      const Eigen::Vector3d predicted =
+          m.smallStrainMatrix().inverse() * Eigen::Vector3d(P * r / t, P * r / (2 * t), 0);
+      const double hoop_green = 0.5 * (hoop_stretch * hoop_stretch - 1);
+      const double axial_green = 0.5 * (axial_stretch * axial_stretch - 1);
+      std::cout << "cylinder halves (" << (law == MembraneLaw::NeoHookean ? "neo-Hookean" : "SVK") << "), ratio "
+                << m.fibre_ratio << ": hoop strain " << hoop_green << " (predicted " << predicted[0]
+                << "), axial strain " << axial_green << " (predicted " << predicted[1] << ")\n";
+      CAPTURE(half, hoop_green, predicted[0], axial_green, predicted[1]);
+      // Within 5 % of the larger strain (the isotropic neo-Hookean half, nu = 1/2, has no axial strain).
+      const double scale = std::max(std::abs(predicted[0]), std::abs(predicted[1]));
+      CHECK(std::abs(hoop_green - predicted[0]) < 0.05 * scale);
+      CHECK(std::abs(axial_green - predicted[1]) < 0.05 * scale);
+    }
+  }
+}
+
+TEST_CASE("tissue membranes: a divided cell's parts keep its fibre ratio; a bad ratio names the cell",
+          "[mechanics][neo-hookean]") {
+  Tissue tissue = domeSheet(12, 3);
+  auto& ratio = tissue.cellProperties().add<double>(kFibreRatioName, 2.0, DivisionPolicy::Copy);
+  const CellId c = *tissue.cells().begin();
+  ratio[c] = 7.5;
+  const Vec3 centre = cellCentroid(tissue, c);
+  const CellSplit split = tissue.splitCell(c, Plane{centre, Vec3(1, 0, 0)});
+  MembraneGrowthParams params;
+  params.material.law = MembraneLaw::NeoHookean;
+  MembraneRestState state;
+  const FanMembraneModel model = buildTissueMembranes(tissue, params, state);
+  const std::vector<FaceId> faces = membraneFaces(tissue);
+  int parts = 0;
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const bool part = faces[i].index() == c.index() || faces[i].index() == split.daughter.index();
+    parts += part;
+    CHECK(model.polygon(i).fibre_ratio == (part ? 7.5 : 2.0));
+  }
+  CHECK(parts == 2);
+  tissue.cellProperties().get<double>(kFibreRatioName)[split.daughter] = 0.5;
+  CHECK_THROWS_WITH(buildTissueMembranes(tissue, params, state),
+                    Catch::Contains("cell " + std::to_string(split.daughter.index())) &&
+                        Catch::Contains("fibre_ratio 0.5") && Catch::Contains("neo_hookean"));
 }

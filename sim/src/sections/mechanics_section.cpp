@@ -245,7 +245,7 @@ void declareMechanicsSection(Schema& s) {
   s.key("mechanics.model", ValueType::Enum,
         "The mechanical model. `wall_springs`: walls as springs, cells under turgor (planar 2D tissues). "
         "`membranes`: every cell of a curved sheet, every wall of a 3D tissue a membrane (the fan of "
-        "St Venant-Kirchhoff triangles from its vertex mean; a polygon whose fan folds: from its kernel centroid, "
+        "membrane triangles (`material`) from its vertex mean; a polygon whose fan folds: from its kernel centroid, "
         "or its ear-clipped triangles), cells under turgor, the base or the rim fixed.")
       .oneOf({"none", "wall_springs", "membranes"})
       .byDefault(std::string("none"));
@@ -288,13 +288,20 @@ void declareMechanicsSection(Schema& s) {
       .oneOf(sideNames())
       .byDefault(std::string("x_min"))
       .activeWhen("mechanics.support", {"region"});
+  std::string laws = "The membranes' material law (docs/mechanics.md, \"Membrane materials\").";
+  for (const auto& law : mechanics::membraneLaws().entries()) laws += " `" + law.name + "`: " + law.doc;
+  s.key("mechanics.material", ValueType::Enum, laws)
+      .oneOf(mechanics::membraneLaws().names())
+      .byDefault(std::string("st_venant_kirchhoff"))
+      .activeWhen("mechanics.model", membranes);
   s.key("mechanics.poisson", ValueType::Float, "Poisson's ratio nu of the membranes (nu^2 < fibre_ratio).")
       .byDefault(0.3)
       .above(-1)
       .atMost(0.5)
-      .activeWhen("mechanics.model", membranes);
+      .activeWhen("mechanics.material", {"st_venant_kirchhoff"});
   s.key("mechanics.fibre_ratio", ValueType::Float,
-        "Stiffness along the fibres over the stiffness across them (1: isotropic).")
+        "Stiffness along the fibres over the stiffness across them (1: isotropic; neo_hookean: >= 1). A polygon "
+        "whose face has the property fibre_ratio (a sheet's cell, a 3D tissue's wall) uses its value instead.")
       .byDefault(1.0)
       .above(0)
       .activeWhen("mechanics.model", membranes);
@@ -390,7 +397,9 @@ MechanicsSpec readMechanicsSection(const Config& c) {
     mechanics::MembraneGrowthParams& p = m.membrane;
     p.material.young = m.params.youngs_modulus;
     p.material.thickness = m.params.thickness;
-    p.material.poisson = c.getFloat("mechanics.poisson");
+    p.material.law = parseFromConfig(c, mechanics::membraneLaws(), "mechanics.material");
+    if (p.material.law == mechanics::MembraneLaw::StVenantKirchhoff)
+      p.material.poisson = c.getFloat("mechanics.poisson");
     p.material.fibre_ratio = c.getFloat("mechanics.fibre_ratio");
     p.pressure = m.params.pressure;
     p.growth = m.params.growth;
@@ -411,7 +420,9 @@ MechanicsSpec readMechanicsSection(const Config& c) {
     try {
       p.material.check();
     } catch (const InputError& e) {
-      throw c.errorAt("mechanics.poisson", e.what());
+      throw c.errorAt(p.material.law == mechanics::MembraneLaw::StVenantKirchhoff ? "mechanics.poisson"
+                                                                                   : "mechanics.fibre_ratio",
+                      e.what());
     }
     m.soft_radius = c.getFloat("mechanics.soft_radius");
     m.soft_factor = c.getFloat("mechanics.soft_factor");

@@ -6,8 +6,8 @@
 // is cut into triangles by its MembraneTriangulation (fixed at its reference:
 // the fan from the mean of its loop vertices, the fan from an apex with fixed
 // weights, or ear-clipped triangles), and each triangle is a constant-strain
-// St Venant-Kirchhoff membrane element (MembraneMaterial, transversely
-// isotropic). The apex is a linear function of the loop vertices,
+// membrane element (MembraneMaterial: St Venant-Kirchhoff or neo-Hookean,
+// transversely isotropic, the fibre ratio per polygon). The apex is a linear function of the loop vertices,
 // a = sum_k w_k x_k (w_k = 1/n for the mean fan), so the degrees of freedom are
 // the vertices' positions only (three per vertex slot) and the chain rule
 // carries the element forces and tangents at the apex to every loop vertex
@@ -47,6 +47,8 @@ struct MembranePolygon {
   MembraneTriangulation triangulation{};  ///< how the loop is cut into triangles (default: the mean fan)
   Vec3 fibre = Vec3::Zero();        ///< fibre direction (projected on each triangle; zero: its first edge)
   double young_scale = 1.0;         ///< this polygon's E is material.young times this (> 0)
+  /// This polygon's fibre ratio (> 0; neo-Hookean >= 1); 0: the material's.
+  double fibre_ratio = 0.0;
   double pressure = 0.0;            ///< p_f: the energy has -p_f V_f
   /// false: a lid closing an open rim, pressure only (no elastic energy; `rest` ignored).
   bool elastic = true;
@@ -122,7 +124,7 @@ class FanMembraneModel final : public EnergyModel {
   std::vector<std::size_t> first_element_;  // polygons_[f]'s elements: [first_element_[f], first_element_[f + 1])
   std::vector<Element> elements_;
   MembraneMaterial material_;
-  Eigen::Matrix3d q_;
+  std::vector<MembraneElementLaw> laws_;  // per polygon: the material with its fibre ratio and Young's scale
   Vec3 origin_;
 };
 

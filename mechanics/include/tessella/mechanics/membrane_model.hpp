@@ -4,10 +4,12 @@
 // Membrane finite elements on a closed triangulated surface under internal
 // pressure (docs/mechanics.md, "Membranes"): constant-strain triangles, large
 // deformation, St Venant-Kirchhoff with a transversely isotropic plane-stress
-// law (stiffness ratio along a fibre direction per triangle). Total energy
-//   E(x) = sum_e t A0_e (1/2) eps_e^T Q eps_e - P V(x),
-// eps_e the Green-Lagrange strain (E11, E22, 2 E12) of triangle e in its
-// reference fibre frame, V the volume the surface encloses. Degrees of
+// law or neo-Hookean with a fibre term (membrane_material.hpp; fibre direction
+// per triangle). Total energy
+//   E(x) = sum_e t A0_e W(E_e) - P V(x),
+// E_e the Green-Lagrange strain of triangle e in its reference fibre frame
+// (St Venant-Kirchhoff: W = (1/2) eps^T Q eps, eps = (E11, E22, 2 E12)), V the
+// volume the surface encloses. Degrees of
 // freedom: (x, y, z) of every point, three per point.
 
 #include <array>
@@ -16,6 +18,7 @@
 #include <Eigen/Core>
 
 #include "tessella/mechanics/energy_model.hpp"
+#include "tessella/mechanics/membrane_material.hpp"
 #include "tessella/mechanics/membrane_triangle.hpp"
 #include "tessella/mechanics/strain_growth.hpp"
 #include "tessella/tissue/handles.hpp"
@@ -23,19 +26,6 @@
 
 namespace tessella::mechanics {
 
-struct MembraneMaterial {
-  double young = 1.0;        ///< E > 0 (across the fibres)
-  double poisson = 0.3;      ///< nu in (-1, 0.5]; nu^2 < fibre_ratio
-  double thickness = 1.0;    ///< t > 0
-  double fibre_ratio = 1.0;  ///< E_fibre / E > 0 (1: isotropic)
-
-  /// The plane-stress law in the fibre frame (Voigt: 11 along the fibre, 22
-  /// across, 12 shear): E1 = ratio E, E2 = E, nu12 = nu, nu21 = nu / ratio,
-  /// G12 = E / (2 (1 + nu)); isotropic plane stress at ratio 1.
-  Eigen::Matrix3d planeStressMatrix() const;
-  /// Throws InputError naming the parameter and its value when out of range.
-  void check() const;
-};
 
 class MembraneModel final : public EnergyModel {
  public:
@@ -84,7 +74,7 @@ class MembraneModel final : public EnergyModel {
   std::vector<Vec3> reference_;
   std::vector<std::array<Index, 3>> triangles_;
   MembraneMaterial material_;
-  Eigen::Matrix3d q_;
+  MembraneElementLaw law_;
   double pressure_;
   std::vector<Element> elements_;
 };

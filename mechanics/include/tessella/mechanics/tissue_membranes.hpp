@@ -43,6 +43,10 @@ namespace tessella::mechanics {
 
 inline constexpr const char* kMembraneRestRatioName = "membrane_rest_ratio";
 inline constexpr const char* kYoungScaleName = "young_scale";
+/// Face property (a sheet's cells, a 3D tissue's walls), double: the polygon's
+/// fibre ratio when present, else the material's. A model or an initial tissue
+/// sets it; division policy Copy (both parts keep it) when the tissue has it.
+inline constexpr const char* kFibreRatioName = "fibre_ratio";
 inline constexpr const char* kStrainMaxName = "strain_max";    ///< cell, double: larger principal Green strain
 inline constexpr const char* kStrainMinName = "strain_min";    ///< cell, double: smaller principal Green strain
 inline constexpr const char* kGrowthRateName = "growth_rate";  ///< cell, double: (A1 - A0) / (A0 dt) of its rest area
