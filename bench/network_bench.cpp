@@ -23,20 +23,26 @@
 //   the steps: KLU's symbolic analysis and the allocations are kept, CVODE
 //   still restarts every step), `gmres_neighbours` / `gmres_exact`
 //   (network.linear_solver: gmres), `gmres_kept` (GMRES, one system and
-//   integrator). 1e5 cells: the GMRES variants only. Columns: CVODE steps,
-//   right-hand sides, Jacobians, linear setups, linear solves, GMRES
+//   integrator), `gmres_2_threads` (gmres_neighbours on two OpenMP threads:
+//   IntegratorOptions::threads). 1e5 cells: the GMRES variants only. Columns: network steps per
+//   second of the steady clock and of the process' CPU time (all threads), CVODE steps, Newton
+//   iterations, right-hand sides, Jacobians, linear setups, linear solves, GMRES
 //   iterations (summed over the steps), then the share of the time in the
 //   right-hand side, the Jacobian, the linear setups (KLU factorisations /
 //   preconditioner blocks), the linear solves, building the graph, system
 //   and integrator, and the rest (CVODE's own vector operations).
-// Usage: network_bench [--quick]   --quick: 1e3 and 1e4 cells only
+// Usage: network_bench [--quick | --gmres | --profile]   --quick: 1e3 and 1e4 cells only; --gmres: the
+//   GMRES variant on one and two threads only, at every size; --profile: 1e4 cells, 5 steps of
+//   gmres_neighbours once, for perf record.
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <random>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "tessella/generators/grids.hpp"
@@ -93,11 +99,23 @@ std::vector<Variant> variants() {
   out.push_back({"gmres_neighbours", JacobianKind::Neighbours, gmres});
   out.push_back({"gmres_exact", JacobianKind::Exact, gmres});
   out.push_back({"gmres_kept", JacobianKind::Neighbours, gmres, true});
+  IntegratorOptions two = gmres;
+  two.threads = 2;
+  out.push_back({"gmres_2_threads", JacobianKind::Neighbours, two});
   return out;
+}
+
+// The process' CPU seconds (all its threads): on a shared machine the steady clock also counts the time
+// other processes hold the cores.
+double cpuSeconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
 }
 
 struct Run {
   double seconds = 0;
+  double cpu_seconds = 0;
   double build_seconds = 0;  // the stage's graph and system
   IntegratorStatistics stats;
   std::vector<double> y;
@@ -106,6 +124,7 @@ struct Run {
 // `steps` network steps as the stage takes them: graph, system, integrator, advance.
 Run runSteps(const Tissue& tissue, const NetworkModel& model, const Variant& v, std::vector<double> y, int steps) {
   Run run;
+  const double cpu_start = cpuSeconds();
   if (v.reuse) {
     const auto a = Clock::now();
     GeometryCache geometry;
@@ -116,6 +135,7 @@ Run runSteps(const Tissue& tissue, const NetworkModel& model, const Variant& v, 
     run.seconds = std::chrono::duration<double>(Clock::now() - a).count();
     run.stats = integrator.statistics();
     run.y = std::move(y);
+    run.cpu_seconds = cpuSeconds() - cpu_start;
     return run;
   }
   for (int k = 0; k < steps; ++k) {
@@ -129,6 +149,7 @@ Run runSteps(const Tissue& tissue, const NetworkModel& model, const Variant& v, 
     run.stats += integrator.statistics();
   }
   run.y = std::move(y);
+  run.cpu_seconds = cpuSeconds() - cpu_start;
   return run;
 }
 
@@ -141,7 +162,7 @@ double maxRelativeDifference(const std::vector<double>& a, const std::vector<dou
   return scale > 0 ? diff / scale : diff;
 }
 
-void benchSize(std::size_t side, int steps, int turns, bool klu) {
+void benchSize(std::size_t side, int steps, int turns, bool klu, std::vector<std::string> only = {}) {
   const Tissue tissue = hexagonalGrid(side, side);
   const NetworkModel model = benchModel();
   GeometryCache geometry;
@@ -162,9 +183,11 @@ void benchSize(std::size_t side, int steps, int turns, bool klu) {
     std::erase_if(vs, [](const Variant& v) { return v.options.linear_solver == LinearSolver::Klu; });
     std::printf("  (KLU variants left out at this size)\n");
   }
+  if (!only.empty())
+    std::erase_if(vs, [&](const Variant& v) { return std::find(only.begin(), only.end(), v.name) == only.end(); });
   // The accuracy reference: KLU with the exact Jacobian and tolerances 1e4 times tighter (small grids).
   std::vector<double> reference;
-  if (n <= 2000) {
+  if (n <= 2000 && only.empty()) {
     Variant tight{"reference", JacobianKind::Exact, {}};
     tight.options.relative_tolerance = 1e-10;
     tight.options.absolute_tolerance = 1e-13;
@@ -176,9 +199,9 @@ void benchSize(std::size_t side, int steps, int turns, bool klu) {
       Run r = runSteps(tissue, model, vs[v], y0, steps);
       if (t == 0 || r.seconds < best[v].seconds) best[v] = std::move(r);
     }
-  std::printf("  %-16s %9s %7s %7s %7s %7s %7s %7s %6s %6s %6s %6s %6s %6s %9s\n", "variant", "steps/s", "cvsteps",
-              "rhs", "jac", "setups", "solves", "lin.it", "rhs%", "jac%", "setup%", "solve%", "build%", "other%",
-              "max rel");
+  std::printf("  %-16s %9s %9s %7s %7s %7s %7s %7s %7s %7s %6s %6s %6s %6s %6s %6s %9s\n", "variant", "steps/s",
+              "cpu st/s", "cvsteps", "newton", "rhs", "jac", "setups", "solves", "lin.it", "rhs%", "jac%", "setup%",
+              "solve%", "build%", "other%", "max rel");
   const double base_rate = steps / best[0].seconds;
   const std::vector<double>& compared = reference.empty() ? best[0].y : reference;
   std::printf("  max rel: the largest difference from %s's final amounts over the largest amount\n",
@@ -190,10 +213,11 @@ void benchSize(std::size_t side, int steps, int turns, bool klu) {
     const double other =
         r.seconds - s.rhs_seconds - s.jacobian_seconds - s.setup_seconds - s.solve_seconds - r.build_seconds;
     auto pc = [&](double x) { return 100.0 * x / r.seconds; };
-    std::printf("  %-16s %9.3g %7ld %7ld %7ld %7ld %7ld %7ld %6.1f %6.1f %6.1f %6.1f %6.1f %6.1f %9.2e\n",
-                vs[v].name, rate, s.steps, s.rhs_evaluations, s.jacobian_evaluations, s.linear_setups, s.linear_solves,
-                s.linear_iterations, pc(s.rhs_seconds), pc(s.jacobian_seconds), pc(s.setup_seconds),
-                pc(s.solve_seconds), pc(r.build_seconds), pc(other), maxRelativeDifference(compared, r.y));
+    std::printf("  %-16s %9.3g %9.3g %7ld %7ld %7ld %7ld %7ld %7ld %7ld %6.1f %6.1f %6.1f %6.1f %6.1f %6.1f %9.2e\n",
+                vs[v].name, rate, steps / r.cpu_seconds, s.steps, s.nonlinear_iterations, s.rhs_evaluations,
+                s.jacobian_evaluations, s.linear_setups, s.linear_solves, s.linear_iterations, pc(s.rhs_seconds),
+                pc(s.jacobian_seconds), pc(s.setup_seconds), pc(s.solve_seconds), pc(r.build_seconds), pc(other),
+                maxRelativeDifference(compared, r.y));
     const std::string name = "network_steps_per_s_" + std::to_string(n) + "_" + vs[v].name;
     const double target = side == 100 ? 10.0 : bench::kNoTarget;  // issue #17: 1e4 cells >= 10 steps/s
     if (v == 0 || !klu)
@@ -214,7 +238,17 @@ void benchSize(std::size_t side, int steps, int turns, bool klu) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const std::string flag = bench::flagArgument(argc, argv, {"--quick"}, "network_bench [--quick]");
+  const std::string flag = bench::flagArgument(argc, argv, {"--quick", "--gmres", "--profile"},
+                                               "network_bench [--quick | --gmres | --profile]");
+  if (flag == "--profile") {
+    benchSize(100, 5, 1, false, {"gmres_neighbours"});
+    return 0;
+  }
+  if (flag == "--gmres") {
+    for (auto [side, steps, turns] : {std::tuple{32, 10, 3}, std::tuple{100, 5, 2}, std::tuple{316, 2, 1}})
+      benchSize(static_cast<std::size_t>(side), steps, turns, false, {"gmres_neighbours", "gmres_2_threads"});
+    return 0;
+  }
   const bool quick = flag == "--quick";
   benchSize(32, 10, 3, true);    // 1024 cells
   benchSize(100, 5, 2, true);    // 10^4 cells

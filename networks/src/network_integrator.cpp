@@ -8,16 +8,20 @@
 #include <sunlinsol/sunlinsol_klu.h>
 #include <sunlinsol/sunlinsol_spgmr.h>
 
-#include <Eigen/Dense>
 #include <sunmatrix/sunmatrix_sparse.h>
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <exception>
+#include <limits>
 #include <sstream>
+#include <utility>
+#include <vector>
 
 #include "tessella/tissue/format.hpp"
+#include "vector_kernels.hpp"
 
 namespace tessella::networks {
 
@@ -48,6 +52,48 @@ const EnumTable<LinearSolver>& linearSolvers() {
 
 namespace {
 using Clock = std::chrono::steady_clock;
+// From this many rows on, J v and the preconditioner are split over OpenMP threads (row by row, so the
+// results do not depend on the number of threads).
+constexpr std::size_t kParallelRows = 131072;
+// From this many cells on, the preconditioner's blocks are inverted over OpenMP threads.
+constexpr std::size_t kParallelCells = 4096;
+
+// The inverse of the S x S matrix `a` (column-major, overwritten) into `inverse` (column-major), by
+// Gauss-Jordan elimination with partial pivoting; false when a pivot is zero or not finite.
+bool invertBlock(std::size_t S, double* a, double* inverse) {
+  auto A = [&](std::size_t r, std::size_t c) -> double& { return a[c * S + r]; };
+  auto X = [&](std::size_t r, std::size_t c) -> double& { return inverse[c * S + r]; };
+  for (std::size_t r = 0; r < S; ++r)
+    for (std::size_t c = 0; c < S; ++c) X(r, c) = r == c ? 1.0 : 0.0;
+  for (std::size_t k = 0; k < S; ++k) {
+    std::size_t pivot = k;
+    for (std::size_t r = k + 1; r < S; ++r)
+      if (std::abs(A(r, k)) > std::abs(A(pivot, k))) pivot = r;
+    const double d = A(pivot, k);
+    if (!(std::abs(d) > 0) || !std::isfinite(d)) return false;
+    if (pivot != k)
+      for (std::size_t c = 0; c < S; ++c) {
+        std::swap(A(k, c), A(pivot, c));
+        std::swap(X(k, c), X(pivot, c));
+      }
+    for (std::size_t c = 0; c < S; ++c) {
+      A(k, c) /= d;
+      X(k, c) /= d;
+    }
+    for (std::size_t r = 0; r < S; ++r) {
+      if (r == k) continue;
+      const double f = A(r, k);
+      if (f == 0.0) continue;
+      for (std::size_t c = 0; c < S; ++c) {
+        A(r, c) -= f * A(k, c);
+        X(r, c) -= f * X(k, c);
+      }
+    }
+  }
+  for (std::size_t i = 0; i < S * S; ++i)
+    if (!std::isfinite(inverse[i])) return false;
+  return true;
+}
 double since(Clock::time_point a) { return std::chrono::duration<double>(Clock::now() - a).count(); }
 }  // namespace
 
@@ -59,6 +105,7 @@ struct NetworkIntegrator::Impl {
   void* cvode = nullptr;
   NetworkSystem* system = nullptr;
   CsrMatrix J;
+  std::vector<std::uint32_t> column32;  // GMRES: J's column indices, narrower for J v (the pattern is fixed)
   std::exception_ptr failure;  // an exception thrown inside a callback
   std::string last_message;    // CVODE's last error message
   std::size_t species = 0;     // S: the size of a preconditioner block
@@ -66,6 +113,7 @@ struct NetworkIntegrator::Impl {
   std::vector<std::size_t> conserved;  // GMRES: the species without reactions (their totals are kept)
   std::vector<double> block_inverse;  // GMRES: per cell, the S x S inverse of I - gamma J's block (column-major)
   bool timers = false;
+  int threads = 1;  // OpenMP threads of the callbacks (NetworkSystem::threads())
   IntegratorStatistics* stats = nullptr;  // where the timers add
   // The linear solver's own setup and solve, wrapped by timedSetup / timedSolve (timers, conservation).
   int (*inner_setup)(SUNLinearSolver, SUNMatrix) = nullptr;
@@ -92,12 +140,18 @@ struct NetworkIntegrator::Impl {
 
   // GMRES: J v with the Jacobian of the last preconditioner setup.
   static int jtimes(N_Vector v, N_Vector Jv, realtype, N_Vector, N_Vector, void* data, N_Vector) {
-    const CsrMatrix& J = static_cast<Impl*>(data)->J;
+    const auto* self = static_cast<Impl*>(data);
+    const CsrMatrix& J = self->J;
     const double* x = N_VGetArrayPointer_Serial(v);
     double* out = N_VGetArrayPointer_Serial(Jv);
-    for (std::size_t r = 0; r < J.rows; ++r) {
+    const auto rows = static_cast<std::ptrdiff_t>(J.rows);
+    const std::uint32_t* column = self->column32.data();
+#pragma omp parallel for schedule(static) if (self->threads > 1 && J.rows >= kParallelRows) num_threads(self->threads)
+    for (std::ptrdiff_t r = 0; r < rows; ++r) {
       double sum = 0.0;
-      for (std::size_t k = J.row_start[r]; k < J.row_start[r + 1]; ++k) sum += J.value[k] * x[J.column[k]];
+      for (std::size_t k = J.row_start[static_cast<std::size_t>(r)]; k < J.row_start[static_cast<std::size_t>(r) + 1];
+           ++k)
+        sum += J.value[k] * x[column[k]];
       out[r] = sum;
     }
     return 0;
@@ -116,16 +170,21 @@ struct NetworkIntegrator::Impl {
       *jcur = SUNFALSE;
     }
     const std::size_t S = self->species, n = self->cells;
-    Eigen::MatrixXd block(S, S);
-    for (std::size_t c = 0; c < n; ++c) {
-      for (std::size_t a = 0; a < S; ++a)
-        for (std::size_t b = 0; b < S; ++b)
-          block(a, b) = (a == b ? 1.0 : 0.0) - gamma * self->J.at(c * S + a, c * S + b);
-      Eigen::PartialPivLU<Eigen::MatrixXd> lu(block);
-      if (!(std::abs(lu.determinant()) > 0)) return 1;  // recoverable: CVODE retries with a smaller step
-      Eigen::Map<Eigen::MatrixXd>(&self->block_inverse[c * S * S], static_cast<Eigen::Index>(S),
-                                  static_cast<Eigen::Index>(S)) = lu.inverse();
+    bool singular = false;
+    const int team = static_cast<int>(self->system->threads());
+#pragma omp parallel if (team > 1 && n >= kParallelCells) num_threads(team) reduction(|| : singular)
+    {
+      std::vector<double> block(S * S);
+#pragma omp for schedule(static)
+      for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(n); ++k) {
+        const auto c = static_cast<std::size_t>(k);
+        for (std::size_t a = 0; a < S; ++a)
+          for (std::size_t b = 0; b < S; ++b)
+            block[b * S + a] = (a == b ? 1.0 : 0.0) - gamma * self->J.at(c * S + a, c * S + b);
+        singular = !invertBlock(S, block.data(), &self->block_inverse[c * S * S]) || singular;
+      }
     }
+    if (singular) return 1;  // recoverable: CVODE retries with a smaller step
     // PIN densities (after the amounts): the inverse of their diagonal entry.
     for (std::size_t r = n * S; r < self->J.rows; ++r) {
       const double d = 1.0 - gamma * self->J.at(r, r);
@@ -140,7 +199,9 @@ struct NetworkIntegrator::Impl {
     const std::size_t S = self->species, n = self->cells;
     const double* in = N_VGetArrayPointer_Serial(r);
     double* out = N_VGetArrayPointer_Serial(z);
-    for (std::size_t c = 0; c < n; ++c) {
+#pragma omp parallel for schedule(static) if (self->threads > 1 && n * S >= kParallelRows) num_threads(self->threads)
+    for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(n); ++k) {
+      const auto c = static_cast<std::size_t>(k);
       const double* M = &self->block_inverse[c * S * S];
       for (std::size_t a = 0; a < S; ++a) {
         double sum = 0.0;
@@ -269,8 +330,12 @@ NetworkIntegrator::NetworkIntegrator(NetworkSystem& system, IntegratorOptions op
                      " must be >= 0");
   if (!(std::isfinite(options_.max_step) && options_.max_step >= 0.0))
     throw InputError("network integrator: max_step " + formatNumber(options_.max_step) + " must be >= 0");
+  if (options_.threads < 0)
+    throw InputError("network integrator: threads " + std::to_string(options_.threads) + " must be >= 0");
   if (system_.size() == 0) throw InputError("network integrator: the system has no cells");
   Impl& m = *impl_;
+  system_.setThreads(static_cast<std::size_t>(options_.threads));
+  m.threads = static_cast<int>(system_.threads());
   m.system = &system_;
   m.timers = options_.timers;
   m.stats = &stats_;
@@ -278,11 +343,15 @@ NetworkIntegrator::NetworkIntegrator(NetworkSystem& system, IntegratorOptions op
   const auto n = static_cast<sunindextype>(system_.size());
   m.y = N_VNew_Serial(n, m.context);
   if (!m.y) throw std::runtime_error("network integrator: N_VNew_Serial failed");
+  useFastVectorKernels(m.y);  // before CVODE and SPGMR clone it
   m.J = system_.pattern();
   m.species = system_.numSpecies();
   m.cells = system_.numCells();
   const bool gmres = options_.linear_solver == LinearSolver::Gmres;
   if (gmres) {
+    if (m.J.rows > std::numeric_limits<std::uint32_t>::max())
+      throw InputError("network integrator: " + std::to_string(m.J.rows) + " unknowns are too many for gmres");
+    m.column32.assign(m.J.column.begin(), m.J.column.end());
     m.block_inverse.assign(system_.numCells() * m.species * m.species + system_.numPinStates(), 0.0);
     m.solver = SUNLinSol_SPGMR(m.y, SUN_PREC_LEFT, 0, m.context);
     if (!m.solver) throw std::runtime_error("network integrator: SUNLinSol_SPGMR failed");
@@ -341,6 +410,10 @@ void NetworkIntegrator::advance(std::span<double> y, double t0, double t1) {
   realtype t = t0;
   Impl* const outer = Impl::active;
   Impl::active = &m;
+  struct KernelThreads {  // the vector kernels' threads for this call, restored however it ends
+    int previous;
+    ~KernelThreads() { setVectorKernelThreads(previous); }
+  } kernel_threads{setVectorKernelThreads(m.threads)};
   const int flag = CVode(m.cvode, t1, m.y, &t, CV_NORMAL);
   Impl::active = outer;
   long v = 0;

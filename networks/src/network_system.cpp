@@ -2,8 +2,11 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tessella/networks/network_system.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <limits>
 
 #include "tessella/networks/pin_expression.hpp"
@@ -22,6 +25,33 @@ double CsrMatrix::at(std::size_t r, std::size_t c) const {
 namespace {
 int other(const NetworkInterface& f, std::size_t c) { return f.cell_i == static_cast<int>(c) ? f.cell_j : f.cell_i; }
 std::size_t otherCell(const NetworkInterface& f, std::size_t c) { return static_cast<std::size_t>(other(f, c)); }
+
+// From this many cells on, the loops over cells are split over OpenMP threads.
+constexpr std::size_t kParallelCells = 4096;
+
+// body(c, thread) for every cell c < n, over OpenMP threads (each cell's work only writes that cell's
+// entries, so the results do not depend on the number of threads). An exception of the body is rethrown
+// after the loop: the one of the lowest cell, whatever the number of threads.
+template <class Body>
+void forEachCell(std::size_t n, std::size_t threads, Body body) {
+  std::exception_ptr failure;
+  std::size_t failed = n;
+  const int team = static_cast<int>(threads);
+#pragma omp parallel for schedule(static) if (team > 1 && n >= kParallelCells) num_threads(team)
+  for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(n); ++k) {
+    const auto c = static_cast<std::size_t>(k);
+    try {
+      body(c, static_cast<std::size_t>(omp_get_thread_num()));
+    } catch (...) {
+#pragma omp critical(tessella_network_cells)
+      if (c < failed) {
+        failed = c;
+        failure = std::current_exception();
+      }
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
+}
 
 // J(r, c) += v on a fixed pattern.
 void addAt(CsrMatrix& J, std::size_t r, std::size_t c, double v) {
@@ -49,9 +79,10 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
   for (const std::string& p : model_.cell_properties)
     if (!graph_.properties.count(p))
       throw InputError("network: the cell property '" + p + "' the reactions read is not in the graph");
-  reactions_ = std::make_unique<ReactionSet>(model_);
+  reactions_.push_back(std::make_unique<ReactionSet>(model_));
   for (const std::string& name : model_.cell_properties) property_columns_.push_back(&graph_.properties.at(name));
-  property_values_.assign(property_columns_.size(), 0.0);
+  property_values_.assign(1, std::vector<double>(property_columns_.size(), 0.0));
+  if (model_.pin.enabled() && model_.pin.function == PinFunction::Exponential) log_base_ = std::log(model_.pin.base);
   pin_species_ = model_.pin.enabled() ? model_.speciesIndex(model_.pin.species) : -1;
   const bool dynamic = model_.pin.dynamic();
   if (dynamic && model_.pin.model == PinModel::Expression) pin_expression_ = std::make_unique<PinExpression>(model_);
@@ -63,6 +94,15 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
     neighbours_[static_cast<std::size_t>(graph_.interfaces[f].cell_i)].push_back(f);
     neighbours_[static_cast<std::size_t>(graph_.interfaces[f].cell_j)].push_back(f);
   }
+  // The neighbours as flat arrays (the loops over cells read them at every right-hand side).
+  adjacent_start_.assign(n + 1, 0);
+  for (std::size_t c = 0; c < n; ++c) {
+    for (std::size_t f : neighbours_[c]) {
+      adjacent_cell_.push_back(otherCell(graph_.interfaces[f], c));
+      adjacent_measure_.push_back(graph_.interfaces[f].measure);
+    }
+    adjacent_start_[c + 1] = adjacent_cell_.size();
+  }
   // The pattern, row by row.
   pattern_.rows = size();
   pattern_.row_start.assign(size() + 1, 0);
@@ -70,13 +110,13 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
   for (std::size_t c = 0; c < n; ++c)
     for (std::size_t s = 0; s < S; ++s) {
       cols.clear();
-      if (reactions_->empty())
+      if (reactions_[0]->empty())
         cols.push_back(index(c, s));
       else
         for (std::size_t q = 0; q < S; ++q) cols.push_back(index(c, q));
       // Neighbourhood terms: a reaction reading sum_q / mean_q depends on q in every neighbour.
       for (std::size_t q = 0; q < S; ++q)
-        if (reactions_->usesNeighbourhood(q))
+        if (reactions_[0]->usesNeighbourhood(q))
           for (std::size_t f : neighbours_[c]) cols.push_back(index(otherCell(graph_.interfaces[f], c), q));
       const bool passive = model_.species[s].permeability > 0;
       const bool pinned = static_cast<int>(s) == pin_species_;
@@ -117,8 +157,9 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
   pin_denominator_.assign(n, 0.0);
   pin_weight_.assign(n, 0.0);
   pin_weight_derivative_.assign(n, 0.0);
+  pin_out_.assign(n, 0.0);
   conc_.assign(n * S, 0.0);
-  neighbourhood_.assign(reactions_->usesAnyNeighbourhood() ? n * 2 * S : 0, 0.0);
+  neighbourhood_.assign(reactions_[0]->usesAnyNeighbourhood() ? n * 2 * S : 0, 0.0);
   wall_total_.assign(n, 0.0);
   for (const NetworkInterface& f : graph_.interfaces) {
     wall_total_[static_cast<std::size_t>(f.cell_i)] += f.measure;
@@ -129,62 +170,89 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
 
 NetworkSystem::~NetworkSystem() = default;
 
+void NetworkSystem::setThreads(std::size_t threads) {
+  threads_ = threads == 0 ? static_cast<std::size_t>(std::max(omp_get_max_threads(), 1)) : threads;
+}
+
+void NetworkSystem::prepareThreads() {
+  const std::size_t threads = threads_;
+  while (reactions_.size() < threads) reactions_.push_back(std::make_unique<ReactionSet>(model_));
+  property_values_.resize(std::max(property_values_.size(), threads), std::vector<double>(property_columns_.size()));
+}
+
 void NetworkSystem::evaluateReactions(double t, std::size_t cell, std::span<const double> conc,
-                                      std::span<double> rate, std::span<const double> neighbourhood) {
-  for (std::size_t k = 0; k < property_columns_.size(); ++k) property_values_[k] = (*property_columns_[k])[cell];
+                                      std::span<double> rate, std::size_t thread,
+                                      std::span<const double> neighbourhood) {
+  std::vector<double>& properties = property_values_[thread];
+  for (std::size_t k = 0; k < property_columns_.size(); ++k) properties[k] = (*property_columns_[k])[cell];
   if (neighbourhood.empty() && !neighbourhood_.empty())
     neighbourhood = std::span<const double>(&neighbourhood_[cell * 2 * numSpecies()], 2 * numSpecies());
-  reactions_->evaluate(t, cell, graph_.measure[cell], graph_.centroid[cell], property_values_, conc, rate,
-                       neighbourhood);
+  reactions_[thread]->evaluate(t, cell, graph_.measure[cell], graph_.centroid[cell], properties, conc, rate,
+                               neighbourhood);
+}
+
+double NetworkSystem::pinWeight(double c) const {
+  return model_.pin.function == PinFunction::Exponential ? std::exp(log_base_ * c) : model_.pin.weight(c);
+}
+
+double NetworkSystem::pinWeightDerivative(double c) const {
+  return model_.pin.function == PinFunction::Exponential ? log_base_ * std::exp(log_base_ * c)
+                                                         : model_.pin.weightDerivative(c);
 }
 
 void NetworkSystem::neighbourhoodTerms() {
   if (neighbourhood_.empty()) return;
   const std::size_t S = numSpecies();
-  std::fill(neighbourhood_.begin(), neighbourhood_.end(), 0.0);
-  for (const NetworkInterface& f : graph_.interfaces) {
-    const auto i = static_cast<std::size_t>(f.cell_i), j = static_cast<std::size_t>(f.cell_j);
-    for (std::size_t s = 0; s < S; ++s) {
-      neighbourhood_[i * 2 * S + s] += f.measure * conc_[index(j, s)];
-      neighbourhood_[j * 2 * S + s] += f.measure * conc_[index(i, s)];
-    }
-  }
-  for (std::size_t c = 0; c < numCells(); ++c)
-    for (std::size_t s = 0; s < S; ++s)
-      neighbourhood_[c * 2 * S + S + s] = wall_total_[c] > 0 ? neighbourhood_[c * 2 * S + s] / wall_total_[c] : 0.0;
+  forEachCell(numCells(), threads_, [&](std::size_t c, std::size_t) {
+    double* terms = &neighbourhood_[c * 2 * S];
+    std::fill(terms, terms + 2 * S, 0.0);
+    for (std::size_t a = adjacent_start_[c]; a < adjacent_start_[c + 1]; ++a)
+      for (std::size_t s = 0; s < S; ++s) terms[s] += adjacent_measure_[a] * conc_[index(adjacent_cell_[a], s)];
+    for (std::size_t s = 0; s < S; ++s) terms[S + s] = wall_total_[c] > 0 ? terms[s] / wall_total_[c] : 0.0;
+  });
 }
 
 void NetworkSystem::rhs(double t, std::span<const double> y, std::span<double> ydot) {
   const std::size_t n = numCells(), S = numSpecies();
-  for (std::size_t c = 0; c < n; ++c)
+  prepareThreads();
+  const bool reactions = !reactions_[0]->empty(), gradient = pin_species_ >= 0 && !model_.pin.dynamic();
+  const auto p = static_cast<std::size_t>(std::max(pin_species_, 0));
+  const PinTransport& pin = model_.pin;
+  forEachCell(n, threads_, [&](std::size_t c, std::size_t) {
     for (std::size_t s = 0; s < S; ++s) conc_[index(c, s)] = y[index(c, s)] / graph_.measure[c];
-  // Reactions: the amount changes at measure * rate.
-  if (!reactions_->empty()) {
-    neighbourhoodTerms();
-    for (std::size_t c = 0; c < n; ++c) {
-      std::span<const double> conc(&conc_[index(c, 0)], S);
-      std::span<double> rate(&ydot[index(c, 0)], S);
-      evaluateReactions(t, c, conc, rate);
+    if (gradient) pin_weight_[c] = pinWeight(conc_[index(c, p)]);
+  });
+  if (reactions) neighbourhoodTerms();
+  if (gradient) pinDenominators();  // and pin_out_
+  // Cell by cell: its reactions (the amount changes at measure * rate), the passive exchange P L (c_i - c_j)
+  // from i to each neighbour j, and the PIN efflux T PIN_ij c_i from i to j and from j to i. A flux between
+  // two cells is computed the same way in both, so what one loses the other gains exactly.
+  forEachCell(n, threads_, [&](std::size_t c, std::size_t thread) {
+    std::span<double> rate(&ydot[index(c, 0)], S);
+    if (reactions) {
+      evaluateReactions(t, c, std::span<const double>(&conc_[index(c, 0)], S), rate, thread);
       for (std::size_t s = 0; s < S; ++s) rate[s] *= graph_.measure[c];
+    } else {
+      std::fill(rate.begin(), rate.end(), 0.0);
     }
-  } else {
-    std::fill(ydot.begin(), ydot.end(), 0.0);
-  }
-  // Passive exchange: P L (c_i - c_j) from i to j.
-  for (std::size_t s = 0; s < S; ++s) {
-    const double P = model_.species[s].permeability;
-    if (!(P > 0)) continue;
-    for (const NetworkInterface& f : graph_.interfaces) {
-      const auto i = static_cast<std::size_t>(f.cell_i), j = static_cast<std::size_t>(f.cell_j);
-      const double J = P * f.measure * (conc_[index(i, s)] - conc_[index(j, s)]);
-      ydot[index(i, s)] -= J;
-      ydot[index(j, s)] += J;
+    const std::size_t first = adjacent_start_[c], last = adjacent_start_[c + 1];
+    for (std::size_t s = 0; s < S; ++s) {
+      const double P = model_.species[s].permeability;
+      if (!(P > 0)) continue;
+      for (std::size_t a = first; a < last; ++a)
+        rate[s] -= P * adjacent_measure_[a] * (conc_[index(c, s)] - conc_[index(adjacent_cell_[a], s)]);
     }
-  }
+    if (gradient)
+      for (std::size_t a = first; a < last; ++a) {
+        const std::size_t j = adjacent_cell_[a];
+        rate[p] -= pin_out_[c] * adjacent_measure_[a] * pin_weight_[j];
+        rate[p] += pin_out_[j] * adjacent_measure_[a] * pin_weight_[c];
+      }
+  });
   if (model_.pin.dynamic()) {
     // PIN as a state: T L_ij (p_ij c_i - p_ji c_j) from i to j, and the densities' rates.
     const auto a = static_cast<std::size_t>(pin_species_);
-    const double T = model_.pin.rate;
+    const double T = pin.rate;
     for (std::size_t k = 0; k < graph_.interfaces.size(); ++k) {
       const NetworkInterface& f = graph_.interfaces[k];
       const auto i = static_cast<std::size_t>(f.cell_i), j = static_cast<std::size_t>(f.cell_j);
@@ -196,34 +264,19 @@ void NetworkSystem::rhs(double t, std::span<const double> y, std::span<double> y
     pinCellAmounts(y);
     for (std::size_t k = 0; k < graph_.interfaces.size(); ++k)
       for (int side = 0; side < 2; ++side) ydot[pinIndex(k, side)] = pinRate(t, k, side, y, nullptr);
-    return;
-  }
-  // PIN efflux: T PIN_ij c_i from i to j, both directions of every interface.
-  if (pin_species_ >= 0) {
-    const auto p = static_cast<std::size_t>(pin_species_);
-    const PinTransport& pin = model_.pin;
-    for (std::size_t c = 0; c < n; ++c) pin_weight_[c] = pin.weight(conc_[index(c, p)]);
-    pinDenominators();
-    for (std::size_t c = 0; c < n; ++c) {
-      if (!(pin_denominator_[c] > 0)) continue;
-      const double out = pin.rate * pin.total * conc_[index(c, p)] / pin_denominator_[c];
-      for (std::size_t f : neighbours_[c]) {
-        const auto j = static_cast<std::size_t>(other(graph_.interfaces[f], c));
-        const double J = out * graph_.interfaces[f].measure * pin_weight_[j];
-        ydot[index(c, p)] -= J;
-        ydot[index(j, p)] += J;
-      }
-    }
   }
 }
 
 void NetworkSystem::pinDenominators() {
-  for (std::size_t c = 0; c < numCells(); ++c) {
+  const auto p = static_cast<std::size_t>(pin_species_);
+  const double TP = model_.pin.rate * model_.pin.total;
+  forEachCell(numCells(), threads_, [&](std::size_t c, std::size_t) {
     double d = model_.pin.saturation;
-    for (std::size_t f : neighbours_[c])
-      d += graph_.interfaces[f].measure * pin_weight_[otherCell(graph_.interfaces[f], c)];
+    for (std::size_t a = adjacent_start_[c]; a < adjacent_start_[c + 1]; ++a)
+      d += adjacent_measure_[a] * pin_weight_[adjacent_cell_[a]];
     pin_denominator_[c] = d;
-  }
+    pin_out_[c] = d > 0 ? TP * conc_[index(c, p)] / d : 0.0;
+  });
 }
 
 void NetworkSystem::pinCellAmounts(std::span<const double> y) {
@@ -278,57 +331,55 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
   if (J.column.size() != pattern_.column.size()) J = pattern_;
   std::fill(J.value.begin(), J.value.end(), 0.0);
   const std::size_t n = numCells(), S = numSpecies();
-  for (std::size_t c = 0; c < n; ++c)
+  prepareThreads();
+  forEachCell(n, threads_, [&](std::size_t c, std::size_t) {
     for (std::size_t s = 0; s < S; ++s) conc_[index(c, s)] = y[index(c, s)] / graph_.measure[c];
-  // Reactions: d(V r_s)/dy_q = dr_s/dc_q, by central differences in the cell's concentrations.
-  if (!reactions_->empty()) {
+  });
+  // Reactions: d(V r_s)/dy_q = dr_s/dc_q, by central differences in the cell's concentrations; cell by cell
+  // (a cell's reactions only write its rows).
+  if (!reactions_[0]->empty()) {
     neighbourhoodTerms();
-    std::vector<double> cc(S), up(S), down(S);
     const double root = std::cbrt(std::numeric_limits<double>::epsilon());
-    for (std::size_t c = 0; c < n; ++c) {
+    forEachCell(n, threads_, [&](std::size_t c, std::size_t thread) {
+      std::vector<double> cc(S), up(S), down(S);
       for (std::size_t q = 0; q < S; ++q) cc[q] = conc_[index(c, q)];
       for (std::size_t q = 0; q < S; ++q) {
         const double h = root * std::max(std::abs(cc[q]), 1.0);
         const double keep = cc[q];
         cc[q] = keep + h;
-        evaluateReactions(t, c, cc, up);
+        evaluateReactions(t, c, cc, up, thread);
         cc[q] = keep - h;
-        evaluateReactions(t, c, cc, down);
+        evaluateReactions(t, c, cc, down, thread);
         cc[q] = keep;
         for (std::size_t s = 0; s < S; ++s) addAt(J, index(c, s), index(c, q), (up[s] - down[s]) / (2 * h));
       }
-    }
-    // Neighbourhood terms: d(V_c r_s)/dy_jq = V_c (dr_s/dsum_q + dr_s/dmean_q / W_c) L_cj / V_j, W_c = sum_j L_cj,
-    // the partial derivatives by central differences in sum_q and mean_q.
-    if (!neighbourhood_.empty()) {
-      std::vector<double> nb(2 * S), dsum(S), dmean(S);
-      for (std::size_t c = 0; c < n; ++c) {
-        for (std::size_t q = 0; q < S; ++q) cc[q] = conc_[index(c, q)];
-        std::copy_n(&neighbourhood_[c * 2 * S], 2 * S, nb.begin());
-        for (std::size_t q = 0; q < S; ++q) {
-          if (!reactions_->usesNeighbourhood(q)) continue;
-          for (std::size_t which = 0; which < 2; ++which) {
-            const std::size_t v = which * S + q;
-            const double h = root * std::max(std::abs(nb[v]), 1.0);
-            const double keep = nb[v];
-            nb[v] = keep + h;
-            evaluateReactions(t, c, cc, up, nb);
-            nb[v] = keep - h;
-            evaluateReactions(t, c, cc, down, nb);
-            nb[v] = keep;
-            for (std::size_t s = 0; s < S; ++s) (which == 0 ? dsum : dmean)[s] = (up[s] - down[s]) / (2 * h);
-          }
-          for (std::size_t f : neighbours_[c]) {
-            const std::size_t j = otherCell(graph_.interfaces[f], c);
-            const double L = graph_.interfaces[f].measure;
-            for (std::size_t s = 0; s < S; ++s) {
-              const double per_c = dsum[s] + (wall_total_[c] > 0 ? dmean[s] / wall_total_[c] : 0.0);
-              addAt(J, index(c, s), index(j, q), graph_.measure[c] * per_c * L / graph_.measure[j]);
-            }
+      // Neighbourhood terms: d(V_c r_s)/dy_jq = V_c (dr_s/dsum_q + dr_s/dmean_q / W_c) L_cj / V_j,
+      // W_c = sum_j L_cj, the partial derivatives by central differences in sum_q and mean_q.
+      if (neighbourhood_.empty()) return;
+      std::vector<double> nb(&neighbourhood_[c * 2 * S], &neighbourhood_[c * 2 * S] + 2 * S), dsum(S), dmean(S);
+      for (std::size_t q = 0; q < S; ++q) {
+        if (!reactions_[0]->usesNeighbourhood(q)) continue;
+        for (std::size_t which = 0; which < 2; ++which) {
+          const std::size_t v = which * S + q;
+          const double h = root * std::max(std::abs(nb[v]), 1.0);
+          const double keep = nb[v];
+          nb[v] = keep + h;
+          evaluateReactions(t, c, cc, up, thread, nb);
+          nb[v] = keep - h;
+          evaluateReactions(t, c, cc, down, thread, nb);
+          nb[v] = keep;
+          for (std::size_t s = 0; s < S; ++s) (which == 0 ? dsum : dmean)[s] = (up[s] - down[s]) / (2 * h);
+        }
+        for (std::size_t f : neighbours_[c]) {
+          const std::size_t j = otherCell(graph_.interfaces[f], c);
+          const double L = graph_.interfaces[f].measure;
+          for (std::size_t s = 0; s < S; ++s) {
+            const double per_c = dsum[s] + (wall_total_[c] > 0 ? dmean[s] / wall_total_[c] : 0.0);
+            addAt(J, index(c, s), index(j, q), graph_.measure[c] * per_c * L / graph_.measure[j]);
           }
         }
       }
-    }
+    });
   }
   for (std::size_t s = 0; s < S; ++s) {
     const double P = model_.species[s].permeability;
@@ -386,8 +437,8 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
     const auto p = static_cast<std::size_t>(pin_species_);
     const PinTransport& pin = model_.pin;
     for (std::size_t c = 0; c < n; ++c) {
-      pin_weight_[c] = pin.weight(conc_[index(c, p)]);
-      pin_weight_derivative_[c] = pin.weightDerivative(conc_[index(c, p)]);
+      pin_weight_[c] = pinWeight(conc_[index(c, p)]);
+      pin_weight_derivative_[c] = pinWeightDerivative(conc_[index(c, p)]);
     }
     pinDenominators();
     const double TP = pin.rate * pin.total;
@@ -432,7 +483,7 @@ std::vector<PinSides> NetworkSystem::pin(std::span<const double> y) const {
   const PinTransport& pin = model_.pin;
   const std::size_t n = numCells();
   std::vector<double> w(n), D(n, pin.saturation);
-  for (std::size_t c = 0; c < n; ++c) w[c] = pin.weight(y[index(c, p)] / graph_.measure[c]);
+  for (std::size_t c = 0; c < n; ++c) w[c] = pinWeight(y[index(c, p)] / graph_.measure[c]);
   for (const NetworkInterface& f : graph_.interfaces) {
     D[static_cast<std::size_t>(f.cell_i)] += f.measure * w[static_cast<std::size_t>(f.cell_j)];
     D[static_cast<std::size_t>(f.cell_j)] += f.measure * w[static_cast<std::size_t>(f.cell_i)];

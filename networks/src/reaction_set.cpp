@@ -17,14 +17,11 @@ ReactionSet::ReactionSet(const NetworkModel& model)
       props_(model.cell_properties.size(), 0.0),
       neighbourhood_(2 * model.species.size(), 0.0),
       uses_sum_(model.species.size(), false),
-      uses_mean_(model.species.size(), false),
-      params_(model.parameters.size(), 0.0) {
+      uses_mean_(model.species.size(), false) {
   for (const NetworkSpecies& s : model.species) {
     species_.push_back(s.name);
     expressions_.push_back(s.reaction);
   }
-  std::size_t p = 0;
-  for (const auto& [name, value] : model.parameters) params_[p++] = value;
   for (std::size_t s = 0; s < model.species.size(); ++s) {
     if (model.species[s].reaction.empty()) continue;
     auto parser = std::make_unique<mu::Parser>();
@@ -34,8 +31,8 @@ ReactionSet::ReactionSet(const NetworkModel& model)
         parser->DefineVar("sum_" + species_[v], &neighbourhood_[v]);
         parser->DefineVar("mean_" + species_[v], &neighbourhood_[species_.size() + v]);
       }
-      std::size_t k = 0;
-      for (const auto& [name, value] : model.parameters) parser->DefineVar(name, &params_[k++]);
+      // The parameters do not change: as constants, muparser folds what only depends on them.
+      for (const auto& [name, value] : model.parameters) parser->DefineConst(name, value);
       for (std::size_t v = 0; v < properties_.size(); ++v) parser->DefineVar(properties_[v], &props_[v]);
       parser->DefineVar("measure", &measure_);
       parser->DefineVar("x", &x_);

@@ -11,7 +11,9 @@
 // y[numCells() * S + 2 k + side], the density on cell_i's (side 0) and on
 // cell_j's (side 1) side of interface k. Equations: docs/networks.md.
 //
-// Not thread-safe (the reactions' muparser variables are members).
+// Not thread-safe (the reactions' muparser variables are members); rhs() and jacobian() can split
+// their work over OpenMP threads cell by cell (setThreads), with results that do not depend on the
+// number of threads.
 
 #include <array>
 #include <cstddef>
@@ -80,6 +82,11 @@ class NetworkSystem {
     return numSpecies() * numCells() + 2 * k + static_cast<std::size_t>(side);
   }
 
+  /// The number of OpenMP threads rhs() and jacobian() split their cells over (0: OpenMP's default);
+  /// 1 at construction. The results are the same for any number.
+  void setThreads(std::size_t threads);
+  std::size_t threads() const { return threads_; }
+
   /// dy/dt at (t, y) into ydot (both of size()). A reaction rate that is not
   /// finite is an InputError naming the species, the cell and the values.
   void rhs(double t, std::span<const double> y, std::span<double> ydot);
@@ -110,10 +117,16 @@ class NetworkSystem {
 
  private:
   bool inPattern(std::size_t r, std::size_t c) const;
-  void pinDenominators();  // pin_denominator_ from pin_weight_
-  // The reactions of one cell; `neighbourhood` empty: the cell's values in neighbourhood_.
+  void pinDenominators();  // pin_denominator_ from pin_weight_, and pin_out_
+  // One ReactionSet and property buffer per OpenMP thread (muparser's variables are per parser).
+  void prepareThreads();
+  // The reactions of one cell, with thread `thread`'s parser; `neighbourhood` empty: the cell's values in
+  // neighbourhood_.
   void evaluateReactions(double t, std::size_t cell, std::span<const double> conc, std::span<double> rate,
-                         std::span<const double> neighbourhood = {});
+                         std::size_t thread, std::span<const double> neighbourhood = {});
+  // up_the_gradient's f(c) and f'(c) (the exponential as exp(c ln b)).
+  double pinWeight(double c) const;
+  double pinWeightDerivative(double c) const;
   void neighbourhoodTerms();  // neighbourhood_ from conc_
   // Dynamic PIN: pin_cell_ from y; the rate of the density on `side` of interface k and, if `partial`, its
   // derivatives with respect to the PinExpression arguments.
@@ -122,12 +135,19 @@ class NetworkSystem {
 
   NetworkModel model_;
   NetworkGraph graph_;
-  std::unique_ptr<ReactionSet> reactions_;
+  std::vector<std::unique_ptr<ReactionSet>> reactions_;  // per thread
   std::vector<std::vector<std::size_t>> neighbours_;       // per cell: interface indices
+  // The same in compressed rows: cell c's neighbours adjacent_cell_[k] and interface measures
+  // adjacent_measure_[k] for k in [adjacent_start_[c], adjacent_start_[c + 1]), in neighbours_ order.
+  std::vector<std::size_t> adjacent_start_, adjacent_cell_;
+  std::vector<double> adjacent_measure_;
   CsrMatrix pattern_;
   JacobianKind jacobian_kind_ = JacobianKind::Exact;
   int pin_species_ = -1;
   std::vector<double> pin_denominator_, pin_weight_, pin_weight_derivative_, conc_;
+  std::vector<double> pin_out_;  // per cell: T P_tot c_i / D_i, the efflux per unit L_ij f(c_j)
+  double log_base_ = 0.0;        // ln b of the exponential PIN weight
+  std::size_t threads_ = 1;
   std::unique_ptr<PinExpression> pin_expression_;
   bool pin_cell_coupled_ = false;  // a PIN rate reads every PIN of its cell (bounded, or pin_cell in the expression)
   std::vector<double> pin_cell_;   // per cell: sum_k L_ik p_ik
@@ -135,7 +155,7 @@ class NetworkSystem {
   // the cell's summed interface measure.
   std::vector<double> neighbourhood_, wall_total_;
   std::vector<const std::vector<double>*> property_columns_;  // the model's cell properties in the graph
-  std::vector<double> property_values_;                       // one cell's values of them
+  std::vector<std::vector<double>> property_values_;          // per thread, one cell's values of them
 };
 
 }  // namespace tessella::networks

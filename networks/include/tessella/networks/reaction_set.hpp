@@ -51,7 +51,6 @@ class ReactionSet {
   std::vector<double> conc_, props_, neighbourhood_;
   std::vector<bool> uses_sum_, uses_mean_;
   double t_ = 0, measure_ = 0, x_ = 0, y_ = 0, z_ = 0;
-  std::vector<double> params_;
   std::vector<std::unique_ptr<mu::Parser>> parsers_;
   std::vector<std::size_t> target_;
 };
