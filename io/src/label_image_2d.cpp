@@ -586,6 +586,28 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
   std::vector<char> junction(n_verts, 0);
   for (std::size_t v = 0; v < n_verts; ++v)
     junction[v] = degree[v] != 2 || pairOf(incident[v][0]) != pairOf(incident[v][1]);
+  // The edge that follows each edge around each of its two cells: follow[e][0] leaves v, the end of e, along the
+  // left cell of e (which runs u -> v); follow[e][1] leaves u along the right cell (v -> u); -1 if there is none.
+  // At a vertex of two edges, the other edge. Both walks below (walls, outlines) then read two arrays indexed
+  // by the edge instead of chasing the vertex's incidence: in parallel, each edge writes its own entry.
+  std::vector<std::array<std::int32_t, 2>> follow(n_edges);
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t ee = 0; ee < static_cast<std::ptrdiff_t>(n_edges); ++ee) {
+    const auto e = static_cast<std::int32_t>(ee);
+    for (int side = 0; side < 2; ++side) {
+      const std::int32_t v = side == 0 ? edges[e].v : edges[e].u, ci = side == 0 ? edges[e].left : edges[e].right;
+      std::int32_t f = -1;
+      if (degree[v] == 2) {
+        f = incident[v][incident[v][0] == e];
+      } else {
+        for (int j = 0; j < degree[v] && f < 0; ++j) {
+          const std::int32_t g = incident[v][j];
+          if ((edges[g].left == ci && edges[g].u == v) || (edges[g].right == ci && edges[g].v == v)) f = g;
+        }
+      }
+      follow[e][side] = f;
+    }
+  }
 
   // Walls: chains of edges between junctions; a closed chain without one starts at its first vertex.
   Walls walls;
@@ -597,10 +619,11 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
     std::int32_t v = start, e = e0;
     for (;;) {
       edge_wall[e] = wi;
-      v = edges[e].u == v ? edges[e].v : edges[e].u;
+      const bool forward = edges[e].u == v;  // arriving at v, the end of e: follow[e][0] is the other edge there
+      v = forward ? edges[e].v : edges[e].u;
       walls.chain.push_back(v);
       if (junction[v]) break;
-      e = incident[v][0] == e ? incident[v][1] : incident[v][0];
+      e = follow[e][forward ? 0 : 1];
     }
     walls.off.push_back(static_cast<std::int32_t>(walls.chain.size()));
     walls.tol.push_back(o.simplify);
@@ -642,28 +665,41 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
   outlines.off = cell_edges.off;
   outlines.items.resize(cell_edges.items.size());
   std::vector<std::uint8_t> outline_fault(n_cells, 0);
-#pragma omp parallel for schedule(dynamic, 512)
-  for (std::ptrdiff_t cc = 0; cc < static_cast<std::ptrdiff_t>(n_cells); ++cc) {
-    const auto c = static_cast<std::size_t>(cc);
-    const auto ci = static_cast<std::int32_t>(c);
-    const std::int32_t begin = cell_edges.off[c], count = cell_edges.off[c + 1] - begin;
-    const std::int32_t e0 = cell_edges.items[static_cast<std::size_t>(begin)];
-    std::int32_t k = 0, e = e0;
-    do {
-      const bool left = edges[e].left == ci;
-      outlines.items[static_cast<std::size_t>(begin + k++)] = left ? edges[e].u : edges[e].v;
-      const std::int32_t v = left ? edges[e].v : edges[e].u;
-      if (degree[v] == 2) {  // the other edge
-        e = incident[v][incident[v][0] == e];
-        continue;
-      }
-      e = -1;  // the cell's edge leaving v: one at most, as pinched corners are bridged
-      for (int j = 0; j < degree[v] && e < 0; ++j) {
-        const std::int32_t f = incident[v][j];
-        if ((edges[f].left == ci && edges[f].u == v) || (edges[f].right == ci && edges[f].v == v)) e = f;
-      }
-    } while (e >= 0 && e != e0 && k < count);
-    outline_fault[c] = e != e0 || k > count ? 2 : k < count ? 1 : 0;
+  // Each step of a walk waits for a load from memory (the edges are far apart): a block of cells is walked
+  // kLanes at a time, one step of each in turn, so that their loads overlap. Each cell's walk is its own.
+  {
+    constexpr std::size_t kBlock = 512;
+    constexpr int kLanes = 8;
+    const auto n_blocks = static_cast<std::ptrdiff_t>((n_cells + kBlock - 1) / kBlock);
+#pragma omp parallel for schedule(dynamic, 1)
+    for (std::ptrdiff_t blk = 0; blk < n_blocks; ++blk) {
+      struct Lane {
+        std::int32_t c = -1, begin = 0, count = 0, e0 = 0, e = 0, k = 0;
+      };
+      std::array<Lane, kLanes> lanes;
+      std::size_t c_next = static_cast<std::size_t>(blk) * kBlock;
+      const std::size_t c_end = std::min(n_cells, c_next + kBlock);
+      auto start = [&](Lane& l) {
+        if (c_next == c_end) return false;
+        const std::size_t c = c_next++;
+        l.c = static_cast<std::int32_t>(c), l.begin = cell_edges.off[c], l.count = cell_edges.off[c + 1] - l.begin;
+        l.e = l.e0 = cell_edges.items[static_cast<std::size_t>(l.begin)], l.k = 0;
+        return true;
+      };
+      int active = 0;
+      for (Lane& l : lanes) active += start(l);
+      while (active > 0)
+        for (Lane& l : lanes) {
+          if (l.c < 0) continue;
+          // The cell's edge leaving each vertex: one at most, as pinched corners are bridged.
+          const bool left = edges[l.e].left == l.c;
+          outlines.items[static_cast<std::size_t>(l.begin + l.k++)] = left ? edges[l.e].u : edges[l.e].v;
+          l.e = follow[l.e][left ? 0 : 1];
+          if (l.e >= 0 && l.e != l.e0 && l.k < l.count) continue;
+          outline_fault[static_cast<std::size_t>(l.c)] = l.e != l.e0 || l.k > l.count ? 2 : l.k < l.count ? 1 : 0;
+          if (!start(l)) l.c = -1, --active;
+        }
+    }
   }
   for (std::size_t c = 0; c < n_cells; ++c) {
     if (!outline_fault[c]) continue;
@@ -718,6 +754,7 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
                      "(min_cell_size with small_cells: merge), or make the hole part of the cell");
   }
   Csr<std::int32_t>().items.swap(cell_edges.items);
+  std::vector<std::array<std::int32_t, 2>>().swap(follow);
 
   // Simplify, then make sure no two walls cross and no cell flattens.
   std::vector<char> keep(junction.begin(), junction.end());
