@@ -8,9 +8,11 @@
 // 3D rows, one per volume method:
 //   cell_by_cell   "alone" is TetGen run on each cell's closed surface of wall
 //                  triangles (taken from the mesh), one cell after another in
-//                  this process, with the switches of the mesher's first try:
-//                  the TetGen share of the method. (The mesher runs the cells
-//                  in worker processes side by side.)
+//                  this process, with the switches of the mesher's first try
+//                  but without its enclosing cube (a run that crashes in the
+//                  cube would end the bench; the mesher's worker processes
+//                  survive it): TetGen as the mesher ran it before the cube.
+//                  (The mesher runs the cells in worker processes side by side.)
 //   whole_tissue   "alone" is TetGen on all walls as polygons, as before;
 //                  only up to 1000 cells (it grows quadratically, see
 //                  docs/meshing.md).
@@ -19,6 +21,10 @@
 //
 //   mesh_bench [max_cells_2d [max_cells_3d]]     defaults: 100000 10000
 //   mesh_bench --quick                           the smallest sizes only (1000 2D, 100 3D)
+//   mesh_bench --cell-by-cell N [--no-alone]     the 3D cell-by-cell row alone, at N cells
+//                                                (OMP_NUM_THREADS sets the mesher's worker processes)
+// 3D rows also print the CPU time of the mesher (this process and its worker
+// processes), which a busy shared machine disturbs less than wall-clock.
 
 #include <algorithm>
 #include <chrono>
@@ -28,6 +34,9 @@
 #include <cstring>
 #include <string>
 #include <vector>
+
+#include <omp.h>
+#include <sys/resource.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
@@ -107,7 +116,7 @@ std::size_t tetgenPerCellAlone(const Tissue& t, const FeMesh& mesh, const MeshOp
   std::vector<std::vector<int>> cell_facets(t.cellSlots());
   for (int f = 0; f < mesh.numWallFacets(); ++f)
     for (CellId c : t.wallCells(WallId(static_cast<Index>(mesh.facet_wall(f))))) cell_facets[c.index()].push_back(f);
-  std::string sw = mesh::detail::tetgenSwitches("pYzQT1e-7", o);  // the mesher's first try
+  std::string sw = mesh::detail::tetgenSwitches("pYzQT1e-7", o);  // the mesher's first try, without the cube
   std::size_t tets = 0;
   std::vector<int> local(static_cast<std::size_t>(mesh.numNodes()), -1);
   for (CellId c : t.cells()) {
@@ -165,7 +174,7 @@ std::string tetQuality(const FeMesh& mesh, double ratio_bound) {
   }
   const double n = static_cast<double>(std::max<int>(1, mesh.numElements()));
   char text[128];
-  std::snprintf(text, sizeof text, "  ratio>%.2g %.1f%%  dihedral<10 %.2f%%  min dihedral %.2f", ratio_bound,
+  std::snprintf(text, sizeof text, "  ratio>%.2g %.2f%%  dihedral<10 %.3f%%  min dihedral %.3f", ratio_bound,
                 100.0 * static_cast<double>(bad) / n, 100.0 * static_cast<double>(slivers) / n, smallest);
   return text;
 }
@@ -185,11 +194,74 @@ void row(const char* kind, std::size_t cells, std::size_t elements, double t_tes
                        target_overhead);
 }
 
+
+/// CPU seconds of this process and its waited-for children (the mesher's
+/// worker processes) so far.
+double cpuSeconds() {
+  double total = 0;
+  for (const int who : {RUSAGE_SELF, RUSAGE_CHILDREN}) {
+    rusage u{};
+    getrusage(who, &u);
+    total += static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
+             1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
+  }
+  return total;
+}
+
+/// The 3D rows: a Voronoi box of n cells meshed by `method`, then (with
+/// `alone`) the mesher alone on the same input, and the quality columns.
+void row3d(std::size_t n, VolumeMethod method, bool alone) {
+  const double side = std::cbrt(static_cast<double>(n));
+  const Box box{Vec3::Zero(), Vec3::Constant(side)};
+  const Tissue t = voronoiTissue(randomSeeds(box, n, 3), box);
+  const bool by_cell = method == VolumeMethod::CellByCell;
+  MeshOptions o;
+  o.radius_edge_ratio = 1.5;
+  o.max_volume = 0.02;  // at least 50 tetrahedra per cell
+  o.volume_method = method;
+  const double cpu0 = cpuSeconds();
+  auto a = Clock::now();
+  FeMesh mesh;
+  try {
+    mesh = meshTissue(t, o);
+  } catch (const GeometryError& e) {
+    // Reported, not fatal: the rest of the table still means something.
+    std::printf("3D       %8zu cells  not meshed: %s\n", t.numCells(), e.what());
+    return;
+  }
+  auto b = Clock::now();
+  const double cpu = cpuSeconds() - cpu0;
+  const std::size_t alone_elements = !alone ? 0 : by_cell ? tetgenPerCellAlone(t, mesh, o) : tetgenAlone(t, o);
+  auto c = Clock::now();
+  row(by_cell ? "3D cells" : "3D whole", t.numCells(), static_cast<std::size_t>(mesh.numElements()), seconds(a, b),
+      alone ? seconds(b, c) : 0.0, alone_elements, by_cell ? "mesh.3d_cell_by_cell" : "mesh.3d_whole");
+  // issue #19: 10^4 cells cell by cell within 60 s
+  if (by_cell && n == 10000) bench::printFigure("mesh.3d_cell_by_cell.10000cells.time", seconds(a, b), "s", 60.0);
+  std::printf("         cpu %.3f s (this process and its workers)  %s\n", cpu,
+              tetQuality(mesh, o.radius_edge_ratio).c_str());
+  std::fflush(stdout);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  const char* usage = "mesh_bench [max_cells_2d [max_cells_3d]] | --quick   (defaults 100000 10000)";
+  const char* usage =
+      "mesh_bench [max_cells_2d [max_cells_3d]] | --quick | --cell-by-cell N [--no-alone]   (defaults 100000 10000)";
   if (bench::helpRequested(argc, argv, usage)) return 0;
+  if (argc > 1 && std::strcmp(argv[1], "--cell-by-cell") == 0) {
+    // The 3D cell-by-cell row alone, at N cells (with or without TetGen alone).
+    const std::size_t n = bench::countArgument(argc, argv, 2, "N", 1000, 1, 1000000, usage);
+    const bool no_alone = argc > 3 && std::strcmp(argv[3], "--no-alone") == 0;
+    if (argc > 4 || (argc == 4 && !no_alone)) {
+      std::fprintf(stderr, "%s: unexpected argument '%s'; usage: %s\n", argv[0], argv[argc - 1], usage);
+      return 2;
+    }
+    std::printf("mesh_bench: 3D Voronoi box, unit mean cell size, cell by cell, %d worker processes; "
+                "wall-clock, one run\n",
+                omp_get_max_threads());
+    row3d(n, VolumeMethod::CellByCell, !no_alone);
+    return 0;
+  }
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
   const std::size_t max2d = quick ? 1000 : bench::countArgument(argc, argv, 1, "max_cells_2d", 100000, 0, 10000000, usage);
   const std::size_t max3d = quick ? 100 : bench::countArgument(argc, argv, 2, "max_cells_3d", 10000, 0, 1000000, usage);
@@ -236,37 +308,11 @@ int main(int argc, char** argv) {
     row("surface", t.numCells(), static_cast<std::size_t>(mesh.numElements()), seconds(a, b), 0, 0);
   }
   for (std::size_t n = 100; n <= max3d; n *= 10) {
-    const double side = std::cbrt(static_cast<double>(n));
-    const Box box{Vec3::Zero(), Vec3::Constant(side)};
-    const Tissue t = voronoiTissue(randomSeeds(box, n, 3), box);
-    for (const VolumeMethod method : {VolumeMethod::CellByCell, VolumeMethod::WholeTissue}) {
-      const bool by_cell = method == VolumeMethod::CellByCell;
-      if (!by_cell && n > 1000) {
-        std::printf("3D whole %8zu cells  skipped: TetGen 1.5 on all walls grows quadratically (docs/meshing.md)\n", n);
-        continue;
-      }
-      MeshOptions o;
-      o.radius_edge_ratio = 1.5;
-      o.max_volume = 0.02;  // at least 50 tetrahedra per cell
-      o.volume_method = method;
-      auto a = Clock::now();
-      FeMesh mesh;
-      try {
-        mesh = meshTissue(t, o);
-      } catch (const GeometryError& e) {
-        // Reported, not fatal: the rest of the table still means something.
-        std::printf("3D       %8zu cells  not meshed: %s\n", t.numCells(), e.what());
-        continue;
-      }
-      auto b = Clock::now();
-      const std::size_t alone = by_cell ? tetgenPerCellAlone(t, mesh, o) : tetgenAlone(t, o);
-      auto c = Clock::now();
-      row(by_cell ? "3D cells" : "3D whole", t.numCells(), static_cast<std::size_t>(mesh.numElements()), seconds(a, b),
-          seconds(b, c), alone, by_cell ? "mesh.3d_cell_by_cell" : "mesh.3d_whole");
-      // issue #19: 10^4 cells cell by cell within 60 s
-      if (by_cell && n == 10000) bench::printFigure("mesh.3d_cell_by_cell.10000cells.time", seconds(a, b), "s", 60.0);
-      std::printf("         %s\n", tetQuality(mesh, o.radius_edge_ratio).c_str());
-    }
+    row3d(n, VolumeMethod::CellByCell, true);
+    if (n > 1000)
+      std::printf("3D whole %8zu cells  skipped: TetGen 1.5 on all walls grows quadratically (docs/meshing.md)\n", n);
+    else
+      row3d(n, VolumeMethod::WholeTissue, true);
   }
   return 0;
 }

@@ -22,6 +22,19 @@
 // planar wall are coplanar only up to rounding, so neighbouring wall
 // triangles meet at folds of ~1e-16 that the coplanarity tolerance decides
 // about: a cell whose run fails is tried again with the next tolerance.
+//
+// Enclosing cube: every point TetGen is given lies on the cell's boundary,
+// most of them on a few planes. Inserted one by one into a Delaunay
+// tetrahedralization, each such point is coplanar with faces of the convex
+// hull built so far, and TetGen's hull insertion decides those ties with
+// exact arithmetic (Shewchuk's adaptive insphere falling through to its
+// exact stages): on Voronoi cells that was 60 % of TetGen's time, the
+// quality refinement included. So the first try adds the 8 corners of a
+// cube around the cell, twice its size: the hull is then the cube, the wall
+// points are inserted inside it, and the tetrahedra outside the walls are
+// removed with the rest of the exterior (docs/meshing.md, figures). The
+// corners are no vertices of the cell's mesh (checked). A cell whose runs
+// with the cube fail is tried again without it, with the tolerances below.
 
 #include "volume_methods.hpp"
 
@@ -29,6 +42,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -58,11 +72,21 @@ double wallEdgeBound(const MeshOptions& o) {
   return 0.0;
 }
 
-/// Coplanarity tolerances (TetGen -T) to try, in order, for a cell whose
-/// TetGen run fails: the default (1e-8) failed on some Voronoi cells with
-/// short edges (never-ending flips, failed assertions) where 1e-7 worked,
-/// and 1e-6 merges the ends of edges shorter than 1e-6 x the cell's size.
-constexpr const char* kTolerances[] = {"T1e-7", "", "T1e-9", "T1e-6"};
+/// One TetGen try for a cell: a coplanarity tolerance (TetGen -T), with or
+/// without the enclosing cube (above).
+struct Attempt {
+  const char* tolerance;
+  bool enclose;
+};
+/// Tries, in order, for a cell whose TetGen run fails: with the cube, then
+/// without it as before the cube: the default tolerance (1e-8) failed on some
+/// Voronoi cells with short edges (never-ending flips, failed assertions)
+/// where 1e-7 worked, and 1e-6 merges the ends of edges shorter than 1e-6 x
+/// the cell's size.
+constexpr Attempt kAttempts[] = {{"T1e-7", true}, {"T1e-7", false}, {"", false}, {"T1e-9", false}, {"T1e-6", false}};
+/// Relative difference allowed between the volume of a cell's tetrahedra and
+/// the volume its wall triangles enclose (docs/meshing.md: 1e-9 per cell).
+constexpr double kVolumeTolerance = 1e-9;
 /// A cell's TetGen run normally takes milliseconds; one this slow is stuck.
 constexpr double kCellTimeoutSeconds = 60.0;
 
@@ -93,15 +117,22 @@ CellMesh deserialize(const std::string& bytes) {
 
 /// `local_of` is scratch: one -1 per wall-mesh node, left as found.
 CellMesh meshCell(const Tissue& t, const WallSurfaceMesh& wm, CellId c, const Vec3& seed, const std::string& switches,
-                  std::vector<int>& local_of) {
+                  bool enclose, std::vector<int>& local_of) {
   const auto cellError = [&](const std::string& what) {
     return GeometryError("cell-by-cell mesher: cell " + std::to_string(c.index()) + ": " + what, ElementId{3, c.index()});
   };
   std::vector<int> global;  // local point -> wall-mesh node
   std::vector<std::array<int, 3>> triangles;
+  double volume6 = 0;  // six times the cell's volume, from its outward wall triangles
+  Vec3 origin = Vec3::Zero();
   for (OrientedFace of : t.topology().volumeFaces(handle_cast<VolumeId>(c))) {
     const std::size_t w = of.handle().index();
     for (std::size_t k = wm.wall_begin[w]; k < wm.wall_begin[w + 1]; ++k) {
+      const auto& [a, b, d] = wm.triangles[k];
+      if (triangles.empty()) origin = wm.nodes[static_cast<std::size_t>(a)];
+      const auto at = [&](int n) { return Vec3(wm.nodes[static_cast<std::size_t>(n)] - origin); };
+      const double v6 = at(a).dot(at(b).cross(at(d)));
+      volume6 += of.reversed() ? -v6 : v6;
       std::array<int, 3> tri{};
       for (std::size_t j = 0; j < 3; ++j) {
         int& local = local_of[static_cast<std::size_t>(wm.triangles[k][j])];
@@ -116,12 +147,28 @@ CellMesh meshCell(const Tissue& t, const WallSurfaceMesh& wm, CellId c, const Ve
   }
   for (int g : global) local_of[static_cast<std::size_t>(g)] = -1;
 
+  // The cube's corners (when `enclose`) follow the wall points.
+  const std::size_t corners = enclose ? 8 : 0;
   tetgenio in, out;
   in.firstnumber = 0;
-  in.numberofpoints = static_cast<int>(global.size());
-  in.pointlist = new REAL[global.size() * 3];
-  for (std::size_t i = 0; i < global.size(); ++i)
-    for (std::size_t k = 0; k < 3; ++k) in.pointlist[3 * i + k] = wm.nodes[static_cast<std::size_t>(global[i])](static_cast<Eigen::Index>(k));
+  in.numberofpoints = static_cast<int>(global.size() + corners);
+  in.pointlist = new REAL[(global.size() + corners) * 3];
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (std::size_t i = 0; i < global.size(); ++i) {
+    const Vec3& x = wm.nodes[static_cast<std::size_t>(global[i])];
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+    for (std::size_t k = 0; k < 3; ++k) in.pointlist[3 * i + k] = x(static_cast<Eigen::Index>(k));
+  }
+  // Centred on the cell's bounding box, half-side twice its largest half-extent.
+  const Vec3 centre = 0.5 * (lo + hi);
+  const double half = (hi - lo).maxCoeff();
+  std::array<Vec3, 8> corner;
+  for (std::size_t j = 0; j < corners; ++j) {
+    for (Eigen::Index k = 0; k < 3; ++k) corner[j](k) = centre(k) + ((j >> k) & 1U ? half : -half);
+    for (std::size_t k = 0; k < 3; ++k)
+      in.pointlist[3 * (global.size() + j) + k] = corner[j](static_cast<Eigen::Index>(k));
+  }
   in.numberoffacets = static_cast<int>(triangles.size());
   in.facetlist = new tetgenio::facet[triangles.size()];
   for (std::size_t f = 0; f < triangles.size(); ++f)
@@ -132,7 +179,10 @@ CellMesh meshCell(const Tissue& t, const WallSurfaceMesh& wm, CellId c, const Ve
 
   // -Y: the walls must come back exactly as given (TetGen may not split or
   // merge them, or the neighbour's copy of a wall would no longer match).
-  const int inputs = in.numberofpoints;
+  // TetGen drops the cube's corners from its output once the tetrahedra
+  // outside the walls are removed, so its points are the wall points, in
+  // their order, then the points it added.
+  const int inputs = static_cast<int>(global.size());
   const auto sorted = [](std::array<int, 3> tri) {
     std::sort(tri.begin(), tri.end());
     return tri;
@@ -147,6 +197,8 @@ CellMesh meshCell(const Tissue& t, const WallSurfaceMesh& wm, CellId c, const Ve
     throw cellError("TetGen changed the cell's wall triangles (" + std::to_string(triangles.size()) + " given, " +
                     std::to_string(out.numberoftrifaces) + " returned, " +
                     std::to_string(std::max(0, out.numberofpoints - inputs)) + " points added)");
+  if (!std::equal(in.pointlist, in.pointlist + 3 * inputs, out.pointlist))
+    throw cellError("TetGen renumbered the cell's wall points");
 
   CellMesh cm;
   std::vector<int> added_of(static_cast<std::size_t>(out.numberofpoints - inputs), -1);
@@ -156,18 +208,29 @@ CellMesh meshCell(const Tissue& t, const WallSurfaceMesh& wm, CellId c, const Ve
     if (a < 0) {
       a = static_cast<int>(cm.added.size());
       cm.added.emplace_back(out.pointlist[3 * p], out.pointlist[3 * p + 1], out.pointlist[3 * p + 2]);
+      for (std::size_t j = 0; j < corners; ++j)
+        if (cm.added.back() == corner[j])
+          throw cellError("a tetrahedron of the cell reaches a corner of the enclosing cube");
     }
     return -a - 1;
   };
   const auto position = [&](int p) { return Vec3(out.pointlist[3 * p], out.pointlist[3 * p + 1], out.pointlist[3 * p + 2]); };
+  double tets6 = 0;  // six times the tetrahedra's volume
   for (int e = 0; e < out.numberoftetrahedra; ++e) {
     if (std::lround(out.tetrahedronattributelist[e * out.numberoftetrahedronattributes]) != 1) continue;  // a cavity
     std::array<int, 4> p{};
     for (int k = 0; k < 4; ++k) p[static_cast<std::size_t>(k)] = out.tetrahedronlist[e * out.numberofcorners + k];
     const Vec3 a = position(p[0]);
-    if ((position(p[1]) - a).dot((position(p[2]) - a).cross(position(p[3]) - a)) < 0) std::swap(p[2], p[3]);
+    const double v6 = (position(p[1]) - a).dot((position(p[2]) - a).cross(position(p[3]) - a));
+    if (v6 < 0) std::swap(p[2], p[3]);
+    tets6 += std::abs(v6);
     cm.tets.push_back({node(p[0]), node(p[1]), node(p[2]), node(p[3])});
   }
+  // The tetrahedra must fill the cell, neither more nor less (the walls of
+  // an enclosed cavity are the cell's walls too, so its volume is not counted).
+  if (!(std::abs(tets6 - volume6) <= kVolumeTolerance * std::abs(volume6)))
+    throw cellError("TetGen's tetrahedra add up to a volume of " + std::to_string(tets6 / 6) +
+                    ", the cell's walls enclose " + std::to_string(volume6 / 6));
   return cm;
 }
 
@@ -185,19 +248,19 @@ FeMesh meshCellByCell(const Tissue& t, const MeshOptions& options, const WallTri
   for (std::size_t i = 0; i < cells.size(); ++i) todo[i] = i;
   std::vector<std::string> failures(cells.size());
   std::vector<int> local_of(wm.nodes.size(), -1);  // each worker's own copy
-  for (const char* tolerance : kTolerances) {
+  for (const Attempt& attempt : kAttempts) {
     if (todo.empty()) break;
-    const std::string switches = tetgenSwitches(std::string("pYzAQ") + tolerance, options);
+    const std::string switches = tetgenSwitches(std::string("pYzAQ") + attempt.tolerance, options);
     const auto results = runIsolated(todo, omp_get_max_threads(), kCellTimeoutSeconds, [&](std::size_t i) {
-      return serialize(meshCell(t, wm, cells[i], cellSeed(t, walls, cells[i]), switches, local_of));
+      return serialize(meshCell(t, wm, cells[i], cellSeed(t, walls, cells[i]), switches, attempt.enclose, local_of));
     });
     std::vector<std::size_t> failed;
     for (std::size_t k = 0; k < todo.size(); ++k) {
       if (results[k].ok) {
         meshed[todo[k]] = deserialize(results[k].bytes);
       } else {
-        failures[todo[k]] += std::string(failures[todo[k]].empty() ? "" : "; ") + "switches " + switches + ": " +
-                             results[k].failure;
+        failures[todo[k]] += std::string(failures[todo[k]].empty() ? "" : "; ") + "switches " + switches +
+                             (attempt.enclose ? " in a cube" : "") + ": " + results[k].failure;
         failed.push_back(todo[k]);
       }
     }
