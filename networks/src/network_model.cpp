@@ -72,6 +72,8 @@ void NetworkModel::validate() const {
     nonneg(pin.rate, "rate");
     nonneg(pin.total, "total");
     nonneg(pin.saturation, "saturation");
+    nonneg(pin.efflux_saturation, "efflux_saturation");
+    nonneg(pin.total_per_concentration, "total_per_concentration");
     if (pin.function == PinFunction::Exponential && !(std::isfinite(pin.base) && pin.base > 0.0))
       throw InputError("network: PIN base " + std::to_string(pin.base) + " must be > 0");
     if (pin.function == PinFunction::Power && !(std::isfinite(pin.exponent) && pin.exponent > 0.0))

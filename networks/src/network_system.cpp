@@ -269,13 +269,13 @@ void NetworkSystem::rhs(double t, std::span<const double> y, std::span<double> y
 
 void NetworkSystem::pinDenominators() {
   const auto p = static_cast<std::size_t>(pin_species_);
-  const double TP = model_.pin.rate * model_.pin.total;
   forEachCell(numCells(), threads_, [&](std::size_t c, std::size_t) {
     double d = model_.pin.saturation;
     for (std::size_t a = adjacent_start_[c]; a < adjacent_start_[c + 1]; ++a)
       d += adjacent_measure_[a] * pin_weight_[adjacent_cell_[a]];
     pin_denominator_[c] = d;
-    pin_out_[c] = d > 0 ? TP * conc_[index(c, p)] / d : 0.0;
+    // G(c_i) / D_i: the efflux T P(c_i) g(c_i) shared out over the walls.
+    pin_out_[c] = d > 0 ? model_.pin.effluxFactor(conc_[index(c, p)]) / d : 0.0;
   });
 }
 
@@ -441,28 +441,27 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
       pin_weight_derivative_[c] = pinWeightDerivative(conc_[index(c, p)]);
     }
     pinDenominators();
-    const double TP = pin.rate * pin.total;
     for (std::size_t i = 0; i < n; ++i) {
       const double D = pin_denominator_[i];
       if (!(D > 0)) continue;
-      const double ci = conc_[index(i, p)];
+      const double ci = conc_[index(i, p)], G = pin.effluxFactor(ci), dG = pin.effluxFactorDerivative(ci);
       for (std::size_t f : neighbours_[i]) {
         const auto j = static_cast<std::size_t>(other(graph_.interfaces[f], i));
         const double L = graph_.interfaces[f].measure;
         const std::size_t ri = index(i, p), rj = index(j, p);
-        // J_ij = TP c_i L w_j / D_i.
+        // J_ij = G(c_i) L w_j / D_i, G(c) = T P(c) g(c).
         auto add = [&](std::size_t m, double dJ_dc_m) {
           const double d = dJ_dc_m / graph_.measure[m];
           addAt(J, ri, index(m, p), -d);
           addAt(J, rj, index(m, p), d);
         };
-        add(i, TP * L * pin_weight_[j] / D);
-        add(j, TP * ci * L * pin_weight_derivative_[j] / D);
+        add(i, dG * L * pin_weight_[j] / D);
+        add(j, G * L * pin_weight_derivative_[j] / D);
         for (std::size_t g : neighbours_[i]) {
           const auto m = static_cast<std::size_t>(other(graph_.interfaces[g], i));
           // Neighbours: leave out the pair of entries when the receiver's row lacks m (a second neighbour).
           if (jacobian_kind_ == JacobianKind::Neighbours && !inPattern(rj, index(m, p))) continue;
-          add(m, -TP * ci * L * pin_weight_[j] * graph_.interfaces[g].measure * pin_weight_derivative_[m] / (D * D));
+          add(m, -G * L * pin_weight_[j] * graph_.interfaces[g].measure * pin_weight_derivative_[m] / (D * D));
         }
       }
     }
@@ -491,8 +490,9 @@ std::vector<PinSides> NetworkSystem::pin(std::span<const double> y) const {
   for (std::size_t k = 0; k < out.size(); ++k) {
     const NetworkInterface& f = graph_.interfaces[k];
     const auto i = static_cast<std::size_t>(f.cell_i), j = static_cast<std::size_t>(f.cell_j);
-    if (D[i] > 0) out[k].ij = pin.total * f.measure * w[j] / D[i];
-    if (D[j] > 0) out[k].ji = pin.total * f.measure * w[i] / D[j];
+    const double ci = y[index(i, p)] / graph_.measure[i], cj = y[index(j, p)] / graph_.measure[j];
+    if (D[i] > 0) out[k].ij = pin.cellPin(ci) * f.measure * w[j] / D[i];
+    if (D[j] > 0) out[k].ji = pin.cellPin(cj) * f.measure * w[i] / D[j];
   }
   return out;
 }

@@ -28,6 +28,16 @@ const EnumTable<PinFunction>& pinFunctions() {
   return table;
 }
 
+const EnumTable<PinEfflux>& pinEffluxes() {
+  static const EnumTable<PinEfflux> table(
+      "PIN efflux",
+      {{"linear", PinEfflux::Linear,
+        "g(c_i) = c_i: efflux in proportion to the cell's concentration (Joensson et al. 2006)."},
+       {"saturating", PinEfflux::Saturating,
+        "g(c_i) = c_i^2 / (1 + efflux_saturation c_i^2): quadratic, saturating efflux (Smith et al. 2006)."}});
+  return table;
+}
+
 const std::vector<std::string>& pinExpressionVariables() {
   static const std::vector<std::string> names = {"c_i",  "c_j",  "pin",     "pin_opposite",
                                                  "flux", "wall", "measure", "pin_cell"};
@@ -43,6 +53,19 @@ double PinTransport::weightDerivative(double c) const {
   if (function == PinFunction::Exponential) return std::log(base) * std::pow(base, c);
   if (c <= 0.0) return exponent == 1.0 ? 1.0 : 0.0;
   return exponent * std::pow(c, exponent - 1.0);
+}
+
+double PinTransport::effluxFactor(double c) const {
+  if (efflux == PinEfflux::Linear) return rate * cellPin(c) * c;
+  const double c2 = c * c;
+  return rate * cellPin(c) * c2 / (1.0 + efflux_saturation * c2);
+}
+
+double PinTransport::effluxFactorDerivative(double c) const {
+  if (efflux == PinEfflux::Linear) return rate * (total_per_concentration * c + cellPin(c));
+  // g = c^2 / d, d = 1 + s c^2: g' = 2 c / d^2.
+  const double c2 = c * c, d = 1.0 + efflux_saturation * c2;
+  return rate * (total_per_concentration * c2 / d + cellPin(c) * 2.0 * c / (d * d));
 }
 
 double PinTransport::fluxResponse(double phi) const {

@@ -53,8 +53,10 @@ void bindNetworks(py::module_& m) {
 
   py::class_<PinTransport>(m, "PinTransport", R"doc(
 PIN efflux of one species (docs/networks.md).
-model "up_the_gradient": PIN_ij = total * L_ij f(c_j) / (saturation + sum_k L_ik f(c_k)), f(c) = base**c
-("exponential") or c**exponent ("power"); the efflux from i into j is rate * PIN_ij * c_i.
+model "up_the_gradient": PIN_ij = P_i * L_ij f(c_j) / (saturation + sum_k L_ik f(c_k)), f(c) = base**c
+("exponential") or c**exponent ("power"), P_i = total + total_per_concentration * c_i; the efflux from i into j
+is rate * PIN_ij * g(c_i), g(c) = c (efflux "linear") or c**2 / (1 + efflux_saturation * c**2) (efflux
+"saturating", Smith et al. 2006).
 model "with_the_flux": the PIN density p_ij on each interface side is a state,
 dp_ij/dt = (basal + production h(phi_ij)) B_i - decay p_ij, h(phi) = phi**flux_exponent / (1 + flux_saturation
 phi**flux_exponent) for a net flux density phi > 0 from i into j (else 0), B_i = 1 - sum_k L_ik p_ik / total when
@@ -65,7 +67,8 @@ the parameters. `initial` is the densities' starting value in a simulation.
       .def(py::init([](std::string species, const std::string& model, const std::string& function, double base,
                        double exponent, double rate, double total, double saturation, double basal,
                        double production, double decay, double flux_exponent, double flux_saturation, bool bounded,
-                       double initial, std::string expression) {
+                       double initial, std::string expression, const std::string& efflux,
+                       double efflux_saturation, double total_per_concentration) {
              PinTransport p;
              p.species = std::move(species);
              p.model = pinModels().parse(model);
@@ -83,16 +86,25 @@ the parameters. `initial` is the densities' starting value in a simulation.
              p.bounded = bounded;
              p.initial = initial;
              p.expression = std::move(expression);
+             p.efflux = pinEffluxes().parse(efflux);
+             p.efflux_saturation = efflux_saturation;
+             p.total_per_concentration = total_per_concentration;
              return p;
            }),
            py::arg("species"), py::arg("model") = "up_the_gradient", py::arg("function") = "exponential",
            py::arg("base") = 3.0, py::arg("exponent") = 1.0, py::arg("rate") = 1.0, py::arg("total") = 1.0,
            py::arg("saturation") = 0.0, py::arg("basal") = 0.0, py::arg("production") = 1.0,
            py::arg("decay") = 1.0, py::arg("flux_exponent") = 2.0, py::arg("flux_saturation") = 0.0,
-           py::arg("bounded") = false, py::arg("initial") = 0.0, py::arg("expression") = "")
+           py::arg("bounded") = false, py::arg("initial") = 0.0, py::arg("expression") = "",
+           py::arg("efflux") = "linear", py::arg("efflux_saturation") = 0.0, py::arg("total_per_concentration") = 0.0)
       .def_property(
           "model", [](const PinTransport& p) { return pinModels().name(p.model); },
           [](PinTransport& p, const std::string& name) { p.model = pinModels().parse(name); })
+      .def_property(
+          "efflux", [](const PinTransport& p) { return pinEffluxes().name(p.efflux); },
+          [](PinTransport& p, const std::string& name) { p.efflux = pinEffluxes().parse(name); })
+      .def_readwrite("efflux_saturation", &PinTransport::efflux_saturation)
+      .def_readwrite("total_per_concentration", &PinTransport::total_per_concentration)
       .def_property_readonly("dynamic", &PinTransport::dynamic, "PIN is a state (with_the_flux, expression).")
       .def_readwrite("basal", &PinTransport::basal)
       .def_readwrite("production", &PinTransport::production)

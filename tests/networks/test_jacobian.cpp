@@ -29,6 +29,16 @@ TEST_CASE("The Jacobian matches central differences: reactions, passive transpor
     m.pin.function = PinFunction::Power;
     m.pin.exponent = 2.0;
   }
+  SECTION("Smith et al.: saturating efflux, PIN made with the species") {
+    m.pin.efflux = PinEfflux::Saturating;
+    m.pin.efflux_saturation = 0.4;
+    m.pin.total_per_concentration = 0.7;
+  }
+  SECTION("linear efflux, PIN made with the species, power weight") {
+    m.pin.function = PinFunction::Power;
+    m.pin.exponent = 2.0;
+    m.pin.total_per_concentration = 1.3;
+  }
   NetworkSystem system(m, networkGraph(t, geometry, {}));
   std::mt19937_64 rng(3);
   std::uniform_real_distribution<double> u(0.2, 2.0);

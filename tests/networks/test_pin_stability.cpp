@@ -10,7 +10,9 @@
 // lattice (a torus: every cell has six neighbours, so the uniform state
 // c0 = p / d is an exact steady state) seeded with the fastest-growing
 // allowed mode: just below the threshold it decays, just above it grows, at
-// the predicted rate.
+// the predicted rate. With Smith et al.'s options (PIN P(c) = P0 + P1 c, efflux
+// g(c) = c^2 / (1 + s c^2)) the same holds with T P replaced by G'(c0) in alpha
+// and T P c0 by G(c0) in beta, G(c) = T P(c) g(c).
 
 #include <catch2/catch.hpp>
 
@@ -47,7 +49,10 @@ NetworkGraph torus() {
   return g;
 }
 
-NetworkModel model(double base) {
+// Smith et al.'s options in the runs that use them.
+constexpr double kP1 = 0.1, kSat = 0.02;
+
+NetworkModel model(double base, bool smith = false) {
   NetworkModel m;
   m.species = {{"auxin", "p - d * auxin", kD}};
   m.parameters = {{"p", kProduction}, {"d", kDecay}};
@@ -55,24 +60,40 @@ NetworkModel model(double base) {
   m.pin.base = base;
   m.pin.rate = kT;
   m.pin.total = kP;
+  if (smith) {
+    m.pin.total_per_concentration = kP1;
+    m.pin.efflux = PinEfflux::Saturating;
+    m.pin.efflux_saturation = kSat;
+  }
   return m;
+}
+
+// G(c0) and G'(c0) (G(c) = T P(c) g(c)), written out.
+double G0(bool smith) {
+  if (!smith) return kT * kP * kC0;
+  return kT * (kP + kP1 * kC0) * kC0 * kC0 / (1 + kSat * kC0 * kC0);
+}
+double dG0(bool smith) {
+  if (!smith) return kT * kP;
+  const double d = 1 + kSat * kC0 * kC0;
+  return kT * (kP1 * kC0 * kC0 / d + (kP + kP1 * kC0) * 2 * kC0 / (d * d));
 }
 
 double g(double t1, double t2) { return (std::cos(t1) + std::cos(t2) + std::cos(t1 - t2)) / 3.0; }
 
 // Growth rate of the mode with lattice-average cosine g, for ln(b) = x.
-double sigma(double gq, double x) {
+double sigma(double gq, double x, bool smith = false) {
   const double u = 1.0 - gq;
-  const double alpha = kT * kP / 6.0, beta = kT * kP * kC0 * x / 6.0;
+  const double alpha = dG0(smith) / 6.0, beta = G0(smith) * x / 6.0;
   return (-kV * kDecay - 6.0 * u * (kD * kL + alpha - beta * (2.0 - u))) / kV;
 }
 
 // The critical ln(b) of the infinite lattice: 3 (B - A)^2 / B = V d with
 // A = D L + T P / 6, B = 2 beta = T P c0 ln(b) / 3 (the larger root).
-double criticalLogBase() {
-  const double A = kD * kL + kT * kP / 6.0, Vd = kV * kDecay;
+double criticalLogBase(bool smith = false) {
+  const double A = kD * kL + dG0(smith) / 6.0, Vd = kV * kDecay;
   const double B = ((6 * A + Vd) + std::sqrt((6 * A + Vd) * (6 * A + Vd) - 36 * A * A)) / 6.0;
-  return 3.0 * B / (kT * kP * kC0);
+  return 3.0 * B / G0(smith);
 }
 
 struct Mode {
@@ -81,15 +102,15 @@ struct Mode {
 };
 
 // The allowed mode of the torus with the largest growth rate at ln(b) = x.
-Mode fastestMode(double x) {
+Mode fastestMode(double x, bool smith = false) {
   Mode best;
   double s = -1e300;
   for (int k1 = 0; k1 < N; ++k1)
     for (int k2 = 0; k2 < N; ++k2) {
       if (k1 == 0 && k2 == 0) continue;
       const double gq = g(2 * std::numbers::pi * k1 / N, 2 * std::numbers::pi * k2 / N);
-      if (sigma(gq, x) > s) {
-        s = sigma(gq, x);
+      if (sigma(gq, x, smith) > s) {
+        s = sigma(gq, x, smith);
         best = {k1, k2, gq};
       }
     }
@@ -97,8 +118,8 @@ Mode fastestMode(double x) {
 }
 
 // Measured growth rate of `mode` seeded with relative amplitude eps, over [0, T].
-double measuredRate(double x, const Mode& mode, double T) {
-  NetworkSystem system(model(std::exp(x)), torus());
+double measuredRate(double x, const Mode& mode, double T, bool smith = false) {
+  NetworkSystem system(model(std::exp(x), smith), torus());
   const double eps = 1e-4 * kC0;
   std::vector<double> y(N * N), shape(N * N);
   for (int i = 0; i < N; ++i)
@@ -150,6 +171,21 @@ TEST_CASE("Up-the-gradient patterns appear above the critical PIN base, at the p
       CHECK(measured < 0);
     else
       CHECK(measured > 0);
+  }
+}
+
+TEST_CASE("With Smith et al.'s PIN options the threshold and the rate follow G(c0) and G'(c0)", "[networks]") {
+  const double xc = criticalLogBase(true);
+  // The options move the threshold (G'(c0) / G(c0) is not 1 / c0 here).
+  CHECK(std::abs(xc - criticalLogBase(false)) > 0.05 * xc);
+  for (double factor : {0.95, 1.05}) {
+    const double x = factor * xc;
+    const Mode mode = fastestMode(x, true);
+    const double predicted = sigma(mode.g, x, true);
+    INFO("ln b = " << x << " (critical " << xc << "), g = " << mode.g << ", predicted rate " << predicted);
+    const double measured = measuredRate(x, mode, 3.0 / std::abs(predicted), true);
+    CHECK(measured == Approx(predicted).epsilon(0.01));
+    CHECK((factor < 1 ? measured < 0 : measured > 0));
   }
 }
 

@@ -125,6 +125,46 @@ def test_graph_of_a_tissue_and_bad_input():
         tessella.NetworkModel([tessella.NetworkSpecies("a")], pin=tessella.PinTransport("b"))
 
 
+
+# Smith et al. (2006): PIN made in proportion to auxin, P_i = P0 + P1 a_i, and the efflux saturating,
+# T PIN_ij a_i^2 / (1 + s a_i^2).
+SMITH_P1, SMITH_S = 0.6, 0.25
+
+
+def smith_reference_rhs(t, y):
+    a = y / MEASURE
+    da = np.zeros_like(y)
+    neighbours = [[] for _ in range(N)]
+    for i, j, L in INTERFACES:
+        neighbours[i].append((j, L))
+        neighbours[j].append((i, L))
+    f = PIN_BASE**a
+    for i in range(N):
+        denominator = PIN_KAPPA + sum(L * f[j] for j, L in neighbours[i])
+        for j, L in neighbours[i]:
+            pin = (PIN_TOTAL + SMITH_P1 * a[i]) * L * f[j] / denominator
+            flux = PIN_RATE * pin * a[i] ** 2 / (1 + SMITH_S * a[i] ** 2)
+            da[i] -= flux
+            da[j] += flux
+    return da
+
+
+def test_smith_pin_options_match_the_equations_and_solve_ivp():
+    pin = tessella.PinTransport("a", base=PIN_BASE, rate=PIN_RATE, total=PIN_TOTAL, saturation=PIN_KAPPA,
+                                efflux="saturating", efflux_saturation=SMITH_S, total_per_concentration=SMITH_P1)
+    assert pin.efflux == "saturating" and pin.total_per_concentration == SMITH_P1
+    system = tessella.NetworkSystem(tessella.NetworkModel([tessella.NetworkSpecies("a")], pin=pin),
+                                    tessella.NetworkGraph(list(MEASURE), INTERFACES))
+    y0 = initial_amounts()[0::2]
+    np.testing.assert_allclose(system.rhs(0.0, list(y0)), smith_reference_rhs(0.0, y0), rtol=1e-12, atol=1e-12)
+    ours = np.array(system.integrate(list(y0), 0.0, 5.0, relative_tolerance=1e-8, absolute_tolerance=1e-11))
+    ref = scipy_integrate.solve_ivp(smith_reference_rhs, (0.0, 5.0), y0, method="LSODA", rtol=1e-12, atol=1e-14)
+    assert ref.success
+    np.testing.assert_allclose(ours, ref.y[:, -1], rtol=2e-7, atol=1e-10)
+    with pytest.raises(tessella.InputError):
+        tessella.PinTransport("a", efflux="quadratic")
+
+
 # --- PIN as a state: with_the_flux and expression -------------------------------------------------
 
 

@@ -158,3 +158,29 @@ TEST_CASE("network: errors at their keys", "[sim][network][errors]") {
   CHECK(e.keyPath() == "network");
   CHECK_THAT(e.what(), Catch::Contains("'auxin' is written by both the diffusion and the network stage"));
 }
+
+TEST_CASE("network.pin: Smith et al.'s options are read into the model", "[sim][network]") {
+  Simulation sim = Simulation::fromYaml(R"(
+tissue: {generator: hexagonal_grid, hexagonal_grid: {nx: 4, ny: 4}}
+network:
+  mode: transient
+  species: {auxin: {initial: 1}}
+  pin: {species: auxin, total: 0.4, total_per_concentration: 0.3, efflux: saturating, efflux_saturation: 0.2}
+)");
+  const networks::PinTransport& pin = networkStageOf(sim).spec().model.pin;
+  CHECK(pin.total == 0.4);
+  CHECK(pin.total_per_concentration == 0.3);
+  CHECK(pin.efflux == networks::PinEfflux::Saturating);
+  CHECK(pin.efflux_saturation == 0.2);
+  ConfigError e = configErrorOf([] {
+    Simulation::fromYaml("tissue: {generator: rectangular_grid}\n"
+                         "network: {mode: transient, species: {a: {}}, pin: {species: a, efflux: quadratic}}\n");
+  });
+  CHECK(e.keyPath() == "network.pin.efflux");
+  e = configErrorOf([] {
+    Simulation::fromYaml("tissue: {generator: rectangular_grid}\n"
+                         "network: {mode: transient, species: {a: {}}, "
+                         "pin: {species: a, total_per_concentration: -1}}\n");
+  });
+  CHECK(e.keyPath() == "network.pin.total_per_concentration");
+}

@@ -95,9 +95,11 @@ void declareNetworkSection(Schema& s) {
       .byDefault(0.0)
       .atLeast(0);
   s.section("network.pin",
-            "Carrier-mediated efflux of one species by PIN. up_the_gradient: PIN_ij = total L_ij f(c_j) / "
-            "(saturation + sum_k L_ik f(c_k)) on cell i's side of its wall to neighbour j, and the efflux from i "
-            "into j is rate PIN_ij c_i. with_the_flux and expression: the PIN density p_ij on each wall side is a "
+            "Carrier-mediated efflux of one species by PIN. up_the_gradient: PIN_ij = P_i L_ij f(c_j) / "
+            "(saturation + sum_k L_ik f(c_k)) on cell i's side of its wall to neighbour j, P_i = total + "
+            "total_per_concentration c_i, and the efflux from i into j is rate PIN_ij g(c_i), g(c) = c (efflux: "
+            "linear) or c^2 / (1 + efflux_saturation c^2) (efflux: saturating, Smith et al. 2006). with_the_flux and "
+            "expression: the PIN density p_ij on each wall side is a "
             "state, dp_ij/dt = (basal + production h(phi_ij)) B_i - decay p_ij (h(phi) = phi^m / (1 + s phi^m) "
             "for a net flux density phi > 0 from i into j, else 0; B_i = 1 - sum_k L_ik p_ik / total when "
             "bounded, else 1) or the user's expression, and the efflux from i into j is rate L_ij p_ij c_i; the "
@@ -117,7 +119,25 @@ void declareNetworkSection(Schema& s) {
   s.key("network.pin.rate", ValueType::Float, "T: efflux per unit PIN and unit concentration.")
       .byDefault(1.0)
       .atLeast(0);
-  s.key("network.pin.total", ValueType::Float, "PIN per cell (P_i, the same in every cell).").byDefault(1.0).atLeast(0);
+  s.key("network.pin.total", ValueType::Float,
+        "up_the_gradient: PIN per cell (P_i = total + total_per_concentration c_i); with_the_flux: the bound of a "
+        "cell's PIN when bounded.")
+      .byDefault(1.0)
+      .atLeast(0);
+  s.key("network.pin.total_per_concentration", ValueType::Float,
+        "up_the_gradient: PIN made in proportion to the transported species, P_i = total + "
+        "total_per_concentration c_i (Smith et al. 2006, PIN production at its steady state).")
+      .byDefault(0.0)
+      .atLeast(0);
+  s.key("network.pin.efflux", ValueType::Enum,
+        "up_the_gradient: g(c_i) of the efflux rate PIN_ij g(c_i): linear g = c, saturating g = c^2 / (1 + "
+        "efflux_saturation c^2) (Smith et al. 2006).")
+      .oneOf(networks::pinEffluxes().names())
+      .byDefault(std::string("linear"));
+  s.key("network.pin.efflux_saturation", ValueType::Float,
+        "up_the_gradient with efflux: saturating: s of g(c) = c^2 / (1 + s c^2).")
+      .byDefault(0.0)
+      .atLeast(0);
   s.key("network.pin.saturation", ValueType::Float, "kappa: added to the denominator, in units of wall measure.")
       .byDefault(0.0)
       .atLeast(0);
@@ -234,6 +254,9 @@ NetworkSpec readNetworkSection(const Config& c, std::uint64_t noise_seed) {
     m.pin.rate = c.getFloat("network.pin.rate");
     m.pin.total = c.getFloat("network.pin.total");
     m.pin.saturation = c.getFloat("network.pin.saturation");
+    m.pin.total_per_concentration = c.getFloat("network.pin.total_per_concentration");
+    m.pin.efflux = parseFromConfig(c, networks::pinEffluxes(), "network.pin.efflux");
+    m.pin.efflux_saturation = c.getFloat("network.pin.efflux_saturation");
     m.pin.initial = c.getFloat("network.pin.initial");
     m.pin.basal = c.getFloat("network.pin.basal");
     m.pin.production = c.getFloat("network.pin.production");

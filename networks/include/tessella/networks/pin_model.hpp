@@ -8,7 +8,10 @@
 // the PIN on cell i's side of the wall to neighbour j is
 //   PIN_ij = P_i L_ij f(c_j) / (kappa + sum_k L_ik f(c_k)),   k over i's neighbours,
 // with f(c) = b^c (exponential) or c^n (power), and the efflux of the transported
-// species from i into j is T PIN_ij c_i (amount per unit time).
+// species from i into j is T PIN_ij g(c_i) (amount per unit time), with the cell's PIN
+// P_i = total + total_per_concentration c_i (Smith et al.: PIN made in proportion to
+// auxin, at its steady state) and g(c) = c (efflux `linear`) or c^2 / (1 + s c^2)
+// (efflux `saturating`, Smith et al.).
 //
 // `with_the_flux` (canalization: Mitchison 1980; Rolland-Lagan & Prusinkiewicz 2005;
 // Feugier et al. 2005; Bayer et al. 2009) and `expression`: PIN is a state, a
@@ -28,11 +31,14 @@ namespace tessella::networks {
 
 enum class PinModel { UpTheGradient, WithTheFlux, Expression };
 enum class PinFunction { Exponential, Power };
+enum class PinEfflux { Linear, Saturating };
 
 /// "up_the_gradient", "with_the_flux", "expression".
 const EnumTable<PinModel>& pinModels();
 /// "exponential" (f = base^c), "power" (f = c^exponent).
 const EnumTable<PinFunction>& pinFunctions();
+/// up_the_gradient's efflux g(c_i): "linear" (c), "saturating" (c^2 / (1 + efflux_saturation c^2)).
+const EnumTable<PinEfflux>& pinEffluxes();
 
 /// The variables of a PIN expression besides the parameters and t:
 /// c_i, c_j, pin, pin_opposite, flux, wall, measure, pin_cell.
@@ -62,12 +68,23 @@ struct PinTransport {
   std::string
       expression;  ///< `expression`: dp_ij/dt over pinExpressionVariables() and the parameters
 
+  // --- up_the_gradient after Smith et al. 2006 (last, so aggregate initialisers of the above stay valid) ---
+  PinEfflux efflux = PinEfflux::Linear;  ///< g(c_i) of the efflux T PIN_ij g(c_i)
+  double efflux_saturation = 0.0;        ///< s >= 0 of g(c) = c^2 / (1 + s c^2) (saturating)
+  /// P_i = total + total_per_concentration c_i (>= 0): PIN made in proportion to the transported species.
+  double total_per_concentration = 0.0;
+
   bool enabled() const { return !species.empty(); }
   /// PIN is a state of the ODE system (with_the_flux, expression).
   bool dynamic() const { return enabled() && model != PinModel::UpTheGradient; }
   /// f(c) and f'(c).
   double weight(double c) const;
   double weightDerivative(double c) const;
+  /// up_the_gradient: G(c) = T P(c) g(c), so that J_ij = G(c_i) L_ij f(c_j) / D_i, and G'(c).
+  double effluxFactor(double c) const;
+  double effluxFactorDerivative(double c) const;
+  /// P(c) = total + total_per_concentration c, a cell's PIN at concentration c (up_the_gradient).
+  double cellPin(double c) const { return total + total_per_concentration * c; }
   /// h(phi) and h'(phi) of with_the_flux (0 for phi <= 0).
   double fluxResponse(double phi) const;
   double fluxResponseDerivative(double phi) const;
