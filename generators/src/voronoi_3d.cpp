@@ -349,7 +349,8 @@ struct CellReader3 {
   struct Scratch {
     ClipPolytope cell;
     std::vector<Index> nbrs, first_tet, loop;
-    std::vector<std::pair<Index, Index>> pairs;  // (neighbour, a cell around the edge to it)
+    std::vector<std::pair<Index, Index>> pairs;  // (neighbour, the lowest cell around the edge to it)
+    std::vector<Index> seen_by;                  // the last cell that listed rank j (never cleared)
     CellWalls local;
   };
 
@@ -358,21 +359,24 @@ struct CellReader3 {
   // the seed has its circumcentre inside the domain (the cell is interior).
   bool neighbours(Index i, Scratch& s) const {
     bool interior = true;
+    if (s.seen_by.empty()) s.seen_by.assign(seeds.size(), kInvalidIndex);
     s.pairs.clear();
-    for (Index k = tets.inc_start[i]; k < tets.inc_start[i + 1]; ++k) {
+    for (Index k = tets.inc_start[i]; k < tets.inc_start[i + 1]; ++k) {  // cells ascending
       const Index t = tets.inc[k];
       if (!dual.inside[t]) interior = false;
       for (Index v : tets.tv[t])
-        if (v != kInvalidIndex && v != i) s.pairs.emplace_back(v, t);
+        if (v != kInvalidIndex && v != i && s.seen_by[v] != i) {
+          s.seen_by[v] = i;
+          s.pairs.emplace_back(v, t);
+        }
     }
     std::sort(s.pairs.begin(), s.pairs.end());
     s.nbrs.clear();
     s.first_tet.clear();
-    for (const auto& [j, t] : s.pairs)
-      if (s.nbrs.empty() || s.nbrs.back() != j) {
-        s.nbrs.push_back(j);
-        s.first_tet.push_back(t);
-      }
+    for (const auto& [j, t] : s.pairs) {
+      s.nbrs.push_back(j);
+      s.first_tet.push_back(t);
+    }
     for (Index j : s.nbrs)  // the lowest seed index, as seed order would find it
       if ((seeds[j] - seeds[i]).squaredNorm() < d2 && tets.order[j] < readout.duplicate[i])
         readout.duplicate[i] = tets.order[j];

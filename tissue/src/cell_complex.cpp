@@ -353,15 +353,27 @@ void CellComplex::addVolumes(std::span<const Index> offsets, std::span<const Ori
   const std::size_t nv = offsets.empty() ? 0 : offsets.size() - 1;
   if (nv && (offsets[0] != 0 || offsets[nv] != faces.size()))
     throw TopologyError("addVolumes: offsets do not cover the face list");
-  // Per-volume checks are independent: run them in parallel, report the first.
+  // Per-volume checks are independent: run them in parallel, report the
+  // first. They visit the volumes by their lowest face id: when faces are
+  // numbered along space (generators), volumes listed in another order
+  // (cell k = seed k) are then checked without missing the cache at every face.
   std::vector<std::uint8_t> bad(nv, 0);
   const std::int64_t nvs = static_cast<std::int64_t>(nv);
+  std::vector<std::pair<Index, Index>> visit(nv);  // (lowest face id, volume)
+#pragma omp parallel for schedule(static)
+  for (std::int64_t k = 0; k < nvs; ++k) {
+    Index lowest = kInvalidIndex;
+    for (Index i = offsets[k]; i < offsets[k + 1]; ++i) lowest = std::min(lowest, faces[i].handle().index());
+    visit[k] = {lowest, static_cast<Index>(k)};
+  }
+  std::sort(visit.begin(), visit.end());
 #pragma omp parallel
   {
     std::vector<Index> seen;  // per thread, reused
     std::vector<std::pair<Index, int>> edge_uses;
 #pragma omp for schedule(dynamic, 256)
-    for (std::int64_t k = 0; k < nvs; ++k) {
+    for (std::int64_t m = 0; m < nvs; ++m) {
+      const Index k = visit[m].second;
       const auto list = faces.subspan(offsets[k], offsets[k + 1] - offsets[k]);
       if (list.size() < 4) { bad[k] = 1; continue; }
       seen.clear();
