@@ -9,9 +9,11 @@
 // the boundary are clipped (the domain cut by the bisector plane of every
 // Delaunay neighbour) and their vertices welded onto those circumcentres. Each
 // wall between two cells is stored once and must come out identical
-// (reversed) from both cells, or a GeometryError says which. Per-cell work
-// runs in parallel; numbering is sequential, so the result does not depend on
-// the thread count.
+// (reversed) from both cells, or a GeometryError says which. Everything
+// after the triangulation works on seed ranks along CGAL's spatial insertion
+// order (see Tetrahedra), for locality; cell k of the result is seed k.
+// Per-cell work and most of the assembly run in parallel; welding and vertex
+// numbering are sequential, so the result does not depend on the thread count.
 
 #include <algorithm>
 #include <array>

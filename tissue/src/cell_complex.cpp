@@ -415,7 +415,8 @@ void CellComplex::addVolumes(std::span<const Index> offsets, std::span<const Ori
     }
     for (OrientedFace of : list)
       if (++uses[of.handle().index()] > 2)
-        throw TopologyError(volumeName(k) + ": " + id("face", of.handle().index()) + " already bounds two volumes", where);
+        throw TopologyError(volumeName(k) + ": " + id("face", of.handle().index()) + " already bounds two volumes",
+                            where);
   }
   // Rebuild face -> volumes in one pass (old lists first, then the new volumes in order).
   const Index first = static_cast<Index>(volume_faces_.size());
