@@ -232,9 +232,12 @@ Tetrahedra tetrahedra(Delaunay& dt, std::span<const Vec3> seeds) {
     tet.push_back(c);
   }
   const std::size_t nt = tet.size();
-  // In CGAL's numbering first.
+  // In CGAL's numbering first. (Reading handles is thread-safe; only CGAL's
+  // incidence queries are not.)
+  const std::int64_t nts = static_cast<std::int64_t>(nt);
   std::vector<std::array<Index, 4>> tv(nt);
-  for (std::size_t t = 0; t < nt; ++t)
+#pragma omp parallel for schedule(static)
+  for (std::int64_t t = 0; t < nts; ++t)
     for (int k = 0; k < 4; ++k) {
       const auto v = tet[t]->vertex(k);
       tv[t][k] = dt.is_infinite(v) ? kInvalidIndex : tets.rank[v->info()];
@@ -252,7 +255,8 @@ Tetrahedra tetrahedra(Delaunay& dt, std::span<const Vec3> seeds) {
   tv.resize(nt);
   tets.tn.resize(nt);
   tets.finite.resize(nt);
-  for (std::size_t u = 0; u < nt; ++u) {
+#pragma omp parallel for schedule(static)
+  for (std::int64_t u = 0; u < nts; ++u) {
     const Index t = old_of[u];
     tv[u] = tets.tv[t];
     tets.finite[u] = !dt.is_infinite(tet[t]);
