@@ -9,9 +9,11 @@
 // the boundary are clipped (the domain cut by the bisector plane of every
 // Delaunay neighbour) and their vertices welded onto those circumcentres. Each
 // wall between two cells is stored once and must come out identical
-// (reversed) from both cells, or a GeometryError says which. Per-cell work
-// runs in parallel; numbering is sequential, so the result does not depend on
-// the thread count.
+// (reversed) from both cells, or a GeometryError says which. Everything
+// after the triangulation works on seed ranks along CGAL's spatial insertion
+// order (see Tetrahedra), for locality; cell k of the result is seed k.
+// Per-cell work and most of the assembly run in parallel; welding and vertex
+// numbering are sequential, so the result does not depend on the thread count.
 
 #include <algorithm>
 #include <array>
@@ -118,7 +120,8 @@ Delaunay triangulate(std::span<const Vec3> seeds) {
 }
 
 // The position of a cell vertex computed from the planes through it, named
-// canonically (sorted seed indices, domain faces) so that every cell sharing
+// canonically (generators sorted by seed index -- `seed_of` maps the ranks
+// they are given in -- and domain faces) so that every cell sharing
 // the vertex gets the same bits -- clipping interpolates along edges, which
 // is ill-conditioned where a bisector grazes an edge (nearly cospherical
 // seeds), and different cells would disagree by more than the weld
@@ -126,7 +129,8 @@ Delaunay triangulate(std::span<const Vec3> seeds) {
 // down a point near it. (Not inlined: GCC 12 then warns falsely about the
 // bounds of the sorts below.)
 [[gnu::noinline]] Vec3 canonicalPosition(const Vec3& clipped, Index cell, std::span<const int> labels,
-                       std::span<const Vec3> seeds, const ConvexDomain3& domain) {
+                                         std::span<const Vec3> seeds, std::span<const Index> seed_of,
+                                         const ConvexDomain3& domain) {
   std::array<Index, ClipPolytope::kMaxLabels + 1> generators{};
   std::array<int, ClipPolytope::kMaxLabels> faces{};
   std::size_t ng = 0, nf = 0;
@@ -136,7 +140,7 @@ Delaunay triangulate(std::span<const Vec3> seeds) {
     else if (l != kScaffoldLabel) faces[nf++] = -1 - l;
   }
   if (ng - 1 + nf < 3) return clipped;
-  std::sort(generators.begin(), generators.begin() + ng);
+  std::sort(generators.begin(), generators.begin() + ng, [&](Index a, Index b) { return seed_of[a] < seed_of[b]; });
   std::sort(faces.begin(), faces.begin() + nf);
   Vec3 x = planesPoint(std::span<const Index>(generators.data(), ng), std::span<const int>(faces.data(), nf),
                        seeds, domain);
@@ -178,19 +182,49 @@ bool reverseOf(std::span<const Index> a, std::span<const Index> b) {
 // --- clipVoronoi3, phase 1: the tetrahedralisation as plain arrays --------------
 
 // CGAL's incidence queries mark cells and are not thread-safe, so the cells'
-// vertices (seed indices, kInvalidIndex for the infinite vertex) and
-// neighbours, and each seed's cells, are copied out once.
+// vertices and neighbours, and each seed's cells, are copied out once. The
+// copy is renumbered for locality: seeds by rank along CGAL's spatial
+// (Hilbert) insertion order, cells by first appearance around the seeds in
+// that order. Random seeds then put neighbouring seeds, their cells and
+// circumcentres next to each other in memory, and every pass below streams
+// instead of missing the cache at each step. Only the cell list of the tissue
+// (cell k = seed k) and the messages go back to seed indices.
 struct Tetrahedra {
-  std::vector<std::array<Index, 4>> tv, tn;
+  std::vector<std::array<Index, 4>> tv, tn;  // vertex ranks (kInvalidIndex: infinite), neighbour cells
   std::vector<std::uint8_t> finite;
-  std::vector<Index> inc_start, inc;  // seed i's cells: inc[inc_start[i] .. inc_start[i + 1])
-  // Seeds in CGAL's storage order (along its Hilbert sort): cells visited in
-  // this order touch nearby memory one after the other.
-  std::vector<Index> order;
+  std::vector<Index> inc_start, inc;  // rank q's cells: inc[inc_start[q] .. inc_start[q + 1]), ascending
+  std::vector<Index> order;           // rank q is seed order[q]
+  std::vector<Index> rank;            // seed k has rank rank[k]
+  std::vector<Vec3> seeds;            // by rank
   std::size_t size() const { return tv.size(); }
 };
 
-Tetrahedra tetrahedra(Delaunay& dt, std::size_t n) {
+// Each rank's cells, ascending, from tv.
+void incidence(Tetrahedra& tets, std::size_t n) {
+  const std::size_t nt = tets.size();
+  tets.inc_start.assign(n + 1, 0);
+  for (std::size_t t = 0; t < nt; ++t)
+    for (Index v : tets.tv[t])
+      if (v != kInvalidIndex) ++tets.inc_start[v + 1];
+  for (std::size_t i = 0; i < n; ++i) tets.inc_start[i + 1] += tets.inc_start[i];
+  tets.inc.resize(tets.inc_start[n]);
+  std::vector<Index> fill(tets.inc_start.begin(), tets.inc_start.end() - 1);
+  for (std::size_t t = 0; t < nt; ++t)
+    for (Index v : tets.tv[t])
+      if (v != kInvalidIndex) tets.inc[fill[v]++] = static_cast<Index>(t);
+}
+
+Tetrahedra tetrahedra(Delaunay& dt, std::span<const Vec3> seeds) {
+  const std::size_t n = seeds.size();
+  Tetrahedra tets;
+  tets.order.reserve(n);
+  tets.rank.resize(n);
+  tets.seeds.reserve(n);
+  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
+    tets.rank[v->info()] = static_cast<Index>(tets.order.size());
+    tets.order.push_back(v->info());
+    tets.seeds.push_back(seeds[v->info()]);
+  }
   std::vector<Delaunay::Cell_handle> tet;
   tet.reserve(7 * n);
   for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) {
@@ -198,28 +232,38 @@ Tetrahedra tetrahedra(Delaunay& dt, std::size_t n) {
     tet.push_back(c);
   }
   const std::size_t nt = tet.size();
-  Tetrahedra tets;
-  tets.tv.resize(nt);
-  tets.tn.resize(nt);
-  tets.finite.resize(nt);
-  tets.inc_start.assign(n + 1, 0);
-  for (std::size_t t = 0; t < nt; ++t) {
-    tets.finite[t] = !dt.is_infinite(tet[t]);
+  // In CGAL's numbering first. (Reading handles is thread-safe; only CGAL's
+  // incidence queries are not.)
+  const std::int64_t nts = static_cast<std::int64_t>(nt);
+  std::vector<std::array<Index, 4>> tv(nt);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t t = 0; t < nts; ++t)
     for (int k = 0; k < 4; ++k) {
       const auto v = tet[t]->vertex(k);
-      tets.tv[t][k] = dt.is_infinite(v) ? kInvalidIndex : v->info();
-      tets.tn[t][k] = tet[t]->neighbor(k)->info();
-      if (tets.tv[t][k] != kInvalidIndex) ++tets.inc_start[tets.tv[t][k] + 1];
+      tv[t][k] = dt.is_infinite(v) ? kInvalidIndex : tets.rank[v->info()];
     }
+  tets.tv = std::move(tv);
+  incidence(tets, n);
+  // Cells renumbered by first appearance along the ranks (every cell has a finite vertex).
+  std::vector<Index> renumber(nt, kInvalidIndex), old_of;
+  old_of.reserve(nt);
+  for (Index t : tets.inc)
+    if (renumber[t] == kInvalidIndex) {
+      renumber[t] = static_cast<Index>(old_of.size());
+      old_of.push_back(t);
+    }
+  tv.resize(nt);
+  tets.tn.resize(nt);
+  tets.finite.resize(nt);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t u = 0; u < nts; ++u) {
+    const Index t = old_of[u];
+    tv[u] = tets.tv[t];
+    tets.finite[u] = !dt.is_infinite(tet[t]);
+    for (int k = 0; k < 4; ++k) tets.tn[u][k] = renumber[tet[t]->neighbor(k)->info()];
   }
-  for (std::size_t i = 0; i < n; ++i) tets.inc_start[i + 1] += tets.inc_start[i];
-  tets.order.reserve(n);
-  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) tets.order.push_back(v->info());
-  tets.inc.resize(tets.inc_start[n]);
-  std::vector<Index> fill(tets.inc_start.begin(), tets.inc_start.end() - 1);
-  for (std::size_t t = 0; t < nt; ++t)
-    for (Index v : tets.tv[t])
-      if (v != kInvalidIndex) tets.inc[fill[v]++] = static_cast<Index>(t);
+  tets.tv = std::move(tv);
+  incidence(tets, n);
   return tets;
 }
 
@@ -251,7 +295,7 @@ void computeCircumcentres(std::span<const Vec3> seeds, const ConvexDomain3& doma
   for (std::int64_t t = 0; t < nts; ++t) {
     if (!tets.finite[t]) continue;
     std::array<Index, 4> g = tets.tv[t];
-    std::sort(g.begin(), g.end());
+    std::sort(g.begin(), g.end(), [&](Index a, Index b) { return tets.order[a] < tets.order[b]; });
     dual.cc[t] = planesPoint(g, {}, seeds, domain);
     dual.inside[t] = inside(dual.cc[t]);
   }
@@ -287,12 +331,14 @@ struct CellReadout3 {
   std::vector<std::vector<Vec3>> clipped_points;
   std::vector<std::uint8_t> is_boundary;
   std::vector<std::string> errors;
-  std::vector<Index> duplicate;  // a neighbour closer than the duplicate distance
+  std::vector<Index> duplicate;  // the lowest seed closer than the duplicate distance (by rank)
 };
 
 // One cell at a time, from any thread: each writes only its own cell's slots.
+// Cells, neighbours and labels are ranks (tets.seeds); the centroids and the
+// messages name seeds.
 struct CellReader3 {
-  std::span<const Vec3> seeds;
+  std::span<const Vec3> seeds;  // by rank
   const ConvexDomain3& domain;
   const Tetrahedra& tets;
   const DualVertices3& dual;
@@ -308,54 +354,72 @@ struct CellReader3 {
 
   struct Scratch {
     ClipPolytope cell;
-    std::vector<Index> nbrs, loop;
+    std::vector<Index> nbrs, first_tet, loop;
+    std::vector<std::pair<Index, Index>> pairs;  // (neighbour, the lowest cell around the edge to it)
+    std::vector<Index> seen_by;                  // the last cell that listed rank j (never cleared)
     CellWalls local;
   };
 
-  // The seed's Delaunay neighbours (sorted) into s.nbrs; whether every cell
-  // around it has its circumcentre inside the domain (the cell is interior).
+  // The seed's Delaunay neighbours (sorted) into s.nbrs, with one cell around
+  // the edge to each (the lowest) in s.first_tet; whether every cell around
+  // the seed has its circumcentre inside the domain (the cell is interior).
   bool neighbours(Index i, Scratch& s) const {
     bool interior = true;
-    s.nbrs.clear();
-    for (Index k = tets.inc_start[i]; k < tets.inc_start[i + 1]; ++k) {
+    if (s.seen_by.empty()) s.seen_by.assign(seeds.size(), kInvalidIndex);
+    s.pairs.clear();
+    for (Index k = tets.inc_start[i]; k < tets.inc_start[i + 1]; ++k) {  // cells ascending
       const Index t = tets.inc[k];
       if (!dual.inside[t]) interior = false;
       for (Index v : tets.tv[t])
-        if (v != kInvalidIndex && v != i) s.nbrs.push_back(v);
+        if (v != kInvalidIndex && v != i && s.seen_by[v] != i) {
+          s.seen_by[v] = i;
+          s.pairs.emplace_back(v, t);
+        }
     }
-    std::sort(s.nbrs.begin(), s.nbrs.end());
-    s.nbrs.erase(std::unique(s.nbrs.begin(), s.nbrs.end()), s.nbrs.end());
-    for (Index j : s.nbrs)
-      if ((seeds[j] - seeds[i]).squaredNorm() < d2 && readout.duplicate[i] == kInvalidIndex)
-        readout.duplicate[i] = j;
+    std::sort(s.pairs.begin(), s.pairs.end());
+    s.nbrs.clear();
+    s.first_tet.clear();
+    for (const auto& [j, t] : s.pairs) {
+      s.nbrs.push_back(j);
+      s.first_tet.push_back(t);
+    }
+    for (Index j : s.nbrs)  // the lowest seed index, as seed order would find it
+      if ((seeds[j] - seeds[i]).squaredNorm() < d2 && tets.order[j] < readout.duplicate[i])
+        readout.duplicate[i] = tets.order[j];
     return interior;
   }
 
   // The wall between seeds i and j: the weld groups of the cells around the
-  // Delaunay edge ij, counter-clockwise seen from j (its normal points from i to j).
-  void wallLoop(Index i, Index j, std::vector<Index>& loop) const {
-    Index t0 = kInvalidIndex;
-    for (Index k = tets.inc_start[i]; k < tets.inc_start[i + 1] && t0 == kInvalidIndex; ++k)
-      for (Index v : tets.tv[tets.inc[k]])
-        if (v == j) t0 = tets.inc[k];
-    std::array<Index, 2> ab{};
-    int m = 0;
-    for (Index v : tets.tv[t0])
-      if (v != i && v != j) ab[m++] = v;
-    auto p = [&](Index v) { return Point(seeds[v].x(), seeds[v].y(), seeds[v].z()); };
+  // Delaunay edge ij, starting from the cell t0 around it, counter-clockwise
+  // seen from j (its normal points from i to j). Every finite cell of CGAL's
+  // triangulation lists its vertices in positive orientation, so
+  // orientation(i, j, a, b) is the parity of the permutation of their slots:
+  // combinatorial, no predicate.
+  void wallLoop(Index i, Index j, Index t0, std::vector<Index>& loop) const {
+    int slot[4], m = 2;
+    for (int k = 0; k < 4; ++k) {
+      const Index v = tets.tv[t0][k];
+      if (v == i) slot[0] = k;
+      else if (v == j) slot[1] = k;
+      else slot[m++] = k;
+    }
+    int inversions = 0;
+    for (int x = 0; x < 4; ++x)
+      for (int y = x + 1; y < 4; ++y) inversions += slot[x] > slot[y];
     // Stepping out of t0 through the facet opposite a turns from a towards b.
-    Index a = ab[0];
-    if (CGAL::orientation(p(i), p(j), p(ab[0]), p(ab[1])) != CGAL::POSITIVE) a = ab[1];
+    Index a = tets.tv[t0][slot[inversions % 2 == 0 ? 2 : 3]];
     loop.clear();
     Index t = t0;
     do {
       const Index g = dual.group[t];
       if (loop.empty() || loop.back() != g) loop.push_back(g);
       int ka = 0;
-      while (tets.tv[t][ka] != a) ++ka;
       Index next_b = kInvalidIndex;
-      for (Index v : tets.tv[t])
-        if (v != i && v != j && v != a) next_b = v;
+      for (int k = 0; k < 4; ++k) {
+        const Index v = tets.tv[t][k];
+        if (v == a) ka = k;
+        else if (v != i && v != j) next_b = v;
+      }
       t = tets.tn[t][ka];
       a = next_b;
     } while (t != t0);
@@ -366,11 +430,14 @@ struct CellReader3 {
   void readInterior(Index i, Scratch& s) const {
     const Vec3& seed = seeds[i];
     CellWalls& local = s.local;
-    local = CellWalls{};
+    local.labels.clear();
+    local.starts.assign(1, 0);
+    local.keys.clear();
     double v6 = 0;
     Vec3 moment = Vec3::Zero();
-    for (Index j : s.nbrs) {
-      wallLoop(i, j, s.loop);
+    for (std::size_t q = 0; q < s.nbrs.size(); ++q) {
+      const Index j = s.nbrs[q];
+      wallLoop(i, j, s.first_tet[q], s.loop);
       const std::size_t before = local.labels.size();
       local.add(static_cast<int>(j), s.loop);
       if (local.labels.size() == before) continue;
@@ -385,11 +452,11 @@ struct CellReader3 {
       }
     }
     if (local.labels.size() < 4 || !(v6 > 0)) {
-      readout.errors[i] = "the Voronoi cell of " + describeSeed(i, seed) + " has no volume";
+      readout.errors[i] = "the Voronoi cell of " + describeSeed(tets.order[i], seed) + " has no volume";
       return;
     }
-    out.centroids[i] = seed + moment / v6;
-    if (complex) readout.walls[i] = std::move(local);
+    out.centroids[tets.order[i]] = seed + moment / v6;
+    if (complex) readout.walls[i] = local;  // exact-size copies; the scratch keeps its capacity
   }
 
   // A boundary cell: the domain (or the ball's scaffold box) cut by the
@@ -419,15 +486,16 @@ struct CellReader3 {
         }
       }
     } catch (const GeometryError& e) {
-      readout.errors[i] = "the Voronoi cell of " + describeSeed(i, seed) + ": " + e.what();
+      readout.errors[i] = "the Voronoi cell of " + describeSeed(tets.order[i], seed) + ": " + e.what();
       return;
     }
     if (cell.numFaces() < 4) {
-      readout.errors[i] = "the Voronoi cell of " + describeSeed(i, seed) + " vanished when clipped to the domain";
+      readout.errors[i] =
+          "the Voronoi cell of " + describeSeed(tets.order[i], seed) + " vanished when clipped to the domain";
       return;
     }
     double volume = 0;
-    cell.volumeAndCentroid(volume, out.centroids[i]);
+    cell.volumeAndCentroid(volume, out.centroids[tets.order[i]]);
     if (complex) boundaryWalls(i, cell);
   }
 
@@ -436,10 +504,11 @@ struct CellReader3 {
     CellWalls& cw = readout.walls[i];
     std::vector<Vec3>& pts = readout.clipped_points[i];
     for (std::size_t v = 0; v < cell.vertices().size(); ++v)
-      pts.push_back(canonicalPosition(cell.vertices()[v], i, cell.vertexLabels(v), seeds, domain));
+      pts.push_back(canonicalPosition(cell.vertices()[v], i, cell.vertexLabels(v), seeds, tets.order, domain));
     for (std::size_t f = 0; f < cell.numFaces(); ++f) {
       if (cell.faceLabel(f) == kScaffoldLabel) {
-        readout.errors[i] = "the Voronoi cell of " + describeSeed(i, seeds[i]) + " was not closed by the ball's faces";
+        readout.errors[i] =
+            "the Voronoi cell of " + describeSeed(tets.order[i], seeds[i]) + " was not closed by the ball's faces";
         break;
       }
       cw.labels.push_back(cell.faceLabel(f));
@@ -475,7 +544,7 @@ CellReadout3 readCells(std::span<const Vec3> seeds, const ConvexDomain3& domain,
     CellReader3::Scratch scratch;
 #pragma omp for schedule(dynamic, 256)
     for (std::int64_t q = 0; q < ns; ++q) {
-      const Index i = tets.order[q];
+      const Index i = static_cast<Index>(q);
       if (reader.neighbours(i, scratch))
         reader.readInterior(i, scratch);
       else
@@ -485,11 +554,12 @@ CellReadout3 readCells(std::span<const Vec3> seeds, const ConvexDomain3& domain,
   return readout;
 }
 
-void throwCellErrors(std::span<const Vec3> seeds, const CellReadout3& readout) {
-  for (std::size_t i = 0; i < seeds.size(); ++i)
-    if (readout.duplicate[i] != kInvalidIndex) throwDuplicate(seeds, i, readout.duplicate[i]);
-  for (std::size_t i = 0; i < seeds.size(); ++i)
-    if (!readout.errors[i].empty()) throw GeometryError(readout.errors[i]);
+// The first error in seed order.
+void throwCellErrors(std::span<const Vec3> seeds, const Tetrahedra& tets, const CellReadout3& readout) {
+  for (std::size_t k = 0; k < seeds.size(); ++k)
+    if (readout.duplicate[tets.rank[k]] != kInvalidIndex) throwDuplicate(seeds, k, readout.duplicate[tets.rank[k]]);
+  for (std::size_t k = 0; k < seeds.size(); ++k)
+    if (!readout.errors[tets.rank[k]].empty()) throw GeometryError(readout.errors[tets.rank[k]]);
 }
 
 // --- clipVoronoi3, phase 4: welding the boundary cells' vertices -------------------
@@ -545,75 +615,134 @@ std::vector<Vec3> weldBoundaryCells(const ConvexDomain3& domain, const Tetrahedr
 
 // --- clipVoronoi3, phase 5: the walls and cells of the tissue ----------------------
 
-// The wall a cell lists towards a neighbour that already stored it: the
-// stored face, which must be the same loop reversed (GeometryError otherwise).
-Index storedWall(std::span<const Vec3> seeds, Index i, Index other, std::span<const Index> keys,
-                 const std::vector<std::pair<Index, Index>>& made_by_other, const std::vector<Index>& id,
-                 const ClippedCells3& out, std::vector<Index>& scratch) {
-  Index face = kInvalidIndex;
-  for (const auto& [j, fid] : made_by_other)
-    if (j == i) face = fid;
-  bool same = face != kInvalidIndex;
-  if (same) {
-    // Compare in vertex ids: every key of the stored wall has one.
-    scratch.clear();
-    for (Index k : keys) scratch.push_back(id[k]);
-    const std::span<const Index> stored(out.face_loops.data() + out.face_offsets[face],
-                                        out.face_offsets[face + 1] - out.face_offsets[face]);
-    same = reverseOf(stored, scratch);
-  }
-  if (!same)
-    throw GeometryError("the wall between the Voronoi cells of " + describeSeed(other, seeds[other]) + " and " +
-                        describeSeed(i, seeds[i]) +
-                        " comes out differently from the two cells (nearly degenerate seeds)");
-  return face;
-}
-
-// A wall between cells i < j is stored once from i (normal towards j) and
-// used reversed by j; vertices are numbered by first use.
-void assembleCells(std::span<const Vec3> seeds, const DualVertices3& dual, const std::vector<Vec3>& extra,
-                   const std::vector<CellWalls>& walls, ClippedCells3& out) {
+// A wall between the cells of ranks i < j is stored once, by i (normal
+// towards j), and used reversed by j, which must list exactly the reverse
+// loop (the same keys), or a GeometryError names the two seeds. Faces are
+// numbered along the ranks (CGAL's Hilbert order), each cell's stored walls
+// in its own order, and vertices by first use in that face list: consecutive
+// faces and their vertices lie close together, so building the complex
+// streams through memory. Cell k is seed k. Counting, writing the loops and
+// listing each cell's faces run in parallel; only the vertex numbering (one
+// pass over the loops) is sequential.
+void assembleCells(std::span<const Vec3> seeds, const Tetrahedra& tets, const DualVertices3& dual,
+                   const std::vector<Vec3>& extra, const std::vector<CellWalls>& walls, ClippedCells3& out) {
   const std::size_t n = seeds.size(), nt = dual.cc.size();
-  std::vector<Index> id(nt + extra.size(), kInvalidIndex);
-  std::vector<std::vector<std::pair<Index, Index>>> shared(n);  // (j, face) made by i < j
-  std::vector<std::uint8_t> matched;
-  std::vector<Index> scratch;
-  out.cell_offsets.reserve(n + 1);
-  out.cell_offsets.push_back(0);
-  out.face_offsets.push_back(0);
-  for (std::size_t i = 0; i < n; ++i) {
+  const std::int64_t ns = static_cast<std::int64_t>(n);
+  auto stores = [](int label, std::size_t i) { return label < 0 || static_cast<std::size_t>(label) > i; };
+  // Per rank: stored walls and their keys.
+  std::vector<Index> face_start(n + 1, 0), key_start(n + 1, 0);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t q = 0; q < ns; ++q) {
+    const Index i = static_cast<Index>(q);
     const CellWalls& cw = walls[i];
+    Index nf = 0, nk = 0;
+    for (std::size_t f = 0; f < cw.labels.size(); ++f)
+      if (stores(cw.labels[f], i)) {
+        ++nf;
+        nk += cw.starts[f + 1] - cw.starts[f];
+      }
+    face_start[q + 1] = nf;
+    key_start[q + 1] = nk;
+  }
+  for (std::size_t q = 0; q < n; ++q) {
+    face_start[q + 1] += face_start[q];
+    key_start[q + 1] += key_start[q];
+  }
+  const std::size_t nfaces = face_start[n];
+  // The first face rank i stores (its walls' face ids follow in order).
+  std::vector<Index> first_face(n);
+  out.face_offsets.resize(nfaces + 1);
+  out.face_offsets[nfaces] = key_start[n];
+  out.face_loops.resize(key_start[n]);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t q = 0; q < ns; ++q) {
+    const Index i = static_cast<Index>(q);
+    const CellWalls& cw = walls[i];
+    first_face[i] = face_start[q];
+    Index face = face_start[q], at = key_start[q];
     for (std::size_t f = 0; f < cw.labels.size(); ++f) {
-      const std::span<const Index> keys(cw.keys.data() + cw.starts[f], cw.starts[f + 1] - cw.starts[f]);
+      if (!stores(cw.labels[f], i)) continue;
+      out.face_offsets[face++] = at;
+      for (Index k = cw.starts[f]; k < cw.starts[f + 1]; ++k) out.face_loops[at++] = cw.keys[k];
+    }
+  }
+  // Vertices by first use along the face list.
+  std::vector<Index> id(nt + extra.size(), kInvalidIndex);
+  std::vector<Index> key_of_id;
+  key_of_id.reserve(nt / 2 + extra.size());
+  for (Index& k : out.face_loops) {
+    if (id[k] == kInvalidIndex) {
+      id[k] = static_cast<Index>(key_of_id.size());
+      key_of_id.push_back(k);
+    }
+    k = id[k];
+  }
+  out.positions.resize(key_of_id.size());
+  const std::int64_t nvs = static_cast<std::int64_t>(key_of_id.size());
+#pragma omp parallel for schedule(static)
+  for (std::int64_t v = 0; v < nvs; ++v) {
+    const Index k = key_of_id[v];
+    out.positions[v] = k < nt ? dual.cc[k] : extra[k - nt];
+  }
+  // Cells in seed order; a wall towards a lower neighbour j is j's stored
+  // face towards i, which must be the same loop reversed; a stored wall
+  // towards a higher neighbour must be listed by it.
+  out.cell_offsets.assign(n + 1, 0);
+  for (std::size_t k = 0; k < n; ++k)
+    out.cell_offsets[k + 1] = out.cell_offsets[k] + static_cast<Index>(walls[tets.rank[k]].labels.size());
+  out.cell_faces.resize(out.cell_offsets[n]);
+  // Per rank: the first lower neighbour whose wall differs, the first higher one missing a stored wall.
+  std::vector<Index> differs_from(n, kInvalidIndex), missing_in(n, kInvalidIndex);
+  // The position of the wall towards `label` in cell j's list, or -1.
+  auto wallTowards = [&](Index j, Index label) -> std::ptrdiff_t {
+    const std::vector<int>& labels = walls[j].labels;
+    const auto it = std::find(labels.begin(), labels.end(), static_cast<int>(label));
+    return it == labels.end() ? -1 : it - labels.begin();
+  };
+#pragma omp parallel for schedule(dynamic, 256)
+  for (std::int64_t q = 0; q < ns; ++q) {
+    const Index i = static_cast<Index>(q);
+    const CellWalls& cw = walls[i];
+    Index own = first_face[i];
+    CellFace* list = out.cell_faces.data() + out.cell_offsets[tets.order[i]];
+    for (std::size_t f = 0; f < cw.labels.size(); ++f) {
       const int label = cw.labels[f];
-      if (label >= 0 && static_cast<std::size_t>(label) < i) {
-        const Index other = static_cast<Index>(label);
-        const Index face = storedWall(seeds, static_cast<Index>(i), other, keys, shared[other], id, out, scratch);
-        matched[face] = 1;
-        out.cell_faces.push_back({face, true});
+      if (stores(label, i)) {
+        list[f] = {own++, false};
+        if (label >= 0 && missing_in[i] == kInvalidIndex && wallTowards(static_cast<Index>(label), i) < 0)
+          missing_in[i] = static_cast<Index>(label);
         continue;
       }
-      const Index face = static_cast<Index>(out.face_offsets.size() - 1);
-      for (Index k : keys) {
-        if (id[k] == kInvalidIndex) {
-          id[k] = static_cast<Index>(out.positions.size());
-          out.positions.push_back(k < nt ? dual.cc[k] : extra[k - nt]);
-        }
-        out.face_loops.push_back(id[k]);
+      const Index j = static_cast<Index>(label);
+      const std::ptrdiff_t g = wallTowards(j, i);
+      Index face = kInvalidIndex;
+      if (g >= 0) {
+        // j's stored walls before g give the face id.
+        face = first_face[j];
+        for (std::ptrdiff_t h = 0; h < g; ++h)
+          if (stores(walls[j].labels[h], j)) ++face;
+        const std::span<const Index> mine(cw.keys.data() + cw.starts[f], cw.starts[f + 1] - cw.starts[f]);
+        const std::span<const Index> theirs(walls[j].keys.data() + walls[j].starts[g],
+                                            walls[j].starts[g + 1] - walls[j].starts[g]);
+        if (!reverseOf(theirs, mine)) face = kInvalidIndex;
       }
-      out.face_offsets.push_back(static_cast<Index>(out.face_loops.size()));
-      out.cell_faces.push_back({face, false});
-      matched.push_back(label < 0);
-      if (label >= 0) shared[i].emplace_back(static_cast<Index>(label), face);
+      if (face == kInvalidIndex) {
+        if (differs_from[i] == kInvalidIndex) differs_from[i] = j;
+        face = 0;
+      }
+      list[f] = {face, true};
     }
-    out.cell_offsets.push_back(static_cast<Index>(out.cell_faces.size()));
   }
-  for (std::size_t i = 0; i < n; ++i)
-    for (const auto& [j, face] : shared[i])
-      if (!matched[face])
-        throw GeometryError("a wall of the Voronoi cell of " + describeSeed(i, seeds[i]) +
-                            " is missing from its neighbour " + describeSeed(j, seeds[j]) +
-                            " (nearly degenerate seeds)");
+  // The first error in seed order.
+  auto seed = [&](Index rank) { return describeSeed(tets.order[rank], seeds[tets.order[rank]]); };
+  for (std::size_t k = 0; k < n; ++k)
+    if (const Index i = tets.rank[k]; differs_from[i] != kInvalidIndex)
+      throw GeometryError("the wall between the Voronoi cells of " + seed(differs_from[i]) + " and " + seed(i) +
+                          " comes out differently from the two cells (nearly degenerate seeds)");
+  for (std::size_t k = 0; k < n; ++k)
+    if (const Index i = tets.rank[k]; missing_in[i] != kInvalidIndex)
+      throw GeometryError("a wall of the Voronoi cell of " + seed(i) + " is missing from its neighbour " +
+                          seed(missing_in[i]) + " (nearly degenerate seeds)");
 }
 
 }  // namespace
@@ -621,18 +750,18 @@ void assembleCells(std::span<const Vec3> seeds, const DualVertices3& dual, const
 ClippedCells3 clipVoronoi3(std::span<const Vec3> seeds, const ConvexDomain3& domain,
                            double duplicate_tolerance, CellOutput output) {
   Delaunay dt = triangulate(seeds);
-  const Tetrahedra tets = tetrahedra(dt, seeds.size());
+  const Tetrahedra tets = tetrahedra(dt, seeds);
   DualVertices3 dual;
-  computeCircumcentres(seeds, domain, tets, dual);
+  computeCircumcentres(tets.seeds, domain, tets, dual);
   groupCloseCircumcentres(tets, kWeldTolerance * domain.scale, dual);
   const bool complex = output == CellOutput::Complex;
   ClippedCells3 out;
   out.centroids.resize(seeds.size());
-  CellReadout3 readout = readCells(seeds, domain, duplicate_tolerance, complex, tets, dual, out);
-  throwCellErrors(seeds, readout);
+  CellReadout3 readout = readCells(tets.seeds, domain, duplicate_tolerance, complex, tets, dual, out);
+  throwCellErrors(seeds, tets, readout);
   if (!complex) return out;
   const std::vector<Vec3> extra = weldBoundaryCells(domain, tets, dual, readout);
-  assembleCells(seeds, dual, extra, readout.walls, out);
+  assembleCells(seeds, tets, dual, extra, readout.walls, out);
   return out;
 }
 

@@ -8,6 +8,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <set>
@@ -143,6 +144,73 @@ TEST_CASE("3D Voronoi neighbours are the Delaunay neighbours for interior cells"
     CHECK(tissue_neighbours == delaunay);
   }
   CHECK(interior >= 5);
+}
+
+// Cell c's vertex positions, sorted.
+std::vector<std::array<double, 3>> cellPoints(const Tissue& t, CellId c) {
+  std::vector<std::array<double, 3>> points;
+  for (VertexId v : t.cellVertices(c)) points.push_back({t.position(v).x(), t.position(v).y(), t.position(v).z()});
+  std::sort(points.begin(), points.end());
+  return points;
+}
+
+TEST_CASE("3D Voronoi cells of a few hundred seeds: volumes, Delaunay neighbours, any seed order",
+          "[voronoi][voronoi3d]") {
+  // The generator works along CGAL's spatial order of the seeds and maps back
+  // to cell k = seed k: listing the same seeds in another order must give the
+  // same cells (volumes, vertices, neighbours), renumbered.
+  const Box box{Vec3(0, 0, 0), Vec3(2, 1, 1.5)};
+  const std::size_t n = 400;
+  const auto seeds = randomSeeds(box, n, 31);
+  const Tissue t = voronoiTissue(seeds, box);
+  const auto report = validate(t);
+  INFO(report.message);
+  REQUIRE(report.ok);
+  REQUIRE(t.numCells() == n);
+  double total = 0;
+  for (CellId c : t.cells()) total += cellMeasure(t, c);
+  CHECK(total == Approx(2 * 1 * 1.5).epsilon(1e-12));
+
+  int interior = 0;
+  for (CellId c : t.cells()) {
+    const auto walls = t.cellWalls(c);
+    if (std::any_of(walls.begin(), walls.end(), [&](WallId w) { return t.isBoundaryWall(w); })) continue;
+    ++interior;
+    std::set<std::size_t> tissue_neighbours, delaunay;
+    for (CellId d : t.cellNeighbors(c)) tissue_neighbours.insert(d.index());
+    for (std::size_t j = 0; j < n; ++j)
+      if (j != c.index() && delaunayNeighbours(seeds, c.index(), j)) delaunay.insert(j);
+    INFO("cell " << c.index());
+    CHECK(tissue_neighbours == delaunay);
+  }
+  CHECK(interior >= 50);
+
+  // Seed m of the permuted list is seed perm[m] (137 is prime to 400).
+  std::vector<std::size_t> perm(n);
+  std::vector<Vec3> permuted(n);
+  for (std::size_t m = 0; m < n; ++m) {
+    perm[m] = (m * 137 + 11) % n;
+    permuted[m] = seeds[perm[m]];
+  }
+  const Tissue u = voronoiTissue(permuted, box);
+  REQUIRE(validate(u).ok);
+  REQUIRE(u.numVertices() == t.numVertices());
+  REQUIRE(u.numWalls() == t.numWalls());
+  for (std::size_t m = 0; m < n; ++m) {
+    const CellId cu(static_cast<Index>(m)), ct(static_cast<Index>(perm[m]));
+    INFO("permuted cell " << m << " = cell " << perm[m]);
+    CHECK(cellMeasure(u, cu) == Approx(cellMeasure(t, ct)).epsilon(1e-12));
+    std::set<std::size_t> nu, nt;
+    for (CellId d : u.cellNeighbors(cu)) nu.insert(perm[d.index()]);
+    for (CellId d : t.cellNeighbors(ct)) nt.insert(d.index());
+    CHECK(nu == nt);
+    const auto pu = cellPoints(u, cu), pt = cellPoints(t, ct);
+    REQUIRE(pu.size() == pt.size());
+    double worst = 0;
+    for (std::size_t k = 0; k < pu.size(); ++k)
+      for (int a = 0; a < 3; ++a) worst = std::max(worst, std::abs(pu[k][a] - pt[k][a]));
+    CHECK(worst <= 1e-12);
+  }
 }
 
 TEST_CASE("3D Voronoi tissue in a ball fills its icosahedron", "[voronoi][voronoi3d]") {

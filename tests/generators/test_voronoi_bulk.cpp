@@ -248,6 +248,12 @@ TEST_CASE("Voronoi tissues do not depend on the thread count", "[voronoi][thread
     const auto seeds = randomSeeds(Disk{}, 5000, 12);
     CHECK(identical(withThreads(1, seeds, Disk{}), withThreads(3, seeds, Disk{})));
   }
+  SECTION("3D box and ball, 1 and 2 threads") {
+    const auto seeds = randomSeeds(Box{}, 400, 15);
+    CHECK(identical(withThreads(1, seeds, Box{}), withThreads(2, seeds, Box{})));
+    const auto in_ball = randomSeeds(Ball{}, 400, 16);
+    CHECK(identical(withThreads(1, in_ball, Ball{}), withThreads(2, in_ball, Ball{})));
+  }
   SECTION("3D box") {
     const auto seeds = randomSeeds(Box{}, 3000, 13);
     const Tissue one = withThreads(1, seeds, Box{});

@@ -321,32 +321,50 @@ void CellComplex::addVolumes(std::span<const Index> offsets, std::span<const Ori
   const std::size_t nv = offsets.empty() ? 0 : offsets.size() - 1;
   if (nv && (offsets[0] != 0 || offsets[nv] != faces.size()))
     throw TopologyError("addVolumes: offsets do not cover the face list");
-  // Per-volume checks are independent: run them in parallel, report the first.
+  // Per-volume checks are independent: run them in parallel, report the
+  // first. They visit the volumes by their lowest face id: when faces are
+  // numbered along space (generators), volumes listed in another order
+  // (cell k = seed k) are then checked without missing the cache at every face.
   std::vector<std::uint8_t> bad(nv, 0);
   const std::int64_t nvs = static_cast<std::int64_t>(nv);
-#pragma omp parallel for schedule(dynamic, 256)
+  std::vector<std::pair<Index, Index>> visit(nv);  // (lowest face id, volume)
+#pragma omp parallel for schedule(static)
   for (std::int64_t k = 0; k < nvs; ++k) {
-    const auto list = faces.subspan(offsets[k], offsets[k + 1] - offsets[k]);
-    if (list.size() < 4) { bad[k] = 1; continue; }
-    std::vector<Index> seen;
-    seen.reserve(list.size());
-    for (OrientedFace of : list) {
-      if (!alive(of.handle())) { bad[k] = 1; break; }
-      seen.push_back(of.handle().index());
+    Index lowest = kInvalidIndex;
+    for (Index i = offsets[k]; i < offsets[k + 1]; ++i) lowest = std::min(lowest, faces[i].handle().index());
+    visit[k] = {lowest, static_cast<Index>(k)};
+  }
+  std::sort(visit.begin(), visit.end());
+#pragma omp parallel
+  {
+    std::vector<Index> seen;  // per thread, reused
+    std::vector<std::pair<Index, int>> edge_uses;
+#pragma omp for schedule(dynamic, 256)
+    for (std::int64_t m = 0; m < nvs; ++m) {
+      const Index k = visit[m].second;
+      const auto list = faces.subspan(offsets[k], offsets[k + 1] - offsets[k]);
+      if (list.size() < 4) { bad[k] = 1; continue; }
+      seen.clear();
+      for (OrientedFace of : list) {
+        if (!alive(of.handle())) { bad[k] = 1; break; }
+        seen.push_back(of.handle().index());
+      }
+      if (bad[k]) continue;
+      std::sort(seen.begin(), seen.end());
+      if (std::adjacent_find(seen.begin(), seen.end()) != seen.end() ||
+          !detail::closedOrientedSurface(list, [&](FaceId f) { return faceEdges(f); }, nullptr, &edge_uses))
+        bad[k] = 1;
     }
-    if (bad[k]) continue;
-    std::sort(seen.begin(), seen.end());
-    if (std::adjacent_find(seen.begin(), seen.end()) != seen.end() ||
-        !detail::closedOrientedSurface(list, [&](FaceId f) { return faceEdges(f); }, nullptr))
-      bad[k] = 1;
   }
   std::vector<std::uint32_t> uses(face_volumes_.size(), 0);
   for (std::size_t f = 0; f < uses.size(); ++f) uses[f] = face_volumes_.listSize(f);
+  // The volume's name is spelled out only when a check fails.
+  auto volumeName = [&](std::size_t k) { return "volume " + std::to_string(volume_faces_.size() + k); };
   for (std::size_t k = 0; k < nv; ++k) {
     const auto list = faces.subspan(offsets[k], offsets[k + 1] - offsets[k]);
-    const std::string vol = "volume " + std::to_string(volume_faces_.size() + k);
     const ElementId where{3, static_cast<Index>(volume_faces_.size() + k)};
     if (bad[k]) {
+      const std::string vol = volumeName(k);
       if (list.size() < 4)
         throw TopologyError(vol + " needs at least 4 faces, got " + std::to_string(list.size()), where);
       std::vector<Index> seen;
@@ -365,7 +383,8 @@ void CellComplex::addVolumes(std::span<const Index> offsets, std::span<const Ori
     }
     for (OrientedFace of : list)
       if (++uses[of.handle().index()] > 2)
-        throw TopologyError(vol + ": " + id("face", of.handle().index()) + " already bounds two volumes", where);
+        throw TopologyError(volumeName(k) + ": " + id("face", of.handle().index()) + " already bounds two volumes",
+                            where);
   }
   // Rebuild face -> volumes in one pass (old lists first, then the new volumes in order).
   const Index first = static_cast<Index>(volume_faces_.size());

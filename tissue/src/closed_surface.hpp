@@ -15,9 +15,14 @@ namespace tessella::detail {
 
 // An oriented surface is closed and consistently oriented when every edge is
 // traversed exactly once in each direction by its faces' loops.
+// `scratch` (optional) holds the edge uses, so that a caller checking many
+// surfaces allocates once.
 template <typename LoopOf>
-inline bool closedOrientedSurface(std::span<const OrientedFace> faces, LoopOf loopOf, Index* bad_edge) {
-  std::vector<std::pair<Index, int>> uses;  // (edge, +1 forward / -1 backward)
+inline bool closedOrientedSurface(std::span<const OrientedFace> faces, LoopOf loopOf, Index* bad_edge,
+                                  std::vector<std::pair<Index, int>>* scratch = nullptr) {
+  std::vector<std::pair<Index, int>> own;
+  std::vector<std::pair<Index, int>>& uses = scratch ? *scratch : own;  // (edge, +1 forward / -1 backward)
+  uses.clear();
   for (OrientedFace of : faces) {
     for (OrientedEdge oe : loopOf(of.handle())) {
       const bool forward = oe.reversed() == of.reversed();
