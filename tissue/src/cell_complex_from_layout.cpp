@@ -143,6 +143,7 @@ bool bulkLayoutValid(const ComplexLayout& L, std::size_t nv, std::size_t ne, std
   {
     std::vector<OrientedFace> surface;
     std::vector<OrientedEdge> loop;
+    std::vector<std::pair<Index, int>> edge_uses;
     auto loopOf = [&](FaceId f) -> const std::vector<OrientedEdge>& {
       loop.clear();
       for (Index packed : list(L.face_edge_offsets, fe, f.index()))
@@ -155,7 +156,7 @@ bool bulkLayoutValid(const ComplexLayout& L, std::size_t nv, std::size_t ne, std
       surface.clear();
       for (Index packed : items) surface.emplace_back(FaceId(packed >> 1), (packed & 1u) != 0);
       ok = ok && items.size() >= 4 && detail::closedOrientedSurface(std::span<const OrientedFace>(surface), loopOf,
-                                                                     nullptr);
+                                                                     nullptr, &edge_uses);
     }
   }
   return ok;
