@@ -179,9 +179,9 @@ void membraneStep(Tissue tissue, const char* what, double pressure, const char* 
   if (figure) bench::printFigure(figure, step, "s", target);
 }
 
-// base_distance 0: the default support (vertices within 1e-6 of the base plane). The footprint disk is a
-// 256-gon, so rim vertices on its sides are lifted up to ~1e-4 r above the base: free, and closed by a lid
-// that couples them all (docs/mechanics.md, "Cost"); 1e-3 r fixes the whole rim (the lid then drops out).
+// base_distance 0: the default support (vertices within 1e-6 of the base plane), which holds the whole rim:
+// the generator puts every rim vertex on the base circle (docs/mechanics.md, "Cost"). 1e-3 r: the same
+// support with a margin (it was the only way to hold the whole rim before the generator did).
 void dome(std::size_t cells, const char* figure, double target,
           solvers::SolverMethod method = solvers::SolverMethod::Auto, double base_distance = 0.0) {
   const double r = std::sqrt(static_cast<double>(cells) / std::numbers::pi);  // cells of area ~1

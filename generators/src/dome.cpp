@@ -7,6 +7,8 @@
 
 #include "tessella/generators/dome.hpp"
 
+#include <algorithm>
+#include <utility>
 #include <vector>
 
 #include "tessella/tissue/builders.hpp"
@@ -30,6 +32,29 @@ Tissue domeTissue(std::span<const Vec3> footprint_seeds, const Dome& dome, const
     seeds = detail::lloydRelax(seeds, domain, options.lloyd_iterations, options.duplicate_tolerance);
   detail::ClippedCells2 cells =
       detail::clipVoronoi2(seeds, domain, options.duplicate_tolerance, detail::CellOutput::Complex);
+  // The rim onto the base circle: the clipping domain is a polygon (256 sides) inscribed in the footprint circle,
+  // so the rim vertices between its corners lie up to R (1 - cos(pi/256)) = 7.5e-5 R inside the circle, and
+  // lifted they would sit above the base plane (up to 1e-4 R; docs/mechanics.md, "Cost"). Every vertex of an edge
+  // that only one cell uses is pushed radially onto the circle, where the lift puts it in the base plane.
+  std::vector<std::pair<Index, Index>> edges;
+  edges.reserve(cells.loops.size());
+  for (std::size_t q = 0; q + 1 < cells.offsets.size(); ++q)
+    for (Index k = cells.offsets[q]; k < cells.offsets[q + 1]; ++k) {
+      const Index a = cells.loops[k], b = cells.loops[k + 1 == cells.offsets[q + 1] ? cells.offsets[q] : k + 1];
+      edges.emplace_back(std::min(a, b), std::max(a, b));
+    }
+  std::sort(edges.begin(), edges.end());
+  for (std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i;
+    while (j < edges.size() && edges[j] == edges[i]) ++j;
+    if (j - i == 1)
+      for (const Index v : {edges[i].first, edges[i].second}) {
+        Vec3& p = cells.positions[v];
+        const Vec3 d(p.x() - footprint.center.x(), p.y() - footprint.center.y(), 0.0);
+        if (d.norm() > 0.0) p = footprint.center + d * (footprint.radius / d.norm());
+      }
+    i = j;
+  }
   for (Vec3& p : cells.positions) p = dome.lift(p);
   return buildPolygonTissue(std::move(cells.positions), cells.offsets, cells.loops, Embedding::Surface,
                             cells.order);

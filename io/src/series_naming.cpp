@@ -6,7 +6,6 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "tessella/io/field_state.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
 
@@ -49,26 +48,38 @@ std::vector<PvdEntry> truncateSeries(const std::string& pvd_path, const std::str
     fs::remove(file, ec);
     if (ec) throw InputError("cannot remove '" + file.string() + "': " + ec.message());
   };
-  // Temporaries of this series (<name>_NNNNNN.vtu.tmp-PID-N, <name>.pvd.tmp-PID-N).
-  const std::string step_prefix = name + "_", pvd_prefix = name + ".pvd.tmp-";
+  // Temporaries of this series (<name>_NNNNNN.vtu.tmp-PID-N, <name>.pvd.tmp-PID-N and those of the files and
+  // series beside it: <name>_NNNNNN.<tag>.vtu.tmp-PID-N, <name>.<tag>.pvd.tmp-PID-N).
+  const std::string step_prefix = name + "_", pvd_prefix = name + ".";
   for (const auto& entry : fs::directory_iterator(dir.empty() ? fs::path(".") : dir, ec)) {
     const std::string file = entry.path().filename().string();
-    const bool temporary = file.find(".vtu.tmp-") != std::string::npos || file.rfind(pvd_prefix, 0) == 0;
+    const bool temporary = file.find(".vtu.tmp-") != std::string::npos || file.find(".pvd.tmp-") != std::string::npos;
     if (temporary && (file.rfind(step_prefix, 0) == 0 || file.rfind(pvd_prefix, 0) == 0)) removeFile(entry.path());
   }
   if (!fs::exists(pvd_path, ec)) return {};
   std::vector<PvdEntry> kept;
+  std::vector<std::string> dropped_stems;  // "<name>_NNNNNN." of the snapshots dropped
   bool dropped = false;
   for (PvdEntry& entry : readPvdFile(pvd_path)) {
     if (entry.time <= last_time) {
       kept.push_back(std::move(entry));
     } else {
       removeFile(dir / entry.file);
-      // The solver fields' state written beside it (field_state.hpp), if any.
-      const fs::path beside = fieldStatePath((dir / entry.file).string());
-      if (fs::exists(beside, ec)) removeFile(beside);
+      dropped_stems.push_back(fs::path(entry.file).stem().string() + ".");
       dropped = true;
     }
+  }
+  // The files written beside the dropped snapshots (<stem>.<tag>.vtu: the solver fields' state,
+  // field_state.hpp; walls files, wall_vtu.hpp).
+  if (!dropped_stems.empty()) {
+    std::vector<fs::path> beside;
+    for (const auto& entry : fs::directory_iterator(dir.empty() ? fs::path(".") : dir, ec)) {
+      const std::string file = entry.path().filename().string();
+      if (file.size() < 4 || file.compare(file.size() - 4, 4, ".vtu") != 0) continue;
+      for (const std::string& stem : dropped_stems)
+        if (file.rfind(stem, 0) == 0) beside.push_back(entry.path());
+    }
+    for (const fs::path& file : beside) removeFile(file);
   }
   if (dropped) writePvdFile(pvd_path, kept, durable);
   return kept;

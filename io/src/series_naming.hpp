@@ -22,8 +22,8 @@ void checkNextTime(const std::string& pvd_path, const double* previous, double t
 
 /// Continues a series on disk at `last_time` (an interrupted run resumed):
 /// the entries of `pvd_path` up to that time stay, the files of later ones
-/// (and their field state files, fieldStatePath)
-/// and the temporaries of `<name>_*` an interrupted write left are deleted,
+/// (and every file beside them, <stem>.<tag>.vtu: field state, walls files)
+/// and the temporaries of `<name>_*` and `<name>.*` an interrupted write left are deleted,
 /// and the .pvd is rewritten. Returns the entries kept (none when there is
 /// no .pvd). InputError naming the file that cannot be read or removed.
 std::vector<PvdEntry> truncateSeries(const std::string& pvd_path, const std::string& name, double last_time,

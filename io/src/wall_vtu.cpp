@@ -3,6 +3,7 @@
 #include "tessella/io/wall_vtu.hpp"
 
 #include <filesystem>
+#include <typeindex>
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -36,6 +37,7 @@ void writeWallsVtu(const Tissue& tissue, const std::string& path, const WallArra
   };
   for (const auto& [name, values] : arrays.scalars) check(name, values.size());
   for (const auto& [name, values] : arrays.vectors) check(name, values.size());
+  for (const auto& [name, values] : arrays.tensors) check(name, values.size());
   // Points: the live vertices in slot order.
   std::vector<vtkIdType> point(tissue.topology().slots(0), -1);
   auto points = vtkSmartPointer<vtkPoints>::New();
@@ -76,7 +78,47 @@ void writeWallsVtu(const Tissue& tissue, const std::string& path, const WallArra
     for (const Vec3& v : values) a->InsertNextTuple3(v.x(), v.y(), v.z());
     grid->GetCellData()->AddArray(a);
   }
+  for (const auto& [name, values] : arrays.tensors) {
+    auto a = vtkSmartPointer<vtkDoubleArray>::New();
+    a->SetName(name.c_str());
+    a->SetNumberOfComponents(6);
+    for (const Sym3& s : values) {
+      // Sym3 holds xx yy zz xy xz yz; VTK's symmetric tensors are XX YY ZZ XY YZ XZ.
+      const double tuple[6] = {s.v[0], s.v[1], s.v[2], s.v[3], s.v[5], s.v[4]};
+      a->InsertNextTuple(tuple);
+    }
+    grid->GetCellData()->AddArray(a);
+  }
   detail::writeGridFile(grid, path, options);
+}
+
+WallArrays wallPropertyArrays(const Tissue& tissue, const std::vector<std::string>& names) {
+  WallArrays out;
+  const PropertyStore& store = tissue.wallProperties();
+  for (const std::string& name : names) {
+    const PropertyColumnBase* column = nullptr;
+    for (std::size_t k = 0; k < store.numColumns() && !column; ++k)
+      if (store.column(k).name() == name) column = &store.column(k);
+    if (!column) continue;
+    const std::type_index type = column->type();
+    if (type == typeid(Vec3)) {
+      auto& v = out.vectors[name];
+      const auto& c = store.get<Vec3>(name);
+      for (WallId w : tissue.walls()) v.push_back(c[w]);
+    } else if (type == typeid(Sym3)) {
+      auto& v = out.tensors[name];
+      const auto& c = store.get<Sym3>(name);
+      for (WallId w : tissue.walls()) v.push_back(c[w]);
+    } else if (type == typeid(double)) {
+      auto& v = out.scalars[name];
+      const auto& c = store.get<double>(name);
+      for (WallId w : tissue.walls()) v.push_back(c[w]);
+    } else {
+      throw InputError("walls file: the wall property '" + name + "' is not a number, a vector or a symmetric "
+                       "tensor per wall");
+    }
+  }
+  return out;
 }
 
 WallsFile readWallsVtu(const std::string& path) {
@@ -108,6 +150,13 @@ WallsFile readWallsVtu(const std::string& path) {
       for (vtkIdType c = 0; c < a->GetNumberOfTuples(); ++c) {
         const double* t = a->GetTuple3(c);
         v.emplace_back(t[0], t[1], t[2]);
+      }
+    } else if (a->GetNumberOfComponents() == 6) {
+      auto& v = out.arrays.tensors[a->GetName()];
+      double t[6];
+      for (vtkIdType c = 0; c < a->GetNumberOfTuples(); ++c) {
+        a->GetTuple(c, t);
+        v.push_back(Sym3{{t[0], t[1], t[2], t[3], t[5], t[4]}});
       }
     }
   }

@@ -347,11 +347,20 @@ double FanMembraneModel::restArea(std::size_t f) const {
   return area;
 }
 
-double FanMembraneModel::growRestShape(const Eigen::VectorXd& x, const StrainGrowthLaw& law, double dt) {
-  law.check();
+double FanMembraneModel::growRestShape(const Eigen::VectorXd& x, const StrainGrowthLaw& base_law, double dt,
+                                       const std::vector<double>& extensibility) {
+  base_law.check();
   if (!(dt >= 0.0 && std::isfinite(dt))) throw InputError("membrane growth: dt " + formatNumber(dt) + " must be >= 0");
+  if (!extensibility.empty() && extensibility.size() != polygons_.size())
+    throw InputError("membrane growth: " + std::to_string(extensibility.size()) + " extensibilities for " +
+                     std::to_string(polygons_.size()) + " polygons");
   double fastest = 0.0;
-  for (std::size_t f = 0; f < polygons_.size(); ++f)
+  for (std::size_t f = 0; f < polygons_.size(); ++f) {
+    StrainGrowthLaw law = base_law;
+    if (!extensibility.empty()) {
+      law.extensibility = extensibility[f];
+      law.check();
+    }
     for (std::size_t i = 0; i < numTriangles(f) && polygons_[f].elastic; ++i) {
       Element& el = elements_[first_element_[f] + i];
       const Mat32 F = deformationGradient(corners(x, f, i), el);
@@ -364,6 +373,7 @@ double FanMembraneModel::growRestShape(const Eigen::VectorXd& x, const StrainGro
       }
       el.setRestShape(G * el.D);
     }
+  }
   return fastest;
 }
 

@@ -428,6 +428,75 @@ void writeMembraneCellStress(Tissue& tissue, const FanMembraneModel& model, cons
   }
 }
 
+const std::vector<std::string>& membraneWallOutputNames() {
+  static const std::vector<std::string> names = {
+      kWallStressName,  kStressMaxName,     kStressMinName,         kStressDirectionName, kStressMinDirectionName,
+      kGreenStrainName, kStrainMaxName,     kStrainMinName,         kStrainDirectionName, kStrainMinDirectionName,
+      kFibreDirectionName, kRestAreaName,   kGrowthRateName,        kPressureLoadName};
+  return names;
+}
+
+void prepareMembraneWallOutputs(Tissue& tissue) {
+  PropertyStore& walls = tissue.wallProperties();
+  for (const char* name : {kWallStressName, kGreenStrainName})
+    if (!walls.has(name)) walls.add<Sym3>(name, Sym3{}, DivisionPolicy::Copy);
+  for (const char* name : {kStressDirectionName, kStressMinDirectionName, kStrainDirectionName,
+                           kStrainMinDirectionName, kFibreDirectionName})
+    if (!walls.has(name)) walls.add<Vec3>(name, Vec3::Zero(), DivisionPolicy::Copy);
+  for (const char* name : {kStressMaxName, kStressMinName, kStrainMaxName, kStrainMinName, kRestAreaName,
+                           kGrowthRateName, kPressureLoadName})
+    wallOutput(tissue, name);
+}
+
+void writeMembraneWallOutputs(Tissue& tissue, const FanMembraneModel& model, const Eigen::VectorXd& x) {
+  if (tissue.dim() != 3)
+    throw MechanicsError("mechanics: per-wall membrane outputs are for a 3D tissue's walls (a sheet's membranes "
+                         "are its cells: writeMembraneCellStress)");
+  const std::vector<FaceId> faces = membraneFaces(tissue);
+  if (model.numPolygons() < faces.size())
+    throw MechanicsError("mechanics: the membrane model has " + std::to_string(model.numPolygons()) +
+                         " polygons for " + std::to_string(faces.size()) + " walls");
+  prepareMembraneWallOutputs(tissue);
+  PropertyStore& walls = tissue.wallProperties();
+  auto tensor = [&](const char* name) -> PropertyColumn<Sym3>& { return walls.get<Sym3>(name); };
+  auto vector = [&](const char* name) -> PropertyColumn<Vec3>& { return walls.get<Vec3>(name); };
+  auto& stress = tensor(kWallStressName);
+  auto& strain = tensor(kGreenStrainName);
+  auto& stress_max = wallOutput(tissue, kStressMaxName);
+  auto& stress_min = wallOutput(tissue, kStressMinName);
+  auto& strain_max = wallOutput(tissue, kStrainMaxName);
+  auto& strain_min = wallOutput(tissue, kStrainMinName);
+  auto& stress_dir = vector(kStressDirectionName);
+  auto& stress_min_dir = vector(kStressMinDirectionName);
+  auto& strain_dir = vector(kStrainDirectionName);
+  auto& strain_min_dir = vector(kStrainMinDirectionName);
+  auto& fibre = vector(kFibreDirectionName);
+  auto& rest_area = wallOutput(tissue, kRestAreaName);
+  auto& load = wallOutput(tissue, kPressureLoadName);
+  for (std::size_t i = 0; i < faces.size(); ++i) {
+    const WallId w(faces[i].index());
+    Vec3 n;
+    const Eigen::Matrix3d t = model.meanTension(x, i, &n);
+    const Eigen::Matrix3d e = model.meanStrain(x, i);
+    const Principal pt = inPlane(t, n), pe = inPlane(e, n);
+    stress[w] = Sym3::fromMatrix(t);
+    strain[w] = Sym3::fromMatrix(e);
+    stress_max[w] = pt.high;
+    stress_min[w] = pt.low;
+    stress_dir[w] = pt.direction;
+    stress_min_dir[w] = n.cross(pt.direction);
+    strain_max[w] = pe.high;
+    strain_min[w] = pe.low;
+    strain_dir[w] = pe.direction;
+    strain_min_dir[w] = n.cross(pe.direction);
+    const Vec3& g = model.polygon(i).fibre;  // zero: none (the first edge of each triangle)
+    const Vec3 f = g - g.dot(n) * n;
+    fibre[w] = f.norm() > 1e-12 * g.norm() ? Vec3(f.normalized()) : Vec3::Zero();
+    rest_area[w] = model.restArea(i);
+    load[w] = std::abs(model.polygon(i).pressure);
+  }
+}
+
 MembraneStepReport membraneGrowthStep(Tissue& tissue, const MembraneGrowthParams& params, MembraneRestState& state,
                                       double dt, std::mt19937_64* rng) {
   params.check();
@@ -461,13 +530,34 @@ MembraneStepReport membraneGrowthStep(Tissue& tissue, const MembraneGrowthParams
     }
   }
   writeMembraneCellStress(tissue, model, x);
+  if (tissue.dim() == 3) writeMembraneWallOutputs(tissue, model, x);
   const std::vector<double> rest_before = cellRestAreas(tissue, model, faces);
-  report.max_growth_rate = model.growRestShape(x, params.growth, dt);
+  std::vector<double> wall_rest_before(faces.size());
+  for (std::size_t i = 0; i < faces.size(); ++i) wall_rest_before[i] = model.restArea(i);
+  // phi per polygon: the cell's (sheet) or the mean of the wall's cells' (3D) extensibility, when the tissue has it.
+  std::vector<double> phi(model.numPolygons(), params.growth.extensibility);
+  if (tissue.cellProperties().has(kExtensibilityName)) {
+    const std::vector<double> wall_phi = wallExtensibilities(tissue, params.growth.extensibility);
+    const auto& cell_phi = tissue.cellProperties().get<double>(kExtensibilityName);
+    for (std::size_t i = 0; i < faces.size(); ++i)
+      phi[i] = tissue.dim() == 2 ? cell_phi[CellId(faces[i].index())] : wall_phi[faces[i].index()];
+  }
+  report.max_growth_rate = model.growRestShape(x, params.growth, dt, phi);
   const std::vector<double> rest_after = cellRestAreas(tissue, model, faces);
   auto& growth_rate = cellOutput(tissue, kGrowthRateName);
   for (CellId c : tissue.cells()) {
     const double a0 = rest_before[c.index()];
     growth_rate[c] = dt > 0.0 && a0 > 0.0 ? (rest_after[c.index()] - a0) / (a0 * dt) : 0.0;
+  }
+  if (tissue.dim() == 3) {
+    auto& wall_rate = wallOutput(tissue, kGrowthRateName);
+    auto& wall_rest = wallOutput(tissue, kRestAreaName);
+    for (std::size_t i = 0; i < faces.size(); ++i) {
+      const WallId w(faces[i].index());
+      const double a0 = wall_rest_before[i], a1 = model.restArea(i);
+      wall_rate[w] = dt > 0.0 && a0 > 0.0 ? (a1 - a0) / (a0 * dt) : 0.0;
+      wall_rest[w] = a1;
+    }
   }
   auto& ratio = tissue.properties(2).get<double>(kMembraneRestRatioName);
   for (std::size_t i = 0; i < faces.size(); ++i) {

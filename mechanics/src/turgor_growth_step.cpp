@@ -3,6 +3,7 @@
 #include "tessella/mechanics/turgor_growth_step.hpp"
 
 #include "tessella/mechanics/planar_dofs.hpp"
+#include "tessella/mechanics/tissue_membranes.hpp"
 #include "tessella/mechanics/wall_spring_model.hpp"
 #include "tessella/mechanics/wall_state.hpp"
 #include "tessella/tissue/errors.hpp"
@@ -31,6 +32,7 @@ void prepareTurgorState(Tissue& tissue, const TurgorGrowthParams& params) {
   restLengths(tissue);
   wallOutput(tissue, kWallStrainName);
   wallOutput(tissue, kWallTensionName);
+  wallOutput(tissue, kGrowthRateName);
   cellOutput(tissue, kTurgorPressureName, params.pressure);
 }
 
@@ -51,7 +53,9 @@ TurgorStepReport turgorGrowthStep(Tissue& tissue, const TurgorGrowthParams& para
 
   PropertyColumn<double>& strain = wallOutput(tissue, kWallStrainName);
   PropertyColumn<double>& tension = wallOutput(tissue, kWallTensionName);
+  PropertyColumn<double>& growth_rate = wallOutput(tissue, kGrowthRateName);
   const auto& element = model.springElement();
+  const std::vector<double> phi = wallExtensibilities(tissue, params.growth.extensibility);
   double rate_sum = 0.0;
   for (std::size_t i = 0; i < model.springs().size(); ++i) {
     const Index w = element[i];
@@ -59,8 +63,12 @@ TurgorStepReport turgorGrowthStep(Tissue& tissue, const TurgorGrowthParams& para
     strain[w] = e;
     tension[w] = model.tension(x, i);
     report.max_strain = i == 0 ? e : std::max(report.max_strain, e);
-    rate_sum += params.growth.relativeRate(e);
-    rest[w] = params.growth.grownRestLength(rest[w], e, dt);
+    StrainGrowthLaw law = params.growth;
+    law.extensibility = phi[w];
+    rate_sum += law.relativeRate(e);
+    const double before = rest[w];
+    rest[w] = law.grownRestLength(before, e, dt);
+    growth_rate[w] = dt > 0.0 && before > 0.0 ? (rest[w] - before) / (before * dt) : 0.0;
   }
   if (!model.springs().empty()) report.mean_growth_rate = rate_sum / static_cast<double>(model.springs().size());
   return report;

@@ -6,6 +6,7 @@
 #include "tessella/io/import.hpp"
 #include "tessella/io/series.hpp"
 #include "tessella/io/vtu.hpp"
+#include "tessella/io/wall_vtu.hpp"
 
 namespace tessella::python {
 
@@ -41,6 +42,31 @@ void bindIo(py::module_& m) {
         py::arg("tissue"), py::arg("path"), py::arg("compression") = std::string(io::compressionName(io::VtuOptions{}.compression)), py::arg("compression_level") = 5,
         "One .vtu snapshot with every writable cell and vertex property (written atomically).");
   m.def("read_vtu", &io::readTissueVtu, py::arg("path"), "A tissue back from a snapshot written by write_vtu.");
+  m.def(
+      "read_walls",
+      [](const std::string& path) {
+        const io::WallsFile f = io::readWallsVtu(path);
+        py::dict d;
+        d["wall_id"] = py::array_t<int>(static_cast<py::ssize_t>(f.wall_id.size()), f.wall_id.data());
+        for (const auto& [name, values] : f.arrays.scalars)
+          d[py::str(name)] = py::array_t<double>(static_cast<py::ssize_t>(values.size()), values.data());
+        for (const auto& [name, values] : f.arrays.vectors) d[py::str(name)] = vec3Copy(values);
+        for (const auto& [name, values] : f.arrays.tensors) {
+          py::array_t<double> a({static_cast<py::ssize_t>(values.size()), py::ssize_t{3}, py::ssize_t{3}});
+          auto r = a.mutable_unchecked<3>();
+          for (std::size_t i = 0; i < values.size(); ++i) {
+            const Mat3 m3 = values[i].matrix();
+            for (int j = 0; j < 3; ++j)
+              for (int k = 0; k < 3; ++k) r(static_cast<py::ssize_t>(i), j, k) = m3(j, k);
+          }
+          d[py::str(name)] = a;
+        }
+        return d;
+      },
+      py::arg("path"), R"doc(
+The arrays of a walls file (<stem>.pin.vtu, <stem>.walls.vtu; docs/output.md) as a dict of NumPy arrays, one row
+per wall in the file's order: wall_id (the wall's slot), scalars (n,), vectors (n, 3), symmetric tensors (n, 3, 3).
+)doc");
 
   m.def("import_tissue_with_report",
         [](const std::string& path, const std::string& format, double scale, double simplify, bool repair,

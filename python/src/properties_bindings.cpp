@@ -3,7 +3,8 @@
 // Property columns from Python: add with a division policy, read as a NumPy
 // copy or view, write from an array. One column type per NumPy dtype:
 //   float64 <-> double, int64 <-> int64, int32 <-> int (C++ `int`),
-//   uint8 <-> flags, "vec3" <-> Vec3 ((n, 3) float64).
+//   uint8 <-> flags, "vec3" <-> Vec3 ((n, 3) float64), "sym3" <-> Sym3 (a
+//   symmetric tensor: (n, 3, 3) float64; set from the upper triangle).
 // `degree` selects the element kind (0 vertices, 1 edges, 2 faces, 3
 // volumes); None means the cells (dim) and "wall" the walls (dim - 1).
 #include <cstdint>
@@ -58,6 +59,7 @@ decltype(auto) dispatch(const PropertyColumnBase& c, const std::string& name, F&
   if (ty == typeid(std::int32_t)) return f.template operator()<std::int32_t>();
   if (ty == typeid(std::uint8_t)) return f.template operator()<std::uint8_t>();
   if (ty == typeid(Vec3)) return f.template operator()<Vec3>();
+  if (ty == typeid(Sym3)) return f.template operator()<Sym3>();
   // Further types a snapshot read back may hold (io::readTissueVtu).
   if (ty == typeid(float)) return f.template operator()<float>();
   if (ty == typeid(std::int8_t)) return f.template operator()<std::int8_t>();
@@ -71,7 +73,32 @@ decltype(auto) dispatch(const PropertyColumnBase& c, const std::string& name, F&
 template <typename T>
 std::string dtypeName() {
   if constexpr (std::is_same_v<T, Vec3>) return "vec3";
+  else if constexpr (std::is_same_v<T, Sym3>) return "sym3";
   else return std::string(py::str(py::dtype::of<T>()));  // "float64", "int32", ...
+}
+
+/// Symmetric tensors as an (n, 3, 3) array (a copy owned by NumPy).
+py::array_t<double> sym3Copy(std::span<const Sym3> v) {
+  py::array_t<double> a({static_cast<py::ssize_t>(v.size()), py::ssize_t{3}, py::ssize_t{3}});
+  auto r = a.mutable_unchecked<3>();
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    const Mat3 m = v[i].matrix();
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) r(static_cast<py::ssize_t>(i), j, k) = m(j, k);
+  }
+  return a;
+}
+
+/// An (n, 3, 3) array as symmetric tensors, from its upper triangles.
+std::vector<Sym3> sym3FromArray(const py::handle& obj, const std::string& what) {
+  auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(obj);
+  if (!a || a.ndim() != 3 || a.shape(1) != 3 || a.shape(2) != 3)
+    throw InputError(what + ": expected an (n, 3, 3) array of symmetric tensors");
+  auto r = a.unchecked<3>();
+  std::vector<Sym3> v(static_cast<std::size_t>(a.shape(0)));
+  for (py::ssize_t i = 0; i < a.shape(0); ++i)
+    v[static_cast<std::size_t>(i)] = Sym3{{r(i, 0, 0), r(i, 1, 1), r(i, 2, 2), r(i, 0, 1), r(i, 0, 2), r(i, 1, 2)}};
+  return v;
 }
 
 PropertyColumnBase& findColumn(PropertyStore& store, const std::string& name, int degree) {
@@ -172,10 +199,12 @@ degree: None (cells), 'wall', 'vertex' or 0..dim.
             return dispatch(c, name, [&]<typename T>() -> py::object {
               const auto& v = static_cast<PropertyColumn<T>&>(c).values();
               if constexpr (std::is_same_v<T, Vec3>) return vec3Copy(v);
+              else if constexpr (std::is_same_v<T, Sym3>) return sym3Copy(v);
               else return py::array_t<T>(static_cast<py::ssize_t>(v.size()), v.data());
             });
           },
-          py::arg("name"), py::arg("degree") = py::none(), "The column's values per slot, as a NumPy array (a copy).")
+          py::arg("name"), py::arg("degree") = py::none(),
+          "The column's values per slot, as a NumPy array (a copy; vec3: (n, 3), sym3: (n, 3, 3)).")
       .def(
           "property_view",
           [](py::object self, const std::string& name, py::object degree) -> py::object {
@@ -185,6 +214,9 @@ degree: None (cells), 'wall', 'vertex' or 0..dim.
             return dispatch(c, name, [&]<typename T>() -> py::object {
               auto& v = static_cast<PropertyColumn<T>&>(c).values();
               if constexpr (std::is_same_v<T, Vec3>) return vec3View(v.data(), v.size(), self, true);
+              else if constexpr (std::is_same_v<T, Sym3>)
+                throw InputError("property_view('" + name + "'): a symmetric tensor column (sym3) has no view; "
+                                 "read it with property() (an (n, 3, 3) copy)");
               else return py::array_t<T>({static_cast<py::ssize_t>(v.size())}, {static_cast<py::ssize_t>(sizeof(T))}, v.data(), self);
             });
           },
@@ -206,6 +238,12 @@ are added. Fetch a new view after each step that can divide cells.
                 if (in.size() != v.size())
                   throw InputError("set_property('" + name + "'): expected " + std::to_string(v.size()) + " rows, got " +
                                    std::to_string(in.size()));
+                v = in;
+              } else if constexpr (std::is_same_v<T, Sym3>) {
+                const std::vector<Sym3> in = sym3FromArray(values, "set_property('" + name + "')");
+                if (in.size() != v.size())
+                  throw InputError("set_property('" + name + "'): expected " + std::to_string(v.size()) +
+                                   " tensors, got " + std::to_string(in.size()));
                 v = in;
               } else {
                 auto a = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(values);

@@ -349,12 +349,17 @@ case "$case_name" in
     printf 'id,time\n0,1\n' >"$tmp/out/primordia.csv"; : >"$tmp/out/primordia.csv.tmp"
     # And its PIN walls files (network.pin), this run writing none.
     : >"$tmp/out/tissue_000009.pin.vtu"; : >"$tmp/out/tissue_000010.pin.vtu.tmp-123-6"
+    # And its mechanics walls files and the walls files' series.
+    : >"$tmp/out/tissue_000009.walls.vtu"; : >"$tmp/out/tissue.walls.pvd"; : >"$tmp/out/tissue.pin.pvd"
     "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/out" -q --overwrite || fail "--overwrite failed"
     left=$(find "$tmp/out" -name '*.tmp*')
     [ -z "$left" ] || fail "temporaries left: $left"
     [ -f "$tmp/out/keep.txt" ] || fail "a file of the user's was removed"
     [ ! -e "$tmp/out/primordia.csv" ] || fail "the previous run's primordia.csv was left"
     [ ! -e "$tmp/out/tissue_000009.pin.vtu" ] || fail "the previous run's PIN walls file was left"
+    for f in tissue_000009.walls.vtu tissue.walls.pvd tissue.pin.pvd; do
+      [ ! -e "$tmp/out/$f" ] || fail "the previous run's $f was left"
+    done
     ;;
   disk_full)
     # A full disk: the error names the file and says "No space left on device", without VTK's dump,

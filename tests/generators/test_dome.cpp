@@ -62,6 +62,40 @@ TEST_CASE("a paraboloid dome has every vertex on its paraboloid", "[dome]") {
   }
 }
 
+TEST_CASE("a dome's whole rim lies on its base circle, in the base plane", "[dome]") {
+  // The footprint is a 256-gon inscribed in the circle: before the rim was put on the circle, the rim vertices on
+  // its sides sat up to 1e-4 R above the base plane.
+  for (const Dome::Shape shape : {Dome::Shape::SphericalCap, Dome::Shape::Paraboloid}) {
+    Dome dome;
+    dome.shape = shape;
+    dome.base_center = Vec3(2, -1, 0.5);
+    dome.base_radius = 3;
+    dome.height = 1.5;
+    const Tissue t = domeTissue(randomSeeds(Disk{Vec3(2, -1, 0), 3, 256}, 400, 5), dome);
+    const auto report = validate(t);
+    INFO(report.message);
+    REQUIRE(report.ok);
+    std::size_t rim = 0, corners_only = 0;
+    for (WallId w : t.walls()) {
+      if (!t.isBoundaryWall(w)) continue;
+      for (VertexId v : t.topology().edgeVertices(EdgeId(w.index()))) {
+        const Vec3 d = t.position(v) - dome.base_center;
+        CHECK(std::abs(d.z()) <= 1e-12);
+        CHECK(std::abs(std::hypot(d.x(), d.y()) - 3.0) <= 1e-12 * 3.0);
+        ++rim;
+      }
+    }
+    // Every other vertex is inside the circle, above the plane.
+    for (VertexId v : t.vertices()) {
+      const Vec3 d = t.position(v) - dome.base_center;
+      if (std::hypot(d.x(), d.y()) < 3.0 * (1 - 1e-9)) CHECK(d.z() > 0.0);
+      else ++corners_only;
+    }
+    CHECK(rim > 2 * 256);  // each rim vertex counted by its two rim walls: more than the polygon's corners
+    CHECK(corners_only == rim / 2);
+  }
+}
+
 TEST_CASE("bad domes raise InputError naming the field", "[dome][errors]") {
   Dome cap;
   cap.height = 1.5;  // taller than the base radius: overhangs

@@ -6,13 +6,17 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <numbers>
 
+#include "tessella/io/pvd.hpp"
+#include "tessella/io/wall_vtu.hpp"
 #include "tessella/mechanics/errors.hpp"
 #include "tessella/mechanics/tissue_membranes.hpp"
 #include "tessella/mechanics/wall_state.hpp"
 #include "tessella/mechanics/wall_stress.hpp"
+#include "tessella/sim/run/run.hpp"
 #include "tessella/sim/sections/simulation_config.hpp"
 #include "tessella/sim/simulation.hpp"
 #include "tessella/solvers/linear_solver.hpp"
@@ -24,6 +28,7 @@ using namespace tessella;
 using namespace tessella::sim;
 using tessella::sim::test::configErrorOf;
 using tessella::sim::test::sourcePath;
+using tessella::sim::test::ScratchDir;
 
 namespace {
 
@@ -420,4 +425,102 @@ TEST_CASE("mechanics.material: neo_hookean reaches the membranes; its errors at 
   CAPTURE(gaps[0], gaps[1]);  // measured 0.127 and 0.012
   CHECK(gaps[1] < 0.2 * gaps[0]);
   CHECK(gaps[1] < 0.02);
+
+TEST_CASE("The walls file of wall springs: a growing ring's closed form read back from the file",
+          "[sim][mechanics][output]") {
+  // One hexagon of side L0 = 0.8, E t = 1, P = 0.1: S (L - L0) / L0 = P L / (2 tan(pi/6)); its rest lengths grow
+  // by exp(phi max(strain - threshold, 0) dt) in the step.
+  Simulation sim = Simulation::fromYaml(R"(
+tissue: {generator: hexagonal_grid, hexagonal_grid: {nx: 1, ny: 1, radius: 0.8}}
+mechanics: {model: wall_springs, pressure: 0.1, young: 2.0, thickness: 0.5, tolerance: 1.0e-13,
+            extensibility: 0.5, threshold: 0.02}
+time: {end: 0.2, dt: 0.2}
+)");
+  sim.step();
+  ScratchDir dir;
+  sim.writeSnapshot((dir.path() / "tissue_000001.vtu").string());
+  const io::WallsFile f = io::readWallsVtu((dir.path() / "tissue_000001.walls.vtu").string());
+  REQUIRE(f.wall_id.size() == 6);
+  const double L0 = 0.8, a = 0.1 * L0 / (2 * 1.0 * std::tan(std::numbers::pi / 6)), strain = a / (1 - a);
+  const double L = L0 / (1 - a), grown = std::exp(0.5 * (strain - 0.02) * 0.2);
+  for (std::size_t k = 0; k < 6; ++k) {
+    CHECK(f.arrays.scalars.at("wall_strain")[k] == Approx(strain).epsilon(1e-9));
+    const double tension = 0.1 * L / (2 * std::tan(std::numbers::pi / 6));
+    CHECK(f.arrays.scalars.at("wall_tension")[k] == Approx(tension).epsilon(1e-9));
+    CHECK(f.arrays.scalars.at("rest_length")[k] == Approx(L0 * grown).epsilon(1e-9));
+    CHECK(f.arrays.scalars.at("growth_rate")[k] == Approx((grown - 1) / 0.2).epsilon(1e-9));
+    // The unit vector along the wall, from its first vertex to its second.
+    const auto uv = sim.tissue().topology().edgeVertices(EdgeId(static_cast<Index>(f.wall_id[k])));
+    const Vec3 d = sim.tissue().position(uv[1]) - sim.tissue().position(uv[0]);
+    CHECK((f.arrays.vectors.at("wall_direction")[k] - d / d.norm()).norm() < 1e-12);
+  }
+}
+
+TEST_CASE("A 3D membrane run writes its walls beside every snapshot and lists them in tissue.walls.pvd",
+          "[sim][mechanics][output]") {
+  namespace fs = std::filesystem;
+  ScratchDir dir;
+  const std::string out = (dir.path() / "run").string();
+  PreparedRun run = PreparedRun::prepare(
+      loadSimulationConfigFile(sourcePath("configs/turgor_tissue_3d.yaml"), {"time.end=0.1", "output.every=1"}),
+      RunOptions{out, false});
+  run.execute();
+  const auto listed = io::readPvdFile((fs::path(out) / "tissue.walls.pvd").string());
+  REQUIRE(listed.size() == 2);
+  CHECK(listed[0].file == "tissue_000000.walls.vtu");
+  CHECK(listed[1].file == "tissue_000001.walls.vtu");
+  CHECK(listed[1].time == io::readPvdFile((fs::path(out) / "tissue.pvd").string())[1].time);
+  const Tissue& t = run.simulation().tissue();
+  // Before the first step: zeros; after it, the walls' properties bit for bit.
+  const io::WallsFile first = io::readWallsVtu((fs::path(out) / listed[0].file).string());
+  for (const auto& [name, values] : first.arrays.scalars)
+    for (double v : values) REQUIRE(v == 0.0);
+  const io::WallsFile f = io::readWallsVtu((fs::path(out) / listed[1].file).string());
+  REQUIRE(f.wall_id.size() == t.numWalls());
+  const PropertyStore& walls = t.wallProperties();
+  std::size_t arrays = 0;
+  for (const std::string& name : mechanics::membraneWallOutputNames()) {
+    CAPTURE(name);
+    std::size_t k = 0;
+    if (f.arrays.scalars.count(name)) {
+      for (WallId w : t.walls()) REQUIRE(f.arrays.scalars.at(name)[k++] == walls.get<double>(name)[w]);
+    } else if (f.arrays.vectors.count(name)) {
+      for (WallId w : t.walls()) REQUIRE(f.arrays.vectors.at(name)[k++] == walls.get<Vec3>(name)[w]);
+    } else {
+      for (WallId w : t.walls()) REQUIRE(f.arrays.tensors.at(name)[k++].v == walls.get<Sym3>(name)[w].v);
+    }
+    ++arrays;
+  }
+  CHECK(arrays == 14);
+  // Outer walls carry the turgor (0.05) and are stretched, unless held on the base (every vertex fixed at z = 0);
+  // walls between two cells carry none.
+  std::size_t outer = 0;
+  for (WallId w : t.walls()) {
+    const double load = walls.get<double>(mechanics::kPressureLoadName)[w];
+    if (t.isBoundaryWall(w)) {
+      CHECK(load == Approx(0.05));
+      bool on_base = true;
+      for (VertexId v : t.topology().faceVertices(FaceId(w.index()))) on_base = on_base && t.position(v).z() <= 1e-6;
+      if (!on_base) CHECK(walls.get<double>(mechanics::kStressMaxName)[w] > 0.0);
+      ++outer;
+    } else {
+      CHECK(load == 0.0);
+    }
+  }
+  CHECK(outer > 50);
+  // --overwrite removes the walls files and their series with the rest of the run.
+  PreparedRun again = PreparedRun::prepare(
+      loadSimulationConfigFile(sourcePath("configs/turgor_tissue_3d.yaml"), {"time.end=0.1", "mechanics.model=none"}),
+      RunOptions{out, true});
+  again.execute();
+  CHECK_FALSE(fs::exists(fs::path(out) / "tissue.walls.pvd"));
+  CHECK_FALSE(fs::exists(fs::path(out) / "tissue_000001.walls.vtu"));
+}
+
+TEST_CASE("A curved sheet's membranes are its cells: no walls file", "[sim][mechanics][output]") {
+  Simulation sim = Simulation::fromFile(sourcePath("configs/turgor_dome_2p5d.yaml"), {"time.end=0.1"});
+  ScratchDir dir;
+  sim.writeSnapshot((dir.path() / "tissue_000000.vtu").string());
+  CHECK(std::filesystem::exists(dir.path() / "tissue_000000.vtu"));
+  CHECK_FALSE(std::filesystem::exists(dir.path() / "tissue_000000.walls.vtu"));
 }

@@ -24,7 +24,8 @@ namespace tessella::sim {
 namespace {
 
 /// The files of a previous run of series `name` in `dir` (its snapshots with
-/// the solver fields' state beside them, its statistics and primordia tables;
+/// the solver fields' state and the walls files beside them, the walls files'
+/// series, its statistics and primordia tables;
 /// with_fields: and the solver-field series), with the temporaries an interrupted write
 /// left behind (FILE.tmp-PID-N, run.yaml.tmp of older versions).
 std::vector<fs::path> previousRunFiles(const fs::path& dir, const std::string& name, bool with_fields = false) {
@@ -33,7 +34,7 @@ std::vector<fs::path> previousRunFiles(const fs::path& dir, const std::string& n
   if (!fs::is_directory(dir, ec)) return files;
   const std::string tmp = R"((\.tmp-\d+-\d+)?)";
   const std::regex series(std::regex_replace(name, std::regex(R"([.^$|()\[\]{}*+?\\-])"), R"(\$&)") +
-                          R"((\.pvd|_\d+(\.fields|\.pin)?\.vtu))" + tmp);
+                          R"(((\.pin|\.walls)?\.pvd|_\d+(\.fields|\.pin|\.walls)?\.vtu))" + tmp);
   const std::regex fields(std::string(kFieldSeriesName) + R"((_walls)?(\.pvd|_\d+\.vtu))" + tmp);
   const std::regex record(std::regex_replace(kRunRecordName, std::regex(R"(\.)"), R"(\.)") +
                           R"((\.tmp|\.tmp-\d+-\d+)?)");

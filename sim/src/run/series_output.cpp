@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "tessella/sim/run/series_output.hpp"
 
+#include <algorithm>
+
 namespace tessella::sim {
 
 SeriesOutput::SeriesOutput(const std::string& directory, const OutputSpec& spec)
@@ -19,6 +21,14 @@ void SeriesOutput::write(const Simulation& simulation) {
   last_written_step_ = simulation.stepsDone();
 }
 
+void SeriesOutput::listBesideFiles(const Simulation& simulation) {
+  std::vector<std::string> tags;
+  for (std::size_t i = 0; i < simulation.numStages(); ++i)
+    for (const std::string& tag : simulation.stage(i).besideFileTags())
+      if (std::find(tags.begin(), tags.end(), tag) == tags.end()) tags.push_back(tag);
+  writer_.setBesideSeries(std::move(tags));
+}
+
 void SeriesOutput::continueAfter(const Simulation& simulation, double time) {
   writer_.continueAfter(time);
   last_written_step_ = simulation.stepsDone();
@@ -27,6 +37,7 @@ void SeriesOutput::continueAfter(const Simulation& simulation, double time) {
 std::shared_ptr<SeriesOutput> attachSeriesOutput(Simulation& simulation, const std::string& directory,
                                                  const OutputSpec& spec, std::optional<double> resume_after) {
   auto output = std::make_shared<SeriesOutput>(directory, spec);
+  output->listBesideFiles(simulation);
   if (resume_after)
     output->continueAfter(simulation, *resume_after);
   else

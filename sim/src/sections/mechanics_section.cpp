@@ -32,11 +32,11 @@ MechanicsStage::MechanicsStage(MechanicsSpec spec) : spec_(std::move(spec)) { sp
 
 std::vector<std::string> MechanicsStage::cellPropertiesWritten() const {
   if (spec_.membranes)
-    return {mechanics::kTurgorPressureName, mechanics::kYoungScaleName, mechanics::kStressMaxName,
-            mechanics::kStressMinName,      mechanics::kStrainMaxName,  mechanics::kStrainMinName,
-            mechanics::kGrowthRateName};
-  return {mechanics::kTurgorPressureName, kMeanStrainName, kMeanTensionName, mechanics::kStressMaxName,
-          mechanics::kStressMinName};
+    return {mechanics::kTurgorPressureName, mechanics::kExtensibilityName, mechanics::kYoungScaleName,
+            mechanics::kStressMaxName,      mechanics::kStressMinName,      mechanics::kStrainMaxName,
+            mechanics::kStrainMinName,      mechanics::kGrowthRateName};
+  return {mechanics::kTurgorPressureName, mechanics::kExtensibilityName, kMeanStrainName, kMeanTensionName,
+          mechanics::kStressMaxName, mechanics::kStressMinName};
 }
 
 void MechanicsStage::prepare(Tissue& tissue, double /*time*/) {
@@ -47,6 +47,8 @@ void MechanicsStage::prepare(Tissue& tissue, double /*time*/) {
     if (spec_.membrane.support == mechanics::MembraneGrowthParams::Support::Boundary && tissue.dim() != 2)
       throw InputError("mechanics.membrane_support: boundary holds a sheet's rims; this tissue is 3D (use base)");
     mechanics::cellOutput(tissue, mechanics::kTurgorPressureName, spec_.membrane.pressure);
+    // phi per cell (a model may change it between steps; a restart keeps the snapshot's values).
+    mechanics::cellOutput(tissue, mechanics::kExtensibilityName, spec_.membrane.growth.extensibility);
     mechanics::cellOutput(tissue, mechanics::kYoungScaleName, 1.0);
     // Zero before the first equilibrium (a restart keeps the snapshot's values).
     for (const char* name : {mechanics::kStressMaxName, mechanics::kStressMinName, mechanics::kStrainMaxName,
@@ -57,6 +59,7 @@ void MechanicsStage::prepare(Tissue& tissue, double /*time*/) {
       cells.add<Sym3>(mechanics::kWallStressName, Sym3{}, DivisionPolicy::Copy);
     if (!cells.has(mechanics::kStressDirectionName))
       cells.add<Vec3>(mechanics::kStressDirectionName, Vec3::Zero(), DivisionPolicy::Copy);
+    if (tissue.dim() == 3) mechanics::prepareMembraneWallOutputs(tissue);  // zero until the first equilibrium
     if (!spec_.soft_center) {
       Vec3 sum = Vec3::Zero();
       for (VertexId v : tissue.vertices()) sum += tissue.position(v);
@@ -96,6 +99,7 @@ void MechanicsStage::prepare(Tissue& tissue, double /*time*/) {
   }
   mechanics::requirePlanar(tissue, "the mechanics section");
   mechanics::prepareTurgorState(tissue, spec_.params);
+  mechanics::cellOutput(tissue, mechanics::kExtensibilityName, spec_.params.growth.extensibility);
   if (restart_) restore(tissue);
   mechanics::initialiseRestLengths(tissue);  // the starting shape is at rest (walls not restored)
   mechanics::cellOutput(tissue, kMeanStrainName);
@@ -109,8 +113,26 @@ void MechanicsStage::prepare(Tissue& tissue, double /*time*/) {
   }
 }
 
-void MechanicsStage::saveState(const Tissue& tissue, const std::string& /*snapshot_path*/,
-                               const io::VtuOptions& /*options*/, io::RunState& state) const {
+io::WallArrays MechanicsStage::wallArrays(const Tissue& tissue) const {
+  if (spec_.membranes) {
+    if (tissue.dim() != 3) return {};
+    return io::wallPropertyArrays(tissue, mechanics::membraneWallOutputNames());
+  }
+  io::WallArrays a = io::wallPropertyArrays(tissue, {mechanics::kRestLengthName, mechanics::kWallStrainName,
+                                                     mechanics::kWallTensionName, mechanics::kGrowthRateName});
+  auto& direction = a.vectors["wall_direction"];
+  for (WallId w : tissue.walls()) {
+    const auto uv = tissue.topology().edgeVertices(EdgeId(w.index()));
+    const Vec3 d = tissue.position(uv[1]) - tissue.position(uv[0]);
+    direction.push_back(d.norm() > 0.0 ? Vec3(d.normalized()) : Vec3::Zero());
+  }
+  return a;
+}
+
+void MechanicsStage::saveState(const Tissue& tissue, const std::string& snapshot_path,
+                               const io::VtuOptions& options, io::RunState& state) const {
+  if (tissue.numWalls() > 0 && (!spec_.membranes || tissue.dim() == 3))
+    io::writeWallsVtu(tissue, io::besideSnapshotPath(snapshot_path, "walls"), wallArrays(tissue), options);
   if (spec_.membranes) {
     state["mechanics.membrane_rest"] = membrane_state_.toText(tissue);
     if (spec_.membrane.base_height) state["mechanics.base_height"] = formatNumber(*spec_.membrane.base_height);
@@ -237,10 +259,13 @@ void declareMechanicsSection(Schema& s) {
             "solved by Newton every step and the tissue moves there; rest lengths then grow where the wall strain "
             "exceeds `threshold` (Lockhart-Ortega). Writes turgor_pressure, mean_wall_strain, "
             "mean_wall_tension and the walls' stress (wall_stress, stress_max, stress_min, stress_direction) "
-            "per cell (and rest_length, wall_strain, wall_tension per wall). `membranes` (curved sheets, 3D "
+            "per cell (and rest_length, wall_strain, wall_tension, growth_rate per wall, written beside every "
+            "snapshot as <stem>.walls.vtu, listed in <series>.walls.pvd). `membranes` (curved sheets, 3D "
             "tissues): every sheet cell or 3D wall is a fan of membrane triangles whose rest shapes grow along "
             "their principal stretches; writes turgor_pressure, young_scale, the mean membrane tension (wall_stress, "
-            "stress_max, stress_min, stress_direction), strain_max, strain_min and growth_rate per cell. Off unless "
+            "stress_max, stress_min, stress_direction), strain_max, strain_min and growth_rate per cell, and "
+            "on a 3D tissue's walls their own tension and strain (tensors, principal values and directions), fibre "
+            "direction, rest area, growth rate and pressure load (<stem>.walls.vtu). Off unless "
             "`model` is set. See docs/mechanics.md.");
   s.key("mechanics.model", ValueType::Enum,
         "The mechanical model. `wall_springs`: walls as springs, cells under turgor (planar 2D tissues). "
@@ -266,7 +291,9 @@ void declareMechanicsSection(Schema& s) {
       .above(0)
       .activeWhen("mechanics.model", on);
   s.key("mechanics.extensibility", ValueType::Float,
-        "Wall extensibility phi: dL0/dt = phi L0 max(strain - threshold, 0). 0: no growth.")
+        "Wall extensibility phi: dL0/dt = phi L0 max(strain - threshold, 0). 0: no growth. The default of the "
+        "cell property extensibility, which a model may set per cell between steps (a wall grows with the mean of "
+        "its cells').")
       .byDefault(0.0)
       .atLeast(0)
       .activeWhen("mechanics.model", on);

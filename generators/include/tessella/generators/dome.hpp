@@ -13,7 +13,9 @@ namespace tessella {
 /// vertex lies on the surface, Embedding::Surface). Only vertices are lifted:
 /// walls are straight chords and cells slightly non-planar polygons.
 /// footprint_seeds: positions in the footprint disk (their z is ignored);
-/// the footprint is a 256-segment polygon as for Disk.
+/// the footprint is a 256-segment polygon as for Disk, and the rim vertices
+/// (of edges with one cell) are then moved radially onto its circle, so the
+/// whole rim lies on the base circle, in the base plane.
 Tissue domeTissue(std::span<const Vec3> footprint_seeds, const Dome& dome,
                   const VoronoiOptions& options = {});
 

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "tessella/io/pvd.hpp"
 #include "tessella/io/vtu.hpp"
 #include "tessella/tissue/tissue.hpp"
 
@@ -27,10 +28,20 @@ class SeriesWriter {
 
   /// Continues the series already on disk (an interrupted run resumed): its
   /// entries up to `last_time` are kept and the next write follows them;
-  /// the files of later entries (with their field state files,
-  /// field_state.hpp) and leftover temporaries are deleted.
+  /// the files of later entries (with every file beside them, <stem>.*.vtu:
+  /// field state, walls files) and leftover temporaries are deleted, and the
+  /// beside series (setBesideSeries) are cut at the same time.
   /// InputError if the .pvd cannot be read or a file cannot be removed.
   void continueAfter(double last_time);
+
+  /// The files for looking at that a run writes beside each snapshot,
+  /// <stem>.<tag>.vtu (besideSnapshotPath, e.g. the walls files of
+  /// wall_vtu.hpp), get a series each: <name>.<tag>.pvd lists, with its time,
+  /// the file of every snapshot that has one when write() writes the snapshot
+  /// (written before it). Set before the first write() or continueAfter().
+  void setBesideSeries(std::vector<std::string> tags);
+  /// <directory>/<name>.<tag>.pvd.
+  std::string besidePvdPath(const std::string& tag) const;
 
   const std::string& pvdPath() const { return pvd_path_; }
   std::size_t steps() const { return entries_.size(); }
@@ -43,6 +54,10 @@ class SeriesWriter {
     double time;
     std::string file;  // relative to the directory
   };
+  struct Beside {
+    std::string tag;
+    std::vector<PvdEntry> entries;
+  };
   void writePvd() const;
 
   std::string directory_;
@@ -50,6 +65,7 @@ class SeriesWriter {
   std::string pvd_path_;
   VtuOptions options_;
   std::vector<Entry> entries_;
+  std::vector<Beside> beside_;
 };
 
 }  // namespace tessella::io

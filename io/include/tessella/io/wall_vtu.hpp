@@ -3,13 +3,16 @@
 #pragma once
 // A tissue's walls as a .vtu of their own, with values per wall: what a
 // tissue snapshot cannot show (it holds cells only), such as the PIN on each
-// side of each wall (docs/output.md, "Wall data beside a snapshot").
+// side of each wall or the walls' mechanics (docs/output.md, "Wall data beside
+// a snapshot"). The one writer of per-wall data: the network stage's
+// <stem>.pin.vtu and the mechanics stage's <stem>.walls.vtu.
 //
 //   points      the live vertices in slot order (as a snapshot numbers them)
 //   cells       VTK_LINE (2D tissues: the wall's edge) | VTK_POLYGON (3D: the wall's loop),
 //               one per live wall in slot order
-//   cell data   wall_id (Int32, the wall's slot) + each scalar (Float64) and
-//               vector (Float64, 3 components) array by name
+//   cell data   wall_id (Int32, the wall's slot) + each scalar (Float64),
+//               vector (Float64, 3 components) and symmetric tensor (Float64,
+//               6 components in VTK's order XX YY ZZ XY YZ XZ) array by name
 //
 // ParaView: Cell Centers, then Glyph oriented by a vector array.
 
@@ -27,7 +30,14 @@ namespace tessella::io {
 struct WallArrays {
   std::map<std::string, std::vector<double>> scalars;
   std::map<std::string, std::vector<Vec3>> vectors;
+  std::map<std::string, std::vector<Sym3>> tensors;
 };
+
+/// The wall property columns of `tissue` named in `names` (double, Vec3 or
+/// Sym3) as WallArrays, one value per live wall in slot order. A name the
+/// tissue's walls do not have is left out; InputError naming the property
+/// when it has another type.
+WallArrays wallPropertyArrays(const Tissue& tissue, const std::vector<std::string>& names);
 
 /// The file beside `snapshot_path` named with `tag`: <directory>/<stem>.<tag>.vtu.
 std::string besideSnapshotPath(const std::string& snapshot_path, const std::string& tag);
@@ -48,7 +58,8 @@ struct WallsFile {
 };
 
 /// Reads a file writeWallsVtu wrote (InputError naming the path when it is
-/// missing, damaged or has no wall_id array).
+/// missing, damaged or has no wall_id array). Arrays of 1, 3 and 6
+/// components come back as scalars, vectors and tensors.
 WallsFile readWallsVtu(const std::string& path);
 
 }  // namespace tessella::io

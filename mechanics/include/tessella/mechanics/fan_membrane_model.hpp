@@ -94,8 +94,10 @@ class FanMembraneModel final : public EnergyModel {
   double restArea(std::size_t f) const;
   /// Lockhart-Ortega growth of every triangle's rest shape along the
   /// principal directions of its stretch at x (as MembraneModel::growRestShape).
+  /// `extensibility`: empty, or phi per polygon in place of the law's.
   /// Returns the largest relative rate.
-  double growRestShape(const Eigen::VectorXd& x, const StrainGrowthLaw& law, double dt);
+  double growRestShape(const Eigen::VectorXd& x, const StrainGrowthLaw& law, double dt,
+                       const std::vector<double>& extensibility = {});
   std::size_t numPolygons() const { return polygons_.size(); }
   /// The number of triangles of polygon f.
   std::size_t numTriangles(std::size_t f) const { return first_element_[f + 1] - first_element_[f]; }

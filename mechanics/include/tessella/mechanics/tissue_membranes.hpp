@@ -50,6 +50,16 @@ inline constexpr const char* kFibreRatioName = "fibre_ratio";
 inline constexpr const char* kStrainMaxName = "strain_max";    ///< cell, double: larger principal Green strain
 inline constexpr const char* kStrainMinName = "strain_min";    ///< cell, double: smaller principal Green strain
 inline constexpr const char* kGrowthRateName = "growth_rate";  ///< cell, double: (A1 - A0) / (A0 dt) of its rest area
+// The walls of a 3D tissue (wall properties, policy Copy; docs/mechanics.md, "Membrane outputs per wall"). They
+// also carry wall_stress (Sym3), stress_max, stress_min, stress_direction, strain_max, strain_min and growth_rate,
+// the cells' names for the wall's own values.
+inline constexpr const char* kGreenStrainName = "green_strain";  ///< wall, Sym3: mean Green strain (current frame)
+inline constexpr const char* kStressMinDirectionName = "stress_min_direction";  ///< wall, Vec3: unit, of stress_min
+inline constexpr const char* kStrainDirectionName = "strain_direction";         ///< wall, Vec3: unit, of strain_max
+inline constexpr const char* kStrainMinDirectionName = "strain_min_direction";  ///< wall, Vec3: unit, of strain_min
+inline constexpr const char* kFibreDirectionName = "fibre_direction";  ///< wall, Vec3: unit fibre in its plane, or 0
+inline constexpr const char* kRestAreaName = "rest_area";              ///< wall, double: its triangles' rest area
+inline constexpr const char* kPressureLoadName = "pressure_load";      ///< wall, double: |sum_c s_cf P_c|
 
 /// How each polygon's fibre direction is chosen (at its centroid c).
 struct FibreRule {
@@ -145,6 +155,28 @@ std::vector<double> membraneCellVolumes(const Tissue& tissue, const FanMembraneM
 /// strain (strain_max, strain_min). Columns added with policy Copy when missing.
 void writeMembraneCellStress(Tissue& tissue, const FanMembraneModel& model, const Eigen::VectorXd& x);
 
+/// The wall properties membraneGrowthStep writes on a 3D tissue's walls, in
+/// the order of a walls file (docs/mechanics.md, "Membrane outputs per wall").
+const std::vector<std::string>& membraneWallOutputNames();
+
+/// Adds the columns of membraneWallOutputNames() (zero, policy Copy) that the
+/// tissue's walls do not have yet: what a walls file shows before the first step.
+void prepareMembraneWallOutputs(Tissue& tissue);
+
+/// The per-wall outputs of a 3D tissue's membranes at x (each wall polygon's
+/// own, docs/mechanics.md "Membrane outputs per wall"): the mean tension
+/// N = sum_i a_i N_i / sum_i a_i over its triangles (a_i their current
+/// areas; wall_stress), its principal values in the wall's plane (normal: the
+/// wall's vector area; stress_max, stress_min) with their unit directions
+/// (stress_direction, stress_min_direction = n x stress_direction), the same
+/// for the mean Green strain (green_strain, strain_max, strain_min,
+/// strain_direction, strain_min_direction), the fibre the model uses
+/// projected on the wall's plane (fibre_direction; 0 when none), its rest area
+/// (rest_area) and the pressure it carries (pressure_load, |p_f|). Columns
+/// added with policy Copy when missing. MechanicsError unless the tissue is 3D
+/// and `model` is its membranes (one polygon per wall, in membraneFaces order).
+void writeMembraneWallOutputs(Tissue& tissue, const FanMembraneModel& model, const Eigen::VectorXd& x);
+
 /// One step: model from the tissue, equilibrium (positions move there;
 /// EquilibriumError leaves the tissue unchanged), rest shapes grow over dt.
 /// With stress feedback, the fibres turn after the equilibrium (noise drawn
@@ -152,6 +184,8 @@ void writeMembraneCellStress(Tissue& tissue, const FanMembraneModel& model, cons
 /// the cells' outputs at the equilibrium (writeMembraneCellStress) and their
 /// growth_rate: the relative change of a cell's rest area (its fan's, or the
 /// sum of its walls') by this step's growth, divided by dt (0 when dt = 0).
+/// A 3D tissue's walls get writeMembraneWallOutputs at the equilibrium, then
+/// their own growth_rate and rest_area (after the growth).
 MembraneStepReport membraneGrowthStep(Tissue& tissue, const MembraneGrowthParams& params, MembraneRestState& state,
                                       double dt, std::mt19937_64* rng = nullptr);
 

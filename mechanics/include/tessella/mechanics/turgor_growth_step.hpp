@@ -39,11 +39,12 @@ struct TurgorStepReport {
 };
 
 /// Prepares the state columns (rest_length, wall_strain, wall_tension,
-/// turgor_pressure) without changing positions.
+/// growth_rate, turgor_pressure) without changing positions.
 void prepareTurgorState(Tissue& tissue, const TurgorGrowthParams& params);
 
 /// One step of length dt (dt = 0: equilibrium only). On an EquilibriumError
-/// the tissue is unchanged.
+/// the tissue is unchanged. Each wall's growth_rate is (L0' - L0) / (L0 dt)
+/// of this step's growth (0 when dt = 0).
 TurgorStepReport turgorGrowthStep(Tissue& tissue, const TurgorGrowthParams& params, double dt);
 
 }  // namespace tessella::mechanics

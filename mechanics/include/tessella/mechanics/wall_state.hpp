@@ -9,9 +9,14 @@
 //                 length" and is set by initialiseRestLengths() before the
 //                 next equilibrium;
 //   wall_strain, wall_tension (wall, Copy): outputs of the last equilibrium;
-//   turgor_pressure (cell, Copy): the pressure each cell was solved with.
+//   turgor_pressure (cell, Copy): the pressure each cell was solved with;
+//   extensibility (cell, Copy; optional): phi of the growth law per cell. When
+//                 the tissue has it, a wall grows with the mean of its cells'
+//                 values (a sheet's membrane: its cell's) instead of the law's
+//                 extensibility, so a model may set it per cell between steps.
 
 #include <cstddef>
+#include <vector>
 
 #include "tessella/tissue/properties.hpp"
 
@@ -25,6 +30,12 @@ inline constexpr const char* kRestLengthName = "rest_length";
 inline constexpr const char* kWallStrainName = "wall_strain";
 inline constexpr const char* kWallTensionName = "wall_tension";
 inline constexpr const char* kTurgorPressureName = "turgor_pressure";
+inline constexpr const char* kExtensibilityName = "extensibility";
+
+/// Per wall slot, phi of the growth law: the mean of the wall's cells'
+/// `extensibility` when the tissue has that cell property, else `fallback`
+/// (the law's). InputError naming the cell for a negative or non-finite value.
+std::vector<double> wallExtensibilities(const Tissue& tissue, double fallback);
 
 /// The rest-length column of the walls, added (all 0) if missing.
 PropertyColumn<double>& restLengths(Tissue& tissue);

@@ -25,11 +25,16 @@ class SeriesOutput {
   void writeIfDue(const Simulation& simulation);
   /// Writes the current state now (once per step: a second call is a no-op).
   void write(const Simulation& simulation);
+  /// The files the stages write beside each snapshot (Stage::besideFileTags)
+  /// get a series each, <name>.<tag>.pvd. Before the first write or continueAfter.
+  void listBesideFiles(const Simulation& simulation);
   /// Continues the series on disk after `time` (io::SeriesWriter::continueAfter).
   void continueAfter(const Simulation& simulation, double time);
 
   std::size_t snapshots() const { return writer_.steps(); }
   const std::string& pvdPath() const { return writer_.pvdPath(); }
+  /// <directory>/<name>.<tag>.pvd, the series of the files beside the snapshots with `tag`.
+  std::string besidePvdPath(const std::string& tag) const { return writer_.besidePvdPath(tag); }
 
  private:
   io::SeriesWriter writer_;
@@ -38,7 +43,7 @@ class SeriesOutput {
 };
 
 /// Writes the current state now and registers a step callback that keeps the
-/// series up to date. The callback owns the returned output.
+/// series (and the series of the files the stages write beside it) up to date. The callback owns the returned output.
 /// `resume_after`: continue the series already in `directory` (a resumed
 /// run): its entries up to that time stay, later ones are deleted, and the
 /// current state, already on disk, is not written again.

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "tessella/mechanics/tissue_membranes.hpp"
+#include "tessella/io/wall_vtu.hpp"
 #include "tessella/mechanics/turgor_growth_step.hpp"
 #include "tessella/sim/config/config.hpp"
 #include "tessella/sim/config/schema.hpp"
@@ -69,9 +70,19 @@ class MechanicsStage final : public Stage {
   /// restart continues from them bit for bit.
   void saveState(const Tissue& tissue, const std::string& snapshot_path, const io::VtuOptions& options,
                  io::RunState& state) const override;
+  /// Also writes the walls' mechanics beside the snapshot, <stem>.walls.vtu
+  /// (io::writeWallsVtu; docs/output.md): a planar tissue's wall springs
+  /// (rest_length, wall_strain, wall_tension, growth_rate and the unit vector
+  /// wall_direction) or a 3D tissue's membrane walls
+  /// (mechanics::membraneWallOutputNames()); a curved sheet's membranes are
+  /// its cells, whose outputs the snapshot holds (no walls file).
   /// A snapshot without that state (an initial tissue, or a run without the
   /// section) starts with its walls at rest in its shape.
   void continueFrom(const std::string& snapshot_path, const io::RunState& state) override;
+  /// "walls": the walls files are listed in <series>.walls.pvd.
+  std::vector<std::string> besideFileTags() const override { return {"walls"}; }
+  /// The arrays of the walls file of `tissue` (empty for a curved sheet).
+  io::WallArrays wallArrays(const Tissue& tissue) const;
   /// The last step's report (Newton iterations, residuals, strains).
   const mechanics::TurgorStepReport& lastReport() const { return report_; }
   /// The last step's report of the membrane model.

@@ -101,6 +101,10 @@ class NetworkStage final : public Stage {
   /// Restores the records (InputError naming the key and the value when damaged)
   /// and keeps the PIN densities for prepare().
   void continueFrom(const std::string& snapshot_path, const io::RunState& state) override;
+  /// "pin" with PIN transport: its walls files are listed in <series>.pin.pvd.
+  std::vector<std::string> besideFileTags() const override {
+    return spec_.model.pin.enabled() ? std::vector<std::string>{"pin"} : std::vector<std::string>{};
+  }
   /// The wall properties holding the PIN density on each side of the walls.
   static std::string pinWallProperty(const std::string& species, bool positive_side);
 

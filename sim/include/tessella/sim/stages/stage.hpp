@@ -72,6 +72,11 @@ class Stage {
   /// snapshot's path and run state, so that prepare() continues what
   /// saveState() saved there instead of starting afresh.
   virtual void continueFrom(const std::string& /*snapshot_path*/, const io::RunState& /*state*/) {}
+  /// The tags of the files for looking at that saveState() may write beside a
+  /// snapshot, <stem>.<tag>.vtu (io::besideSnapshotPath; the network stage's
+  /// "pin", the mechanics stage's "walls"): a run lists each in a series of its
+  /// own, <series>.<tag>.pvd (io::SeriesWriter::setBesideSeries).
+  virtual std::vector<std::string> besideFileTags() const { return {}; }
 };
 
 }  // namespace tessella::sim
