@@ -201,17 +201,17 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
   // star_start[v]); packed, it becomes vertex_edges_.
   std::vector<std::uint32_t> star_start(num_vertices + 1, 0);
   for (std::size_t v = 0; v < num_vertices; ++v) star_start[v + 1] = star_start[v] + star_size[v];
-  std::vector<EdgeId> star(star_start[num_vertices]);
+  UninitializedVector<EdgeId> star(star_start[num_vertices]);  // written where used, then packed
   std::vector<Index> star_other(star.size());  // the edge's other end: no lookup in edge_vertices_
   std::vector<std::uint32_t> star_count(num_vertices, 0);
-  std::vector<OrientedEdge> face_edges(total);  // in list order, like loop_vertices
+  UninitializedVector<OrientedEdge> face_edges(total);  // in list order, like loop_vertices (each written)
   std::vector<std::uint32_t> edge_face_count;
   edge_face_count.reserve(total / 2 + 1);
   // Edge -> faces. 2D: at most two faces per edge, kept in a pair of slots
   // per edge (the second use of an edge comes soon after its first when
   // nearby faces are listed together). 3D: (edge, face) of every loop
   // position in list order, read back sequentially afterwards.
-  std::vector<FaceId> edge_face_slots;
+  UninitializedVector<FaceId> edge_face_slots;
   std::vector<std::pair<Index, Index>> uses;
   if (dim == 2)
     edge_face_slots.reserve(total + 2);
@@ -280,7 +280,7 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
     at[f] = loop_offsets[q];
     size[f] = loop_offsets[q + 1] - loop_offsets[q];
   }
-  std::vector<VertexId> face_vertices(total);
+  UninitializedVector<VertexId> face_vertices(total);
   const std::int64_t totals = static_cast<std::int64_t>(total);
 #pragma omp parallel for schedule(static)
   for (std::int64_t k = 0; k < totals; ++k) face_vertices[k] = VertexId(loop_vertices[k]);
@@ -303,7 +303,7 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
   } else {
     std::vector<std::uint32_t> ef_start(ne + 1, 0);
     for (std::size_t e = 0; e < ne; ++e) ef_start[e + 1] = ef_start[e] + edge_face_count[e];
-    std::vector<FaceId> ef(ef_start[ne]);
+    UninitializedVector<FaceId> ef(ef_start[ne]);
     std::fill(edge_face_count.begin(), edge_face_count.end(), 0);
     for (const auto& [e, f] : uses) ef[ef_start[e] + edge_face_count[e]++] = FaceId(f);
     if (!face_ids.empty())  // filled in list order: back to face id order
@@ -613,7 +613,7 @@ Renumbering CellComplex::compact() {
   auto mapF = [&](FaceId f) { return FaceId(m[2][f.index()]); };
   auto mapC = [&](VolumeId c) { return VolumeId(m[3][c.index()]); };
   {
-    std::vector<std::array<VertexId, 2>> ev(counts[1]);
+    UninitializedVector<std::array<VertexId, 2>> ev(counts[1]);
     for (std::size_t i = 0; i < edge_vertices_.size(); ++i)
       if (m[1][i] != kInvalidIndex) ev[m[1][i]] = {mapV(edge_vertices_[i][0]), mapV(edge_vertices_[i][1])};
     edge_vertices_ = std::move(ev);

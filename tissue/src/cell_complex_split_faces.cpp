@@ -21,6 +21,9 @@ namespace tessella {
 namespace {
 
 constexpr std::ptrdiff_t kParallelMin = 1024;  // fewer chords: one thread (a team costs more)
+// The changed faces are the split ones (more work each), then their neighbours:
+// passes over them deal chunks round-robin so that each thread gets a share of both.
+constexpr int kBalancedChunk = 1024;
 
 // Up to two new vertices on one edge, ordered along it: the pieces the edge
 // becomes (from its first vertex to its second) and the vertices between them.
@@ -40,7 +43,7 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
   const Index f0 = static_cast<Index>(slots(2));
 
   // Face -> chord; faces of the batch are distinct and alive.
-  std::vector<std::int32_t> chord_of(slots(2), -1);
+  UninitializedVector<std::int32_t> chord_of = filledInParallel<std::int32_t>(slots(2), -1);
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     const FaceId f = chords[i].face;
     if (!alive(f)) throw TopologyError("splitFaces: chord " + std::to_string(i) + ": face " +
@@ -209,7 +212,7 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
   };
   // The first end cutting each edge that existed before the batch, or -1
   // (one end per edge is first on it, so each entry is written once).
-  std::vector<std::int32_t> first_cut(e0, -1);
+  UninitializedVector<std::int32_t> first_cut = filledInParallel<std::int32_t>(e0, -1);
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (std::ptrdiff_t i = 0; i < n; ++i)
     for (int k = 0; k < 2; ++k)
@@ -313,7 +316,7 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
     const std::size_t share = static_cast<std::size_t>(na) / pools.size() + 1;
     mine.edges.reserve(8 * share);
     mine.verts.reserve(8 * share);
-#pragma omp for schedule(static)
+#pragma omp for schedule(static, kBalancedChunk)
     for (std::ptrdiff_t q = 0; q < na; ++q) {
       const std::size_t at = mine.edges.size();
       expandedLoop(FaceId(affected[q]), mine.edges, mine.verts);
@@ -338,7 +341,7 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
     live_count_[degree] += count;
   }
   ++version_;
-  edge_vertices_.resize(slots(1));
+  growInParallel(edge_vertices_, slots(1));  // every new edge is written by pass A
   vertex_edges_.appendLists(vertex_edge_sizes);
   edge_faces_.appendLists(edge_face_sizes);
   face_edges_.resizeLists(affected, loop_sizes);
@@ -398,7 +401,7 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
 
   // Pass B: the loops of the affected faces; a split face hands its part from
   // `to` to `from` (and the edges in it) to its new face.
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+#pragma omp parallel for schedule(static, kBalancedChunk) if (n >= kParallelMin)
   for (std::ptrdiff_t q = 0; q < na; ++q) {
     const FaceId f(affected[q]);
     const std::span<const OrientedEdge> edges = outlineEdges(q);

@@ -11,6 +11,7 @@
 #include "tessella/tissue/cell_split_plan.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/tissue.hpp"
+#include "tessella/tissue/uninitialized_vector.hpp"
 
 namespace tessella {
 
@@ -29,7 +30,7 @@ bool hasCustomColumn(const PropertyStore& store) {
 std::vector<CellSplit> Tissue::splitCells(std::span<const CellSplitPlan2D> plans) {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(plans.size());
   if (dim() != 2) throw InputError("splitCells: the tissue is 3D (it divides the cells of 2D tissues)");
-  std::vector<std::int32_t> plan_of(cellSlots(), -1);
+  UninitializedVector<std::int32_t> plan_of = filledInParallel<std::int32_t>(cellSlots(), -1);
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     const CellId c = plans[i].cell;
     if (!alive(c))
@@ -77,7 +78,7 @@ std::vector<CellSplit> Tissue::splitCells(std::span<const CellSplitPlan2D> plans
   }
   const std::vector<ChordSplit> splits = complex_.splitFaces(chords);
 
-  positions_.resize(complex_.slots(0));
+  growInParallel(positions_, complex_.slots(0));  // every new vertex is placed below
   grew(0);
   grew(1);
   grew(2);

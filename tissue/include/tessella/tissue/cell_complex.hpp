@@ -22,6 +22,7 @@
 
 #include "tessella/tissue/handles.hpp"
 #include "tessella/tissue/ragged_array.hpp"
+#include "tessella/tissue/uninitialized_vector.hpp"
 #include "tessella/tissue/version_stamp.hpp"
 
 namespace tessella {
@@ -227,7 +228,7 @@ class CellComplex {
   int dim_;
   std::array<std::vector<std::uint8_t>, 4> alive_;
   std::array<std::size_t, 4> live_count_{};
-  std::vector<std::array<VertexId, 2>> edge_vertices_;
+  UninitializedVector<std::array<VertexId, 2>> edge_vertices_;  // grows unwritten (splitFaces)
   RaggedArray<OrientedEdge> face_edges_;
   RaggedArray<VertexId> face_vertices_;
   RaggedArray<OrientedFace> volume_faces_;

@@ -8,7 +8,8 @@
 // through memory. A list that outgrows its capacity is moved to the end of
 // the pool (its old place becomes garbage); when garbage passes half the pool
 // everything is repacked. Spans returned by operator[] are invalidated by any
-// mutation of the array.
+// mutation of the array. The pool grows without writing its new items (see
+// uninitialized_vector.hpp): items are trivially copyable.
 
 #include <algorithm>
 #include <atomic>
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include "tessella/tissue/handles.hpp"
+#include "tessella/tissue/uninitialized_vector.hpp"
 
 namespace tessella {
 
@@ -102,19 +104,17 @@ class RaggedArray {
   // --- batch edits (Tissue::splitCells): room is made serially, then lists are
   // written from several threads, each list by one thread.
 
-  /// Appends one list per entry of `sizes`, holding default items; returns
-  /// the index of the first.
+  /// Appends one list per entry of `sizes`, their items unspecified until
+  /// written; returns the index of the first.
   std::size_t appendLists(std::span<const std::uint32_t> sizes) {
     const std::size_t first = slots_.size();
-    std::size_t total = 0;
-    for (std::uint32_t n : sizes) total += n;
-    slots_.reserve(first + sizes.size());
+    growInParallel(slots_, first + sizes.size());
     std::uint32_t offset = static_cast<std::uint32_t>(data_.size());
-    data_.resize(data_.size() + total);
-    for (std::uint32_t n : sizes) {
-      slots_.push_back(Slot{offset, n, n});
-      offset += n;
+    for (std::size_t k = 0; k < sizes.size(); ++k) {
+      slots_[first + k] = Slot{offset, sizes[k], sizes[k]};
+      offset += sizes[k];
     }
+    growInParallel(data_, offset);
     return first;
   }
   /// Makes list lists[k] hold sizes[k] items (the lists distinct): a list
@@ -126,7 +126,7 @@ class RaggedArray {
     assert(lists.size() == sizes.size());
     if (garbage_ > 1024 && garbage_ * 2 > data_.size()) repack();  // first: a repack resets capacities
     const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(lists.size());
-    std::vector<std::uint32_t> room(lists.size()), at(lists.size());
+    UninitializedVector<std::uint32_t> room(lists.size()), at(lists.size());
 #pragma omp parallel for schedule(static) if (m >= 4096)
     for (std::ptrdiff_t k = 0; k < m; ++k) {
       const Slot& s = slots_[lists[k]];
@@ -137,7 +137,7 @@ class RaggedArray {
       at[k] = static_cast<std::uint32_t>(end);
       end += room[k];
     }
-    data_.resize(end);
+    growInParallel(data_, end);
     std::size_t freed = 0;
 #pragma omp parallel for schedule(static) reduction(+ : freed) if (m >= 4096)
     for (std::ptrdiff_t k = 0; k < m; ++k) {
@@ -196,14 +196,24 @@ class RaggedArray {
     *this = std::move(packed);
   }
 
-  /// Repacks every list back to back, dropping garbage (order unchanged).
+  /// Repacks every list back to back, dropping garbage (order unchanged);
+  /// the lists are copied in parallel (OpenMP) for many lists.
   void repack() {
-    std::vector<T> data;
-    data.reserve(data_.size() - garbage_);
-    for (Slot& s : slots_) {
-      const std::uint32_t offset = static_cast<std::uint32_t>(data.size());
-      data.insert(data.end(), data_.begin() + s.offset, data_.begin() + s.offset + s.size);
-      s.offset = offset;
+    const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(slots_.size());
+    UninitializedVector<std::uint32_t> at(slots_.size());
+    std::uint32_t total = 0;
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
+      at[i] = total;
+      total += slots_[i].size;
+    }
+    UninitializedVector<T> data;
+    data.reserve(std::max<std::size_t>(total, data_.size() - garbage_));
+    data.resize(total);
+#pragma omp parallel for schedule(static) if (n >= 4096)
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
+      Slot& s = slots_[i];
+      std::copy(data_.begin() + s.offset, data_.begin() + s.offset + s.size, data.begin() + at[i]);
+      s.offset = at[i];
       s.capacity = s.size;
     }
     data_ = std::move(data);
@@ -214,7 +224,7 @@ class RaggedArray {
   /// may lie in the pool in any order (e.g. the order a builder produced
   /// them in), so nothing is copied; they must not overlap, and pool items
   /// in no list count as garbage (reclaimed by the next repack).
-  static RaggedArray fromPool(std::vector<T> pool, std::span<const std::uint32_t> at,
+  static RaggedArray fromPool(UninitializedVector<T> pool, std::span<const std::uint32_t> at,
                               std::span<const std::uint32_t> sizes) {
     assert(at.size() == sizes.size());
     RaggedArray r;
@@ -237,10 +247,10 @@ class RaggedArray {
   std::size_t bytes() const { return slots_.capacity() * sizeof(Slot) + data_.capacity() * sizeof(T); }
 
  private:
-  struct Slot {
-    std::uint32_t offset = 0;
-    std::uint32_t size = 0;
-    std::uint32_t capacity = 0;
+  struct Slot {  // no default values: slots grow unwritten (appendLists writes them)
+    std::uint32_t offset;
+    std::uint32_t size;
+    std::uint32_t capacity;
   };
 
   // Moves list i to the end of the pool with room for at least min_capacity.
@@ -250,15 +260,15 @@ class RaggedArray {
     const std::uint32_t capacity =
         static_cast<std::uint32_t>(std::max<std::size_t>(min_capacity + 2, s.size * 3 / 2));
     const std::uint32_t offset = static_cast<std::uint32_t>(data_.size());
-    data_.resize(data_.size() + capacity);
+    data_.resize(data_.size() + capacity);  // items past the list's size unspecified until written
     std::copy(data_.begin() + s.offset, data_.begin() + s.offset + s.size, data_.begin() + offset);
     garbage_ += s.capacity;
     s.offset = offset;
     s.capacity = capacity;
   }
 
-  std::vector<Slot> slots_;
-  std::vector<T> data_;
+  UninitializedVector<Slot> slots_;
+  UninitializedVector<T> data_;
   std::size_t garbage_ = 0;
 };
 
