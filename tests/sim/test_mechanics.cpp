@@ -425,6 +425,7 @@ TEST_CASE("mechanics.material: neo_hookean reaches the membranes; its errors at 
   CAPTURE(gaps[0], gaps[1]);  // measured 0.127 and 0.012
   CHECK(gaps[1] < 0.2 * gaps[0]);
   CHECK(gaps[1] < 0.02);
+}
 
 TEST_CASE("The walls file of wall springs: a growing ring's closed form read back from the file",
           "[sim][mechanics][output]") {
