@@ -181,7 +181,7 @@ CellComplex CellComplex::fromLayout(const ComplexLayout& layout) {
     // Every list as listed: the pools are the layout's lists, unpacked.
     auto pool = [](const std::vector<Index>& offsets, std::size_t count, auto item, auto& out) {
       using Item = std::decay_t<decltype(item(Index{0}))>;
-      std::vector<Item> items(offsets[count]);
+      UninitializedVector<Item> items(offsets[count]);  // every item written below
       std::vector<std::uint32_t> at(offsets.begin(), offsets.end() - 1), size(count);
       const std::int64_t n = static_cast<std::int64_t>(count);
 #pragma omp parallel for schedule(static)
