@@ -8,6 +8,7 @@
 // under refinement.
 #include <catch2/catch.hpp>
 
+#include "membrane_derivatives.hpp"
 #include "surface_meshes.hpp"
 #include "tessella/mechanics/equilibrium.hpp"
 #include "tessella/mechanics/membrane_model.hpp"
@@ -66,29 +67,7 @@ TEST_CASE("membrane: gradient and Hessian equal finite differences (anisotropic,
   const MembraneModel model(m.points, m.triangles, material, 0.7, fibres);
   Eigen::VectorXd x = model.referenceDofs();
   for (Eigen::Index i = 0; i < x.size(); ++i) x[i] += 0.05 * u(rng);  // strains of a few per cent, both signs
-  Eigen::VectorXd g;
-  model.gradient(x, g);
-  std::vector<Triplet> entries;
-  model.hessian(x, entries);
-  Eigen::SparseMatrix<double> H(model.size(), model.size());
-  H.setFromTriplets(entries.begin(), entries.end());
-  const Eigen::MatrixXd dense = H;
-  CHECK((dense - dense.transpose()).lpNorm<Eigen::Infinity>() < 1e-12 * dense.lpNorm<Eigen::Infinity>());
-  const double h = 1e-6;
-  double worst_g = 0.0, worst_h = 0.0;
-  Eigen::VectorXd gp, gm;
-  for (Eigen::Index i = 0; i < x.size(); ++i) {
-    Eigen::VectorXd xp = x, xm = x;
-    xp[i] += h;
-    xm[i] -= h;
-    worst_g = std::max(worst_g, std::abs((model.energy(xp) - model.energy(xm)) / (2 * h) - g[i]));
-    model.gradient(xp, gp);
-    model.gradient(xm, gm);
-    worst_h = std::max(worst_h, ((gp - gm) / (2 * h) - dense.col(i)).lpNorm<Eigen::Infinity>());
-  }
-  CHECK(worst_g < 1e-6 * g.lpNorm<Eigen::Infinity>());
-  CHECK(worst_h < 1e-6 * dense.lpNorm<Eigen::Infinity>());
-  CHECK(g.lpNorm<Eigen::Infinity>() > 1e-2);
+  test::checkMembraneDerivatives(model, x);
   // The enclosed volume: the reference capsule's is close to pi R^2 H + 4/3 pi R^3.
   const double exact = std::numbers::pi * 2.0 + 4.0 / 3.0 * std::numbers::pi;
   CHECK(model.volume(model.referenceDofs()) == Approx(exact).epsilon(0.3));
