@@ -225,7 +225,7 @@ void NetworkSystem::rhs(double t, std::span<const double> y, std::span<double> y
   if (reactions) neighbourhoodTerms();
   if (gradient) pinDenominators();  // and pin_out_
   // Cell by cell: its reactions (the amount changes at measure * rate), the passive exchange P L (c_i - c_j)
-  // from i to each neighbour j, and the PIN efflux T PIN_ij c_i from i to j and from j to i. A flux between
+  // from i to each neighbour j, and the PIN efflux G(c_i) L_ij f(c_j) / D_i from i to j and from j to i. A flux between
   // two cells is computed the same way in both, so what one loses the other gains exactly.
   forEachCell(n, threads_, [&](std::size_t c, std::size_t thread) {
     std::span<double> rate(&ydot[index(c, 0)], S);
