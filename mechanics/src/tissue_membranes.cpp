@@ -4,6 +4,7 @@
 
 #include "tessella/mechanics/errors.hpp"
 #include "tessella/mechanics/membrane_triangulation.hpp"
+#include "tessella/mechanics/rigid_motions.hpp"
 #include "tessella/mechanics/wall_state.hpp"
 #include "tessella/mechanics/wall_stress.hpp"
 #include "tessella/tissue/format.hpp"
@@ -106,6 +107,16 @@ void MembraneGrowthParams::check() const {
     throw InputError("mechanics: base_distance " + formatNumber(base_distance) + " must be >= 0");
   if (base_height && !std::isfinite(*base_height))
     throw InputError("mechanics: base height " + formatNumber(*base_height) + " must be finite");
+  if (!(plane_distance >= 0.0 && std::isfinite(plane_distance)))
+    throw InputError("mechanics: plane_distance " + formatNumber(plane_distance) + " must be >= 0");
+  for (const SymmetryPlane& q : planes)
+    if (q.axis < 0 || q.axis > 2 || !std::isfinite(q.offset))
+      throw InputError("mechanics: symmetry plane axis " + std::to_string(q.axis) + " offset " +
+                       formatNumber(q.offset) + ": the axis is 0, 1 or 2 (x, y, z) and the offset finite");
+  if (support == Support::Symmetry && planes.empty())
+    throw InputError("mechanics: the symmetry support holds the tissue by its symmetry planes; none given");
+  if (point && !point->allFinite())
+    throw InputError("mechanics: support point " + formatPoint(*point) + " must be finite");
   feedback.check();
   if (fibres.kind != FibreRule::Kind::None && !(fibres.vector.norm() > 0.0))
     throw InputError("mechanics: the fibre direction (or axis) must not be zero");
@@ -118,8 +129,50 @@ const EnumTable<MembraneGrowthParams::Support>& membraneSupports() {
         "the vertices within base_distance above the base plane (a dome's or cylinder's base ring, a 3D "
         "tissue's bottom)"},
        {"boundary", MembraneGrowthParams::Support::Boundary,
-        "every vertex on a sheet's boundary walls (the rim of a cropped patch; sheets only)"}});
+        "every vertex on a sheet's boundary walls (the rim of a cropped patch; sheets only)"},
+       {"point", MembraneGrowthParams::Support::Point,
+        "a closed body held at one point: the vertex nearest support_point fixed, two components of the vertex "
+        "farthest from it and one of the vertex farthest from their line, only those that remove a rigid motion "
+        "the symmetry planes leave (3 + 2 + 1 alone: no work against turgor, no constraint on the deformation)"},
+       {"symmetry", MembraneGrowthParams::Support::Symmetry,
+        "the symmetry planes alone (symmetry_planes; three for an eighth of a closed body)"}});
   return table;
+}
+
+std::string SymmetryPlane::text() const { return std::string(1, "xyz"[axis]) + " = " + formatNumber(offset); }
+
+std::vector<SymmetryPlane> parseSymmetryPlanes(const std::string& text, const std::string& source) {
+  std::vector<SymmetryPlane> planes;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find(',', start), text.size());
+    std::string item = text.substr(start, end - start);
+    item.erase(std::remove_if(item.begin(), item.end(), [](unsigned char c) { return std::isspace(c); }), item.end());
+    start = end + 1;
+    if (item.empty()) {
+      if (end < text.size() || !planes.empty() || text.find_first_not_of(" \t") != std::string::npos)
+        throw InputError(source + ": '" + text + "' has an empty plane (write for example \"x = 0, y = 0\")");
+      break;
+    }
+    SymmetryPlane q;
+    const std::size_t axis = std::string("xyz").find(static_cast<char>(std::tolower(item[0])));
+    double offset = 0.0;
+    const char* first = item.data() + 2;
+    const char* last = item.data() + item.size();
+    const bool ok = item.size() > 2 && axis != std::string::npos && item[1] == '=' &&
+                    [&] {
+                      const auto r = std::from_chars(first, last, offset);
+                      return r.ec == std::errc() && r.ptr == last && std::isfinite(offset);
+                    }();
+    if (!ok)
+      throw InputError(source + ": plane '" + item + "' is not x = c, y = c or z = c (c a finite number)");
+    q.axis = static_cast<int>(axis);
+    q.offset = offset;
+    for (const SymmetryPlane& p : planes)
+      if (p.axis == q.axis && p.offset == q.offset) throw InputError(source + ": plane '" + item + "' is given twice");
+    planes.push_back(q);
+  }
+  return planes;
 }
 
 std::vector<FaceId> membraneFaces(const Tissue& tissue) {
@@ -174,8 +227,38 @@ std::vector<double> facePressures(const Tissue& tissue, const std::vector<FaceId
   return p;
 }
 
-std::vector<std::uint8_t> membraneSupport(const Tissue& tissue, const MembraneGrowthParams& params) {
+Vec3 membraneOrigin(const Tissue& tissue, const MembraneGrowthParams& params) {
+  if (tissue.dim() != 2) return Vec3::Zero();
+  Vec3 origin = sheetOrigin(tissue);
+  for (const SymmetryPlane& q : params.planes) {
+    for (const SymmetryPlane& p : params.planes)
+      if (p.axis == q.axis && p.offset != q.offset)
+        throw MechanicsError("mechanics: symmetry planes " + p.text() + " and " + q.text() +
+                             " are parallel: a sheet's cone origin must lie on every plane (its rims along them "
+                             "are closed there); give one plane per axis");
+    origin[q.axis] = q.offset;
+  }
+  return origin;
+}
+
+namespace {
+
+// Per vertex slot, bit k set when the vertex lies within plane_distance of params.planes[k].
+std::vector<std::uint32_t> planeMembership(const Tissue& tissue, const MembraneGrowthParams& params) {
+  std::vector<std::uint32_t> on(tissue.slots(0), 0);
+  for (std::size_t k = 0; k < params.planes.size() && k < 32; ++k)
+    for (VertexId v : tissue.vertices())
+      if (std::abs(tissue.position(v)[params.planes[k].axis] - params.planes[k].offset) <= params.plane_distance)
+        on[v.index()] |= std::uint32_t{1} << k;
+  return on;
+}
+
+// The vertices the base or boundary support holds (per vertex slot).
+std::vector<std::uint8_t> heldVertices(const Tissue& tissue, const MembraneGrowthParams& params) {
   std::vector<std::uint8_t> fixed(tissue.slots(0), 0);
+  if (params.support == MembraneGrowthParams::Support::Point ||
+      params.support == MembraneGrowthParams::Support::Symmetry)
+    return fixed;
   if (params.support == MembraneGrowthParams::Support::Boundary) {
     if (tissue.dim() != 2)
       throw MechanicsError("mechanics: the boundary support holds a sheet's rims; a 3D tissue has none (use the "
@@ -198,6 +281,41 @@ std::vector<std::uint8_t> membraneSupport(const Tissue& tissue, const MembraneGr
   return fixed;
 }
 
+}  // namespace
+
+std::vector<std::uint8_t> membraneFixedDofs(const Tissue& tissue, const MembraneGrowthParams& params) {
+  if (params.planes.size() > 32) throw MechanicsError("mechanics: more than 32 symmetry planes");
+  std::vector<std::uint8_t> fixed(3 * tissue.slots(0), 1);
+  const std::vector<std::uint8_t> held = heldVertices(tissue, params);
+  const std::vector<std::uint32_t> on = planeMembership(tissue, params);
+  for (VertexId v : tissue.vertices())
+    for (int k = 0; k < 3; ++k) fixed[3 * v.index() + static_cast<std::size_t>(k)] = held[v.index()];
+  for (std::size_t k = 0; k < params.planes.size(); ++k)
+    for (VertexId v : tissue.vertices())
+      if (on[v.index()] >> k & 1u) fixed[3 * v.index() + static_cast<std::size_t>(params.planes[k].axis)] = 1;
+  if (params.support == MembraneGrowthParams::Support::Point) {
+    Vec3 point = Vec3::Zero();
+    if (params.point) {
+      point = *params.point;
+    } else {
+      for (VertexId v : tissue.vertices()) point += tissue.position(v);
+      point /= static_cast<double>(std::max<std::size_t>(tissue.numVertices(), 1));
+    }
+    fixPointSupport(tissue, point, fixed);
+  }
+  return fixed;
+}
+
+std::vector<std::uint8_t> membraneSupport(const Tissue& tissue, const MembraneGrowthParams& params) {
+  const std::vector<std::uint8_t> dofs = membraneFixedDofs(tissue, params);
+  std::vector<std::uint8_t> fixed(tissue.slots(0), 0);
+  for (VertexId v : tissue.vertices()) {
+    const std::size_t i = 3 * static_cast<std::size_t>(v.index());
+    fixed[v.index()] = dofs[i] && dofs[i + 1] && dofs[i + 2];
+  }
+  return fixed;
+}
+
 FanMembraneModel buildTissueMembranes(Tissue& tissue, const MembraneGrowthParams& params, MembraneRestState& state,
                                       std::size_t* reset) {
   const std::vector<FaceId> faces = membraneFaces(tissue);
@@ -212,7 +330,7 @@ FanMembraneModel buildTissueMembranes(Tissue& tissue, const MembraneGrowthParams
   // A sheet's cells are its faces: one store serves both (cells of a sheet, walls of a 3D tissue).
   const PropertyColumn<double>* fibre_ratio =
       face_props.has(kFibreRatioName) ? &face_props.get<double>(kFibreRatioName) : nullptr;
-  const Vec3 origin = tissue.dim() == 2 ? sheetOrigin(tissue) : Vec3::Zero();
+  const Vec3 origin = membraneOrigin(tissue, params);
   const std::vector<double> p = facePressures(tissue, faces, pressure.values(), origin);
   state.loops.resize(tissue.slots(2));
   state.rest.resize(tissue.slots(2));
@@ -291,11 +409,16 @@ FanMembraneModel buildTissueMembranes(Tissue& tissue, const MembraneGrowthParams
       count[r] += 1.0;
     }
     const std::vector<std::uint8_t> support = membraneSupport(tissue, params);
+    const std::vector<std::uint32_t> on = planeMembership(tissue, params);
     for (std::size_t r = 0; r < lids.size(); ++r) {
-      // A rim on the fixed base (a dome's) or a fixed boundary adds a constant: left out.
-      bool fixed = true;
-      for (Index v : lids[r]) fixed = fixed && support[v];
-      if (fixed) continue;
+      // A rim on the fixed base (a dome's) or a fixed boundary adds a constant, and one along symmetry planes
+      // through the origin nothing (its cone from the origin lies in them): left out, when every edge is so.
+      bool closed = true;
+      for (std::size_t i = 0; i < lids[r].size(); ++i) {
+        const Index a = lids[r][i], b = lids[r][(i + 1) % lids[r].size()];
+        closed = closed && ((support[a] && support[b]) || (on[a] & on[b]) != 0);
+      }
+      if (closed) continue;
       MembranePolygon lid;
       lid.loop = lids[r];
       lid.elastic = false;
@@ -505,13 +628,18 @@ MembraneStepReport membraneGrowthStep(Tissue& tissue, const MembraneGrowthParams
   FanMembraneModel model = buildTissueMembranes(tissue, params, state, &report.polygons_reset);
   report.polygons = model.numPolygons();
 
-  std::vector<std::uint8_t> fixed(3 * tissue.slots(0), 1);
-  const std::vector<std::uint8_t> support = membraneSupport(tissue, params);
+  const std::vector<std::uint8_t> fixed = membraneFixedDofs(tissue, params);
   for (VertexId v : tissue.vertices()) {
-    const bool held = support[v.index()] != 0;
-    report.fixed_vertices += held ? 1 : 0;
-    for (int k = 0; k < 3; ++k) fixed[3 * v.index() + k] = held ? 1 : 0;
+    const std::size_t i = 3 * static_cast<std::size_t>(v.index());
+    report.fixed_vertices += fixed[i] && fixed[i + 1] && fixed[i + 2] ? 1 : 0;
+    report.fixed_dofs += static_cast<std::size_t>(fixed[i] + fixed[i + 1] + fixed[i + 2]);
   }
+  std::string supports = "the membrane support '" + membraneSupports().name(params.support) + "'";
+  if (!params.planes.empty()) {
+    supports += " with the symmetry planes ";
+    for (std::size_t k = 0; k < params.planes.size(); ++k) supports += (k ? ", " : "") + params.planes[k].text();
+  }
+  requireNoRigidMotion(tissue, fixed, supports, params.solver.context);
   Eigen::VectorXd x = spatialDofs(tissue);
   report.equilibrium = solveEquilibrium(model, x, fixed, params.solver);
   setSpatialDofs(tissue, x);

@@ -71,6 +71,20 @@ struct FibreRule {
   Vec3 at(const Vec3& c) const;
 };
 
+/// A symmetry plane normal to a coordinate axis: x[axis] = offset. A vertex
+/// within MembraneGrowthParams::plane_distance of it keeps that coordinate
+/// (its normal displacement is zero; it slides in the plane).
+struct SymmetryPlane {
+  int axis = 0;  ///< 0: x, 1: y, 2: z
+  double offset = 0.0;
+  /// "x = 0" (exact text: reads back with parseSymmetryPlanes).
+  std::string text() const;
+};
+
+/// Planes from text such as "x = 0, y = 0" (items "x=c", "y=c" or "z=c"
+/// separated by commas; empty: none). InputError naming `source` and the item.
+std::vector<SymmetryPlane> parseSymmetryPlanes(const std::string& text, const std::string& source);
+
 struct MembraneGrowthParams {
   MembraneMaterial material{};
   double pressure = 0.1;  ///< turgor of cells without a turgor_pressure value
@@ -80,14 +94,23 @@ struct MembraneGrowthParams {
   /// principal stress every step (fibre_feedback.hpp).
   FibreFeedback feedback{};
   StrainGrowthLaw growth{};
-  /// What is fixed: `Base`, the vertices within `base_distance` above the
+  /// What is fixed (the names: membraneSupports()): `Base`, the vertices within `base_distance` above the
   /// base height (`base_height`, else the lowest vertex z: the base ring of a
   /// dome or a cylinder, the bottom of a 3D tissue); `Boundary`, every vertex on a boundary wall of a sheet (its rims:
-  /// a cropped patch of a larger surface). A rim whose vertices are all fixed
-  /// gets no lid (its pressure work is constant).
-  enum class Support { Base, Boundary };
+  /// a cropped patch of a larger surface); `Point`, the one-point support of a
+  /// closed body (fixPointSupport: the fewest components of three vertices that
+  /// remove the rigid motions the planes leave); `Symmetry`, the planes alone.
+  /// The symmetry `planes` apply with every support. A rim each of whose edges
+  /// is fixed or lies in a symmetry plane gets no lid (its pressure work is
+  /// constant, or zero: a sheet's cone origin lies on every plane).
+  enum class Support { Base, Boundary, Point, Symmetry };
   Support support = Support::Base;
   double base_distance = 1e-6;
+  std::vector<SymmetryPlane> planes;
+  double plane_distance = 1e-6;
+  /// `Point`: the anchor is the vertex nearest this point (unset: the vertex
+  /// mean of the tissue as it is; a run sets it once, at its start).
+  std::optional<Vec3> point;
   /// The base plane's z for `Base`. A run sets it once, at its start: found
   /// again each step, a free rim vertex that sank below the base would become
   /// the "lowest vertex" and the support would hold it alone.
@@ -118,11 +141,12 @@ struct MembraneStepReport {
   EquilibriumReport equilibrium;
   std::size_t polygons = 0;
   std::size_t polygons_reset = 0;  ///< polygons whose rest shape was (re)initialised
-  std::size_t fixed_vertices = 0;
+  std::size_t fixed_vertices = 0;  ///< vertices with all three dofs fixed
+  std::size_t fixed_dofs = 0;      ///< fixed dofs of live vertices (supports and symmetry planes)
   double max_growth_rate = 0.0;
 };
 
-/// The names of the supports (`mechanics.membrane_support`): base, boundary.
+/// The names of the supports (`mechanics.membrane_support`): base, boundary, point, symmetry.
 const EnumTable<MembraneGrowthParams::Support>& membraneSupports();
 
 /// The faces that are membranes: a sheet's cells, a 3D tissue's walls.
@@ -137,8 +161,16 @@ std::vector<double> facePressures(const Tissue& tissue, const std::vector<FaceId
                                   const std::vector<double>& cell_pressure, const Vec3& origin);
 /// The cone origin of a sheet: the tissue's vertex mean dropped to z_min.
 Vec3 sheetOrigin(const Tissue& tissue);
-/// The fixed vertices (per vertex slot, 1: fixed) of `params.support`.
-/// MechanicsError when it fixes none, or for Boundary on a 3D tissue.
+/// The cone origin the membranes use: a sheet's sheetOrigin moved onto every
+/// symmetry plane (MechanicsError for a sheet with two parallel planes apart);
+/// the origin for a 3D tissue (its cells are closed).
+Vec3 membraneOrigin(const Tissue& tissue, const MembraneGrowthParams& params);
+/// The fixed degrees of freedom of the supports and symmetry planes, three
+/// per vertex slot (x, y, z; 1: fixed; dead slots fixed). Does not check the
+/// rigid motions (requireNoRigidMotion; membraneGrowthStep does).
+/// MechanicsError for Boundary on a 3D tissue or a sheet without a rim.
+std::vector<std::uint8_t> membraneFixedDofs(const Tissue& tissue, const MembraneGrowthParams& params);
+/// The fully fixed vertices (per vertex slot, 1: all three dofs fixed) of membraneFixedDofs.
 std::vector<std::uint8_t> membraneSupport(const Tissue& tissue, const MembraneGrowthParams& params);
 /// Builds the model of `tissue` as it is, rest shapes from `state` (updated
 /// for changed loops, with a new triangulation; counts them in `reset`).
@@ -177,7 +209,9 @@ void prepareMembraneWallOutputs(Tissue& tissue);
 /// and `model` is its membranes (one polygon per wall, in membraneFaces order).
 void writeMembraneWallOutputs(Tissue& tissue, const FanMembraneModel& model, const Eigen::VectorXd& x);
 
-/// One step: model from the tissue, equilibrium (positions move there;
+/// One step: model from the tissue, supports (membraneFixedDofs; a
+/// MechanicsError naming the free rigid motions when they leave any, before
+/// anything moves), equilibrium (positions move there;
 /// EquilibriumError leaves the tissue unchanged), rest shapes grow over dt.
 /// With stress feedback, the fibres turn after the equilibrium (noise drawn
 /// from `rng`, which must be given when params.feedback.noise > 0). Writes
