@@ -16,7 +16,9 @@ namespace tessella::mechanics {
 const EnumTable<solvers::SolverMethod>& tangentSolvers() {
   static const EnumTable<solvers::SolverMethod> table(
       "tangent solver",
-      {{"auto", solvers::SolverMethod::Auto, "Eigen's simplicial LDL^T (the default; deterministic everywhere)."},
+      {{"auto", solvers::SolverMethod::Auto,
+        "CHOLMOD for tangents of 5000 free dofs or more when built with it, else Eigen's simplicial LDL^T (the "
+        "default)."},
        {"ldlt", solvers::SolverMethod::Direct, "Eigen's simplicial LDL^T at any size."},
        {"cholmod", solvers::SolverMethod::Cholmod,
         "CHOLMOD's supernodal Cholesky: several times faster on large 3D tissues (builds with CHOLMOD only)."}});
@@ -38,6 +40,8 @@ void checkOptions(const EquilibriumOptions& o) {
   if (!(o.backtrack > 0.0 && o.backtrack < 1.0)) bad("backtrack", o.backtrack, "must be in (0, 1)");
   if (o.max_backtracks < 1) bad("max_backtracks", o.max_backtracks, "must be >= 1");
   if (o.max_shifts < 1) bad("max_shifts", o.max_shifts, "must be >= 1");
+  if (o.auto_cholmod_unknowns < 0)
+    bad("auto_cholmod_unknowns", static_cast<double>(o.auto_cholmod_unknowns), "must be >= 0");
 }
 
 std::string where(const EquilibriumOptions& o) { return o.context.empty() ? std::string() : " (" + o.context + ")"; }
@@ -194,7 +198,11 @@ EquilibriumReport solveEquilibrium(const EnergyModel& model, Eigen::VectorXd& x,
 
   std::vector<Triplet> entries;
   FreeTangent tangent(free_of, m);
-  solvers::LinearSolver solver(options.linear);
+  solvers::LinearSolverOptions linear = options.linear;
+  if (linear.method == solvers::SolverMethod::Auto && solvers::solverAvailable(solvers::SolverMethod::Cholmod) &&
+      m >= options.auto_cholmod_unknowns)
+    linear.method = solvers::SolverMethod::Cholmod;
+  solvers::LinearSolver solver(linear);
   while (report.residual > report.tolerance) {
     if (report.iterations >= options.max_iterations) fail("no convergence");
     // Tangent on the free dofs.
@@ -222,6 +230,7 @@ EquilibriumReport solveEquilibrium(const EnergyModel& model, Eigen::VectorXd& x,
         solver.compute(tau > 0.0 ? tangent.shifted(tau) : K);
         d = solver.solve(-g);
         ++report.linear_solves;
+        report.linear_method = solver.method();
         report.analyses = solver.analyses();
         if (d.allFinite() && g.dot(d) < 0.0) {
           found = true;

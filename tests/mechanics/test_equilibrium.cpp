@@ -189,3 +189,46 @@ TEST_CASE("equilibrium: thread counts 1 and 2 give bit-identical positions", "[m
   };
   CHECK(run(1) == run(2));
 }
+
+// `auto` (the default) factorises tangents of at least auto_cholmod_unknowns free dofs with CHOLMOD
+// when it is built, smaller ones with Eigen's LDL^T (the same arithmetic as `ldlt`); both reach the
+// same equilibrium within Newton's tolerance, and CHOLMOD's is the same bit for bit with 1 and 2
+// threads.
+TEST_CASE(
+    "equilibrium: the default tangent solver is CHOLMOD from a size, LDL^T below; same equilibrium",
+    "[mechanics]") {
+  Tissue tissue = voronoi(40, 3);
+  std::vector<double> rest(tissue.slots(1), 0.0), stiff(tissue.slots(1), 1.0),
+      pressure(tissue.cellSlots(), 0.15);
+  for (EdgeId e : tissue.edges()) rest[e.index()] = 0.95 * edgeLength(tissue, e);
+  const WallSpringModel model = WallSpringModel::fromTissue(tissue, rest, stiff, pressure);
+  FixedDofs fixed = deadSlotMask(tissue);
+  pinPoint(tissue, Vec3(3, 2, 0), fixed);
+  auto solve = [&](solvers::SolverMethod method, Eigen::Index from, int threads,
+                   EquilibriumReport* report) {
+    const int saved = omp_get_max_threads();
+    omp_set_num_threads(threads);
+    EquilibriumOptions options;
+    options.relative_tolerance = 1e-12;
+    options.linear.method = method;
+    options.auto_cholmod_unknowns = from;
+    Eigen::VectorXd x = planarDofs(tissue);
+    *report = solveEquilibrium(model, x, fixed, options);
+    omp_set_num_threads(saved);
+    return x;
+  };
+  EquilibriumReport small, ldlt, large, large2;
+  const Eigen::VectorXd by_default = solve(solvers::SolverMethod::Auto, 5000, 2, &small);
+  const Eigen::VectorXd direct = solve(solvers::SolverMethod::Direct, 5000, 2, &ldlt);
+  CHECK(small.linear_method ==
+        solvers::SolverMethod::Direct);  // 40 cells: far below 5000 free dofs
+  CHECK(by_default == direct);
+  const Eigen::VectorXd from_zero = solve(solvers::SolverMethod::Auto, 0, 1, &large);
+  const bool cholmod = solvers::solverAvailable(solvers::SolverMethod::Cholmod);
+  CHECK(large.linear_method ==
+        (cholmod ? solvers::SolverMethod::Cholmod : solvers::SolverMethod::Direct));
+  CHECK((from_zero - direct).lpNorm<Eigen::Infinity>() <= 1e-9 * direct.lpNorm<Eigen::Infinity>());
+  CHECK(solve(solvers::SolverMethod::Auto, 0, 2, &large2) == from_zero);
+  CHECK_THROWS_WITH(solve(solvers::SolverMethod::Auto, -1, 1, &large2),
+                    Catch::Contains("auto_cholmod_unknowns"));
+}

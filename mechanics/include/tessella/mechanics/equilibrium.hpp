@@ -23,8 +23,10 @@
 namespace tessella::mechanics {
 
 /// The direct solvers offered for the tangents (`mechanics.linear_solver`):
-/// `auto` (Eigen's simplicial LDL^T below LinearSolverOptions'
-/// auto_direct_max_unknowns), `ldlt` (always Eigen's LDL^T) and `cholmod`
+/// `auto` (CHOLMOD, when built, for tangents of at least
+/// EquilibriumOptions::auto_cholmod_unknowns free dofs; else Eigen's
+/// simplicial LDL^T below LinearSolverOptions' auto_direct_max_unknowns),
+/// `ldlt` (always Eigen's LDL^T) and `cholmod`
 /// (CHOLMOD's supernodal Cholesky; builds with TESSELLA_WITH_CHOLMOD). Only
 /// direct solvers: the shifted tangents are factorised, an iterative solve of
 /// an indefinite K would not detect it.
@@ -45,6 +47,11 @@ struct EquilibriumOptions {
   int max_shifts = 30;
   /// Options of the tangent solves (method, tolerances).
   solvers::LinearSolverOptions linear{};
+  /// With linear.method Auto and CHOLMOD built: tangents of at least this many
+  /// free dofs are factorised by CHOLMOD (supernodal; on the 3D 10^3-cell tissue
+  /// 15-25 times faster than the simplicial LDL^T, docs/mechanics.md "Cost"),
+  /// smaller ones by Eigen's LDL^T.
+  Eigen::Index auto_cholmod_unknowns = 5000;
   /// Where the solve happens (for example "step 12, time 1.2"): named by the error.
   std::string context;
 };
@@ -67,6 +74,8 @@ struct EquilibriumReport {
   std::vector<double> shifts;
   std::vector<double> step_lengths;
   int linear_solves = 0;
+  /// The solver the tangents were factorised with (Auto resolved; Auto when no tangent was needed).
+  solvers::SolverMethod linear_method = solvers::SolverMethod::Auto;
   /// Symbolic analyses of the tangent's pattern (the fill-reducing ordering):
   /// one per solve when the model's pattern is fixed, later tangents and
   /// shifted retries are only refactorised.
