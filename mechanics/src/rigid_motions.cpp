@@ -41,7 +41,8 @@ Frame frameOf(const Tissue& tissue) {
   return f;
 }
 
-// The change of dof k of a vertex at p under the motion (t, w): t_k + w . (q x e_k), q = (p - c) / L.
+// The change of dof k of a vertex at p under the motion (t, w): t_k + w . (q x e_k), q = (p - c) /
+// L.
 Vector6 row(const Frame& f, const Vec3& p, int k) {
   const Vec3 q = (p - f.centre) / f.scale;
   const Vec3 e = Vec3::Unit(k);
@@ -51,7 +52,8 @@ Vector6 row(const Frame& f, const Vec3& p, int k) {
 }
 
 // An orthonormal basis (columns) of the motions the fixed dofs do not move.
-Eigen::MatrixXd freeSpace(const Tissue& tissue, const Frame& f, const std::vector<std::uint8_t>& fixed) {
+Eigen::MatrixXd freeSpace(const Tissue& tissue, const Frame& f,
+                          const std::vector<std::uint8_t>& fixed) {
   Eigen::Matrix<double, 6, 6> gram = Eigen::Matrix<double, 6, 6>::Zero();
   for (VertexId v : tissue.vertices())
     for (int k = 0; k < 3; ++k) {
@@ -67,7 +69,8 @@ Eigen::MatrixXd freeSpace(const Tissue& tissue, const Frame& f, const std::vecto
   for (int i = 0; i < 6; ++i)
     if (!(top > 0.0) || eig.eigenvalues()[i] <= 1e-10 * top) free.push_back(i);
   Eigen::MatrixXd basis(6, static_cast<Eigen::Index>(free.size()));
-  for (std::size_t j = 0; j < free.size(); ++j) basis.col(static_cast<Eigen::Index>(j)) = eig.eigenvectors().col(free[j]);
+  for (std::size_t j = 0; j < free.size(); ++j)
+    basis.col(static_cast<Eigen::Index>(j)) = eig.eigenvectors().col(free[j]);
   return basis;
 }
 
@@ -82,7 +85,8 @@ RigidMotion motionOf(const Frame& f, Vector6 m) {
 }
 
 std::string rounded(const Vec3& v) {
-  return "(" + formatNumber(v.x(), 4) + ", " + formatNumber(v.y(), 4) + ", " + formatNumber(v.z(), 4) + ")";
+  return "(" + formatNumber(v.x(), 4) + ", " + formatNumber(v.y(), 4) + ", " +
+         formatNumber(v.z(), 4) + ")";
 }
 
 }  // namespace
@@ -94,12 +98,15 @@ std::string RigidMotion::describe() const {
   // u(p) = t + omega x (p - c) = slide axis + omega x (p - a), a = c + omega x t / |omega|^2.
   const Vec3 through = centre + rotation.cross(translation) / (w * w);
   const double slide = translation.dot(axis);
-  std::string text = "rotation about the axis along " + rounded(axis) + " through " + rounded(through);
-  if (std::abs(slide) > 1e-9 * std::max(translation.norm(), 1e-300)) text += " with a slide along it";
+  std::string text =
+      "rotation about the axis along " + rounded(axis) + " through " + rounded(through);
+  if (std::abs(slide) > 1e-9 * std::max(translation.norm(), 1e-300))
+    text += " with a slide along it";
   return text;
 }
 
-std::vector<RigidMotion> freeRigidMotions(const Tissue& tissue, const std::vector<std::uint8_t>& fixed) {
+std::vector<RigidMotion> freeRigidMotions(const Tissue& tissue,
+                                          const std::vector<std::uint8_t>& fixed) {
   const Frame f = frameOf(tissue);
   const Eigen::MatrixXd basis = freeSpace(tissue, f, fixed);
   std::vector<RigidMotion> motions;
@@ -107,19 +114,22 @@ std::vector<RigidMotion> freeRigidMotions(const Tissue& tissue, const std::vecto
   return motions;
 }
 
-void requireNoRigidMotion(const Tissue& tissue, const std::vector<std::uint8_t>& fixed, const std::string& what,
-                          const std::string& context) {
+void requireNoRigidMotion(const Tissue& tissue, const std::vector<std::uint8_t>& fixed,
+                          const std::string& what, const std::string& context) {
   const std::vector<RigidMotion> free = freeRigidMotions(tissue, fixed);
   if (free.empty()) return;
   std::string list;
   for (const RigidMotion& m : free) list += (list.empty() ? "" : "; ") + m.describe();
-  throw MechanicsError("mechanics" + (context.empty() ? std::string() : " (" + context + ")") + ": " + what +
-                       " leaves " + std::to_string(free.size()) + " rigid motion" + (free.size() > 1 ? "s" : "") +
-                       " free (" + list + "): the tangent system of the equilibrium would be singular (the energy "
-                       "does not change under them); fix more vertices, add symmetry planes or use the point support");
+  throw MechanicsError("mechanics" + (context.empty() ? std::string() : " (" + context + ")") +
+                       ": " + what + " leaves " + std::to_string(free.size()) + " rigid motion" +
+                       (free.size() > 1 ? "s" : "") + " free (" + list +
+                       "): the tangent system of the equilibrium would be singular (the energy "
+                       "does not change under them); fix more vertices, add symmetry planes or use "
+                       "the point support");
 }
 
-PointSupport fixPointSupport(const Tissue& tissue, const Vec3& point, std::vector<std::uint8_t>& fixed) {
+PointSupport fixPointSupport(const Tissue& tissue, const Vec3& point,
+                             std::vector<std::uint8_t>& fixed) {
   if (tissue.numVertices() < 3)
     throw MechanicsError("mechanics: the point support needs three vertices; the tissue has " +
                          std::to_string(tissue.numVertices()));
@@ -148,12 +158,14 @@ PointSupport fixPointSupport(const Tissue& tissue, const Vec3& point, std::vecto
   // along the motion a rotation about the line gives it (largest first).
   std::vector<std::pair<VertexId, int>> candidates = {{s.anchor, 0}, {s.anchor, 1}, {s.anchor, 2}};
   std::array<int, 3> order = {0, 1, 2};
-  std::stable_sort(order.begin(), order.end(), [&](int i, int j) { return std::abs(r[i]) < std::abs(r[j]); });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int i, int j) { return std::abs(r[i]) < std::abs(r[j]); });
   for (int k : order) candidates.emplace_back(s.second, k);
   const Vec3 d = tissue.position(s.third) - a;
   const Vec3 swing = u.cross(d);
   order = {0, 1, 2};
-  std::stable_sort(order.begin(), order.end(), [&](int i, int j) { return std::abs(swing[i]) > std::abs(swing[j]); });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int i, int j) { return std::abs(swing[i]) > std::abs(swing[j]); });
   for (int k : order) candidates.emplace_back(s.third, k);
 
   const Frame f = frameOf(tissue);

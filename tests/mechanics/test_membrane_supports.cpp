@@ -54,7 +54,8 @@ OctantMesh octants(double R, int n, const std::vector<std::array<int, 3>>& signs
   };
   for (const auto& s : signs) {
     auto at = [&](int i, int j) { return point({s[0] * i, s[1] * j, s[2] * (n - i - j)}); };
-    const bool mirrored = s[0] * s[1] * s[2] < 0;  // an odd number of reflections turns the loops round
+    const bool mirrored =
+        s[0] * s[1] * s[2] < 0;  // an odd number of reflections turns the loops round
     auto add = [&](Index a, Index b, Index c) {
       m.triangles.push_back(mirrored ? std::vector<Index>{a, c, b} : std::vector<Index>{a, b, c});
     };
@@ -78,12 +79,14 @@ std::vector<std::array<int, 3>> allOctants() {
 // One 3D cell whose walls are the mesh's triangles (a closed sphere).
 Tissue closedCell(const OctantMesh& m) {
   std::vector<std::vector<CellFace>> cells(1);
-  for (std::size_t f = 0; f < m.triangles.size(); ++f) cells[0].push_back({static_cast<Index>(f), false});
+  for (std::size_t f = 0; f < m.triangles.size(); ++f)
+    cells[0].push_back({static_cast<Index>(f), false});
   checkPolyhedra(m.points, m.triangles, cells, FaceOrientation::Given);
   return buildPolyhedralTissue(m.points, m.triangles, cells);
 }
 
-// The exact St Venant-Kirchhoff sphere: t E (lambda^2 - 1) / (1 - nu) = P R lambda, tension N = P lambda R / 2.
+// The exact St Venant-Kirchhoff sphere: t E (lambda^2 - 1) / (1 - nu) = P R lambda, tension N = P
+// lambda R / 2.
 constexpr double kR = 1.0, kP = 1.0, kE = 1000.0, kT = 0.01, kNu = 0.3;
 double exactStretch() {
   const double c = kP * kR * (1 - kNu) / (kT * kE);
@@ -100,7 +103,7 @@ MembraneGrowthParams sphereParams() {
 
 // Per cell (sheet) or wall (3D): the principal tensions N1, N2 of its membrane at x.
 std::vector<std::array<double, 2>> tensions(const FanMembraneModel& model, const Eigen::VectorXd& x,
-                                           std::size_t polygons) {
+                                            std::size_t polygons) {
   std::vector<std::array<double, 2>> t;
   for (std::size_t i = 0; i < polygons; ++i) {
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(model.meanTension(x, i));
@@ -110,7 +113,7 @@ std::vector<std::array<double, 2>> tensions(const FanMembraneModel& model, const
 }
 
 struct Solved {
-  std::vector<Vec3> positions;  // by vertex slot
+  std::vector<Vec3> positions;                 // by vertex slot
   std::vector<std::array<double, 2>> tension;  // by polygon (triangle of the mesh)
   double reaction = 0.0, force_scale = 0.0;    // |gradient at the fixed dofs|, the force scale
   std::size_t fixed_dofs = 0;
@@ -141,15 +144,17 @@ Solved solve(Tissue& tissue, const MembraneGrowthParams& params) {
   return s;
 }
 
-// The RMS over the triangles (nearly equal in area) of N_i / N - 1 over both principal tensions, and the largest
-// |r / (lambda R) - 1| over the vertices; returns the RMS.
+// The RMS over the triangles (nearly equal in area) of N_i / N - 1 over both principal tensions,
+// and the largest |r / (lambda R) - 1| over the vertices; returns the RMS.
 double checkClosedForm(const Solved& s, const Vec3& centre, double rms_bound, double radius_bound) {
   const double lambda = exactStretch(), N = kP * lambda * kR / 2.0;
   double sum = 0.0;
-  for (const auto& t : s.tension) sum += (std::pow(t[0] / N - 1.0, 2) + std::pow(t[1] / N - 1.0, 2)) / 2.0;
+  for (const auto& t : s.tension)
+    sum += (std::pow(t[0] / N - 1.0, 2) + std::pow(t[1] / N - 1.0, 2)) / 2.0;
   const double rms = std::sqrt(sum / static_cast<double>(s.tension.size()));
   double radius = 0.0;
-  for (const Vec3& p : s.positions) radius = std::max(radius, std::abs((p - centre).norm() / (lambda * kR) - 1.0));
+  for (const Vec3& p : s.positions)
+    radius = std::max(radius, std::abs((p - centre).norm() / (lambda * kR) - 1.0));
   CAPTURE(rms, radius);
   CHECK(rms < rms_bound);
   CHECK(radius < radius_bound);
@@ -183,97 +188,111 @@ TEST_CASE("symmetry planes: parsing names the bad item", "[mechanics]") {
 // the stress P r / (2 t), radius lambda R) within the discretisation error,
 // and the three agree with each other to the solver's tolerance (radii from
 // the centre, principal tensions); the point support's reactions vanish.
-TEST_CASE("supports: a pressurised sphere held at one point, by symmetry planes, or both", "[mechanics]") {
+TEST_CASE("supports: a pressurised sphere held at one point, by symmetry planes, or both",
+          "[mechanics]") {
   std::vector<double> rms_full, rms_eighth;
   for (int n : {6, 12}) {
-  CAPTURE(n);
-  // Measured RMS tension errors 3.3 % (n = 6) and 0.81 % (n = 12): second order; radii within 0.74 % and 0.26 %.
-  const double rms_bound = n == 6 ? 0.04 : 0.01, radius_bound = n == 6 ? 0.01 : 0.003;
-  // Whole sphere: one closed 3D cell, the point support.
-  const OctantMesh whole = octants(kR, n, allOctants());
-  Tissue sphere = closedCell(whole);
-  MembraneGrowthParams point = sphereParams();
-  point.support = MembraneGrowthParams::Support::Point;
-  const Solved full = solve(sphere, point);
-  CHECK(full.fixed_dofs == 6);  // 3 + 2 + 1
-  Vec3 centre = Vec3::Zero();
-  for (const Vec3& p : full.positions) centre += p;
-  centre /= static_cast<double>(full.positions.size());
-  CAPTURE(full.reaction, full.force_scale);
-  // The support does no work: its reactions are the round-off of the balance (measured below 1e-12 of the forces).
-  CHECK(full.reaction < 1e-9 * full.force_scale);
-  rms_full.push_back(checkClosedForm(full, centre, rms_bound, radius_bound));
+    CAPTURE(n);
+    // Measured RMS tension errors 3.3 % (n = 6) and 0.81 % (n = 12): second order; radii within
+    // 0.74 % and 0.26 %.
+    const double rms_bound = n == 6 ? 0.04 : 0.01, radius_bound = n == 6 ? 0.01 : 0.003;
+    // Whole sphere: one closed 3D cell, the point support.
+    const OctantMesh whole = octants(kR, n, allOctants());
+    Tissue sphere = closedCell(whole);
+    MembraneGrowthParams point = sphereParams();
+    point.support = MembraneGrowthParams::Support::Point;
+    const Solved full = solve(sphere, point);
+    CHECK(full.fixed_dofs == 6);  // 3 + 2 + 1
+    Vec3 centre = Vec3::Zero();
+    for (const Vec3& p : full.positions) centre += p;
+    centre /= static_cast<double>(full.positions.size());
+    CAPTURE(full.reaction, full.force_scale);
+    // The support does no work: its reactions are the round-off of the balance (measured below
+    // 1e-12 of the forces).
+    CHECK(full.reaction < 1e-9 * full.force_scale);
+    rms_full.push_back(checkClosedForm(full, centre, rms_bound, radius_bound));
 
-  // Holding the second vertex fully as well (7 dofs) constrains the inflation: the reactions are not zero.
-  {
-    Tissue over = closedCell(whole);
-    MembraneRestState state;
-    const FanMembraneModel model = buildTissueMembranes(over, point, state);
-    std::vector<std::uint8_t> fixed = membraneFixedDofs(over, point);
-    for (VertexId v : over.vertices()) {
-      const std::size_t i = 3 * v.index();
-      if (fixed[i] + fixed[i + 1] + fixed[i + 2] == 2) fixed[i] = fixed[i + 1] = fixed[i + 2] = 1;
+    // Holding the second vertex fully as well (7 dofs) constrains the inflation: the reactions are
+    // not zero.
+    {
+      Tissue over = closedCell(whole);
+      MembraneRestState state;
+      const FanMembraneModel model = buildTissueMembranes(over, point, state);
+      std::vector<std::uint8_t> fixed = membraneFixedDofs(over, point);
+      for (VertexId v : over.vertices()) {
+        const std::size_t i = 3 * v.index();
+        if (fixed[i] + fixed[i + 1] + fixed[i + 2] == 2) fixed[i] = fixed[i + 1] = fixed[i + 2] = 1;
+      }
+      Eigen::VectorXd x = spatialDofs(over);
+      const EquilibriumReport report = solveEquilibrium(model, x, fixed, point.solver);
+      Eigen::VectorXd g(x.size());
+      model.gradient(x, g);
+      double r2 = 0.0;
+      for (Eigen::Index i = 0; i < x.size(); ++i)
+        if (fixed[static_cast<std::size_t>(i)]) r2 += g[i] * g[i];  // every slot is live
+      CHECK(std::sqrt(r2) > 1e-3 * report.force_scale);
     }
-    Eigen::VectorXd x = spatialDofs(over);
-    const EquilibriumReport report = solveEquilibrium(model, x, fixed, point.solver);
-    Eigen::VectorXd g(x.size());
-    model.gradient(x, g);
-    double r2 = 0.0;
-    for (Eigen::Index i = 0; i < x.size(); ++i)
-      if (fixed[static_cast<std::size_t>(i)] && i < 3 * static_cast<Eigen::Index>(whole.points.size())) r2 += g[i] * g[i];
-    CHECK(std::sqrt(r2) > 1e-3 * report.force_scale);
-  }
 
-  // An eighth: a sheet held by the planes x = 0, y = 0, z = 0 alone (no lid: its rims lie in them).
-  const OctantMesh eighth_mesh = octants(kR, n, {{1, 1, 1}});
-  Tissue eighth = buildPolygonTissue(eighth_mesh.points, eighth_mesh.triangles, Embedding::Surface);
-  MembraneGrowthParams planes = sphereParams();
-  planes.support = MembraneGrowthParams::Support::Symmetry;
-  planes.planes = parseSymmetryPlanes("x = 0, y = 0, z = 0", "test");
-  CHECK(membraneOrigin(eighth, planes) == Vec3::Zero());
-  const Solved part = solve(eighth, planes);
-  rms_eighth.push_back(checkClosedForm(part, Vec3::Zero(), rms_bound, radius_bound));
+    // An eighth: a sheet held by the planes x = 0, y = 0, z = 0 alone (no lid: its rims lie in
+    // them).
+    const OctantMesh eighth_mesh = octants(kR, n, {{1, 1, 1}});
+    Tissue eighth =
+        buildPolygonTissue(eighth_mesh.points, eighth_mesh.triangles, Embedding::Surface);
+    MembraneGrowthParams planes = sphereParams();
+    planes.support = MembraneGrowthParams::Support::Symmetry;
+    planes.planes = parseSymmetryPlanes("x = 0, y = 0, z = 0", "test");
+    CHECK(membraneOrigin(eighth, planes) == Vec3::Zero());
+    const Solved part = solve(eighth, planes);
+    rms_eighth.push_back(checkClosedForm(part, Vec3::Zero(), rms_bound, radius_bound));
 
-  // A quarter (x, y >= 0): the planes x = 0 and y = 0 leave the z translation, which the point support takes.
-  const OctantMesh quarter_mesh = octants(kR, n, {{1, 1, 1}, {1, 1, -1}});
-  Tissue quarter = buildPolygonTissue(quarter_mesh.points, quarter_mesh.triangles, Embedding::Surface);
-  MembraneGrowthParams both = sphereParams();
-  both.support = MembraneGrowthParams::Support::Point;
-  both.planes = parseSymmetryPlanes("x = 0, y = 0", "test");
-  MembraneGrowthParams planes_only = both;
-  planes_only.support = MembraneGrowthParams::Support::Symmetry;
-  std::size_t plane_dofs = 0;
-  for (std::uint8_t f : membraneFixedDofs(quarter, planes_only)) plane_dofs += f;
-  const Solved half = solve(quarter, both);
-  CHECK(half.fixed_dofs == plane_dofs + 1);  // the point support adds its anchor's z alone
-  CAPTURE(half.reaction, half.force_scale);
-  Vec3 quarter_centre = Vec3::Zero();  // on the z axis: the planes hold x and y; z by symmetry about z = const
-  double zmin = 1e300, zmax = -1e300;
-  for (const Vec3& p : half.positions) zmin = std::min(zmin, p.z()), zmax = std::max(zmax, p.z());
-  quarter_centre.z() = 0.5 * (zmin + zmax);
-  checkClosedForm(half, quarter_centre, rms_bound, radius_bound);
+    // A quarter (x, y >= 0): the planes x = 0 and y = 0 leave the z translation, which the point
+    // support takes.
+    const OctantMesh quarter_mesh = octants(kR, n, {{1, 1, 1}, {1, 1, -1}});
+    Tissue quarter =
+        buildPolygonTissue(quarter_mesh.points, quarter_mesh.triangles, Embedding::Surface);
+    MembraneGrowthParams both = sphereParams();
+    both.support = MembraneGrowthParams::Support::Point;
+    both.planes = parseSymmetryPlanes("x = 0, y = 0", "test");
+    MembraneGrowthParams planes_only = both;
+    planes_only.support = MembraneGrowthParams::Support::Symmetry;
+    std::size_t plane_dofs = 0;
+    for (std::uint8_t f : membraneFixedDofs(quarter, planes_only)) plane_dofs += f;
+    const Solved half = solve(quarter, both);
+    CHECK(half.fixed_dofs == plane_dofs + 1);  // the point support adds its anchor's z alone
+    CAPTURE(half.reaction, half.force_scale);
+    Vec3 quarter_centre =
+        Vec3::Zero();  // on the z axis: the planes hold x and y; z by symmetry about z = const
+    double zmin = 1e300, zmax = -1e300;
+    for (const Vec3& p : half.positions) zmin = std::min(zmin, p.z()), zmax = std::max(zmax, p.z());
+    quarter_centre.z() = 0.5 * (zmin + zmax);
+    checkClosedForm(half, quarter_centre, rms_bound, radius_bound);
 
-  // The same discretisation: radii from the centre and the principal tensions agree, vertex by vertex and
-  // triangle by triangle (the meshes list the (+, +, +) octant first, in the same order).
-  const double lambda = exactStretch();
-  double radius_gap = 0.0, tension_gap = 0.0;
-  for (std::size_t i = 0; i < eighth_mesh.points.size(); ++i) {
-    REQUIRE(whole.grid[i] == eighth_mesh.grid[i]);
-    const double r_full = (full.positions[i] - centre).norm(), r_eighth = part.positions[i].norm();
-    const double r_quarter = (half.positions[i] - quarter_centre).norm();
-    radius_gap = std::max({radius_gap, std::abs(r_full - r_eighth), std::abs(r_quarter - r_eighth)});
-  }
-  const double N = kP * lambda * kR / 2.0;
-  for (std::size_t f = 0; f < eighth_mesh.triangles.size(); ++f)
-    for (int k = 0; k < 2; ++k)
-      tension_gap = std::max({tension_gap, std::abs(full.tension[f][k] - part.tension[f][k]) / N,
-                              std::abs(half.tension[f][k] - part.tension[f][k]) / N});
-  CAPTURE(radius_gap, tension_gap);
-  std::cout << "supports: sphere n = " << n << ": eighth (planes) / quarter (planes + point) / whole (point) agree to "
-            << radius_gap << " in radius, " << tension_gap << " in tension; point support reaction "
-            << full.reaction / full.force_scale << " of the force scale\n";
-  CHECK(radius_gap < 1e-8 * kR);
-  CHECK(tension_gap < 1e-7);
+    // The same discretisation: radii from the centre and the principal tensions agree, vertex by
+    // vertex and triangle by triangle (the meshes list the (+, +, +) octant first, in the same
+    // order).
+    const double lambda = exactStretch();
+    double radius_gap = 0.0, tension_gap = 0.0;
+    for (std::size_t i = 0; i < eighth_mesh.points.size(); ++i) {
+      REQUIRE(whole.grid[i] == eighth_mesh.grid[i]);
+      const double r_full = (full.positions[i] - centre).norm(),
+                   r_eighth = part.positions[i].norm();
+      const double r_quarter = (half.positions[i] - quarter_centre).norm();
+      radius_gap =
+          std::max({radius_gap, std::abs(r_full - r_eighth), std::abs(r_quarter - r_eighth)});
+    }
+    const double N = kP * lambda * kR / 2.0;
+    for (std::size_t f = 0; f < eighth_mesh.triangles.size(); ++f)
+      for (int k = 0; k < 2; ++k)
+        tension_gap = std::max({tension_gap, std::abs(full.tension[f][k] - part.tension[f][k]) / N,
+                                std::abs(half.tension[f][k] - part.tension[f][k]) / N});
+    CAPTURE(radius_gap, tension_gap);
+    std::cout << "supports: sphere n = " << n
+              << ": eighth (planes) / quarter (planes + point) / whole (point) agree to "
+              << radius_gap << " in radius, " << tension_gap
+              << " in tension; point support reaction " << full.reaction / full.force_scale
+              << " of the force scale\n";
+    CHECK(radius_gap < 1e-8 * kR);
+    CHECK(tension_gap < 1e-7);
   }
   // Second order under refinement (element size halved: a quarter of the error).
   CHECK(rms_full[1] < 0.3 * rms_full[0]);
@@ -282,7 +301,8 @@ TEST_CASE("supports: a pressurised sphere held at one point, by symmetry planes,
 
 TEST_CASE("supports that leave a rigid motion free are refused, naming it", "[mechanics]") {
   const OctantMesh quarter_mesh = octants(kR, 3, {{1, 1, 1}, {1, 1, -1}});
-  Tissue quarter = buildPolygonTissue(quarter_mesh.points, quarter_mesh.triangles, Embedding::Surface);
+  Tissue quarter =
+      buildPolygonTissue(quarter_mesh.points, quarter_mesh.triangles, Embedding::Surface);
   MembraneGrowthParams params = sphereParams();
   params.support = MembraneGrowthParams::Support::Symmetry;
   params.planes = parseSymmetryPlanes("x = 0, y = 0", "test");
@@ -297,10 +317,12 @@ TEST_CASE("supports that leave a rigid motion free are refused, naming it", "[me
   CHECK_THROWS_WITH(membraneGrowthStep(quarter, params, state, 0.1),
                     Catch::Contains("step 3, time 0.2") && Catch::Contains("'symmetry'") &&
                         Catch::Contains("x = 0, y = 0") && Catch::Contains("1 rigid motion free") &&
-                        Catch::Contains("translation along (0, 0, ") && Catch::Contains("singular"));
+                        Catch::Contains("translation along (0, 0, ") &&
+                        Catch::Contains("singular"));
   CHECK(std::equal(before.begin(), before.end(), quarter.positions().begin()));  // nothing moved
 
-  // A closed sphere on its base: the base is its lowest vertex alone, the three rotations about it are free.
+  // A closed sphere on its base: the base is its lowest vertex alone, the three rotations about it
+  // are free.
   Tissue sphere = closedCell(octants(kR, 3, allOctants()));
   MembraneGrowthParams base = sphereParams();
   const auto rotations = freeRigidMotions(sphere, membraneFixedDofs(sphere, base));
@@ -313,7 +335,8 @@ TEST_CASE("supports that leave a rigid motion free are refused, naming it", "[me
   }
   CHECK_THROWS_WITH(membraneGrowthStep(sphere, base, state, 0.1),
                     Catch::Contains("'base'") && Catch::Contains("3 rigid motions free") &&
-                        Catch::Contains("rotation about the axis along") && Catch::Contains("singular"));
+                        Catch::Contains("rotation about the axis along") &&
+                        Catch::Contains("singular"));
   // The symmetry support needs planes.
   MembraneGrowthParams none = sphereParams();
   none.support = MembraneGrowthParams::Support::Symmetry;

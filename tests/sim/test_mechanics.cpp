@@ -279,6 +279,79 @@ TEST_CASE("mechanics.linear_solver: CHOLMOD and LDL^T end a 3D turgor run at the
   CHECK(std::abs(totalMeasure(a) - totalMeasure(b)) <= 1e-9 * totalMeasure(a));
 }
 
+// The supports of membranes from YAML (docs/mechanics.md, "Supports of membranes"): the 3D config
+// held at one point (its anchor stays put, the tissue inflates), or on its base with a symmetry
+// plane (vertices on it stay on it, bit for bit); a support that leaves rigid motions free fails
+// the step, naming them, positions restored.
+TEST_CASE(
+    "mechanics section: the point support and symmetry planes hold a 3D tissue; a free body is "
+    "refused",
+    "[sim][mechanics]") {
+  const std::string config = sourcePath("configs/turgor_tissue_3d.yaml");
+  {
+    Simulation sim = Simulation::fromFile(
+        config,
+        {"time.end=0.1", "mechanics.membrane_support=point", "mechanics.support_point=[3, 3, 3]"});
+    VertexId anchor;
+    double best = 1e300;
+    for (VertexId v : sim.tissue().vertices()) {
+      const double d = (sim.tissue().position(v) - Vec3(3, 3, 3)).norm();
+      if (d < best) best = d, anchor = v;
+    }
+    const Vec3 at = sim.tissue().position(anchor);
+    const double volume = totalMeasure(sim.tissue());
+    sim.run();
+    CHECK(sim.tissue().position(anchor) == at);
+    CHECK(totalMeasure(sim.tissue()) > 1.001 * volume);
+    for (CellId c : sim.tissue().cells()) CHECK(cellMeasure(sim.tissue(), c) > 0.0);
+  }
+  {
+    Simulation sim =
+        Simulation::fromFile(config, {"time.end=0.1", "mechanics.symmetry_planes=x=0"});
+    std::vector<VertexId> on_plane;
+    for (VertexId v : sim.tissue().vertices())
+      if (sim.tissue().position(v).x() == 0.0) on_plane.push_back(v);
+    REQUIRE(on_plane.size() > 10);
+    std::vector<Vec3> before;
+    for (VertexId v : on_plane) before.push_back(sim.tissue().position(v));
+    sim.run();
+    double slide = 0.0;
+    for (std::size_t i = 0; i < on_plane.size(); ++i) {
+      CHECK(sim.tissue().position(on_plane[i]).x() == 0.0);
+      slide = std::max(slide, (sim.tissue().position(on_plane[i]) - before[i]).norm());
+    }
+    CHECK(slide > 1e-4);  // they move in the plane
+  }
+  Simulation sim = Simulation::fromFile(
+      config, {"mechanics.membrane_support=symmetry", "mechanics.symmetry_planes=z=0"});
+  const std::vector<Vec3> before(sim.tissue().positions().begin(), sim.tissue().positions().end());
+  try {
+    sim.step();
+    FAIL("no error");
+  } catch (const SimulationError& e) {
+    CHECK_THAT(e.what(),
+               Catch::Contains("stage 'mechanics'") && Catch::Contains("step 1, time 0") &&
+                   Catch::Contains("'symmetry' with the symmetry planes z = 0") &&
+                   Catch::Contains("3 rigid motions free") && Catch::Contains("singular"));
+  }
+  CHECK(std::vector<Vec3>(sim.tissue().positions().begin(), sim.tissue().positions().end()) ==
+        before);
+}
+
+TEST_CASE("mechanics section: the supports' keys name their errors", "[sim][mechanics]") {
+  const std::string base =
+      "tissue:\n  generator: box_grid\ntime:\n  end: 1\n  dt: 0.1\nmechanics:\n  model: "
+      "membranes\n";
+  const ConfigError none =
+      configErrorOf([&] { loadSimulationConfigString(base + "  membrane_support: symmetry\n"); });
+  CHECK(none.keyPath() == "mechanics.membrane_support");
+  CHECK_THAT(std::string(none.what()), Catch::Contains("symmetry_planes gives none"));
+  const ConfigError bad = configErrorOf(
+      [&] { loadSimulationConfigString(base + "  symmetry_planes: \"x = 0, w = 1\"\n"); });
+  CHECK(bad.keyPath() == "mechanics.symmetry_planes");
+  CHECK_THAT(std::string(bad.what()), Catch::Contains("'w=1'"));
+}
+
 TEST_CASE("configs/turgor_real_meristem.yaml: a real meristem with folded cells grows under turgor, rim held",
           "[sim][mechanics][configs]") {
   // The MorphoGraphX meristem (tests/data copy): some cells are not

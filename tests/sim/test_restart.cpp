@@ -407,3 +407,17 @@ TEST_CASE("neo-Hookean membranes restart exactly: a growing cylinder and a divid
                         false);
   }
 }
+
+// The point support's anchor point (the vertex mean at the start, unless given) travels in the run
+// state; the symmetry planes are configuration.
+TEST_CASE("membranes held at one point or by a symmetry plane restart exactly",
+          "[sim][restart][mechanics]") {
+  SECTION("3D tissue, point support") {
+    requireExactRestart(sourcePath("configs/turgor_tissue_3d.yaml"),
+                        {"mechanics.membrane_support=point"}, 2, false);
+  }
+  SECTION("3D tissue, base and the plane x = 0") {
+    requireExactRestart(sourcePath("configs/turgor_tissue_3d.yaml"),
+                        {"mechanics.symmetry_planes=x=0"}, 2, false);
+  }
+}

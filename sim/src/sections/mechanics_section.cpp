@@ -65,6 +65,12 @@ void MechanicsStage::prepare(Tissue& tissue, double /*time*/) {
       for (VertexId v : tissue.vertices()) sum += tissue.position(v);
       spec_.soft_center = sum / static_cast<double>(std::max<std::size_t>(tissue.numVertices(), 1));
     }
+    if (spec_.membrane.support == mechanics::MembraneGrowthParams::Support::Point && !spec_.membrane.point) {
+      // The anchor is the vertex nearest the start's vertex mean (a restart reads the point back below).
+      Vec3 sum = Vec3::Zero();
+      for (VertexId v : tissue.vertices()) sum += tissue.position(v);
+      spec_.membrane.point = sum / static_cast<double>(std::max<std::size_t>(tissue.numVertices(), 1));
+    }
     if (spec_.membrane.support == mechanics::MembraneGrowthParams::Support::Base && !spec_.membrane.base_height) {
       // The base plane is where the run starts (a restart reads it back below).
       double zmin = std::numeric_limits<double>::infinity();
@@ -80,6 +86,18 @@ void MechanicsStage::prepare(Tissue& tissue, double /*time*/) {
           throw InputError("snapshot '" + snapshot + "': mechanics.base_height holds '" +
                            state.at("mechanics.base_height") + "', not a number");
         spec_.membrane.base_height = z;
+      }
+      if (state.count("mechanics.support_point") &&
+          spec_.membrane.support == mechanics::MembraneGrowthParams::Support::Point) {
+        std::istringstream in(state.at("mechanics.support_point"));
+        Vec3 q;
+        for (int k = 0; k < 3; ++k) {
+          std::string word;
+          in >> word;
+          if (!detail::parseExact(word, q[k]))
+            throw InputError("snapshot '" + snapshot + "': mechanics.support_point holds '" + word + "'");
+        }
+        spec_.membrane.point = q;
       }
       if (state.count("mechanics.membrane_rest"))
         membrane_state_.fromText(tissue, state.at("mechanics.membrane_rest"), "snapshot '" + snapshot + "'");
@@ -136,6 +154,10 @@ void MechanicsStage::saveState(const Tissue& tissue, const std::string& snapshot
   if (spec_.membranes) {
     state["mechanics.membrane_rest"] = membrane_state_.toText(tissue);
     if (spec_.membrane.base_height) state["mechanics.base_height"] = formatNumber(*spec_.membrane.base_height);
+    if (spec_.membrane.point)
+      state["mechanics.support_point"] = formatNumber(spec_.membrane.point->x()) + " " +
+                                         formatNumber(spec_.membrane.point->y()) + " " +
+                                         formatNumber(spec_.membrane.point->z());
     if (spec_.soft_center)
       state["mechanics.soft_center"] = formatNumber(spec_.soft_center->x()) + " " +
                                        formatNumber(spec_.soft_center->y()) + " " +
@@ -357,13 +379,32 @@ void declareMechanicsSection(Schema& s) {
       .byDefault(0.0)
       .atLeast(0)
       .activeWhen("mechanics.model", membranes);
+  std::string supports =
+      "What holds the membranes against rigid motions (with the `symmetry_planes`, which apply to every support; "
+      "a step whose supports leave a rigid motion free fails, naming it).";
+  for (const auto& support : mechanics::membraneSupports().entries())
+    supports += " `" + support.name + "`: " + support.doc + ".";
   s.key("mechanics.membrane_support", ValueType::Enum,
-        "What holds the membranes. `base`: the vertices within `base_distance` above the lowest vertex; "
-        "`boundary`: every vertex on the sheet's boundary walls (its rims: a cropped patch of a larger "
-        "surface, such as an imported meristem; sheets only). A rim whose vertices are all fixed is not loaded.")
+        supports + " A rim each of whose edges is fixed or lies in a symmetry plane is not loaded.")
       .oneOf(mechanics::membraneSupports().names())
       .byDefault(std::string("base"))
       .activeWhen("mechanics.model", membranes);
+  s.key("mechanics.symmetry_planes", ValueType::String,
+        "Symmetry planes normal to the axes, as `x = c`, `y = c` or `z = c` separated by commas (for example "
+        "\"x = 0, y = 0\" for a quarter): a vertex within `plane_distance` of a plane keeps its normal "
+        "displacement zero (it slides in the plane). A sheet's rims along them are closed in the planes (the cone "
+        "origin lies on each). Empty: none.")
+      .byDefault(std::string(""))
+      .activeWhen("mechanics.model", membranes);
+  s.key("mechanics.plane_distance", ValueType::Float,
+        "Vertices within this distance of a symmetry plane are held on it.")
+      .byDefault(1e-6)
+      .atLeast(0)
+      .activeWhen("mechanics.model", membranes);
+  s.key("mechanics.support_point", ValueType::Vec3,
+        "The point support's anchor: the vertex nearest this point (each step).")
+      .whenAbsent("the mean of the vertex positions when the run starts")
+      .activeWhen("mechanics.membrane_support", {"point"});
   s.key("mechanics.base_distance", ValueType::Float,
         "Vertices within this distance above the lowest vertex (z) are fixed: the base ring of a dome or "
         "cylinder, the bottom of a 3D tissue.")
@@ -395,9 +436,10 @@ void declareMechanicsSection(Schema& s) {
       .atMost(10000)
       .activeWhen("mechanics.model", on);
   s.key("mechanics.linear_solver", ValueType::Enum,
-        "The direct solver of Newton's tangent systems: `auto` (Eigen's simplicial LDL^T up to 10^5 unknowns), "
-        "`ldlt` (Eigen's LDL^T at any size) or `cholmod` (CHOLMOD's supernodal Cholesky, several times faster "
-        "on large 3D tissues; builds with CHOLMOD only). Results agree to round-off.")
+        "The direct solver of Newton's tangent systems: `auto` (CHOLMOD's supernodal Cholesky for tangents of 5000 "
+        "free dofs or more when Tessella is built with CHOLMOD, else Eigen's simplicial LDL^T up to 10^5 unknowns), "
+        "`ldlt` (Eigen's LDL^T at any size) or `cholmod` (CHOLMOD at any size, several times faster on large "
+        "tissues; builds with CHOLMOD only). Results agree within Newton's tolerance.")
       .oneOf(mechanics::tangentSolvers().names())
       .byDefault(std::string("auto"))
       .activeWhen("mechanics.model", on);
@@ -434,6 +476,17 @@ MechanicsSpec readMechanicsSection(const Config& c) {
     p.support = parseFromConfig(c, mechanics::membraneSupports(), "mechanics.membrane_support");
     if (p.support == mechanics::MembraneGrowthParams::Support::Base)
       p.base_distance = c.getFloat("mechanics.base_distance");
+    try {
+      p.planes = mechanics::parseSymmetryPlanes(c.getString("mechanics.symmetry_planes"), "symmetry_planes");
+    } catch (const InputError& e) {
+      throw c.errorAt("mechanics.symmetry_planes", e.what());
+    }
+    if (p.support == mechanics::MembraneGrowthParams::Support::Symmetry && p.planes.empty())
+      throw c.errorAt("mechanics.membrane_support", "'symmetry' holds the tissue by its symmetry planes; "
+                                                    "mechanics.symmetry_planes gives none");
+    p.plane_distance = c.getFloat("mechanics.plane_distance");
+    if (p.support == mechanics::MembraneGrowthParams::Support::Point && c.has("mechanics.support_point"))
+      p.point = c.getVec("mechanics.support_point");
     p.feedback.rate = c.getFloat("mechanics.feedback_rate");
     p.feedback.noise = c.getFloat("mechanics.feedback_noise");
     const std::string fibres = c.getString("mechanics.fibres");

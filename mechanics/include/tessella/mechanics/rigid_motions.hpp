@@ -26,7 +26,8 @@ struct RigidMotion {
   Vec3 translation = Vec3::Zero();
   Vec3 rotation = Vec3::Zero();
   Vec3 centre = Vec3::Zero();
-  /// "translation along (0, 0, 1)", "rotation about the axis along (0, 0, 1) through (0, 0, 0)" or a screw.
+  /// "translation along (0, 0, 1)", "rotation about the axis along (0, 0, 1) through (0, 0, 0)" or
+  /// a screw.
   std::string describe() const;
 };
 
@@ -35,17 +36,19 @@ struct RigidMotion {
 /// empty when the supports remove all six. A direction counts as held when the
 /// fixed rows move it by more than 1e-5 of the tissue's extent (relative
 /// eigenvalue 1e-10 of their Gram matrix).
-std::vector<RigidMotion> freeRigidMotions(const Tissue& tissue, const std::vector<std::uint8_t>& fixed);
+std::vector<RigidMotion> freeRigidMotions(const Tissue& tissue,
+                                          const std::vector<std::uint8_t>& fixed);
 
 /// MechanicsError naming `what` (the supports), the free motions and the
 /// singular tangent when freeRigidMotions is not empty; `context` (a step and
 /// time, or empty) is named too.
-void requireNoRigidMotion(const Tissue& tissue, const std::vector<std::uint8_t>& fixed, const std::string& what,
-                          const std::string& context = {});
+void requireNoRigidMotion(const Tissue& tissue, const std::vector<std::uint8_t>& fixed,
+                          const std::string& what, const std::string& context = {});
 
 /// The vertices a one-point support of a closed body uses.
 struct PointSupport {
-  VertexId anchor;  ///< nearest the point: its components fixed where they remove a free motion (all 3 alone)
+  VertexId anchor;  ///< nearest the point: its components fixed where they remove a free motion
+                    ///< (all 3 alone)
   VertexId second;  ///< farthest from the anchor: up to two components across the line to it
   VertexId third;   ///< farthest from that line: up to one component, against the rotation about it
   int fixed_components = 0;  ///< dofs this support fixed (6 when nothing else holds the tissue)
@@ -60,6 +63,7 @@ struct PointSupport {
 /// on a closed body). A candidate is taken only when it holds a free motion
 /// (more than 1e-3 of its row in the free space), best-conditioned first.
 /// MechanicsError for a tissue with fewer than three vertices.
-PointSupport fixPointSupport(const Tissue& tissue, const Vec3& point, std::vector<std::uint8_t>& fixed);
+PointSupport fixPointSupport(const Tissue& tissue, const Vec3& point,
+                             std::vector<std::uint8_t>& fixed);
 
 }  // namespace tessella::mechanics
