@@ -338,7 +338,7 @@ void CellComplex::addVolumes(std::span<const Index> offsets, std::span<const Ori
 #pragma omp parallel
   {
     std::vector<Index> seen;  // per thread, reused
-    std::vector<std::pair<Index, int>> edge_uses;
+    detail::ClosedSurfaceScratch edge_uses;
 #pragma omp for schedule(dynamic, 256)
     for (std::int64_t m = 0; m < nvs; ++m) {
       const Index k = visit[m].second;
