@@ -243,15 +243,25 @@ Tetrahedra tetrahedra(Delaunay& dt, std::span<const Vec3> seeds) {
       tv[t][k] = dt.is_infinite(v) ? kInvalidIndex : tets.rank[v->info()];
     }
   tets.tv = std::move(tv);
-  incidence(tets, n);
-  // Cells renumbered by first appearance along the ranks (every cell has a finite vertex).
-  std::vector<Index> renumber(nt, kInvalidIndex), old_of;
-  old_of.reserve(nt);
-  for (Index t : tets.inc)
-    if (renumber[t] == kInvalidIndex) {
-      renumber[t] = static_cast<Index>(old_of.size());
-      old_of.push_back(t);
-    }
+  // Cells renumbered by first appearance along the ranks (every cell has a
+  // finite vertex): a cell first appears around its lowest rank, after the
+  // cells of lower indices there, so this is a counting sort of the cells by
+  // lowest rank, stable in CGAL's numbering.
+  std::vector<Index> lowest(nt), start(n + 1, 0);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t t = 0; t < nts; ++t) {
+    Index m = kInvalidIndex;
+    for (Index v : tets.tv[t]) m = std::min(m, v);  // kInvalidIndex (infinite) is the largest
+    lowest[t] = m;
+  }
+  for (std::size_t t = 0; t < nt; ++t) ++start[lowest[t] + 1];
+  for (std::size_t q = 0; q < n; ++q) start[q + 1] += start[q];
+  std::vector<Index> renumber(nt), old_of(nt);
+  for (std::size_t t = 0; t < nt; ++t) {
+    const Index u = start[lowest[t]]++;
+    renumber[t] = u;
+    old_of[u] = static_cast<Index>(t);
+  }
   tv.resize(nt);
   tets.tn.resize(nt);
   tets.finite.resize(nt);
@@ -576,10 +586,15 @@ std::vector<Vec3> weldBoundaryCells(const ConvexDomain3& domain, const Tetrahedr
   VertexWelder welder(domain.lo - scaffoldMargin(domain), weld, 0);
   std::vector<Index> key_of_weld;
   std::vector<Vec3> extra;
+  // A cell around several boundary seeds is welded at its first visit (again
+  // it would find its own point and add nothing).
+  std::vector<std::uint8_t> visited(nt, 0);
   for (std::size_t i = 0; i < n; ++i) {
     if (!readout.is_boundary[i]) continue;
     for (Index k = tets.inc_start[i]; k < tets.inc_start[i + 1]; ++k) {
       const Index t = tets.inc[k];
+      if (visited[t]) continue;
+      visited[t] = 1;
       if (!tets.finite[t] || domain.excess(dual.cc[t]) > -2 * weld) continue;  // see 2D
       const Index w = welder.weld(dual.cc[t]);
       if (w == key_of_weld.size()) key_of_weld.push_back(dual.group[t]);
