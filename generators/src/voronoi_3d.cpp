@@ -20,6 +20,7 @@
 #include <span>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -708,11 +709,19 @@ void assembleCells(std::span<const Vec3> seeds, const Tetrahedra& tets, const Du
   out.cell_faces.resize(out.cell_offsets[n]);
   // Per rank: the first lower neighbour whose wall differs, the first higher one missing a stored wall.
   std::vector<Index> differs_from(n, kInvalidIndex), missing_in(n, kInvalidIndex);
+  // Whether a cell's labels ascend (an interior cell lists its walls by
+  // neighbour rank): then a binary search finds a wall.
+  std::vector<std::uint8_t> ascending(n);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t q = 0; q < ns; ++q)
+    ascending[q] = std::is_sorted(walls[q].labels.begin(), walls[q].labels.end(), std::less_equal<int>());
   // The position of the wall towards `label` in cell j's list, or -1.
   auto wallTowards = [&](Index j, Index label) -> std::ptrdiff_t {
     const std::vector<int>& labels = walls[j].labels;
-    const auto it = std::find(labels.begin(), labels.end(), static_cast<int>(label));
-    return it == labels.end() ? -1 : it - labels.begin();
+    const int l = static_cast<int>(label);
+    const auto it = ascending[j] ? std::lower_bound(labels.begin(), labels.end(), l)
+                                 : std::find(labels.begin(), labels.end(), l);
+    return it == labels.end() || *it != l ? -1 : it - labels.begin();
   };
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::int64_t q = 0; q < ns; ++q) {
