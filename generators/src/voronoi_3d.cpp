@@ -367,6 +367,7 @@ struct CellReader3 {
     ClipPolytope cell;
     std::vector<Index> nbrs, first_tet, loop;
     std::vector<std::pair<Index, Index>> pairs;  // (neighbour, the lowest cell around the edge to it)
+    std::vector<std::pair<double, Index>> by_distance;  // (squared distance, neighbour): clipping order
     std::vector<Index> seen_by;                  // the last cell that listed rank j (never cleared)
     CellWalls local;
   };
@@ -478,9 +479,10 @@ struct CellReader3 {
     ClipPolytope& cell = s.cell;
     cell.resetToBox(domain.lo - margin_box, domain.hi + margin_box, box_labels);
     // Nearest first: the cell shrinks early, so later planes cut less or nothing.
-    std::sort(s.nbrs.begin(), s.nbrs.end(), [&](Index x, Index y) {
-      return std::make_pair((seeds[x] - seed).squaredNorm(), x) < std::make_pair((seeds[y] - seed).squaredNorm(), y);
-    });
+    s.by_distance.clear();
+    for (Index x : s.nbrs) s.by_distance.emplace_back((seeds[x] - seed).squaredNorm(), x);
+    std::sort(s.by_distance.begin(), s.by_distance.end());
+    for (std::size_t k = 0; k < s.nbrs.size(); ++k) s.nbrs[k] = s.by_distance[k].second;
     try {
       for (Index v : s.nbrs) {
         const Vec3& t = seeds[v];
