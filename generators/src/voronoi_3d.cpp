@@ -20,6 +20,7 @@
 #include <span>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -243,15 +244,25 @@ Tetrahedra tetrahedra(Delaunay& dt, std::span<const Vec3> seeds) {
       tv[t][k] = dt.is_infinite(v) ? kInvalidIndex : tets.rank[v->info()];
     }
   tets.tv = std::move(tv);
-  incidence(tets, n);
-  // Cells renumbered by first appearance along the ranks (every cell has a finite vertex).
-  std::vector<Index> renumber(nt, kInvalidIndex), old_of;
-  old_of.reserve(nt);
-  for (Index t : tets.inc)
-    if (renumber[t] == kInvalidIndex) {
-      renumber[t] = static_cast<Index>(old_of.size());
-      old_of.push_back(t);
-    }
+  // Cells renumbered by first appearance along the ranks (every cell has a
+  // finite vertex): a cell first appears around its lowest rank, after the
+  // cells of lower indices there, so this is a counting sort of the cells by
+  // lowest rank, stable in CGAL's numbering.
+  std::vector<Index> lowest(nt), start(n + 1, 0);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t t = 0; t < nts; ++t) {
+    Index m = kInvalidIndex;
+    for (Index v : tets.tv[t]) m = std::min(m, v);  // kInvalidIndex (infinite) is the largest
+    lowest[t] = m;
+  }
+  for (std::size_t t = 0; t < nt; ++t) ++start[lowest[t] + 1];
+  for (std::size_t q = 0; q < n; ++q) start[q + 1] += start[q];
+  std::vector<Index> renumber(nt), old_of(nt);
+  for (std::size_t t = 0; t < nt; ++t) {
+    const Index u = start[lowest[t]]++;
+    renumber[t] = u;
+    old_of[u] = static_cast<Index>(t);
+  }
   tv.resize(nt);
   tets.tn.resize(nt);
   tets.finite.resize(nt);
@@ -356,6 +367,7 @@ struct CellReader3 {
     ClipPolytope cell;
     std::vector<Index> nbrs, first_tet, loop;
     std::vector<std::pair<Index, Index>> pairs;  // (neighbour, the lowest cell around the edge to it)
+    std::vector<std::pair<double, Index>> by_distance;  // (squared distance, neighbour): clipping order
     std::vector<Index> seen_by;                  // the last cell that listed rank j (never cleared)
     CellWalls local;
   };
@@ -467,9 +479,10 @@ struct CellReader3 {
     ClipPolytope& cell = s.cell;
     cell.resetToBox(domain.lo - margin_box, domain.hi + margin_box, box_labels);
     // Nearest first: the cell shrinks early, so later planes cut less or nothing.
-    std::sort(s.nbrs.begin(), s.nbrs.end(), [&](Index x, Index y) {
-      return std::make_pair((seeds[x] - seed).squaredNorm(), x) < std::make_pair((seeds[y] - seed).squaredNorm(), y);
-    });
+    s.by_distance.clear();
+    for (Index x : s.nbrs) s.by_distance.emplace_back((seeds[x] - seed).squaredNorm(), x);
+    std::sort(s.by_distance.begin(), s.by_distance.end());
+    for (std::size_t k = 0; k < s.nbrs.size(); ++k) s.nbrs[k] = s.by_distance[k].second;
     try {
       for (Index v : s.nbrs) {
         const Vec3& t = seeds[v];
@@ -576,10 +589,15 @@ std::vector<Vec3> weldBoundaryCells(const ConvexDomain3& domain, const Tetrahedr
   VertexWelder welder(domain.lo - scaffoldMargin(domain), weld, 0);
   std::vector<Index> key_of_weld;
   std::vector<Vec3> extra;
+  // A cell around several boundary seeds is welded at its first visit (again
+  // it would find its own point and add nothing).
+  std::vector<std::uint8_t> visited(nt, 0);
   for (std::size_t i = 0; i < n; ++i) {
     if (!readout.is_boundary[i]) continue;
     for (Index k = tets.inc_start[i]; k < tets.inc_start[i + 1]; ++k) {
       const Index t = tets.inc[k];
+      if (visited[t]) continue;
+      visited[t] = 1;
       if (!tets.finite[t] || domain.excess(dual.cc[t]) > -2 * weld) continue;  // see 2D
       const Index w = welder.weld(dual.cc[t]);
       if (w == key_of_weld.size()) key_of_weld.push_back(dual.group[t]);
@@ -693,11 +711,19 @@ void assembleCells(std::span<const Vec3> seeds, const Tetrahedra& tets, const Du
   out.cell_faces.resize(out.cell_offsets[n]);
   // Per rank: the first lower neighbour whose wall differs, the first higher one missing a stored wall.
   std::vector<Index> differs_from(n, kInvalidIndex), missing_in(n, kInvalidIndex);
+  // Whether a cell's labels ascend (an interior cell lists its walls by
+  // neighbour rank): then a binary search finds a wall.
+  std::vector<std::uint8_t> ascending(n);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t q = 0; q < ns; ++q)
+    ascending[q] = std::is_sorted(walls[q].labels.begin(), walls[q].labels.end(), std::less_equal<int>());
   // The position of the wall towards `label` in cell j's list, or -1.
   auto wallTowards = [&](Index j, Index label) -> std::ptrdiff_t {
     const std::vector<int>& labels = walls[j].labels;
-    const auto it = std::find(labels.begin(), labels.end(), static_cast<int>(label));
-    return it == labels.end() ? -1 : it - labels.begin();
+    const int l = static_cast<int>(label);
+    const auto it = ascending[j] ? std::lower_bound(labels.begin(), labels.end(), l)
+                                 : std::find(labels.begin(), labels.end(), l);
+    return it == labels.end() || *it != l ? -1 : it - labels.begin();
   };
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::int64_t q = 0; q < ns; ++q) {

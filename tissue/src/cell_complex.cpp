@@ -209,14 +209,10 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
   edge_face_count.reserve(total / 2 + 1);
   // Edge -> faces. 2D: at most two faces per edge, kept in a pair of slots
   // per edge (the second use of an edge comes soon after its first when
-  // nearby faces are listed together). 3D: (edge, face) of every loop
-  // position in list order, read back sequentially afterwards.
+  // nearby faces are listed together). 3D: read back afterwards from the
+  // faces' edge lists, in list order.
   UninitializedVector<FaceId> edge_face_slots;
-  std::vector<std::pair<Index, Index>> uses;
-  if (dim == 2)
-    edge_face_slots.reserve(total + 2);
-  else
-    uses.reserve(total);
+  if (dim == 2) edge_face_slots.reserve(total + 2);
   for (std::size_t q = 0; q < nf; ++q) {
     const std::size_t b = loop_offsets[q], m = loop_offsets[q + 1] - b;
     const Index f = faceOf(q);
@@ -245,10 +241,7 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
                                 std::to_string(a.index()) + ", " + std::to_string(h.index()) +
                                 ") already bounds two faces",
                             {2, f});
-      if (dim == 2)
-        edge_face_slots[2 * e.index() + edge_face_count[e.index()]] = FaceId(f);
-      else
-        uses.emplace_back(e.index(), f);
+      if (dim == 2) edge_face_slots[2 * e.index() + edge_face_count[e.index()]] = FaceId(f);
       ++edge_face_count[e.index()];
       face_edges[b + i] = OrientedEdge(e, c.edge_vertices_[e.index()][0] != a);
     }
@@ -305,7 +298,13 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
     for (std::size_t e = 0; e < ne; ++e) ef_start[e + 1] = ef_start[e] + edge_face_count[e];
     UninitializedVector<FaceId> ef(ef_start[ne]);
     std::fill(edge_face_count.begin(), edge_face_count.end(), 0);
-    for (const auto& [e, f] : uses) ef[ef_start[e] + edge_face_count[e]++] = FaceId(f);
+    for (std::size_t q = 0; q < nf; ++q) {
+      const FaceId f(faceOf(q));
+      for (OrientedEdge oe : c.face_edges_[f.index()]) {  // (the loop's slots, in list order)
+        const Index e = oe.handle().index();
+        ef[ef_start[e] + edge_face_count[e]++] = f;
+      }
+    }
     if (!face_ids.empty())  // filled in list order: back to face id order
       for (std::size_t e = 0; e < ne; ++e)
         std::sort(ef.begin() + static_cast<std::ptrdiff_t>(ef_start[e]),
@@ -338,7 +337,7 @@ void CellComplex::addVolumes(std::span<const Index> offsets, std::span<const Ori
 #pragma omp parallel
   {
     std::vector<Index> seen;  // per thread, reused
-    std::vector<std::pair<Index, int>> edge_uses;
+    detail::ClosedSurfaceScratch edge_uses;
 #pragma omp for schedule(dynamic, 256)
     for (std::int64_t m = 0; m < nvs; ++m) {
       const Index k = visit[m].second;

@@ -143,7 +143,7 @@ bool bulkLayoutValid(const ComplexLayout& L, std::size_t nv, std::size_t ne, std
   {
     std::vector<OrientedFace> surface;
     std::vector<OrientedEdge> loop;
-    std::vector<std::pair<Index, int>> edge_uses;
+    detail::ClosedSurfaceScratch edge_uses;
     auto loopOf = [&](FaceId f) -> const std::vector<OrientedEdge>& {
       loop.clear();
       for (Index packed : list(L.face_edge_offsets, fe, f.index()))

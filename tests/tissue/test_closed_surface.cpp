@@ -1,0 +1,130 @@
+// SPDX-FileCopyrightText: 2026 The Tessella developers
+// SPDX-License-Identifier: AGPL-3.0-or-later
+// The closed-surface check of addVolume / addVolumes (a table of edge uses):
+// a surface passes exactly when every edge is used once in each direction,
+// and a failing one names its lowest bad edge -- both compared with a plain
+// count of the uses per edge.
+#include <catch2/catch.hpp>
+
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "tessella/tissue/cell_complex.hpp"
+#include "tessella/tissue/errors.hpp"
+
+using namespace tessella;
+
+namespace {
+
+// The faces of a prism over an n-gon (bottom, top, n sides), as loops.
+std::vector<std::vector<Index>> prismLoops(int n) {
+  std::vector<std::vector<Index>> faces;
+  std::vector<Index> bottom, top;
+  for (int k = n - 1; k >= 0; --k) bottom.push_back(static_cast<Index>(k));
+  for (int k = 0; k < n; ++k) top.push_back(static_cast<Index>(n + k));
+  faces.push_back(bottom);
+  faces.push_back(top);
+  for (int k = 0; k < n; ++k) {
+    const Index a = static_cast<Index>(k), b = static_cast<Index>((k + 1) % n);
+    faces.push_back({a, b, static_cast<Index>(n + b), static_cast<Index>(n + a)});
+  }
+  return faces;
+}
+
+CellComplex prismFaces(int n) {
+  std::vector<Index> offsets{0}, items;
+  for (const auto& loop : prismLoops(n)) {
+    items.insert(items.end(), loop.begin(), loop.end());
+    offsets.push_back(static_cast<Index>(items.size()));
+  }
+  return CellComplex::fromLoops(3, 2 * static_cast<std::size_t>(n), offsets, items);
+}
+
+// The lowest edge not used exactly once in each direction, by a plain count
+// (kInvalidIndex: the surface is closed).
+Index lowestBadEdge(const CellComplex& c, const std::vector<OrientedFace>& faces) {
+  std::map<Index, std::pair<int, int>> uses;
+  for (const OrientedFace& of : faces)
+    for (const OrientedEdge& oe : c.faceEdges(of.handle())) {
+      auto& u = uses[oe.handle().index()];
+      (oe.reversed() == of.reversed() ? u.first : u.second)++;
+    }
+  for (const auto& [e, u] : uses)
+    if (u.first != 1 || u.second != 1) return e;
+  return kInvalidIndex;
+}
+
+// The volume's faces: face k reversed when `flip[k]`, face `drop` left out.
+std::vector<OrientedFace> surface(std::size_t nf, std::size_t flip, std::size_t drop) {
+  std::vector<OrientedFace> faces;
+  for (std::size_t k = 0; k < nf; ++k)
+    if (k != drop) faces.emplace_back(FaceId(static_cast<Index>(k)), k == flip);
+  return faces;
+}
+
+}  // namespace
+
+TEST_CASE("addVolume accepts a closed surface and names the lowest bad edge of an open one",
+          "[tissue][closed_surface]") {
+  for (int n : {3, 4, 7, 40, 200}) {  // up to 802 edge uses: the table grows
+    const std::size_t nf = static_cast<std::size_t>(n) + 2;
+    const std::size_t none = nf;
+    for (std::size_t flip = 0; flip <= nf; ++flip)
+      for (std::size_t drop : {none, std::size_t{0}, nf - 1}) {
+        if (flip == drop) continue;
+        CellComplex c = prismFaces(n);
+        const std::vector<OrientedFace> faces = surface(nf, flip, drop);
+        const Index bad = lowestBadEdge(c, faces);
+        INFO("n " << n << " flip " << flip << " drop " << drop);
+        if (bad == kInvalidIndex) {
+          REQUIRE(flip == none);
+          REQUIRE(drop == none);
+          CHECK(c.addVolume(faces).index() == 0);
+          continue;
+        }
+        try {
+          c.addVolume(faces);
+          FAIL("an open surface was accepted");
+        } catch (const TopologyError& e) {
+          CHECK(std::string(e.what()).ends_with("at edge " + std::to_string(bad)));
+        }
+      }
+  }
+}
+
+TEST_CASE("addVolumes checks every volume's surface like addVolume", "[tissue][closed_surface]") {
+  // Two prisms' faces in one complex: volume 0 closed, volume 1 with face `flip` reversed.
+  for (int n : {5, 60}) {
+    const std::size_t nf = static_cast<std::size_t>(n) + 2;
+    std::vector<Index> offsets{0}, items;
+    for (int copy = 0; copy < 2; ++copy)
+      for (const auto& loop : prismLoops(n)) {
+        for (Index v : loop) items.push_back(v + static_cast<Index>(copy * 2 * n));
+        offsets.push_back(static_cast<Index>(items.size()));
+      }
+    for (std::size_t flip : {nf, std::size_t{0}, nf / 2}) {
+      CellComplex c = CellComplex::fromLoops(3, 4 * static_cast<std::size_t>(n), offsets, items);
+      std::vector<OrientedFace> faces = surface(nf, nf, nf);
+      for (std::size_t k = 0; k < nf; ++k) faces.emplace_back(FaceId(static_cast<Index>(nf + k)), k == flip);
+      const std::vector<Index> volume_offsets{0, static_cast<Index>(nf), static_cast<Index>(2 * nf)};
+      const Index bad =
+          lowestBadEdge(c, std::vector<OrientedFace>(faces.begin() + static_cast<std::ptrdiff_t>(nf), faces.end()));
+      INFO("n " << n << " flip " << flip);
+      if (flip == nf) {
+        REQUIRE(bad == kInvalidIndex);
+        c.addVolumes(volume_offsets, faces);
+        CHECK(c.volumeFaces(VolumeId(1)).size() == nf);
+        continue;
+      }
+      try {
+        c.addVolumes(volume_offsets, faces);
+        FAIL("an open surface was accepted");
+      } catch (const TopologyError& e) {
+        CHECK(e.element().index == 1);
+        CHECK(std::string(e.what()).ends_with("at edge " + std::to_string(bad)));
+      }
+    }
+  }
+}
