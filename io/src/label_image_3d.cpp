@@ -46,6 +46,7 @@ namespace {
 
 constexpr std::int32_t kBackground = -1;  // outside inside the image; -2 - side beyond image side 0..5
 constexpr std::size_t kMaxNotes = 20;
+constexpr int kExtraSmoothing = 4;  // rounds of further smoothing for walls still crossing with every corner kept
 
 bool isPadding(std::int32_t l) { return l < kBackground; }
 
@@ -256,7 +257,8 @@ bool coplanarSegmentMeetsTriangle(const Vec3& p, const Vec3& q, const Vec3& a, c
   auto segmentsMeet = [&](const Vec3& u, const Vec3& w) {
     const double d1 = cross2(p, q, u), d2 = cross2(p, q, w), d3 = cross2(u, w, p), d4 = cross2(u, w, q);
     if (std::abs(d1) <= seg_tol && std::abs(d2) <= seg_tol) {  // on one line: do they overlap along it?
-      const int z = std::abs(q[x] - p[x]) + std::abs(w[x] - u[x]) >= std::abs(q[y] - p[y]) + std::abs(w[y] - u[y]) ? x : y;
+      const int z =
+          std::abs(q[x] - p[x]) + std::abs(w[x] - u[x]) >= std::abs(q[y] - p[y]) + std::abs(w[y] - u[y]) ? x : y;
       const double slack = eps * size;
       return std::max(std::min(p[z], q[z]), std::min(u[z], w[z])) <=
              std::min(std::max(p[z], q[z]), std::max(u[z], w[z])) + slack;
@@ -315,7 +317,8 @@ bool trianglesCross(const std::array<std::int32_t, 3>& A, const std::array<std::
     const Vec3 n = axis.cross(vr);
     const double size = std::max({axis.norm(), vr.norm(), vt.norm()});
     if (std::abs(vt.dot(n)) > 1e-9 * size * n.norm()) return false;  // not in one plane
-    const Vec3 ar = vr - axis * (vr.dot(axis) / axis.squaredNorm()), at = vt - axis * (vt.dot(axis) / axis.squaredNorm());
+    const double len2 = axis.squaredNorm();  // r and t beside the edge, on one side of it?
+    const Vec3 ar = vr - axis * (vr.dot(axis) / len2), at = vt - axis * (vt.dot(axis) / len2);
     return ar.dot(at) > 0;
   }
   auto edgesMeet = [&](const std::array<std::int32_t, 3>& S, const std::array<std::int32_t, 3>& T) {
@@ -920,20 +923,18 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
   // With simplify > 0, smooth each junction polyline first (its ends fixed): repeated [1/4, 1/2, 1/4]
   // averaging along it, ceil(8 * simplify) times (up to 32), takes the voxel staircase to a curve near the
   // junction it samples, whose best-fit-plane projection no longer zigzags.
-  if (o.simplify > 0) {
-    const int passes = static_cast<int>(std::min(32.0, std::ceil(8 * o.simplify)));
-    std::vector<Vec3> next;
-    for (const Polyline& pl : polylines) {
-      const auto& ch = pl.chain;
-      if (ch.size() < 3) continue;
-      for (int pass = 0; pass < passes; ++pass) {
-        next.resize(ch.size());
-        for (std::size_t i = 1; i + 1 < ch.size(); ++i)
-          next[i] = 0.25 * pos[ch[i - 1]] + 0.5 * pos[ch[i]] + 0.25 * pos[ch[i + 1]];
-        for (std::size_t i = 1; i + 1 < ch.size(); ++i) pos[ch[i]] = next[i];
-      }
+  const int passes = static_cast<int>(std::min(32.0, std::ceil(8 * o.simplify)));
+  auto smoothLine = [&](const std::vector<std::int32_t>& ch) {
+    std::vector<Vec3> next(ch.size());
+    for (int pass = 0; pass < passes; ++pass) {
+      for (std::size_t i = 1; i + 1 < ch.size(); ++i)
+        next[i] = 0.25 * pos[ch[i - 1]] + 0.5 * pos[ch[i]] + 0.25 * pos[ch[i + 1]];
+      for (std::size_t i = 1; i + 1 < ch.size(); ++i) pos[ch[i]] = next[i];
     }
-  }
+  };
+  if (o.simplify > 0)
+    for (const Polyline& pl : polylines)
+      if (pl.chain.size() >= 3) smoothLine(pl.chain);
   // Simplify, then make sure every wall keeps three corners and no cell loses much of its volume.
   std::vector<char> keep(n_corners, 0);
   for (std::size_t u = 0; u < n_corners; ++u) keep[u] = is_vertex[u];
@@ -969,6 +970,8 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
   for (std::size_t u = 0; u < n_corners; ++u) points[u] = Vec3(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
   std::vector<char> refined(n_walls, 0);  // walls along a junction line simplified less than asked
   std::size_t still_crossing = 0;
+  int extra_smoothing = 0;  // rounds of it, below: at most kExtraSmoothing
+  std::vector<char> unresolved(n_walls, 0);
   for (;;) {
     std::vector<char> redo(polylines.size(), 0), flagged(n_walls, 0);
     bool any = false;
@@ -981,6 +984,9 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       for (const std::int32_t pl : wall_polylines[p])
         std::atomic_ref<char>(redo[static_cast<std::size_t>(pl)]).store(1, std::memory_order_relaxed);
     };
+    // A wall flagged before and not changed since still is (its pairs with unchanged walls are not tested again).
+    for (std::size_t p = 0; p < n_walls; ++p)
+      if (unresolved[p]) redoWall(p);
     std::fill(six_volume.begin(), six_volume.end(), 0.0);
     // Each changed wall's surface: its check, volume and triangles, in parallel (a wall writes its own
     // entries and fan centre), then gathered in wall order (the volumes summed in that order).
@@ -1105,6 +1111,20 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       changed = true;
       for (const std::int32_t p : polyline_walls[k]) wall_changed[static_cast<std::size_t>(p)] = 1, refined[p] = 1;
     }
+    if (!changed && o.simplify > 0 && extra_smoothing < kExtraSmoothing) {
+      // Every corner kept: smooth the flagged walls' junction lines further (as above, as many passes again).
+      ++extra_smoothing;
+      for (std::size_t k = 0; k < polylines.size(); ++k) {
+        if (!redo[k]) continue;
+        const auto& ch = polylines[k].chain;
+        if (ch.size() < 3) continue;
+        smoothLine(ch);
+        for (const std::int32_t u : ch) points[u] = Vec3(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
+        changed = true;
+        for (const std::int32_t p : polyline_walls[k]) wall_changed[static_cast<std::size_t>(p)] = 1, refined[p] = 1;
+      }
+    }
+    for (std::size_t p = 0; p < n_walls; ++p) unresolved[p] = flagged[p] && !wall_changed[p];
     if (!changed) {  // every corner kept: what is left is reported, and the mesher names it
       still_crossing = static_cast<std::size_t>(std::count(flagged.begin(), flagged.end(), 1));
       break;
@@ -1154,7 +1174,7 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
                          formatNumber(o.simplify) + " voxels)");
   if (const auto n_refined = std::count(refined.begin(), refined.end(), 1); n_refined > 0)
     report.notes.push_back(std::to_string(n_refined) + " wall(s) simplified less than asked along some of their "
-                           "junction lines (down to every corner) so that no two walls cross");
+                           "junction lines (down to every corner, then smoothed further) so that no two walls cross");
   if (still_crossing > 0)
     report.notes.push_back(std::to_string(still_crossing) + " wall(s) still cross another wall or fail the polygon "
                            "checks with every corner kept (voxel-scale features): the mesher will refuse the tissue "
