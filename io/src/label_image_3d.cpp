@@ -968,6 +968,9 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
   // The crossing test's points: every junction-line corner, then the walls' fan centres (n_corners + wall).
   std::vector<Vec3> points(n_corners + n_walls);
   for (std::size_t u = 0; u < n_corners; ++u) points[u] = Vec3(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
+  // The staircase (simplify 0) is left as it is, and its walls are not tested against each other (that test
+  // costs as much as the rest of the import at 512^3): only the polygon and volume checks are reported.
+  const bool check_crossings = o.simplify > 0;
   std::vector<char> refined(n_walls, 0);  // walls along a junction line simplified less than asked
   std::size_t still_crossing = 0;
   int extra_smoothing = 0;  // rounds of it, below: at most kExtraSmoothing
@@ -1040,7 +1043,7 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       if (f.second >= 0) six_volume[static_cast<std::size_t>(f.second)] -= wall_volume[p];
       wall_tris.insert(wall_tris.end(), wall_tris_of[p].begin(), wall_tris_of[p].end());
     }
-    {
+    if (check_crossings) {
       // Triangles of two walls that cross (away from shared corners and edges): both walls are simplified less.
       // Pairs found through a grid of buckets; a pair is tested in the bucket holding the low corner
       // of the overlap of their bounding boxes only.
@@ -1176,9 +1179,12 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
     report.notes.push_back(std::to_string(n_refined) + " wall(s) simplified less than asked along some of their "
                            "junction lines (down to every corner, then smoothed further) so that no two walls cross");
   if (still_crossing > 0)
-    report.notes.push_back(std::to_string(still_crossing) + " wall(s) still cross another wall or fail the polygon "
-                           "checks with every corner kept (voxel-scale features): the mesher will refuse the tissue "
-                           "and name two of them");
+    report.notes.push_back(std::to_string(still_crossing) +
+                           (check_crossings ? " wall(s) still cross another wall or fail the polygon checks with every "
+                                              "corner kept (voxel-scale features)"
+                                            : " wall(s) fail the polygon checks (simplify 0: walls are not tested "
+                                              "against each other)") +
+                           ": the mesher will refuse the tissue");
   ImportOptions core = o;
   core.simplify = 0;  // done above, in voxels
   result = importComplex(m, core, std::move(report));
