@@ -1059,15 +1059,33 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
         return (static_cast<std::uint64_t>(b[2] & 0x1FFFFF) << 42) |
                (static_cast<std::uint64_t>(b[1] & 0x1FFFFF) << 21) | static_cast<std::uint64_t>(b[0] & 0x1FFFFF);
       };
+      // Only buckets holding a changed wall's triangle can hold a pair to test: the unchanged walls' triangles
+      // go into those only (after the first round, most walls are unchanged).
       for (std::size_t t = 0; t < wall_tris.size(); ++t) {
         Vec3 lo_p = points[wall_tris[t].v[0]], hi_p = lo_p;
         for (const std::int32_t u : wall_tris[t].v) lo_p = lo_p.cwiseMin(points[u]), hi_p = hi_p.cwiseMax(points[u]);
         box[t] = {lo_p, hi_p};
-        const auto b0 = cellOf(lo_p), b1 = cellOf(hi_p);
+      }
+      auto forBuckets = [&](std::size_t t, const auto& f) {
+        const auto b0 = cellOf(box[t][0]), b1 = cellOf(box[t][1]);
         for (std::int64_t z = b0[2]; z <= b1[2]; ++z)
           for (std::int64_t y = b0[1]; y <= b1[1]; ++y)
-            for (std::int64_t x = b0[0]; x <= b1[0]; ++x)
-              buckets.emplace_back(key({x, y, z}), static_cast<std::int32_t>(t));
+            for (std::int64_t x = b0[0]; x <= b1[0]; ++x) f(key({x, y, z}));
+      };
+      const bool all_changed = std::find(wall_changed.begin(), wall_changed.end(), 0) == wall_changed.end();
+      std::vector<std::uint64_t> hot;  // the buckets of the changed walls' triangles
+      for (std::size_t t = 0; t < wall_tris.size(); ++t)
+        if (wall_changed[wall_tris[t].wall])
+          forBuckets(t, [&](std::uint64_t k) { buckets.emplace_back(k, static_cast<std::int32_t>(t)); });
+      if (!all_changed) {
+        for (const auto& b : buckets) hot.push_back(b.first);
+        std::sort(hot.begin(), hot.end());
+        hot.erase(std::unique(hot.begin(), hot.end()), hot.end());
+        for (std::size_t t = 0; t < wall_tris.size() && !hot.empty(); ++t)
+          if (!wall_changed[wall_tris[t].wall])
+            forBuckets(t, [&](std::uint64_t k) {
+              if (std::binary_search(hot.begin(), hot.end(), k)) buckets.emplace_back(k, static_cast<std::int32_t>(t));
+            });
       }
       std::sort(buckets.begin(), buckets.end());
       const double slack = 1e-9 * bucket;
