@@ -46,6 +46,7 @@ namespace {
 
 constexpr std::int32_t kBackground = -1;  // outside inside the image; -2 - side beyond image side 0..5
 constexpr std::size_t kMaxNotes = 20;
+constexpr int kExtraSmoothing = 4;  // rounds of further smoothing for walls still crossing with every corner kept
 
 bool isPadding(std::int32_t l) { return l < kBackground; }
 
@@ -233,13 +234,54 @@ struct WallTriangle {
   std::int32_t wall;
 };
 
+// Whether segment pq, lying in the plane of triangle abc, meets it (touching
+// included, within `eps` of the triangle's size): in the coordinate plane
+// most nearly parallel to the triangle, an end inside or an edge crossed.
+bool coplanarSegmentMeetsTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c,
+                                  const Vec3& normal, double eps) {
+  int drop = 0;
+  for (int k = 1; k < 3; ++k)
+    if (std::abs(normal[k]) > std::abs(normal[drop])) drop = k;
+  const int x = (drop + 1) % 3, y = (drop + 2) % 3;
+  auto cross2 = [&](const Vec3& o, const Vec3& u, const Vec3& w) {
+    return (u[x] - o[x]) * (w[y] - o[y]) - (u[y] - o[y]) * (w[x] - o[x]);
+  };
+  const double size = std::max({(b - a).norm(), (c - a).norm(), (c - b).norm()});
+  const double tol = eps * size * size;  // on twice the signed areas
+  const double orient = cross2(a, b, c) > 0 ? 1 : -1;
+  auto inside = [&](const Vec3& r) {
+    return orient * cross2(a, b, r) >= -tol && orient * cross2(b, c, r) >= -tol && orient * cross2(c, a, r) >= -tol;
+  };
+  if (inside(p) || inside(q)) return true;
+  const double seg_tol = eps * size * std::max(size, (q - p).norm());
+  auto segmentsMeet = [&](const Vec3& u, const Vec3& w) {
+    const double d1 = cross2(p, q, u), d2 = cross2(p, q, w), d3 = cross2(u, w, p), d4 = cross2(u, w, q);
+    if (std::abs(d1) <= seg_tol && std::abs(d2) <= seg_tol) {  // on one line: do they overlap along it?
+      const int z =
+          std::abs(q[x] - p[x]) + std::abs(w[x] - u[x]) >= std::abs(q[y] - p[y]) + std::abs(w[y] - u[y]) ? x : y;
+      const double slack = eps * size;
+      return std::max(std::min(p[z], q[z]), std::min(u[z], w[z])) <=
+             std::min(std::max(p[z], q[z]), std::max(u[z], w[z])) + slack;
+    }
+    return ((d1 >= -seg_tol && d2 <= seg_tol) || (d1 <= seg_tol && d2 >= -seg_tol)) &&
+           ((d3 >= -seg_tol && d4 <= seg_tol) || (d3 <= seg_tol && d4 >= -seg_tol));
+  };
+  return segmentsMeet(a, b) || segmentsMeet(b, c) || segmentsMeet(c, a);
+}
+
 // Whether segment pq meets triangle abc, touching included (within a relative
-// 1e-9); a segment in the triangle's plane is not detected.
+// 1e-9), also when it lies in the triangle's plane.
 bool segmentMeetsTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
   constexpr double eps = 1e-9;
   const Vec3 d = q - p, e1 = b - a, e2 = c - a, h = d.cross(e2);
   const double det = e1.dot(h);
-  if (std::abs(det) <= 1e-12 * d.norm() * e1.norm() * e2.norm()) return false;
+  if (std::abs(det) <= 1e-12 * d.norm() * e1.norm() * e2.norm()) {  // parallel to the plane: in it?
+    const Vec3 n = e1.cross(e2);
+    const double nn = n.norm(), size = std::max({e1.norm(), e2.norm(), d.norm()});
+    if (!(nn > 0)) return false;  // a degenerate triangle (the core's checks report it)
+    if (std::abs((p - a).dot(n)) > eps * size * nn || std::abs((q - a).dot(n)) > eps * size * nn) return false;
+    return coplanarSegmentMeetsTriangle(p, q, a, b, c, n, eps);
+  }
   const Vec3 w = p - a;
   const double u = w.dot(h) / det;
   if (u < -eps || u > 1 + eps) return false;
@@ -252,7 +294,8 @@ bool segmentMeetsTriangle(const Vec3& p, const Vec3& q, const Vec3& a, const Vec
 
 // Whether two triangles (corner ids into points) meet other than at what they
 // share, as the mesher's check counts it (mesh/src/geometry_check.cpp): two
-// sharing an edge never do; two sharing a corner do when the edge of either
+// sharing an edge do when they fold flat onto each other (in one plane, on
+// one side of the edge); two sharing a corner do when the edge of either
 // opposite that corner meets the other; others when any edge meets the other.
 bool trianglesCross(const std::array<std::int32_t, 3>& A, const std::array<std::int32_t, 3>& B,
                     const std::vector<Vec3>& points) {
@@ -260,7 +303,24 @@ bool trianglesCross(const std::array<std::int32_t, 3>& A, const std::array<std::
   int shared = 0;
   for (const std::int32_t a : A)
     if (a == B[0] || a == B[1] || a == B[2]) ++shared, common = a;
-  if (shared >= 2) return false;
+  if (shared == 3) return true;
+  if (shared == 2) {
+    std::int32_t r = -1, t = -1, e0 = -1, e1 = -1;
+    for (const std::int32_t a : A) {
+      if (a != B[0] && a != B[1] && a != B[2]) r = a;
+      else (e0 < 0 ? e0 : e1) = a;
+    }
+    for (const std::int32_t b : B)
+      if (b != A[0] && b != A[1] && b != A[2]) t = b;
+    const Vec3 &x0 = points[e0], &x1 = points[e1];
+    const Vec3 axis = x1 - x0, vr = points[r] - x0, vt = points[t] - x0;
+    const Vec3 n = axis.cross(vr);
+    const double size = std::max({axis.norm(), vr.norm(), vt.norm()});
+    if (std::abs(vt.dot(n)) > 1e-9 * size * n.norm()) return false;  // not in one plane
+    const double len2 = axis.squaredNorm();  // r and t beside the edge, on one side of it?
+    const Vec3 ar = vr - axis * (vr.dot(axis) / len2), at = vt - axis * (vt.dot(axis) / len2);
+    return ar.dot(at) > 0;
+  }
   auto edgesMeet = [&](const std::array<std::int32_t, 3>& S, const std::array<std::int32_t, 3>& T) {
     for (int k = 0; k < 3; ++k) {
       const std::int32_t u = S[k], w = S[(k + 1) % 3];
@@ -863,20 +923,18 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
   // With simplify > 0, smooth each junction polyline first (its ends fixed): repeated [1/4, 1/2, 1/4]
   // averaging along it, ceil(8 * simplify) times (up to 32), takes the voxel staircase to a curve near the
   // junction it samples, whose best-fit-plane projection no longer zigzags.
-  if (o.simplify > 0) {
-    const int passes = static_cast<int>(std::min(32.0, std::ceil(8 * o.simplify)));
-    std::vector<Vec3> next;
-    for (const Polyline& pl : polylines) {
-      const auto& ch = pl.chain;
-      if (ch.size() < 3) continue;
-      for (int pass = 0; pass < passes; ++pass) {
-        next.resize(ch.size());
-        for (std::size_t i = 1; i + 1 < ch.size(); ++i)
-          next[i] = 0.25 * pos[ch[i - 1]] + 0.5 * pos[ch[i]] + 0.25 * pos[ch[i + 1]];
-        for (std::size_t i = 1; i + 1 < ch.size(); ++i) pos[ch[i]] = next[i];
-      }
+  const int passes = static_cast<int>(std::min(32.0, std::ceil(8 * o.simplify)));
+  auto smoothLine = [&](const std::vector<std::int32_t>& ch) {
+    std::vector<Vec3> next(ch.size());
+    for (int pass = 0; pass < passes; ++pass) {
+      for (std::size_t i = 1; i + 1 < ch.size(); ++i)
+        next[i] = 0.25 * pos[ch[i - 1]] + 0.5 * pos[ch[i]] + 0.25 * pos[ch[i + 1]];
+      for (std::size_t i = 1; i + 1 < ch.size(); ++i) pos[ch[i]] = next[i];
     }
-  }
+  };
+  if (o.simplify > 0)
+    for (const Polyline& pl : polylines)
+      if (pl.chain.size() >= 3) smoothLine(pl.chain);
   // Simplify, then make sure every wall keeps three corners and no cell loses much of its volume.
   std::vector<char> keep(n_corners, 0);
   for (std::size_t u = 0; u < n_corners; ++u) keep[u] = is_vertex[u];
@@ -901,45 +959,59 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
     for (const std::int32_t pl : wall_polylines[p]) polyline_walls[static_cast<std::size_t>(pl)].push_back(
         static_cast<std::int32_t>(p));
   const double voxel_volume = s[0] * s[1] * s[2];
-  const bool check_crossings = o.simplify > 0;  // the staircase (simplify 0) is left as it is
-  // Per wall, kept between rounds for the walls that did not change: 2 fewer than three corners, 1 crossing
-  // itself, 0 fine; the volume its polygon adds to its first cell; its triangles.
+  // Per wall, kept between rounds for the walls that did not change: 2 fewer than three corners, 1 a defect
+  // the mesher refuses (pinched, or crossing itself where that folds its fan), 0 fine; the volume its surface
+  // adds to its first cell; its triangles.
   std::vector<char> wall_state(n_walls, 0);
   std::vector<double> wall_volume(n_walls, 0);
   std::vector<std::vector<WallTriangle>> wall_tris_of(n_walls);
-  std::vector<Vec3> points(check_crossings ? n_corners + n_walls : 0);  // every corner, and the fan centres
-  if (check_crossings)
-    for (std::size_t u = 0; u < n_corners; ++u)
-      points[u] = Vec3(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
-  for (int round = 0;; ++round) {
-    std::vector<char> redo(polylines.size(), 0);
+  // The crossing test's points: every junction-line corner, then the walls' fan centres (n_corners + wall).
+  std::vector<Vec3> points(n_corners + n_walls);
+  for (std::size_t u = 0; u < n_corners; ++u) points[u] = Vec3(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
+  // The staircase (simplify 0) is left as it is, and its walls are not tested against each other (that test
+  // costs as much as the rest of the import at 512^3): only the polygon and volume checks are reported.
+  const bool check_crossings = o.simplify > 0;
+  std::vector<char> refined(n_walls, 0);  // walls along a junction line simplified less than asked
+  std::size_t still_crossing = 0;
+  int extra_smoothing = 0;  // rounds of it, below: at most kExtraSmoothing
+  std::vector<char> unresolved(n_walls, 0);
+  for (;;) {
+    std::vector<char> redo(polylines.size(), 0), flagged(n_walls, 0);
     bool any = false;
     auto redoWall = [&](std::size_t p) {
-      for (const std::int32_t pl : wall_polylines[p]) redo[static_cast<std::size_t>(pl)] = 1, any = true;
+      flagged[p] = 1, any = true;
+      for (const std::int32_t pl : wall_polylines[p]) redo[static_cast<std::size_t>(pl)] = 1;
     };
-    auto redoWallShared = [&](std::size_t p) {  // from several threads: `redo` only ever becomes 1
+    auto redoWallShared = [&](std::size_t p) {  // from several threads: the flags only ever become 1
+      std::atomic_ref<char>(flagged[p]).store(1, std::memory_order_relaxed);
       for (const std::int32_t pl : wall_polylines[p])
         std::atomic_ref<char>(redo[static_cast<std::size_t>(pl)]).store(1, std::memory_order_relaxed);
     };
+    // A wall flagged before and not changed since still is (its pairs with unchanged walls are not tested again).
+    for (std::size_t p = 0; p < n_walls; ++p)
+      if (unresolved[p]) redoWall(p);
     std::fill(six_volume.begin(), six_volume.end(), 0.0);
-    // Each changed wall's polygon: its check, volume and triangles, in parallel (a wall writes its own
+    // Each changed wall's surface: its check, volume and triangles, in parallel (a wall writes its own
     // entries and fan centre), then gathered in wall order (the volumes summed in that order).
 #pragma omp parallel for schedule(dynamic, 64)
     for (std::ptrdiff_t pp = 0; pp < static_cast<std::ptrdiff_t>(n_walls); ++pp) {
       const auto p = static_cast<std::size_t>(pp);
       if (!wall_changed[p]) continue;
-      std::vector<Vec3> loop_points;
-      for (const std::int32_t u : loops[p])
-        if (keep[u]) loop_points.emplace_back(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
       wall_tris_of[p].clear();
+      std::vector<Vec3> loop_points;
+      std::vector<std::int32_t> ids;
+      for (const std::int32_t u : loops[p])
+        if (keep[u]) loop_points.push_back(points[u]), ids.push_back(u);
       if (loop_points.size() < 3) {
         wall_state[p] = 2;
         continue;
       }
-      // A loop crossing itself in its best-fit plane cannot be meshed: simplify it less.
-      wall_state[p] = polygonDefect(loop_points) ? 1 : 0;
       // The cells' volumes as the tissue will measure them (tissue/geometry.hpp).
       const PolygonTriangulation tri = polygonTriangulation(loop_points);
+      // A loop the mesher and validate() refuse (tissue/validate.cpp): simplify it less.
+      const PolygonDefect defect = polygonDefect(loop_points);
+      wall_state[p] = defect.kind == PolygonDefect::Pinched ||
+                      (defect.kind == PolygonDefect::SelfIntersecting && tri.folded);
       double vol = 0;
       const std::size_t k = loop_points.size();
       if (tri.fan())
@@ -948,19 +1020,15 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
         for (const auto& t : tri.triangles)
           vol += loop_points[t[0]].dot(loop_points[t[1]].cross(loop_points[t[2]]));
       wall_volume[p] = vol / voxel_volume;
-      if (check_crossings) {  // the wall's triangles, as the tissue and the mesher make them
-        std::vector<std::int32_t> ids;
-        for (const std::int32_t u : loops[p])
-          if (keep[u]) ids.push_back(u);
-        if (tri.fan()) {
-          const auto centre = static_cast<std::int32_t>(n_corners + p);
-          points[static_cast<std::size_t>(centre)] = tri.center;
-          for (std::size_t i = 0; i < k; ++i)
-            wall_tris_of[p].push_back({{centre, ids[i], ids[(i + 1) % k]}, static_cast<std::int32_t>(p)});
-        } else {
-          for (const auto& t : tri.triangles)
-            wall_tris_of[p].push_back({{ids[t[0]], ids[t[1]], ids[t[2]]}, static_cast<std::int32_t>(p)});
-        }
+      // The wall's triangles, as the tissue and the mesher make them.
+      if (tri.fan()) {
+        const auto centre = static_cast<std::int32_t>(n_corners + p);
+        points[static_cast<std::size_t>(centre)] = tri.center;
+        for (std::size_t i = 0; i < k; ++i)
+          wall_tris_of[p].push_back({{centre, ids[i], ids[(i + 1) % k]}, static_cast<std::int32_t>(p)});
+      } else {
+        for (const auto& t : tri.triangles)
+          wall_tris_of[p].push_back({{ids[t[0]], ids[t[1]], ids[t[2]]}, static_cast<std::int32_t>(p)});
       }
     }
     std::vector<WallTriangle> wall_tris;
@@ -976,7 +1044,7 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       wall_tris.insert(wall_tris.end(), wall_tris_of[p].begin(), wall_tris_of[p].end());
     }
     if (check_crossings) {
-      // Triangles of two walls that cross (away from shared corners): both walls are simplified less.
+      // Triangles of two walls that cross (away from shared corners and edges): both walls are simplified less.
       // Pairs found through a grid of buckets; a pair is tested in the bucket holding the low corner
       // of the overlap of their bounding boxes only.
       std::vector<std::pair<std::uint64_t, std::int32_t>> buckets;
@@ -991,15 +1059,33 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
         return (static_cast<std::uint64_t>(b[2] & 0x1FFFFF) << 42) |
                (static_cast<std::uint64_t>(b[1] & 0x1FFFFF) << 21) | static_cast<std::uint64_t>(b[0] & 0x1FFFFF);
       };
+      // Only buckets holding a changed wall's triangle can hold a pair to test: the unchanged walls' triangles
+      // go into those only (after the first round, most walls are unchanged).
       for (std::size_t t = 0; t < wall_tris.size(); ++t) {
         Vec3 lo_p = points[wall_tris[t].v[0]], hi_p = lo_p;
         for (const std::int32_t u : wall_tris[t].v) lo_p = lo_p.cwiseMin(points[u]), hi_p = hi_p.cwiseMax(points[u]);
         box[t] = {lo_p, hi_p};
-        const auto b0 = cellOf(lo_p), b1 = cellOf(hi_p);
+      }
+      auto forBuckets = [&](std::size_t t, const auto& f) {
+        const auto b0 = cellOf(box[t][0]), b1 = cellOf(box[t][1]);
         for (std::int64_t z = b0[2]; z <= b1[2]; ++z)
           for (std::int64_t y = b0[1]; y <= b1[1]; ++y)
-            for (std::int64_t x = b0[0]; x <= b1[0]; ++x)
-              buckets.emplace_back(key({x, y, z}), static_cast<std::int32_t>(t));
+            for (std::int64_t x = b0[0]; x <= b1[0]; ++x) f(key({x, y, z}));
+      };
+      const bool all_changed = std::find(wall_changed.begin(), wall_changed.end(), 0) == wall_changed.end();
+      std::vector<std::uint64_t> hot;  // the buckets of the changed walls' triangles
+      for (std::size_t t = 0; t < wall_tris.size(); ++t)
+        if (wall_changed[wall_tris[t].wall])
+          forBuckets(t, [&](std::uint64_t k) { buckets.emplace_back(k, static_cast<std::int32_t>(t)); });
+      if (!all_changed) {
+        for (const auto& b : buckets) hot.push_back(b.first);
+        std::sort(hot.begin(), hot.end());
+        hot.erase(std::unique(hot.begin(), hot.end()), hot.end());
+        for (std::size_t t = 0; t < wall_tris.size() && !hot.empty(); ++t)
+          if (!wall_changed[wall_tris[t].wall])
+            forBuckets(t, [&](std::uint64_t k) {
+              if (std::binary_search(hot.begin(), hot.end(), k)) buckets.emplace_back(k, static_cast<std::int32_t>(t));
+            });
       }
       std::sort(buckets.begin(), buckets.end());
       const double slack = 1e-9 * bucket;
@@ -1011,33 +1097,59 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       for (std::ptrdiff_t gi = 0; gi < static_cast<std::ptrdiff_t>(group_start.size()) - 1; ++gi) {
         const std::size_t i = group_start[static_cast<std::size_t>(gi)],
                           j = group_start[static_cast<std::size_t>(gi) + 1];
-        for (std::size_t a = i; a < j; ++a)
-          for (std::size_t b = a + 1; b < j; ++b) {
-            const std::int32_t x = buckets[a].second, y = buckets[b].second;
-            const WallTriangle &ta = wall_tris[x], &tb = wall_tris[y];
-            if (ta.wall == tb.wall || !(wall_changed[ta.wall] || wall_changed[tb.wall])) continue;
+        // A bucket's triangles are in wall order: each is tested against those of the walls after its own.
+        std::size_t next_wall = i;
+        for (std::size_t a = i; a < j; ++a) {
+          const std::int32_t x = buckets[a].second;
+          const WallTriangle& ta = wall_tris[x];
+          if (next_wall <= a)
+            for (next_wall = a + 1; next_wall < j && wall_tris[buckets[next_wall].second].wall == ta.wall;) ++next_wall;
+          for (std::size_t b = next_wall; b < j; ++b) {
+            const std::int32_t y = buckets[b].second;
+            const WallTriangle& tb = wall_tris[y];
+            if (!(wall_changed[ta.wall] || wall_changed[tb.wall])) continue;
             const Vec3 lo_o = box[x][0].cwiseMax(box[y][0]), hi_o = box[x][1].cwiseMin(box[y][1]);
             if ((lo_o.array() > hi_o.array() + slack).any()) continue;
             if (key(cellOf(lo_o)) != buckets[i].first) continue;
             if (trianglesCross(ta.v, tb.v, points)) redoWallShared(ta.wall), redoWallShared(tb.wall);
           }
+        }
       }
-      any = any || std::find(redo.begin(), redo.end(), 1) != redo.end();
+      any = any || std::find(flagged.begin(), flagged.end(), 1) != flagged.end();
     }
     for (std::size_t c = 0; c < n_cells; ++c)
       if (six_volume[c] < 3.0 * static_cast<double>(pieces[order[c]].voxels))  // lost more than half its volume
         for (const Index p : cell_walls[c]) redoWall(p);
     if (!any) break;
+    // Simplify less along the flagged walls' junction lines: half the tolerance, down to 1/64 voxel, then every
+    // corner. The staircase (simplify 0) is checked and left as it is.
     bool changed = false;
     std::fill(wall_changed.begin(), wall_changed.end(), 0);
-    for (std::size_t k = 0; k < polylines.size(); ++k) {
+    for (std::size_t k = 0; k < polylines.size() && o.simplify > 0; ++k) {
       if (!redo[k] || polylines[k].tol < 0) continue;
       polylines[k].tol = polylines[k].tol > 1.0 / 64 ? polylines[k].tol / 2 : -1;
       simplifyPolyline(polylines[k], pos, keep);
       changed = true;
-      for (const std::int32_t p : polyline_walls[k]) wall_changed[static_cast<std::size_t>(p)] = 1;
+      for (const std::int32_t p : polyline_walls[k]) wall_changed[static_cast<std::size_t>(p)] = 1, refined[p] = 1;
     }
-    if (!changed || round > 64) break;  // every corner kept: the core's checks tell what is wrong
+    if (!changed && o.simplify > 0 && extra_smoothing < kExtraSmoothing) {
+      // Every corner kept: smooth the flagged walls' junction lines further (as above, as many passes again).
+      ++extra_smoothing;
+      for (std::size_t k = 0; k < polylines.size(); ++k) {
+        if (!redo[k]) continue;
+        const auto& ch = polylines[k].chain;
+        if (ch.size() < 3) continue;
+        smoothLine(ch);
+        for (const std::int32_t u : ch) points[u] = Vec3(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
+        changed = true;
+        for (const std::int32_t p : polyline_walls[k]) wall_changed[static_cast<std::size_t>(p)] = 1, refined[p] = 1;
+      }
+    }
+    for (std::size_t p = 0; p < n_walls; ++p) unresolved[p] = flagged[p] && !wall_changed[p];
+    if (!changed) {  // every corner kept: what is left is reported, and the mesher names it
+      still_crossing = static_cast<std::size_t>(std::count(flagged.begin(), flagged.end(), 1));
+      break;
+    }
   }
   // A wall is one polygon through its boundary loop: walls that bend around a small cell can flatten it.
   for (std::size_t c = 0; c < n_cells; ++c)
@@ -1081,6 +1193,16 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
                          std::to_string(polylines.size()) + " junction lines; " + std::to_string(m.positions.size()) +
                          " of " + std::to_string(n_corners) + " junction-line voxel corners kept (simplify " +
                          formatNumber(o.simplify) + " voxels)");
+  if (const auto n_refined = std::count(refined.begin(), refined.end(), 1); n_refined > 0)
+    report.notes.push_back(std::to_string(n_refined) + " wall(s) simplified less than asked along some of their "
+                           "junction lines (down to every corner, then smoothed further) so that no two walls cross");
+  if (still_crossing > 0)
+    report.notes.push_back(std::to_string(still_crossing) +
+                           (check_crossings ? " wall(s) still cross another wall or fail the polygon checks with every "
+                                              "corner kept (voxel-scale features)"
+                                            : " wall(s) fail the polygon checks (simplify 0: walls are not tested "
+                                              "against each other)") +
+                           ": the mesher will refuse the tissue");
   ImportOptions core = o;
   core.simplify = 0;  // done above, in voxels
   result = importComplex(m, core, std::move(report));
