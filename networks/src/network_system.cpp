@@ -80,8 +80,7 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
     if (!graph_.properties.count(p))
       throw InputError("network: the cell property '" + p + "' the reactions read is not in the graph");
   reactions_.push_back(std::make_unique<ReactionSet>(model_));
-  for (const std::string& name : model_.cell_properties) property_columns_.push_back(&graph_.properties.at(name));
-  property_values_.assign(1, std::vector<double>(property_columns_.size(), 0.0));
+  property_values_.assign(1, std::vector<double>(model_.cell_properties.size(), 0.0));
   if (model_.pin.enabled() && model_.pin.function == PinFunction::Exponential) log_base_ = std::log(model_.pin.base);
   pin_species_ = model_.pin.enabled() ? model_.speciesIndex(model_.pin.species) : -1;
   const bool dynamic = model_.pin.dynamic();
@@ -97,10 +96,7 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
   // The neighbours as flat arrays (the loops over cells read them at every right-hand side).
   adjacent_start_.assign(n + 1, 0);
   for (std::size_t c = 0; c < n; ++c) {
-    for (std::size_t f : neighbours_[c]) {
-      adjacent_cell_.push_back(otherCell(graph_.interfaces[f], c));
-      adjacent_measure_.push_back(graph_.interfaces[f].measure);
-    }
+    for (std::size_t f : neighbours_[c]) adjacent_cell_.push_back(otherCell(graph_.interfaces[f], c));
     adjacent_start_[c + 1] = adjacent_cell_.size();
   }
   // The pattern, row by row.
@@ -160,12 +156,55 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
   pin_out_.assign(n, 0.0);
   conc_.assign(n * S, 0.0);
   neighbourhood_.assign(reactions_[0]->usesAnyNeighbourhood() ? n * 2 * S : 0, 0.0);
-  wall_total_.assign(n, 0.0);
+  pin_cell_.assign(n, 0.0);
+  readMeasures();
+}
+
+void NetworkSystem::readMeasures() {
+  property_columns_.clear();
+  for (const std::string& name : model_.cell_properties) property_columns_.push_back(&graph_.properties.at(name));
+  adjacent_measure_.resize(adjacent_cell_.size());
+  for (std::size_t c = 0; c < numCells(); ++c) {
+    std::size_t a = adjacent_start_[c];
+    for (std::size_t f : neighbours_[c]) adjacent_measure_[a++] = graph_.interfaces[f].measure;
+  }
+  wall_total_.assign(numCells(), 0.0);
   for (const NetworkInterface& f : graph_.interfaces) {
     wall_total_[static_cast<std::size_t>(f.cell_i)] += f.measure;
     wall_total_[static_cast<std::size_t>(f.cell_j)] += f.measure;
   }
-  pin_cell_.assign(n, 0.0);
+}
+
+std::string NetworkSystem::structureDifference(const NetworkGraph& graph) const {
+  if (graph.numCells() != numCells() || graph.interfaces.size() != graph_.interfaces.size())
+    return "the new graph has " + std::to_string(graph.numCells()) + " cells and " +
+           std::to_string(graph.interfaces.size()) + " interfaces, the system " + std::to_string(numCells()) +
+           " and " + std::to_string(graph_.interfaces.size());
+  for (std::size_t k = 0; k < graph.interfaces.size(); ++k) {
+    const NetworkInterface &a = graph.interfaces[k], &b = graph_.interfaces[k];
+    if (a.cell_i != b.cell_i || a.cell_j != b.cell_j)
+      return "interface " + std::to_string(k) + " joins cells " + std::to_string(a.cell_i) + " and " +
+             std::to_string(a.cell_j) + ", in the system " + std::to_string(b.cell_i) + " and " +
+             std::to_string(b.cell_j);
+  }
+  for (const std::string& p : model_.cell_properties) {
+    const auto it = graph.properties.find(p);
+    if (it == graph.properties.end()) return "the cell property '" + p + "' the reactions read is not in the graph";
+    if (it->second.size() != numCells())
+      return "the cell property '" + p + "' has " + std::to_string(it->second.size()) + " values for " +
+             std::to_string(numCells()) + " cells";
+  }
+  return {};
+}
+
+bool NetworkSystem::sameStructure(const NetworkGraph& graph) const { return structureDifference(graph).empty(); }
+
+void NetworkSystem::updateGraph(NetworkGraph graph) {
+  graph.validate();
+  if (const std::string difference = structureDifference(graph); !difference.empty())
+    throw InputError("network: updateGraph: " + difference);
+  graph_ = std::move(graph);
+  readMeasures();
 }
 
 NetworkSystem::~NetworkSystem() = default;

@@ -86,7 +86,8 @@ struct IntegratorStatistics {
 class NetworkIntegrator {
  public:
   /// Checks the options (InputError naming the option); `system` must
-  /// outlive the integrator.
+  /// outlive the integrator. The integrator may be advanced again after
+  /// system.updateGraph() (the same structure).
   NetworkIntegrator(NetworkSystem& system, IntegratorOptions options = {});
   ~NetworkIntegrator();
   NetworkIntegrator(const NetworkIntegrator&) = delete;
@@ -99,6 +100,8 @@ class NetworkIntegrator {
   void advance(std::span<double> y, double t0, double t1);
   /// Counters summed over every advance() so far.
   const IntegratorStatistics& statistics() const { return stats_; }
+  /// Sets the counters to zero.
+  void resetStatistics() { stats_ = {}; }
 
  private:
   struct Impl;
