@@ -379,36 +379,50 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
   if (!reactions_[0]->empty()) {
     neighbourhoodTerms();
     const double root = std::cbrt(std::numeric_limits<double>::epsilon());
+    // Only the reactions that read the perturbed value are evaluated (the others' differences are zero).
     forEachCell(n, threads_, [&](std::size_t c, std::size_t thread) {
-      std::vector<double> cc(S), up(S), down(S);
-      for (std::size_t q = 0; q < S; ++q) cc[q] = conc_[index(c, q)];
+      ReactionSet& reactions = *reactions_[thread];
+      std::vector<double>& properties = property_values_[thread];
+      for (std::size_t k = 0; k < property_columns_.size(); ++k) properties[k] = (*property_columns_[k])[c];
+      const std::span<const double> cc(&conc_[index(c, 0)], S);
+      const std::span<const double> nb =
+          neighbourhood_.empty() ? std::span<const double>() : std::span<const double>(&neighbourhood_[c * 2 * S], 2 * S);
+      reactions.set(t, graph_.measure[c], graph_.centroid[c], properties, cc, nb);
       for (std::size_t q = 0; q < S; ++q) {
         const double h = root * std::max(std::abs(cc[q]), 1.0);
-        const double keep = cc[q];
-        cc[q] = keep + h;
-        evaluateReactions(t, c, cc, up, thread);
-        cc[q] = keep - h;
-        evaluateReactions(t, c, cc, down, thread);
-        cc[q] = keep;
-        for (std::size_t s = 0; s < S; ++s) addAt(J, index(c, s), index(c, q), (up[s] - down[s]) / (2 * h));
+        for (std::size_t s = 0; s < S; ++s) {
+          if (!reactions.reads(s, q)) continue;
+          reactions.setConcentration(q, cc[q] + h);
+          const double up = reactions.rate(s, c);
+          reactions.setConcentration(q, cc[q] - h);
+          const double down = reactions.rate(s, c);
+          reactions.setConcentration(q, cc[q]);
+          addAt(J, index(c, s), index(c, q), (up - down) / (2 * h));
+        }
       }
       // Neighbourhood terms: d(V_c r_s)/dy_jq = V_c (dr_s/dsum_q + dr_s/dmean_q / W_c) L_cj / V_j,
       // W_c = sum_j L_cj, the partial derivatives by central differences in sum_q and mean_q.
-      if (neighbourhood_.empty()) return;
-      std::vector<double> nb(&neighbourhood_[c * 2 * S], &neighbourhood_[c * 2 * S] + 2 * S), dsum(S), dmean(S);
+      if (nb.empty()) return;
+      thread_local std::vector<double> derivative;  // dr_s/dsum_q, then dr_s/dmean_q
+      derivative.assign(2 * S, 0.0);
       for (std::size_t q = 0; q < S; ++q) {
         if (!reactions_[0]->usesNeighbourhood(q)) continue;
         for (std::size_t which = 0; which < 2; ++which) {
-          const std::size_t v = which * S + q;
-          const double h = root * std::max(std::abs(nb[v]), 1.0);
-          const double keep = nb[v];
-          nb[v] = keep + h;
-          evaluateReactions(t, c, cc, up, thread, nb);
-          nb[v] = keep - h;
-          evaluateReactions(t, c, cc, down, thread, nb);
-          nb[v] = keep;
-          for (std::size_t s = 0; s < S; ++s) (which == 0 ? dsum : dmean)[s] = (up[s] - down[s]) / (2 * h);
+          const double keep = nb[which * S + q];
+          const double h = root * std::max(std::abs(keep), 1.0);
+          for (std::size_t s = 0; s < S; ++s) {
+            derivative[which * S + s] = 0.0;
+            if (!reactions.readsNeighbourhood(s, which, q)) continue;
+            reactions.setNeighbourhood(which, q, keep + h);
+            const double up = reactions.rate(s, c);
+            reactions.setNeighbourhood(which, q, keep - h);
+            const double down = reactions.rate(s, c);
+            reactions.setNeighbourhood(which, q, keep);
+            derivative[which * S + s] = (up - down) / (2 * h);
+          }
         }
+        const double* dsum = &derivative[0];
+        const double* dmean = &derivative[S];
         for (std::size_t f : neighbours_[c]) {
           const std::size_t j = otherCell(graph_.interfaces[f], c);
           const double L = graph_.interfaces[f].measure;
