@@ -385,8 +385,8 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
       std::vector<double>& properties = property_values_[thread];
       for (std::size_t k = 0; k < property_columns_.size(); ++k) properties[k] = (*property_columns_[k])[c];
       const std::span<const double> cc(&conc_[index(c, 0)], S);
-      const std::span<const double> nb =
-          neighbourhood_.empty() ? std::span<const double>() : std::span<const double>(&neighbourhood_[c * 2 * S], 2 * S);
+      std::span<const double> nb;
+      if (!neighbourhood_.empty()) nb = std::span<const double>(&neighbourhood_[c * 2 * S], 2 * S);
       reactions.set(t, graph_.measure[c], graph_.centroid[c], properties, cc, nb);
       for (std::size_t q = 0; q < S; ++q) {
         const double h = root * std::max(std::abs(cc[q]), 1.0);

@@ -46,6 +46,11 @@ struct IntegratorOptions {
   /// default: the work between two of CVODE's serial steps is short (a millisecond at 10^4 cells), so
   /// threads that wait for each other cost more than they save on a loaded machine.
   int threads = 1;
+  /// With threads != 1: let OpenMP run fewer threads than `threads` on a loaded machine
+  /// (omp_set_dynamic for the duration of advance(): libgomp then takes the load average off the
+  /// number of cores), so that threads do not wait for cores other processes hold. The results do not
+  /// change (they are the same for any number of threads).
+  bool adapt_threads = true;
 };
 
 /// A CVODE failure: the time reached, CVODE's flag, and the species and cell
