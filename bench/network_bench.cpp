@@ -10,27 +10,32 @@
 //   timers around the callbacks.
 //
 //   A network step is one solve interval of the growth loop: the network
-//   stage reads the tissue's graph, builds the system and integrates it over
-//   dt = 2 (the time.dt of configs/auxin_network_2d.yaml, where the network
-//   solves every growth step). Each variant runs the same steps from the same
-//   noisy start; the variants run in turns (the machine is shared and noisy,
-//   the best turn is shown) and their final states are compared with a run
-//   with tolerances 1e4 times tighter (1e3 cells) or with the first variant's.
+//   stage reads the tissue's graph, keeps its system and integrator when the
+//   graph keeps its structure (here always; NetworkSystem::updateGraph) and
+//   integrates over dt = 2 (the time.dt of configs/auxin_network_2d.yaml,
+//   where the network solves every growth step). Each variant runs the same
+//   steps from the same noisy start; the variants run in turns (the machine
+//   is shared and noisy, the best turn is shown) and their final states are
+//   compared with a run with tolerances 1e4 times tighter (1e3 cells) or with
+//   the first variant's.
 //   Variants: `today` (KLU, the `neighbours` Jacobian of
-//   configs/auxin_network_2d.yaml, CVODE's defaults, a new system and
-//   integrator every step as the stage does), `setup_every_50` (KLU, fewer
-//   setups and Jacobians), `klu_kept` (KLU, one system and integrator for all
-//   the steps: KLU's symbolic analysis and the allocations are kept, CVODE
-//   still restarts every step), `gmres_neighbours` / `gmres_exact`
-//   (network.linear_solver: gmres), `gmres_kept` (GMRES, one system and
-//   integrator), `gmres_2_threads` (gmres_neighbours on two OpenMP threads:
-//   IntegratorOptions::threads). 1e5 cells: the GMRES variants only. Columns: network steps per
+//   configs/auxin_network_2d.yaml, CVODE's defaults, as the stage does),
+//   `setup_every_50` (KLU, fewer setups and Jacobians), `klu_kept` (KLU, one
+//   graph, system and integrator for all the steps), `gmres_neighbours` /
+//   `gmres_exact` (network.linear_solver: gmres), `gmres_rebuilt` (a new
+//   graph, system and integrator every step, as the stage did before),
+//   `gmres_kept` (GMRES, one graph, system and integrator),
+//   `gmres_2_threads` (gmres_neighbours on two OpenMP threads:
+//   IntegratorOptions::threads). CVODE starts afresh every step in all of
+//   them (CVodeReInit). 1e5 cells: the GMRES variants only. Columns: network steps per
 //   second of the steady clock and of the process' CPU time (all threads), CVODE steps, Newton
 //   iterations, right-hand sides, Jacobians, linear setups, linear solves, GMRES
 //   iterations (summed over the steps), then the share of the time in the
 //   right-hand side, the Jacobian, the linear setups (KLU factorisations /
-//   preconditioner blocks), the linear solves, building the graph, system
-//   and integrator, and the rest (CVODE's own vector operations).
+//   preconditioner blocks), the linear solves, the tissue's graph (networkGraph
+//   with a new GeometryCache: the tissue's geometry on OpenMP's default
+//   threads), the system and integrator (new or updated), and the rest
+//   (CVODE's own vector operations).
 // Usage: network_bench [--quick | --gmres | --profile]   --quick: 1e3 and 1e4 cells only; --gmres: the
 //   GMRES variant on one and two threads only, at every size; --profile: 1e4 cells, 5 steps of
 //   gmres_neighbours once, for perf record.
@@ -40,6 +45,7 @@
 #include <cmath>
 #include <cstdio>
 #include <ctime>
+#include <memory>
 #include <random>
 #include <string>
 #include <tuple>
@@ -76,13 +82,17 @@ NetworkModel benchModel() {
   return m;
 }
 
+// How a variant builds its system: `Stage`, as the stage does: the tissue's graph every step, the system
+// and integrator once and then updated with the new graph (NetworkSystem::updateGraph: the tissue keeps its
+// structure here); `Every`, a new graph, system and integrator every step (the stage before); `Once`, one
+// graph, system and integrator for all the steps. CVODE starts afresh every step (CVodeReInit) in all three.
+enum class Build { Stage, Every, Once };
+
 struct Variant {
   const char* name;
   JacobianKind jacobian;
   IntegratorOptions options;
-  /// One system and integrator for all the steps (the tissue does not change here): KLU's symbolic
-  /// analysis and the allocations are kept; CVODE still starts afresh every step (CVodeReInit).
-  bool reuse = false;
+  Build build = Build::Stage;
 };
 
 std::vector<Variant> variants() {
@@ -93,12 +103,13 @@ std::vector<Variant> variants() {
   fewer.setup_frequency = 50;
   fewer.jacobian_frequency = 200;
   out.push_back({"setup_every_50", JacobianKind::Neighbours, fewer});
-  out.push_back({"klu_kept", JacobianKind::Neighbours, today, true});
+  out.push_back({"klu_kept", JacobianKind::Neighbours, today, Build::Once});
   IntegratorOptions gmres = today;
   gmres.linear_solver = LinearSolver::Gmres;
   out.push_back({"gmres_neighbours", JacobianKind::Neighbours, gmres});
   out.push_back({"gmres_exact", JacobianKind::Exact, gmres});
-  out.push_back({"gmres_kept", JacobianKind::Neighbours, gmres, true});
+  out.push_back({"gmres_rebuilt", JacobianKind::Neighbours, gmres, Build::Every});
+  out.push_back({"gmres_kept", JacobianKind::Neighbours, gmres, Build::Once});
   IntegratorOptions two = gmres;
   two.threads = 2;
   out.push_back({"gmres_2_threads", JacobianKind::Neighbours, two});
@@ -116,21 +127,25 @@ double cpuSeconds() {
 struct Run {
   double seconds = 0;
   double cpu_seconds = 0;
-  double build_seconds = 0;  // the stage's graph and system
+  double graph_seconds = 0;  // the tissue's graph (networkGraph, with the tissue's geometry)
+  double build_seconds = 0;  // the system and integrator (new or updated)
   IntegratorStatistics stats;
   std::vector<double> y;
 };
 
-// `steps` network steps as the stage takes them: graph, system, integrator, advance.
+// `steps` network steps: graph, system, integrator (as v.build says), advance.
 Run runSteps(const Tissue& tissue, const NetworkModel& model, const Variant& v, std::vector<double> y, int steps) {
   Run run;
   const double cpu_start = cpuSeconds();
-  if (v.reuse) {
+  if (v.build == Build::Once) {
     const auto a = Clock::now();
     GeometryCache geometry;
-    NetworkSystem system(model, networkGraph(tissue, geometry, {}), v.jacobian);
+    NetworkGraph graph = networkGraph(tissue, geometry, {});
+    const auto b = Clock::now();
+    run.graph_seconds = std::chrono::duration<double>(b - a).count();
+    NetworkSystem system(model, std::move(graph), v.jacobian);
     NetworkIntegrator integrator(system, v.options);
-    run.build_seconds = std::chrono::duration<double>(Clock::now() - a).count();
+    run.build_seconds = std::chrono::duration<double>(Clock::now() - b).count();
     for (int k = 0; k < steps; ++k) integrator.advance(y, k * kInterval, (k + 1) * kInterval);
     run.seconds = std::chrono::duration<double>(Clock::now() - a).count();
     run.stats = integrator.statistics();
@@ -138,15 +153,26 @@ Run runSteps(const Tissue& tissue, const NetworkModel& model, const Variant& v, 
     run.cpu_seconds = cpuSeconds() - cpu_start;
     return run;
   }
+  std::unique_ptr<NetworkSystem> system;
+  std::unique_ptr<NetworkIntegrator> integrator;
   for (int k = 0; k < steps; ++k) {
     const auto a = Clock::now();
     GeometryCache geometry;
-    NetworkSystem system(model, networkGraph(tissue, geometry, {}), v.jacobian);
-    NetworkIntegrator integrator(system, v.options);
-    run.build_seconds += std::chrono::duration<double>(Clock::now() - a).count();
-    integrator.advance(y, k * kInterval, (k + 1) * kInterval);
+    NetworkGraph graph = networkGraph(tissue, geometry, {});
+    const auto b = Clock::now();
+    run.graph_seconds += std::chrono::duration<double>(b - a).count();
+    if (v.build == Build::Stage && system && system->sameStructure(graph)) {
+      system->updateGraph(std::move(graph));
+    } else {
+      integrator.reset();
+      system = std::make_unique<NetworkSystem>(model, std::move(graph), v.jacobian);
+      integrator = std::make_unique<NetworkIntegrator>(*system, v.options);
+    }
+    integrator->resetStatistics();
+    run.build_seconds += std::chrono::duration<double>(Clock::now() - b).count();
+    integrator->advance(y, k * kInterval, (k + 1) * kInterval);
     run.seconds += std::chrono::duration<double>(Clock::now() - a).count();
-    run.stats += integrator.statistics();
+    run.stats += integrator->statistics();
   }
   run.y = std::move(y);
   run.cpu_seconds = cpuSeconds() - cpu_start;
@@ -199,9 +225,9 @@ void benchSize(std::size_t side, int steps, int turns, bool klu, std::vector<std
       Run r = runSteps(tissue, model, vs[v], y0, steps);
       if (t == 0 || r.seconds < best[v].seconds) best[v] = std::move(r);
     }
-  std::printf("  %-16s %9s %9s %7s %7s %7s %7s %7s %7s %7s %6s %6s %6s %6s %6s %6s %9s\n", "variant", "steps/s",
-              "cpu st/s", "cvsteps", "newton", "rhs", "jac", "setups", "solves", "lin.it", "rhs%", "jac%", "setup%",
-              "solve%", "build%", "other%", "max rel");
+  std::printf("  %-16s %9s %9s %7s %7s %7s %7s %7s %7s %7s %6s %6s %6s %6s %6s %6s %6s %9s\n", "variant",
+              "steps/s", "cpu st/s", "cvsteps", "newton", "rhs", "jac", "setups", "solves", "lin.it", "rhs%", "jac%",
+              "setup%", "solve%", "graph%", "build%", "other%", "max rel");
   const double base_rate = steps / best[0].seconds;
   const std::vector<double>& compared = reference.empty() ? best[0].y : reference;
   std::printf("  max rel: the largest difference from %s's final amounts over the largest amount\n",
@@ -210,13 +236,15 @@ void benchSize(std::size_t side, int steps, int turns, bool klu, std::vector<std
     const Run& r = best[v];
     const IntegratorStatistics& s = r.stats;
     const double rate = steps / r.seconds;
-    const double other =
-        r.seconds - s.rhs_seconds - s.jacobian_seconds - s.setup_seconds - s.solve_seconds - r.build_seconds;
+    const double other = r.seconds - s.rhs_seconds - s.jacobian_seconds - s.setup_seconds - s.solve_seconds -
+                         r.graph_seconds - r.build_seconds;
     auto pc = [&](double x) { return 100.0 * x / r.seconds; };
-    std::printf("  %-16s %9.3g %9.3g %7ld %7ld %7ld %7ld %7ld %7ld %7ld %6.1f %6.1f %6.1f %6.1f %6.1f %6.1f %9.2e\n",
+    std::printf("  %-16s %9.3g %9.3g %7ld %7ld %7ld %7ld %7ld %7ld %7ld %6.1f %6.1f %6.1f %6.1f %6.1f %6.1f %6.1f"
+                " %9.2e\n",
                 vs[v].name, rate, steps / r.cpu_seconds, s.steps, s.nonlinear_iterations, s.rhs_evaluations,
                 s.jacobian_evaluations, s.linear_setups, s.linear_solves, s.linear_iterations, pc(s.rhs_seconds),
-                pc(s.jacobian_seconds), pc(s.setup_seconds), pc(s.solve_seconds), pc(r.build_seconds), pc(other),
+                pc(s.jacobian_seconds), pc(s.setup_seconds), pc(s.solve_seconds), pc(r.graph_seconds),
+                pc(r.build_seconds), pc(other),
                 maxRelativeDifference(compared, r.y));
     const std::string name = "network_steps_per_s_" + std::to_string(n) + "_" + vs[v].name;
     const double target = side == 100 ? 10.0 : bench::kNoTarget;  // issue #17: 1e4 cells >= 10 steps/s

@@ -3,6 +3,7 @@
 #include "tessella/networks/network_integrator.hpp"
 
 #include <cvode/cvode.h>
+#include <omp.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
 #include <sunlinsol/sunlinsol_klu.h>
@@ -10,6 +11,7 @@
 
 #include <sunmatrix/sunmatrix_sparse.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
@@ -113,6 +115,7 @@ struct NetworkIntegrator::Impl {
   std::vector<std::size_t> conserved;  // GMRES: the species without reactions (their totals are kept)
   std::vector<double> block_inverse;  // GMRES: per cell, the S x S inverse of I - gamma J's block (column-major)
   bool timers = false;
+  double relative_tolerance = 0, absolute_tolerance = 0;  // errorWeights
   int threads = 1;  // OpenMP threads of the callbacks (NetworkSystem::threads())
   IntegratorStatistics* stats = nullptr;  // where the timers add
   // The linear solver's own setup and solve, wrapped by timedSetup / timedSolve (timers, conservation).
@@ -178,9 +181,18 @@ struct NetworkIntegrator::Impl {
 #pragma omp for schedule(static)
       for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(n); ++k) {
         const auto c = static_cast<std::size_t>(k);
-        for (std::size_t a = 0; a < S; ++a)
-          for (std::size_t b = 0; b < S; ++b)
-            block[b * S + a] = (a == b ? 1.0 : 0.0) - gamma * self->J.at(c * S + a, c * S + b);
+        const CsrMatrix& J = self->J;
+        for (std::size_t a = 0; a < S; ++a) {
+          for (std::size_t b = 0; b < S; ++b) block[b * S + a] = a == b ? 1.0 : 0.0;
+          // The row's entries in the cell's own columns [c S, (c + 1) S) (columns ascending).
+          const std::size_t r = c * S + a, end = J.row_start[r + 1];
+          std::size_t e = static_cast<std::size_t>(
+              std::lower_bound(J.column.begin() + static_cast<std::ptrdiff_t>(J.row_start[r]),
+                               J.column.begin() + static_cast<std::ptrdiff_t>(end), c * S) -
+              J.column.begin());
+          for (; e < end && J.column[e] < (c + 1) * S; ++e)
+            block[(J.column[e] - c * S) * S + a] = (a == J.column[e] - c * S ? 1.0 : 0.0) - gamma * J.value[e];
+        }
         singular = !invertBlock(S, block.data(), &self->block_inverse[c * S * S]) || singular;
       }
     }
@@ -194,20 +206,35 @@ struct NetworkIntegrator::Impl {
     return 0;
   }
 
+  // z = the block inverses times r, cell by cell; `Fixed` > 0: S == Fixed known at compile time (the loops
+  // unrolled; the same operations in the same order).
+  template <std::size_t Fixed>
+  void applyBlocks(const double* in, double* out) const {
+    const std::size_t S = Fixed > 0 ? Fixed : species, n = cells;
+#pragma omp parallel for schedule(static) if (threads > 1 && n * S >= kParallelRows) num_threads(threads)
+    for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(n); ++k) {
+      const auto c = static_cast<std::size_t>(k);
+      const double* M = &block_inverse[c * S * S];
+      const double* x = &in[c * S];
+      for (std::size_t a = 0; a < S; ++a) {
+        double sum = 0.0;
+        for (std::size_t b = 0; b < S; ++b) sum += M[b * S + a] * x[b];
+        out[c * S + a] = sum;
+      }
+    }
+  }
+
   static int psolve(realtype, N_Vector, N_Vector, N_Vector r, N_Vector z, realtype, realtype, int, void* data) {
     auto* self = static_cast<Impl*>(data);
     const std::size_t S = self->species, n = self->cells;
     const double* in = N_VGetArrayPointer_Serial(r);
     double* out = N_VGetArrayPointer_Serial(z);
-#pragma omp parallel for schedule(static) if (self->threads > 1 && n * S >= kParallelRows) num_threads(self->threads)
-    for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(n); ++k) {
-      const auto c = static_cast<std::size_t>(k);
-      const double* M = &self->block_inverse[c * S * S];
-      for (std::size_t a = 0; a < S; ++a) {
-        double sum = 0.0;
-        for (std::size_t b = 0; b < S; ++b) sum += M[b * S + a] * in[c * S + b];
-        out[c * S + a] = sum;
-      }
+    switch (S) {
+      case 1: self->applyBlocks<1>(in, out); break;
+      case 2: self->applyBlocks<2>(in, out); break;
+      case 3: self->applyBlocks<3>(in, out); break;
+      case 4: self->applyBlocks<4>(in, out); break;
+      default: self->applyBlocks<0>(in, out);
     }
     for (std::size_t k = n * S; k < self->J.rows; ++k) out[k] = self->block_inverse[n * S * S + (k - n * S)] * in[k];
     return 0;
@@ -290,6 +317,23 @@ struct NetworkIntegrator::Impl {
       self->failure = std::current_exception();
       return -1;
     }
+  }
+
+  // The error weights 1 / (rtol |y_i| + atol) in one pass: what CVODE's scalar tolerances compute in five
+  // (|y|, times rtol, plus atol, the minimum, the inverse), the same operations on every entry.
+  static int errorWeights(N_Vector y, N_Vector ewt, void* data) {
+    const auto* self = static_cast<Impl*>(data);
+    const double rtol = self->relative_tolerance, atol = self->absolute_tolerance;
+    const double* yy = N_VGetArrayPointer_Serial(y);
+    double* w = N_VGetArrayPointer_Serial(ewt);
+    const auto n = static_cast<std::size_t>(N_VGetLength_Serial(y));
+    bool positive = true;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double d = rtol * std::abs(yy[i]) + atol;
+      positive = positive && d > 0;
+      w[i] = 1.0 / d;
+    }
+    return positive ? 0 : -1;
   }
 
   static void errorHandler(int, const char*, const char*, char* message, void* data) {
@@ -378,7 +422,9 @@ NetworkIntegrator::NetworkIntegrator(NetworkSystem& system, IntegratorOptions op
   check(CVodeSetErrHandlerFn(m.cvode, &Impl::errorHandler, &m), "CVodeSetErrHandlerFn");
   check(CVodeInit(m.cvode, &Impl::rhs, 0.0, m.y), "CVodeInit");
   check(CVodeSetUserData(m.cvode, &m), "CVodeSetUserData");
-  check(CVodeSStolerances(m.cvode, options_.relative_tolerance, options_.absolute_tolerance), "CVodeSStolerances");
+  m.relative_tolerance = options_.relative_tolerance;
+  m.absolute_tolerance = options_.absolute_tolerance;
+  check(CVodeWFtolerances(m.cvode, &Impl::errorWeights), "CVodeWFtolerances");
   check(CVodeSetLinearSolver(m.cvode, m.solver, m.A), "CVodeSetLinearSolver");
   if (gmres) {
     check(CVodeSetPreconditioner(m.cvode, &Impl::psetup, &Impl::psolve), "CVodeSetPreconditioner");
@@ -414,6 +460,11 @@ void NetworkIntegrator::advance(std::span<double> y, double t0, double t1) {
     int previous;
     ~KernelThreads() { setVectorKernelThreads(previous); }
   } kernel_threads{setVectorKernelThreads(m.threads)};
+  struct DynamicThreads {  // omp_set_dynamic for this call (adapt_threads), restored however it ends
+    int previous;
+    ~DynamicThreads() { omp_set_dynamic(previous); }
+  } dynamic_threads{omp_get_dynamic()};
+  if (m.threads > 1 && options_.adapt_threads) omp_set_dynamic(1);
   const int flag = CVode(m.cvode, t1, m.y, &t, CV_NORMAL);
   Impl::active = outer;
   long v = 0;

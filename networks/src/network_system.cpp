@@ -80,8 +80,7 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
     if (!graph_.properties.count(p))
       throw InputError("network: the cell property '" + p + "' the reactions read is not in the graph");
   reactions_.push_back(std::make_unique<ReactionSet>(model_));
-  for (const std::string& name : model_.cell_properties) property_columns_.push_back(&graph_.properties.at(name));
-  property_values_.assign(1, std::vector<double>(property_columns_.size(), 0.0));
+  property_values_.assign(1, std::vector<double>(model_.cell_properties.size(), 0.0));
   if (model_.pin.enabled() && model_.pin.function == PinFunction::Exponential) log_base_ = std::log(model_.pin.base);
   pin_species_ = model_.pin.enabled() ? model_.speciesIndex(model_.pin.species) : -1;
   const bool dynamic = model_.pin.dynamic();
@@ -97,10 +96,7 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
   // The neighbours as flat arrays (the loops over cells read them at every right-hand side).
   adjacent_start_.assign(n + 1, 0);
   for (std::size_t c = 0; c < n; ++c) {
-    for (std::size_t f : neighbours_[c]) {
-      adjacent_cell_.push_back(otherCell(graph_.interfaces[f], c));
-      adjacent_measure_.push_back(graph_.interfaces[f].measure);
-    }
+    for (std::size_t f : neighbours_[c]) adjacent_cell_.push_back(otherCell(graph_.interfaces[f], c));
     adjacent_start_[c + 1] = adjacent_cell_.size();
   }
   // The pattern, row by row.
@@ -160,12 +156,55 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
   pin_out_.assign(n, 0.0);
   conc_.assign(n * S, 0.0);
   neighbourhood_.assign(reactions_[0]->usesAnyNeighbourhood() ? n * 2 * S : 0, 0.0);
-  wall_total_.assign(n, 0.0);
+  pin_cell_.assign(n, 0.0);
+  readMeasures();
+}
+
+void NetworkSystem::readMeasures() {
+  property_columns_.clear();
+  for (const std::string& name : model_.cell_properties) property_columns_.push_back(&graph_.properties.at(name));
+  adjacent_measure_.resize(adjacent_cell_.size());
+  for (std::size_t c = 0; c < numCells(); ++c) {
+    std::size_t a = adjacent_start_[c];
+    for (std::size_t f : neighbours_[c]) adjacent_measure_[a++] = graph_.interfaces[f].measure;
+  }
+  wall_total_.assign(numCells(), 0.0);
   for (const NetworkInterface& f : graph_.interfaces) {
     wall_total_[static_cast<std::size_t>(f.cell_i)] += f.measure;
     wall_total_[static_cast<std::size_t>(f.cell_j)] += f.measure;
   }
-  pin_cell_.assign(n, 0.0);
+}
+
+std::string NetworkSystem::structureDifference(const NetworkGraph& graph) const {
+  if (graph.numCells() != numCells() || graph.interfaces.size() != graph_.interfaces.size())
+    return "the new graph has " + std::to_string(graph.numCells()) + " cells and " +
+           std::to_string(graph.interfaces.size()) + " interfaces, the system " + std::to_string(numCells()) +
+           " and " + std::to_string(graph_.interfaces.size());
+  for (std::size_t k = 0; k < graph.interfaces.size(); ++k) {
+    const NetworkInterface &a = graph.interfaces[k], &b = graph_.interfaces[k];
+    if (a.cell_i != b.cell_i || a.cell_j != b.cell_j)
+      return "interface " + std::to_string(k) + " joins cells " + std::to_string(a.cell_i) + " and " +
+             std::to_string(a.cell_j) + ", in the system " + std::to_string(b.cell_i) + " and " +
+             std::to_string(b.cell_j);
+  }
+  for (const std::string& p : model_.cell_properties) {
+    const auto it = graph.properties.find(p);
+    if (it == graph.properties.end()) return "the cell property '" + p + "' the reactions read is not in the graph";
+    if (it->second.size() != numCells())
+      return "the cell property '" + p + "' has " + std::to_string(it->second.size()) + " values for " +
+             std::to_string(numCells()) + " cells";
+  }
+  return {};
+}
+
+bool NetworkSystem::sameStructure(const NetworkGraph& graph) const { return structureDifference(graph).empty(); }
+
+void NetworkSystem::updateGraph(NetworkGraph graph) {
+  graph.validate();
+  if (const std::string difference = structureDifference(graph); !difference.empty())
+    throw InputError("network: updateGraph: " + difference);
+  graph_ = std::move(graph);
+  readMeasures();
 }
 
 NetworkSystem::~NetworkSystem() = default;
@@ -340,36 +379,50 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
   if (!reactions_[0]->empty()) {
     neighbourhoodTerms();
     const double root = std::cbrt(std::numeric_limits<double>::epsilon());
+    // Only the reactions that read the perturbed value are evaluated (the others' differences are zero).
     forEachCell(n, threads_, [&](std::size_t c, std::size_t thread) {
-      std::vector<double> cc(S), up(S), down(S);
-      for (std::size_t q = 0; q < S; ++q) cc[q] = conc_[index(c, q)];
+      ReactionSet& reactions = *reactions_[thread];
+      std::vector<double>& properties = property_values_[thread];
+      for (std::size_t k = 0; k < property_columns_.size(); ++k) properties[k] = (*property_columns_[k])[c];
+      const std::span<const double> cc(&conc_[index(c, 0)], S);
+      std::span<const double> nb;
+      if (!neighbourhood_.empty()) nb = std::span<const double>(&neighbourhood_[c * 2 * S], 2 * S);
+      reactions.set(t, graph_.measure[c], graph_.centroid[c], properties, cc, nb);
       for (std::size_t q = 0; q < S; ++q) {
         const double h = root * std::max(std::abs(cc[q]), 1.0);
-        const double keep = cc[q];
-        cc[q] = keep + h;
-        evaluateReactions(t, c, cc, up, thread);
-        cc[q] = keep - h;
-        evaluateReactions(t, c, cc, down, thread);
-        cc[q] = keep;
-        for (std::size_t s = 0; s < S; ++s) addAt(J, index(c, s), index(c, q), (up[s] - down[s]) / (2 * h));
+        for (std::size_t s = 0; s < S; ++s) {
+          if (!reactions.reads(s, q)) continue;
+          reactions.setConcentration(q, cc[q] + h);
+          const double up = reactions.rate(s, c);
+          reactions.setConcentration(q, cc[q] - h);
+          const double down = reactions.rate(s, c);
+          reactions.setConcentration(q, cc[q]);
+          addAt(J, index(c, s), index(c, q), (up - down) / (2 * h));
+        }
       }
       // Neighbourhood terms: d(V_c r_s)/dy_jq = V_c (dr_s/dsum_q + dr_s/dmean_q / W_c) L_cj / V_j,
       // W_c = sum_j L_cj, the partial derivatives by central differences in sum_q and mean_q.
-      if (neighbourhood_.empty()) return;
-      std::vector<double> nb(&neighbourhood_[c * 2 * S], &neighbourhood_[c * 2 * S] + 2 * S), dsum(S), dmean(S);
+      if (nb.empty()) return;
+      thread_local std::vector<double> derivative;  // dr_s/dsum_q, then dr_s/dmean_q
+      derivative.assign(2 * S, 0.0);
       for (std::size_t q = 0; q < S; ++q) {
         if (!reactions_[0]->usesNeighbourhood(q)) continue;
         for (std::size_t which = 0; which < 2; ++which) {
-          const std::size_t v = which * S + q;
-          const double h = root * std::max(std::abs(nb[v]), 1.0);
-          const double keep = nb[v];
-          nb[v] = keep + h;
-          evaluateReactions(t, c, cc, up, thread, nb);
-          nb[v] = keep - h;
-          evaluateReactions(t, c, cc, down, thread, nb);
-          nb[v] = keep;
-          for (std::size_t s = 0; s < S; ++s) (which == 0 ? dsum : dmean)[s] = (up[s] - down[s]) / (2 * h);
+          const double keep = nb[which * S + q];
+          const double h = root * std::max(std::abs(keep), 1.0);
+          for (std::size_t s = 0; s < S; ++s) {
+            derivative[which * S + s] = 0.0;
+            if (!reactions.readsNeighbourhood(s, which, q)) continue;
+            reactions.setNeighbourhood(which, q, keep + h);
+            const double up = reactions.rate(s, c);
+            reactions.setNeighbourhood(which, q, keep - h);
+            const double down = reactions.rate(s, c);
+            reactions.setNeighbourhood(which, q, keep);
+            derivative[which * S + s] = (up - down) / (2 * h);
+          }
         }
+        const double* dsum = &derivative[0];
+        const double* dmean = &derivative[S];
         for (std::size_t f : neighbours_[c]) {
           const std::size_t j = otherCell(graph_.interfaces[f], c);
           const double L = graph_.interfaces[f].measure;

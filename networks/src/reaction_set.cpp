@@ -17,7 +17,10 @@ ReactionSet::ReactionSet(const NetworkModel& model)
       props_(model.cell_properties.size(), 0.0),
       neighbourhood_(2 * model.species.size(), 0.0),
       uses_sum_(model.species.size(), false),
-      uses_mean_(model.species.size(), false) {
+      uses_mean_(model.species.size(), false),
+      reads_(model.species.size() * model.species.size(), 0),
+      reads_neighbourhood_(2 * model.species.size() * model.species.size(), 0),
+      parser_of_(model.species.size(), -1) {
   for (const NetworkSpecies& s : model.species) {
     species_.push_back(s.name);
     expressions_.push_back(s.reaction);
@@ -42,9 +45,11 @@ ReactionSet::ReactionSet(const NetworkModel& model)
       parser->SetExpr(model.species[s].reaction);
       parser->Eval();  // forces the parse: syntax errors and unknown names surface here
       const auto used = parser->GetUsedVar();
-      for (std::size_t v = 0; v < species_.size(); ++v) {
-        if (used.count("sum_" + species_[v])) uses_sum_[v] = true;
-        if (used.count("mean_" + species_[v])) uses_mean_[v] = true;
+      const std::size_t S = species_.size();
+      for (std::size_t v = 0; v < S; ++v) {
+        if (used.count("sum_" + species_[v])) uses_sum_[v] = reads_neighbourhood_[(s * 2) * S + v] = true;
+        if (used.count("mean_" + species_[v])) uses_mean_[v] = reads_neighbourhood_[(s * 2 + 1) * S + v] = true;
+        reads_[s * S + v] = used.count(species_[v]) ? 1 : 0;
       }
     } catch (const mu::Parser::exception_type& e) {
       const std::string token = e.GetToken().empty() ? "" : "near '" + e.GetToken() + "', ";
@@ -53,6 +58,7 @@ ReactionSet::ReactionSet(const NetworkModel& model)
                        "; the variables are the species, the parameters, the cell properties named, measure, x, "
                        "y, z, t, and sum_<species> and mean_<species>)");
     }
+    parser_of_[s] = static_cast<int>(parsers_.size());
     parsers_.push_back(std::move(parser));
     target_.push_back(s);
   }
@@ -66,9 +72,8 @@ bool ReactionSet::usesAnyNeighbourhood() const {
   return false;
 }
 
-void ReactionSet::evaluate(double t, std::size_t cell, double measure, const Vec3& centroid,
-                           std::span<const double> properties, std::span<const double> conc, std::span<double> rate,
-                           std::span<const double> neighbourhood) {
+void ReactionSet::set(double t, double measure, const Vec3& centroid, std::span<const double> properties,
+                      std::span<const double> conc, std::span<const double> neighbourhood) {
   for (std::size_t v = 0; v < conc_.size(); ++v) conc_[v] = conc[v];
   for (std::size_t v = 0; v < neighbourhood_.size(); ++v)
     neighbourhood_[v] = neighbourhood.empty() ? 0.0 : neighbourhood[v];
@@ -78,17 +83,32 @@ void ReactionSet::evaluate(double t, std::size_t cell, double measure, const Vec
   x_ = centroid.x();
   y_ = centroid.y();
   z_ = centroid.z();
+}
+
+void ReactionSet::notFinite(std::size_t s, std::size_t cell, double r) const {
+  std::ostringstream msg;
+  msg << "network: reaction of species '" << species_[s] << "', \"" << expressions_[s] << "\", gave " << r
+      << " in cell " << cell << " at t = " << t_ << " with";
+  for (std::size_t v = 0; v < species_.size(); ++v) msg << (v ? ", " : " ") << species_[v] << " = " << conc_[v];
+  throw InputError(msg.str());
+}
+
+double ReactionSet::rate(std::size_t s, std::size_t cell) const {
+  const int k = parser_of_[s];
+  if (k < 0) return 0.0;
+  const double r = parsers_[static_cast<std::size_t>(k)]->Eval();
+  if (!std::isfinite(r)) notFinite(s, cell, r);
+  return r;
+}
+
+void ReactionSet::evaluate(double t, std::size_t cell, double measure, const Vec3& centroid,
+                           std::span<const double> properties, std::span<const double> conc, std::span<double> rate,
+                           std::span<const double> neighbourhood) {
+  set(t, measure, centroid, properties, conc, neighbourhood);
   for (std::size_t s = 0; s < rate.size(); ++s) rate[s] = 0.0;
   for (std::size_t k = 0; k < parsers_.size(); ++k) {
     const double r = parsers_[k]->Eval();
-    if (!std::isfinite(r)) {
-      const std::size_t s = target_[k];
-      std::ostringstream msg;
-      msg << "network: reaction of species '" << species_[s] << "', \"" << expressions_[s] << "\", gave " << r
-          << " in cell " << cell << " at t = " << t << " with";
-      for (std::size_t v = 0; v < species_.size(); ++v) msg << (v ? ", " : " ") << species_[v] << " = " << conc_[v];
-      throw InputError(msg.str());
-    }
+    if (!std::isfinite(r)) notFinite(target_[k], cell, r);
     rate[target_[k]] = r;
   }
 }

@@ -395,13 +395,22 @@ void NetworkStage::apply(Tissue& tissue, const StepContext& context) {
   for (const auto& species : spec_.model.species)
     detail::doubleColumn(tissue, species.name + "_amount", DivisionPolicy::SplitByMeasure);
   std::vector<double> amounts = cellAmounts(tissue, spec_.model, cells);
-  networks::NetworkSystem system(spec_.model, std::move(graph), spec_.jacobian);
+  // The system and integrator of the last solve are kept while the graph keeps its structure (no division,
+  // no cell removed): only the measures are new. They compute what new ones would, bit for bit.
+  if (system_ && system_->sameStructure(graph)) {
+    system_->updateGraph(std::move(graph));
+  } else {
+    integrator_.reset();
+    system_ = std::make_unique<networks::NetworkSystem>(spec_.model, std::move(graph), spec_.jacobian);
+  }
+  networks::NetworkSystem& system = *system_;
   std::vector<double> y = readState(tissue, cells, walls, system, amounts);
   if (elapsed > 0 && !cells.empty()) {
-    networks::NetworkIntegrator integrator(system, spec_.integrator);
+    if (!integrator_) integrator_ = std::make_unique<networks::NetworkIntegrator>(system, spec_.integrator);
     const double t1 = context.time + context.dt;
-    integrator.advance(y, t1 - elapsed, t1);
-    stats_ += integrator.statistics();
+    integrator_->resetStatistics();
+    integrator_->advance(y, t1 - elapsed, t1);
+    stats_ += integrator_->statistics();
   }
   writeOutputs(tissue, cells, walls, system, y, true);
   if (spec_.primordia.enabled() && elapsed > 0) detectPrimordia(tissue, cells, system, y, context.end_time);

@@ -46,6 +46,11 @@ struct IntegratorOptions {
   /// default: the work between two of CVODE's serial steps is short (a millisecond at 10^4 cells), so
   /// threads that wait for each other cost more than they save on a loaded machine.
   int threads = 1;
+  /// With threads != 1: let OpenMP run fewer threads than `threads` on a loaded machine
+  /// (omp_set_dynamic for the duration of advance(): libgomp then takes the load average off the
+  /// number of cores), so that threads do not wait for cores other processes hold. The results do not
+  /// change (they are the same for any number of threads).
+  bool adapt_threads = true;
 };
 
 /// A CVODE failure: the time reached, CVODE's flag, and the species and cell
@@ -86,7 +91,8 @@ struct IntegratorStatistics {
 class NetworkIntegrator {
  public:
   /// Checks the options (InputError naming the option); `system` must
-  /// outlive the integrator.
+  /// outlive the integrator. The integrator may be advanced again after
+  /// system.updateGraph() (the same structure).
   NetworkIntegrator(NetworkSystem& system, IntegratorOptions options = {});
   ~NetworkIntegrator();
   NetworkIntegrator(const NetworkIntegrator&) = delete;
@@ -99,6 +105,8 @@ class NetworkIntegrator {
   void advance(std::span<double> y, double t0, double t1);
   /// Counters summed over every advance() so far.
   const IntegratorStatistics& statistics() const { return stats_; }
+  /// Sets the counters to zero.
+  void resetStatistics() { stats_ = {}; }
 
  private:
   struct Impl;

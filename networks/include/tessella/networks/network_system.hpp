@@ -82,6 +82,15 @@ class NetworkSystem {
     return numSpecies() * numCells() + 2 * k + static_cast<std::size_t>(side);
   }
 
+  /// Whether `graph` has this system's structure: as many cells, the same interfaces (cell_i, cell_j) in the
+  /// same order and the same cell properties. Measures, centroids and normals may differ.
+  bool sameStructure(const NetworkGraph& graph) const;
+  /// Replaces the graph by `graph` of the same structure (sameStructure; else InputError naming what
+  /// differs), e.g. the same tissue after growth: the compiled reactions, the Jacobian's pattern and the
+  /// neighbour arrays are kept, the measures, centroids, normals and property values are `graph`'s. The
+  /// system then computes exactly what a new NetworkSystem(model(), graph) would.
+  void updateGraph(NetworkGraph graph);
+
   /// The number of OpenMP threads rhs() and jacobian() split their cells over (0: OpenMP's default);
   /// 1 at construction. The results are the same for any number.
   void setThreads(std::size_t threads);
@@ -117,6 +126,11 @@ class NetworkSystem {
 
  private:
   bool inPattern(std::size_t r, std::size_t c) const;
+  // What depends on the graph's measures and property values: adjacent_measure_, wall_total_,
+  // property_columns_.
+  void readMeasures();
+  // Empty when `graph` has this system's structure, else what differs.
+  std::string structureDifference(const NetworkGraph& graph) const;
   void pinDenominators();  // pin_denominator_ from pin_weight_, and pin_out_
   // One ReactionSet and property buffer per OpenMP thread (muparser's variables are per parser).
   void prepareThreads();

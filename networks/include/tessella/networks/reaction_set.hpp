@@ -46,10 +46,30 @@ class ReactionSet {
   void evaluate(double t, std::size_t cell, double measure, const Vec3& centroid, std::span<const double> properties,
                 std::span<const double> conc, std::span<double> rate, std::span<const double> neighbourhood = {});
 
+  // One reaction at a time (what evaluate() does in parts): set() the cell's values, change single
+  // concentrations or neighbourhood terms, and evaluate the reaction of one species.
+  /// Whether the reaction of species s reads the concentration of species q.
+  bool reads(std::size_t s, std::size_t q) const { return reads_[s * species_.size() + q] != 0; }
+  /// Whether the reaction of species s reads sum_<q> (which 0) or mean_<q> (which 1).
+  bool readsNeighbourhood(std::size_t s, std::size_t which, std::size_t q) const {
+    return reads_neighbourhood_[(s * 2 + which) * species_.size() + q] != 0;
+  }
+  /// Sets the cell's values as evaluate() does, without evaluating.
+  void set(double t, double measure, const Vec3& centroid, std::span<const double> properties,
+           std::span<const double> conc, std::span<const double> neighbourhood = {});
+  void setConcentration(std::size_t q, double c) { conc_[q] = c; }
+  /// sum_<q> (which 0) or mean_<q> (which 1).
+  void setNeighbourhood(std::size_t which, std::size_t q, double v) { neighbourhood_[which * species_.size() + q] = v; }
+  /// The rate of species s at the values set (0 without a reaction); not finite: the InputError of evaluate().
+  double rate(std::size_t s, std::size_t cell) const;
+
  private:
   std::vector<std::string> species_, expressions_, properties_;
   std::vector<double> conc_, props_, neighbourhood_;
   std::vector<bool> uses_sum_, uses_mean_;
+  std::vector<char> reads_, reads_neighbourhood_;  // per species s: reads(s, q), readsNeighbourhood(s, which, q)
+  std::vector<int> parser_of_;                     // per species: its parser, -1 without a reaction
+  [[noreturn]] void notFinite(std::size_t s, std::size_t cell, double r) const;
   double t_ = 0, measure_ = 0, x_ = 0, y_ = 0, z_ = 0;
   std::vector<std::unique_ptr<mu::Parser>> parsers_;
   std::vector<std::size_t> target_;

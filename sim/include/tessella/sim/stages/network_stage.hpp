@@ -20,6 +20,7 @@
 // run state carries across restarts. docs/networks.md.
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -127,6 +128,9 @@ class NetworkStage final : public Stage {
   networks::IntegratorStatistics stats_;
   std::vector<PrimordiumRecord> primordia_;
   std::optional<std::pair<std::string, std::string>> restart_pin_;  // snapshot path, its network.pin text
+  // The last solve's system and integrator (apply): kept while the tissue's graph keeps its structure.
+  std::unique_ptr<networks::NetworkSystem> system_;
+  std::unique_ptr<networks::NetworkIntegrator> integrator_;
 };
 
 }  // namespace tessella::sim
