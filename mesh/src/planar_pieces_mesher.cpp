@@ -219,6 +219,7 @@ PlanarPiecesMesh meshPlanarPieces(const std::vector<Vec3>& points, const std::ve
   std::size_t side_points = 0;
   for (const Side& s : sides) side_points += s.params.size();
   bool last_round = !refine;
+  std::size_t added_before = std::numeric_limits<std::size_t>::max();  // side points the previous round added
   for (int round = 0; !dirty.empty(); ++round) {
     last_round = last_round || round == kMaxRounds;
     std::vector<std::vector<std::pair<int, double>>> splits(dirty.size());
@@ -252,7 +253,15 @@ PlanarPiecesMesh meshPlanarPieces(const std::vector<Vec3>& points, const std::ve
         for (int piece : side.pieces) mark[static_cast<std::size_t>(piece)] = 1;
       }
     }
-    last_round = round >= 1 && added > std::max<std::size_t>(side_points, 64);
+    // Side points multiplying, or (once the first rounds have spread the
+    // initial splits to the neighbouring pieces) splits no longer dying out:
+    // what is left bounces between pieces, typically 3D walls around a sharp
+    // corner, and every further round would only refine the walls there more
+    // (docs/meshing.md, "Where the cell-by-cell time goes").
+    const std::size_t min_added = 64;  // fewer new side points than this never end the rounds early
+    last_round = round >= 1 && (added > std::max(side_points, min_added) ||
+                                (round >= 3 && added >= std::max(added_before, min_added)));
+    added_before = added;
     side_points += added;
     dirty.clear();
     for (std::size_t i = 0; i < pieces.size(); ++i)

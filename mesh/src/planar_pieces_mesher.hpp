@@ -15,10 +15,13 @@
 // side and the pieces on it are meshed again; rounds repeat until no side
 // changes. Near sharp corners splits can bounce between neighbouring pieces,
 // each side of a thin wedge refining the other, with side points multiplying:
-// after kMaxRounds, or once a round adds more side points than there were,
-// the pieces left are refined inside only (Delaunay_mesher_no_edge_refinement_2),
-// keeping their side points. The mesh stays conforming and exact; the angle
-// bound may be missed next to those sides. Pieces marked `inside_only` (a fan
+// after kMaxRounds, once a round adds more side points than there were, or
+// once a round from the fourth on adds at least 64 side points and no fewer
+// than the round before (the splits no longer die out: the same pieces keep
+// splitting each other's sides), the pieces left are refined inside only
+// (Delaunay_mesher_no_edge_refinement_2), keeping their side points. The
+// mesh stays conforming and exact; the angle bound may be missed next to
+// those sides. Pieces marked `inside_only` (a fan
 // triangle sharper than the bound, whose wedge would feed O(1/angle) points
 // to its sides) are always refined inside only.
 //
