@@ -86,6 +86,8 @@ class MechanicsStage final : public Stage {
   std::vector<std::string> besideFileTags() const override { return {"walls"}; }
   /// The arrays of the walls file of `tissue` (empty for a curved sheet).
   io::WallArrays wallArrays(const Tissue& tissue) const;
+  /// wallArrays(): the mesh series shows the walls file's values on each wall's facets.
+  io::WallArrays meshWallArrays(const Tissue& tissue) const override { return wallArrays(tissue); }
   /// The last step's report (Newton iterations, residuals, strains).
   const mechanics::TurgorStepReport& lastReport() const { return report_; }
   /// The last step's report of the membrane model.
