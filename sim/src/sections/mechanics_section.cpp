@@ -376,10 +376,11 @@ void declareMechanicsSection(Schema& s) {
       .byDefault(0.3)
       .above(-1)
       .atMost(0.5)
-      .activeWhen("mechanics.material", {"st_venant_kirchhoff"});
+      .activeWhen("mechanics.material", {"st_venant_kirchhoff", "compressible_neo_hookean"});
   s.key("mechanics.fibre_ratio", ValueType::Float,
-        "Stiffness along the fibres over the stiffness across them (1: isotropic; neo_hookean: >= 1). A polygon "
-        "whose face has the property fibre_ratio (a sheet's cell, a 3D tissue's wall) uses its value instead.")
+        "Stiffness along the fibres over the stiffness across them (1: isotropic; the neo-Hookean laws: >= 1). "
+        "A polygon whose face has the property fibre_ratio (a sheet's cell, a 3D tissue's wall) uses its value "
+        "instead.")
       .byDefault(1.0)
       .above(0)
       .activeWhen("mechanics.model", membranes);
@@ -476,8 +477,7 @@ MechanicsSpec readMechanicsSection(const Config& c) {
     p.material.young = m.params.youngs_modulus;
     p.material.thickness = m.params.thickness;
     p.material.law = parseFromConfig(c, mechanics::membraneLaws(), "mechanics.material");
-    if (p.material.law == mechanics::MembraneLaw::StVenantKirchhoff)
-      p.material.poisson = c.getFloat("mechanics.poisson");
+    if (p.material.law != mechanics::MembraneLaw::NeoHookean) p.material.poisson = c.getFloat("mechanics.poisson");
     p.material.fibre_ratio = c.getFloat("mechanics.fibre_ratio");
     p.pressure = m.params.pressure;
     p.growth = m.params.growth;
@@ -498,9 +498,9 @@ MechanicsSpec readMechanicsSection(const Config& c) {
     try {
       p.material.check();
     } catch (const InputError& e) {
-      throw c.errorAt(p.material.law == mechanics::MembraneLaw::StVenantKirchhoff ? "mechanics.poisson"
-                                                                                   : "mechanics.fibre_ratio",
-                      e.what());
+      // The message names the parameter: "membrane material: <name> <value> ...".
+      const bool poisson = std::string(e.what()).find("membrane material: poisson") != std::string::npos;
+      throw c.errorAt(poisson ? "mechanics.poisson" : "mechanics.fibre_ratio", e.what());
     }
     m.soft_radius = c.getFloat("mechanics.soft_radius");
     m.soft_factor = c.getFloat("mechanics.soft_factor");
