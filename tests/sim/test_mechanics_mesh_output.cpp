@@ -7,12 +7,13 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <filesystem>
 #include <map>
+#include <numbers>
 #include <string>
 #include <vector>
 
-#include "../mechanics/surface_meshes.hpp"
 #include "tessella/io/mesh_vtu.hpp"
 #include "tessella/io/pvd.hpp"
 #include "tessella/io/wall_vtu.hpp"
@@ -31,6 +32,47 @@ using tessella::sim::test::ScratchDir;
 using tessella::sim::test::sourcePath;
 
 namespace {
+
+// A sphere of radius R as a 3D tissue of one cell whose walls are triangles (outward): the poles are vertices 0
+// (south) and 1 (north), then `rings` staggered rings of `around` points (ring 0 starts on the +x axis, vertex 2).
+Tissue sphereCell(double R, int rings, int around) {
+  std::vector<Vec3> points = {Vec3(0, 0, -R), Vec3(0, 0, R)};
+  for (int k = 0; k < rings; ++k) {
+    const double theta = std::numbers::pi * (k + 1) / (rings + 1), shift = 0.5 * (k % 2);
+    for (int j = 0; j < around; ++j) {
+      const double angle = 2.0 * std::numbers::pi * (j + shift) / around;
+      points.emplace_back(R * std::sin(theta) * std::cos(angle), R * std::sin(theta) * std::sin(angle),
+                          -R * std::cos(theta));
+    }
+  }
+  auto ring = [&](int k, int j) { return static_cast<Index>(2 + k * around + (j + around) % around); };
+  std::vector<std::vector<Index>> faces;
+  for (int j = 0; j < around; ++j) faces.push_back({0, ring(0, j + 1), ring(0, j)});
+  for (int k = 0; k + 1 < rings; ++k)
+    for (int j = 0; j < around; ++j) {
+      if (k % 2 == 0) {
+        faces.push_back({ring(k, j), ring(k, j + 1), ring(k + 1, j)});
+        faces.push_back({ring(k, j + 1), ring(k + 1, j + 1), ring(k + 1, j)});
+      } else {
+        faces.push_back({ring(k, j), ring(k + 1, j + 1), ring(k + 1, j)});
+        faces.push_back({ring(k, j), ring(k, j + 1), ring(k + 1, j + 1)});
+      }
+    }
+  for (int j = 0; j < around; ++j) faces.push_back({1, ring(rings - 1, j), ring(rings - 1, j + 1)});
+  std::vector<std::vector<CellFace>> cells(1);
+  for (std::size_t f = 0; f < faces.size(); ++f) cells[0].push_back({static_cast<Index>(f), false});
+  return buildPolyhedralTissue(points, faces, cells);
+}
+
+// No rigid motion left, free to inflate: the north pole fixed, the south pole held in x and y, the first ring
+// point (on the +x axis) held in y.
+std::vector<std::uint8_t> sphereSupports(const Tissue& sphere) {
+  std::vector<std::uint8_t> fixed(3 * sphere.numVertices(), 0);
+  fixed[3] = fixed[4] = fixed[5] = 1;
+  fixed[0] = fixed[1] = 1;
+  fixed[3 * 2 + 1] = 1;
+  return fixed;
+}
 
 // A wall facet's unit normal from its three nodes.
 Vec3 facetNormal(const mesh::FeMesh& m, Eigen::Index f) {
@@ -109,21 +151,14 @@ TEST_CASE("mesh series: the facets of a pressurised sphere carry the closed-form
   const double c = P * R * (1 - nu) / (t * E);
   const double lambda = 0.5 * (c + std::sqrt(c * c + 4.0));
   const double N = P * lambda * R / 2.0;
-  const tessella::test::SurfaceMesh sphere = tessella::test::sphereMesh(R, 11, 24);
-  std::vector<std::vector<Index>> faces;
-  std::vector<std::vector<CellFace>> cells(1);
-  for (const auto& tri : sphere.triangles) {
-    cells[0].push_back({static_cast<Index>(faces.size()), false});
-    faces.push_back({tri[0], tri[1], tri[2]});
-  }
-  Tissue tissue = buildPolyhedralTissue(sphere.points, faces, cells);
+  Tissue tissue = sphereCell(R, 11, 24);
   mechanics::MembraneGrowthParams params;
   params.material = {.young = E, .poisson = nu, .thickness = t};
   params.pressure = P;
   mechanics::MembraneRestState state;
   const mechanics::FanMembraneModel model = mechanics::buildTissueMembranes(tissue, params, state);
   Eigen::VectorXd x = mechanics::spatialDofs(tissue);
-  mechanics::solveEquilibrium(model, x, tessella::test::supports(sphere), params.solver);
+  mechanics::solveEquilibrium(model, x, sphereSupports(tissue), params.solver);
   mechanics::setSpatialDofs(tissue, x);
   mechanics::writeMembraneWallOutputs(tissue, model, x);
 
@@ -164,14 +199,7 @@ TEST_CASE("mesh series: the facets of a pressurised sphere carry the closed-form
 }
 
 TEST_CASE("mesh series: wall arrays that do not fit the mesh are errors naming them", "[sim][output][mesh]") {
-  const tessella::test::SurfaceMesh sphere = tessella::test::sphereMesh(1.0, 3, 6);
-  std::vector<std::vector<Index>> faces;
-  std::vector<std::vector<CellFace>> cells(1);
-  for (const auto& tri : sphere.triangles) {
-    cells[0].push_back({static_cast<Index>(faces.size()), false});
-    faces.push_back({tri[0], tri[1], tri[2]});
-  }
-  const Tissue tissue = buildPolyhedralTissue(sphere.points, faces, cells);
+  const Tissue tissue = sphereCell(1.0, 3, 6);
   const mesh::FeMesh m = mesh::meshTissue(tissue);
   io::MeshFields fields;
   for (WallId w : tissue.walls()) fields.wall_ids.push_back(static_cast<int>(w.index()));
