@@ -3,7 +3,9 @@
 // FeMesh -> .vtu. The mesh's Eigen arrays are handed to VTK without copies
 // where their layout allows (node coordinates, connectivity, cell ids).
 
+#include <map>
 #include <string>
+#include <vector>
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -19,6 +21,7 @@
 #include "tessella/io/mesh_vtu.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "vtu_file.hpp"
+#include "wall_array_data.hpp"
 
 namespace tessella::io {
 
@@ -45,6 +48,36 @@ void checkFields(const std::map<std::string, Eigen::VectorXd>& fields, Eigen::In
     if (values.size() != expected)
       throw InputError(std::string(kind) + " field '" + name + "' " + sizes(values.size(), expected));
   }
+}
+
+// The row of fields.walls of every wall facet (empty without wall arrays).
+std::vector<std::size_t> facetWallRows(const mesh::FeMesh& mesh, const MeshFields& fields) {
+  const WallArrays& walls = fields.walls;
+  if (walls.scalars.empty() && walls.vectors.empty() && walls.tensors.empty()) return {};
+  const std::size_t n = fields.wall_ids.size();
+  auto check = [&](const std::string& name, std::size_t size) {
+    if (name.empty() || name == "wall_id" || name == "on_boundary" || fields.facet.count(name))
+      throw InputError("wall array name '" + name + "' is empty or taken by the wall facets' own arrays");
+    if (size != n)
+      throw InputError("wall array '" + name + "' has " + std::to_string(size) + " values for " + std::to_string(n) +
+                       " walls (MeshFields::wall_ids)");
+  };
+  for (const auto& [name, values] : walls.scalars) check(name, values.size());
+  for (const auto& [name, values] : walls.vectors) check(name, values.size());
+  for (const auto& [name, values] : walls.tensors) check(name, values.size());
+  std::map<int, std::size_t> row_of;
+  for (std::size_t i = 0; i < n; ++i)
+    if (!row_of.emplace(fields.wall_ids[i], i).second)
+      throw InputError("MeshFields::wall_ids lists wall " + std::to_string(fields.wall_ids[i]) + " twice");
+  std::vector<std::size_t> rows(static_cast<std::size_t>(mesh.facet_wall.size()));
+  for (Eigen::Index f = 0; f < mesh.facet_wall.size(); ++f) {
+    const auto it = row_of.find(mesh.facet_wall(f));
+    if (it == row_of.end())
+      throw InputError("wall facet " + std::to_string(f) + " lies on wall " + std::to_string(mesh.facet_wall(f)) +
+                       ", which has no values in the wall arrays (MeshFields::wall_ids)");
+    rows[static_cast<std::size_t>(f)] = it->second;
+  }
+  return rows;
 }
 
 vtkSmartPointer<vtkPoints> nodesOf(const mesh::FeMesh& mesh) {
@@ -113,6 +146,7 @@ void checkFeMesh(const mesh::FeMesh& mesh, const MeshFields& fields) {
   checkFields(fields.point, mesh.nodes.rows(), "point");
   checkFields(fields.element, mesh.elements.rows(), "element");
   checkFields(fields.facet, mesh.wall_facets.rows(), "facet");
+  facetWallRows(mesh, fields);
 }
 
 void writeFeMeshVtu(const mesh::FeMesh& mesh, const std::string& path, const MeshFields& fields, const VtuOptions& options) {
@@ -138,6 +172,7 @@ void writeWallFacetsVtu(const mesh::FeMesh& mesh, const std::string& path, const
     grid->GetCellData()->AddArray(boundary);
   }
   addFields(grid->GetCellData(), fields.facet);
+  detail::addWallArrays(grid->GetCellData(), fields.walls, facetWallRows(mesh, fields));
   detail::writeGridFile(grid, path, options);
 }
 

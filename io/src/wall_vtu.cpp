@@ -17,6 +17,7 @@
 
 #include "tessella/tissue/errors.hpp"
 #include "vtu_file.hpp"
+#include "wall_array_data.hpp"
 
 namespace tessella::io {
 
@@ -65,30 +66,9 @@ void writeWallsVtu(const Tissue& tissue, const std::string& path, const WallArra
     ids->InsertNextValue(static_cast<int>(w.index()));
   }
   grid->GetCellData()->AddArray(ids);
-  for (const auto& [name, values] : arrays.scalars) {
-    auto a = vtkSmartPointer<vtkDoubleArray>::New();
-    a->SetName(name.c_str());
-    for (double v : values) a->InsertNextValue(v);
-    grid->GetCellData()->AddArray(a);
-  }
-  for (const auto& [name, values] : arrays.vectors) {
-    auto a = vtkSmartPointer<vtkDoubleArray>::New();
-    a->SetName(name.c_str());
-    a->SetNumberOfComponents(3);
-    for (const Vec3& v : values) a->InsertNextTuple3(v.x(), v.y(), v.z());
-    grid->GetCellData()->AddArray(a);
-  }
-  for (const auto& [name, values] : arrays.tensors) {
-    auto a = vtkSmartPointer<vtkDoubleArray>::New();
-    a->SetName(name.c_str());
-    a->SetNumberOfComponents(6);
-    for (const Sym3& s : values) {
-      // Sym3 holds xx yy zz xy xz yz; VTK's symmetric tensors are XX YY ZZ XY YZ XZ.
-      const double tuple[6] = {s.v[0], s.v[1], s.v[2], s.v[3], s.v[5], s.v[4]};
-      a->InsertNextTuple(tuple);
-    }
-    grid->GetCellData()->AddArray(a);
-  }
+  std::vector<std::size_t> rows(walls);
+  for (std::size_t i = 0; i < walls; ++i) rows[i] = i;
+  detail::addWallArrays(grid->GetCellData(), arrays, rows);
   detail::writeGridFile(grid, path, options);
 }
 

@@ -22,6 +22,7 @@
 
 #include "tessella/io/field_state.hpp"
 #include "tessella/io/vtu.hpp"
+#include "tessella/mechanics/tissue_membranes.hpp"
 #include "tessella/sim/config/config_loader.hpp"
 #include "tessella/sim/run/field_output.hpp"
 #include "tessella/sim/sections/simulation_config.hpp"
@@ -420,4 +421,116 @@ TEST_CASE("membranes held at one point or by a symmetry plane restart exactly",
     requireExactRestart(sourcePath("configs/turgor_tissue_3d.yaml"),
                         {"mechanics.symmetry_planes=x=0"}, 2, false);
   }
+}
+
+// A 3D tissue's walls are its faces, which a snapshot does not hold: their fibre ratios (a model's, per wall)
+// and rest ratios (what a divided wall's parts start from) travel in the mechanics run state. A run with stiff
+// fibres along x whose walls have ratios 1 to 4 (new walls: the column's default, 2.5) and cells dividing is
+// stopped half way and restarted: it ends as the uninterrupted run, walls and their outputs included.
+TEST_CASE("3D membranes with a fibre ratio per wall restart exactly, through divisions",
+          "[sim][restart][mechanics]") {
+  const std::string path = sourcePath("configs/turgor_tissue_3d.yaml");
+  // Noisy thresholds drawn at birth keep daughters dividing step after step (a daughter whose draw is below its
+  // size divides at the next step), so divisions happen on both sides of the restart.
+  const std::vector<std::string> overrides = {
+      "tissue.voronoi.count=40", "mechanics.fibres=fixed", "mechanics.fibre_vector=[1, 0, 0]",
+      "division.rule=shortest_wall", "division.threshold=noisy", "division.mean=3.5", "division.stddev=0.8",
+      "time.end=0.4"};
+  auto setRatios = [](Simulation& s) {
+    Tissue& t = s.tissue();
+    auto& ratio = t.wallProperties().add<double>("fibre_ratio", 2.5, DivisionPolicy::Copy);
+    for (WallId w : t.walls()) ratio[w] = 1.0 + static_cast<double>(w.index() % 4);
+  };
+  ScratchDir dir;
+  Simulation whole = Simulation::fromFile(path, overrides);
+  setRatios(whole);
+  const std::size_t cells = whole.tissue().numCells();
+  Simulation first = Simulation::fromFile(path, overrides);
+  setRatios(first);
+  const std::size_t stop = whole.numSteps() / 2;
+  while (first.stepsDone() < stop) first.step();
+  const std::string snapshot = dir / "stop.vtu";
+  first.writeSnapshot(snapshot);
+  std::vector<std::string> restart = overrides;
+  restart.insert(restart.end(), {"tissue.generator=snapshot", "tissue.snapshot.file=" + snapshot});
+  Simulation rest = Simulation::fromFile(path, restart);
+  const std::size_t cells_at_restart = rest.tissue().numCells();
+  rest.run();
+  whole.run();
+  INFO(cells << " cells at the start, " << cells_at_restart << " at the restart, " << whole.tissue().numCells()
+             << " at the end");
+  CHECK(cells_at_restart > cells);                        // divisions before the restart
+  CHECK(whole.tissue().numCells() > cells_at_restart);  // and after it
+  requireSameTissue(whole.tissue(), rest.tissue());
+  // The mechanics' wall columns of both runs to the bit: the ratios the membranes read and the walls' outputs.
+  // (The division module's wall tags, division_of, are not in a snapshot: not compared here.)
+  const PropertyStore &a = whole.tissue().wallProperties(), &b = rest.tissue().wallProperties();
+  std::vector<WallId> wa(whole.tissue().walls().begin(), whole.tissue().walls().end());
+  std::vector<WallId> wb(rest.tissue().walls().begin(), rest.tissue().walls().end());
+  REQUIRE(wa.size() == wb.size());
+  std::vector<std::string> names = mechanics::membraneWallOutputNames();
+  names.insert(names.end(), {"fibre_ratio", "membrane_rest_ratio"});
+  std::size_t compared = 0;
+  for (const std::string& name : names) {
+    INFO("wall property '" << name << "'");
+    REQUIRE(a.has(name));
+    REQUIRE(b.has(name));
+    const PropertyColumnBase* column = a.find(name);
+    CHECK(column->policy() == b.find(name)->policy());
+    std::size_t differ = 0;
+    if (column->type() == typeid(double)) {
+      const auto &x = a.get<double>(name), &y = b.get<double>(name);
+      CHECK(sameBits(x.defaultValue(), y.defaultValue()));
+      for (std::size_t i = 0; i < wa.size(); ++i) differ += !sameBits(x[wa[i]], y[wb[i]]);
+    } else if (column->type() == typeid(Vec3)) {
+      const auto &x = a.get<Vec3>(name), &y = b.get<Vec3>(name);
+      for (std::size_t i = 0; i < wa.size(); ++i)
+        for (int k = 0; k < 3; ++k) differ += !sameBits(x[wa[i]][k], y[wb[i]][k]);
+    } else if (column->type() == typeid(Sym3)) {
+      const auto &x = a.get<Sym3>(name), &y = b.get<Sym3>(name);
+      for (std::size_t i = 0; i < wa.size(); ++i)
+        for (int k = 0; k < 6; ++k) differ += !sameBits(x[wa[i]].v[k], y[wb[i]].v[k]);
+    } else {
+      continue;
+    }
+    CHECK(differ == 0);
+    ++compared;
+  }
+  CHECK(compared >= 16);  // fibre_ratio, membrane_rest_ratio and the 14 outputs of a walls file
+  // The new walls of divisions took the column's default; the ratios are the model's, not the section's 1.
+  const auto& ratio = rest.tissue().wallProperties().get<double>("fibre_ratio");
+  std::size_t at_default = 0, above_one = 0;
+  for (WallId w : rest.tissue().walls()) {
+    at_default += ratio[w] == 2.5;
+    above_one += ratio[w] > 1.0;
+  }
+  CHECK(at_default > 0);
+  CHECK(above_one > wb.size() / 2);
+}
+
+TEST_CASE("a damaged wall column in a 3D membranes snapshot's run state is an error naming it",
+          "[sim][restart][mechanics]") {
+  const std::string path = sourcePath("configs/turgor_tissue_3d.yaml");
+  const std::vector<std::string> overrides = {"tissue.voronoi.count=20", "time.end=0.1"};
+  ScratchDir dir;
+  Simulation first = Simulation::fromFile(path, overrides);
+  first.tissue().wallProperties().add<double>("fibre_ratio", 2.0, DivisionPolicy::Copy);
+  first.run();
+  const Tissue& tissue = first.tissue();
+  auto attempt = [&](const std::string& text) {
+    const std::string snapshot = dir / "damaged.vtu";
+    io::RunState damaged = first.snapshotState(snapshot, {});
+    REQUIRE(damaged.count("mechanics.wall.fibre_ratio"));
+    damaged["mechanics.wall.fibre_ratio"] = text;
+    io::writeTissueVtu(tissue, snapshot, {}, damaged);
+    std::vector<std::string> restart = overrides;
+    restart.insert(restart.end(), {"tissue.generator=snapshot", "tissue.snapshot.file=" + snapshot});
+    return Simulation::fromFile(path, restart);
+  };
+  using Catch::Matchers::Contains;
+  const std::string walls = std::to_string(tissue.numWalls());
+  CHECK_THROWS_WITH(attempt("copy 2 3"), Contains("damaged.vtu") && Contains("mechanics.wall.fibre_ratio") &&
+                                             Contains("1 values (after its default) for " + walls + " walls"));
+  CHECK_THROWS_WITH(attempt("copy 2 x"), Contains("mechanics.wall.fibre_ratio holds 'x', not a number"));
+  CHECK_THROWS_WITH(attempt("custom 2"), Contains("the division policy 'custom'"));
 }

@@ -24,7 +24,16 @@ void MeshOutput::write(const Simulation& simulation) {
     geometry_ = tissue.geometryVersion();
     ++meshes_;
   }
-  writer_.write(*mesh_, simulation.time());
+  // The stages' values per wall (a membranes run's tension, strain, fibre...) on each wall's facets.
+  io::MeshFields fields;
+  for (std::size_t i = 0; i < simulation.numStages(); ++i) {
+    io::WallArrays a = simulation.stage(i).meshWallArrays(tissue);
+    fields.walls.scalars.merge(a.scalars);
+    fields.walls.vectors.merge(a.vectors);
+    fields.walls.tensors.merge(a.tensors);
+  }
+  for (WallId w : tissue.walls()) fields.wall_ids.push_back(static_cast<int>(w.index()));
+  writer_.write(*mesh_, simulation.time(), fields);
   last_written_step_ = simulation.stepsDone();
 }
 

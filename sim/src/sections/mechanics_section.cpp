@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 namespace tessella::sim {
@@ -24,6 +25,48 @@ namespace {
 const std::vector<std::string>& sideNames() {
   static const std::vector<std::string> names = {"x_min", "x_max", "y_min", "y_max"};
   return names;
+}
+
+// The face columns the membranes of a 3D tissue read besides their rest state: a snapshot holds cells only, and
+// a 3D tissue's faces are its walls, so these go to the run state as "mechanics.wall.<name>".
+constexpr const char* kSavedWallColumns[] = {mechanics::kFibreRatioName, mechanics::kMembraneRestRatioName};
+
+// "<policy> <default> <value per live wall in slot order>", every number as exact text.
+std::string wallColumnText(const Tissue& tissue, const char* name) {
+  const auto& column = tissue.wallProperties().get<double>(name);
+  std::string text = std::string(divisionPolicyName(column.policy())) + " " + formatNumber(column.defaultValue());
+  for (WallId w : tissue.walls()) text += " " + formatNumber(column[w]);
+  return text;
+}
+
+// Reads wallColumnText's output back into the wall column `name` (added when missing).
+void restoreWallColumn(Tissue& tissue, const char* name, const std::string& text, const std::string& snapshot) {
+  const std::string key = std::string("mechanics.wall.") + name;
+  std::istringstream in(text);
+  std::string word;
+  in >> word;
+  std::optional<DivisionPolicy> policy;
+  for (DivisionPolicy p : {DivisionPolicy::Copy, DivisionPolicy::SplitByMeasure, DivisionPolicy::Reset})
+    if (word == divisionPolicyName(p)) policy = p;
+  if (!policy)
+    throw InputError("snapshot '" + snapshot + "': its run state " + key + " has the division policy '" + word +
+                     "'; a restart restores copy, split_by_measure or reset");
+  std::vector<double> values;
+  while (in >> word) {
+    double v = 0.0;
+    if (!detail::parseExact(word, v))
+      throw InputError("snapshot '" + snapshot + "': its run state " + key + " holds '" + word + "', not a number");
+    values.push_back(v);
+  }
+  if (values.size() != tissue.numWalls() + 1)
+    throw InputError("snapshot '" + snapshot + "': its run state " + key + " has " +
+                     std::to_string(values.empty() ? 0 : values.size() - 1) + " values (after its default) for " +
+                     std::to_string(tissue.numWalls()) + " walls");
+  PropertyStore& walls = tissue.wallProperties();
+  if (walls.has(name)) walls.remove(name);
+  auto& column = walls.add<double>(name, values[0], *policy);
+  std::size_t i = 1;
+  for (WallId w : tissue.walls()) column[w] = values[i++];
 }
 
 }  // namespace
@@ -101,6 +144,10 @@ void MechanicsStage::prepare(Tissue& tissue, double /*time*/) {
       }
       if (state.count("mechanics.membrane_rest"))
         membrane_state_.fromText(tissue, state.at("mechanics.membrane_rest"), "snapshot '" + snapshot + "'");
+      if (tissue.dim() == 3)
+        for (const char* name : kSavedWallColumns)
+          if (state.count(std::string("mechanics.wall.") + name))
+            restoreWallColumn(tissue, name, state.at(std::string("mechanics.wall.") + name), snapshot);
       if (state.count("mechanics.soft_center")) {
         std::istringstream in(state.at("mechanics.soft_center"));
         Vec3 c;
@@ -153,6 +200,10 @@ void MechanicsStage::saveState(const Tissue& tissue, const std::string& snapshot
     io::writeWallsVtu(tissue, io::besideSnapshotPath(snapshot_path, "walls"), wallArrays(tissue), options);
   if (spec_.membranes) {
     state["mechanics.membrane_rest"] = membrane_state_.toText(tissue);
+    if (tissue.dim() == 3)
+      for (const char* name : kSavedWallColumns)
+        if (tissue.wallProperties().has(name))
+          state[std::string("mechanics.wall.") + name] = wallColumnText(tissue, name);
     if (spec_.membrane.base_height) state["mechanics.base_height"] = formatNumber(*spec_.membrane.base_height);
     if (spec_.membrane.point)
       state["mechanics.support_point"] = formatNumber(spec_.membrane.point->x()) + " " +
@@ -347,10 +398,11 @@ void declareMechanicsSection(Schema& s) {
       .byDefault(0.3)
       .above(-1)
       .atMost(0.5)
-      .activeWhen("mechanics.material", {"st_venant_kirchhoff"});
+      .activeWhen("mechanics.material", {"st_venant_kirchhoff", "compressible_neo_hookean"});
   s.key("mechanics.fibre_ratio", ValueType::Float,
-        "Stiffness along the fibres over the stiffness across them (1: isotropic; neo_hookean: >= 1). A polygon "
-        "whose face has the property fibre_ratio (a sheet's cell, a 3D tissue's wall) uses its value instead.")
+        "Stiffness along the fibres over the stiffness across them (1: isotropic; the neo-Hookean laws: >= 1). "
+        "A polygon whose face has the property fibre_ratio (a sheet's cell, a 3D tissue's wall) uses its value "
+        "instead.")
       .byDefault(1.0)
       .above(0)
       .activeWhen("mechanics.model", membranes);
@@ -467,8 +519,7 @@ MechanicsSpec readMechanicsSection(const Config& c) {
     p.material.young = m.params.youngs_modulus;
     p.material.thickness = m.params.thickness;
     p.material.law = parseFromConfig(c, mechanics::membraneLaws(), "mechanics.material");
-    if (p.material.law == mechanics::MembraneLaw::StVenantKirchhoff)
-      p.material.poisson = c.getFloat("mechanics.poisson");
+    if (p.material.law != mechanics::MembraneLaw::NeoHookean) p.material.poisson = c.getFloat("mechanics.poisson");
     p.material.fibre_ratio = c.getFloat("mechanics.fibre_ratio");
     p.pressure = m.params.pressure;
     p.growth = m.params.growth;
@@ -500,9 +551,9 @@ MechanicsSpec readMechanicsSection(const Config& c) {
     try {
       p.material.check();
     } catch (const InputError& e) {
-      throw c.errorAt(p.material.law == mechanics::MembraneLaw::StVenantKirchhoff ? "mechanics.poisson"
-                                                                                   : "mechanics.fibre_ratio",
-                      e.what());
+      // The message names the parameter: "membrane material: <name> <value> ...".
+      const bool poisson = std::string(e.what()).find("membrane material: poisson") != std::string::npos;
+      throw c.errorAt(poisson ? "mechanics.poisson" : "mechanics.fibre_ratio", e.what());
     }
     m.soft_radius = c.getFloat("mechanics.soft_radius");
     m.soft_factor = c.getFloat("mechanics.soft_factor");

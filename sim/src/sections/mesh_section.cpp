@@ -66,7 +66,9 @@ void declareMeshSection(Schema& s) {
       .atLeast(0);
   s.key("mesh.output", ValueType::Bool,
         "Write the mesh as a ParaView series DIR/mesh.pvd listing DIR/mesh_000000.vtu, ... beside the "
-        "tissue series (cell and wall ids as data). The mesh is rebuilt when the tissue changed.")
+        "tissue series (cell and wall ids as data), and its wall facets as DIR/mesh_walls.pvd; with a `mechanics` "
+        "section each wall facet also carries its wall's values of the walls file (tension, strain, fibre "
+        "direction...; docs/output.md). The mesh is rebuilt when the tissue changed.")
       .byDefault(false);
   s.key("mesh.every", ValueType::Int,
         "With mesh.output: write a mesh every this many steps (the initial and final states always).")

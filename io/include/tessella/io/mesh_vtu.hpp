@@ -11,6 +11,7 @@
 //                     point data vertex_id (Int32, -1 for mesher nodes) + MeshFields::point
 //   wall facets file  cells: VTK_LINE (dim 2) | VTK_TRIANGLE (dim 3), same points
 //                     cell data  wall_id (Int32), on_boundary (UInt8) + MeshFields::facet
+//                                + MeshFields::walls (each facet its wall's values, as in a walls file)
 //                     point data as the elements file
 //
 // Both files are written atomically with the same options as tissue snapshots.
@@ -22,6 +23,7 @@
 #include <Eigen/Core>
 
 #include "tessella/io/vtu.hpp"
+#include "tessella/io/wall_vtu.hpp"
 #include "tessella/mesh/fe_mesh.hpp"
 
 namespace tessella::io {
@@ -31,11 +33,20 @@ struct MeshFields {
   std::map<std::string, Eigen::VectorXd> point;    ///< one value per node
   std::map<std::string, Eigen::VectorXd> element;  ///< one value per element
   std::map<std::string, Eigen::VectorXd> facet;    ///< one value per wall facet
+  /// Values per tissue wall (scalars, vectors, symmetric tensors: what a walls
+  /// file beside a snapshot holds, wall_vtu.hpp), written on every wall facet
+  /// of that wall (FeMesh::facet_wall), so ParaView can glyph them on the mesh.
+  /// Row i of every array belongs to the wall slot wall_ids[i] (io::wallPropertyArrays
+  /// gives the live walls in slot order).
+  WallArrays walls{};
+  std::vector<int> wall_ids{};
 };
 
 /// Checks the mesh's arrays agree (row widths, sizes, node indices in range)
 /// and the fields' sizes; InputError naming the array or field, its size and
-/// the expected one. Called by both writers before anything is written.
+/// the expected one, a wall array with an empty or reserved name (wall_id,
+/// on_boundary, a facet field's), or a wall facet whose wall has no row in
+/// fields.walls. Called by both writers before anything is written.
 void checkFeMesh(const mesh::FeMesh& mesh, const MeshFields& fields = {});
 
 void writeFeMeshVtu(const mesh::FeMesh& mesh, const std::string& path, const MeshFields& fields = {},

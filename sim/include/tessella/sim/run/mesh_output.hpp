@@ -4,7 +4,8 @@
 // MeshOutput: with mesh.output on, a run writes the finite-element mesh of the
 // tissue as a ParaView series beside the tissue series: DIR/mesh.pvd listing
 // DIR/mesh_NNNNNN.vtu (elements with cell_id) and DIR/mesh_walls.pvd (wall
-// facets with wall_id), on the schedule of SeriesOutput (initial state, every
+// facets with wall_id and the stages' values per wall, Stage::meshWallArrays:
+// a mechanics run's walls-file arrays on each wall's facets), on the schedule of SeriesOutput (initial state, every
 // mesh.every steps, final state). The mesh is rebuilt only when the tissue's
 // topology or geometry version moved since the last mesh.
 

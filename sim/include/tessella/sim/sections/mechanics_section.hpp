@@ -67,7 +67,10 @@ class MechanicsStage final : public Stage {
   /// The walls' rest lengths (live walls in slot order, exact text) and the
   /// pinned point, in the run state as mechanics.rest_length and
   /// mechanics.pin_point: VTU snapshots hold no wall properties, and a
-  /// restart continues from them bit for bit.
+  /// restart continues from them bit for bit. Membranes: their rest state
+  /// (mechanics.membrane_rest), base height and soft centre, and on a 3D
+  /// tissue the wall columns they read (mechanics.wall.fibre_ratio,
+  /// mechanics.wall.membrane_rest_ratio: policy, default, value per live wall).
   void saveState(const Tissue& tissue, const std::string& snapshot_path, const io::VtuOptions& options,
                  io::RunState& state) const override;
   /// Also writes the walls' mechanics beside the snapshot, <stem>.walls.vtu
@@ -83,6 +86,8 @@ class MechanicsStage final : public Stage {
   std::vector<std::string> besideFileTags() const override { return {"walls"}; }
   /// The arrays of the walls file of `tissue` (empty for a curved sheet).
   io::WallArrays wallArrays(const Tissue& tissue) const;
+  /// wallArrays(): the mesh series shows the walls file's values on each wall's facets.
+  io::WallArrays meshWallArrays(const Tissue& tissue) const override { return wallArrays(tissue); }
   /// The last step's report (Newton iterations, residuals, strains).
   const mechanics::TurgorStepReport& lastReport() const { return report_; }
   /// The last step's report of the membrane model.

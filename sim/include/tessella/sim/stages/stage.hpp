@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "tessella/io/vtu.hpp"
+#include "tessella/io/wall_vtu.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/tissue.hpp"
 
@@ -77,6 +78,10 @@ class Stage {
   /// "pin", the mechanics stage's "walls"): a run lists each in a series of its
   /// own, <series>.<tag>.pvd (io::SeriesWriter::setBesideSeries).
   virtual std::vector<std::string> besideFileTags() const { return {}; }
+  /// Values per live wall (slot order) that the mesh series writes on every
+  /// wall facet of each wall (mesh.output: <name>_walls_NNNNNN.vtu): the
+  /// mechanics stage's walls-file arrays. Default: none.
+  virtual io::WallArrays meshWallArrays(const Tissue& /*tissue*/) const { return {}; }
 };
 
 }  // namespace tessella::sim
