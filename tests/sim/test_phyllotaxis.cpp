@@ -241,10 +241,10 @@ TEST_CASE("network.primordia: errors at their keys", "[sim][network][primordia][
 // over six walls of length L = h / sqrt 3, divided by the area
 // sqrt(3) h^2 / 2, is P h times the Laplacian). Where the inhibitor is high
 // the annulus is held (decay d + k H), so no cell there is a forming peak.
-TEST_CASE("phyllotaxis_dome_inhibitor.yaml to t = 8: primordia after the first ring, the inhibitor's decay "
+TEST_CASE("phyllotaxis_dome_inhibitor.yaml to t = 10: primordia after the first ring, the inhibitor's decay "
           "length, the annulus held where it is inhibited",
           "[sim][network][primordia]") {
-  Simulation sim = Simulation::fromFile(sourcePath("configs/phyllotaxis_dome_inhibitor.yaml"), {"time.end=8"});
+  Simulation sim = Simulation::fromFile(sourcePath("configs/phyllotaxis_dome_inhibitor.yaml"), {"time.end=10"});
   sim.run();
   const NetworkStage& stage = networkStageOf(sim);
   const auto& records = stage.primordia();
