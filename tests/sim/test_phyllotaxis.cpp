@@ -231,3 +231,104 @@ TEST_CASE("network.primordia: errors at their keys", "[sim][network][primordia][
   e = error("network.primordia.axis=[0, 0, 0]");
   CHECK(e.keyPath() == "network.primordia.axis");
 }
+
+// configs/phyllotaxis_dome_inhibitor.yaml (docs/networks.md, "An inhibition
+// field of Douady and Couder's range"): primordium cells hold a second species,
+// the inhibitor, at IP; it spreads by passive exchange P and decays at mu
+// elsewhere, so away from a clone it falls off with the continuum decay length
+// lambda = sqrt(D / mu), D = P h the passive exchange's diffusivity on a
+// hexagonal tiling of centre spacing h (the exchange P L (c_j - c_i) summed
+// over six walls of length L = h / sqrt 3, divided by the area
+// sqrt(3) h^2 / 2, is P h times the Laplacian). Where the inhibitor is high
+// the annulus is held (decay d + k H), so no cell there is a forming peak.
+TEST_CASE("phyllotaxis_dome_inhibitor.yaml to t = 10: primordia after the first ring, the inhibitor's decay "
+          "length, the annulus held where it is inhibited",
+          "[sim][network][primordia]") {
+  Simulation sim = Simulation::fromFile(sourcePath("configs/phyllotaxis_dome_inhibitor.yaml"), {"time.end=10"});
+  sim.run();
+  const NetworkStage& stage = networkStageOf(sim);
+  const auto& records = stage.primordia();
+  REQUIRE(!records.empty());
+  checkRecords(sim);
+  CHECK(laterThanFirst(records) >= 2);
+  const auto& prm = stage.spec().model.parameters;
+  const double Rc = prm.at("Rc"), W = prm.at("W"), IP = prm.at("IP"), mu = prm.at("mu");
+  const Vec3 apex(0, 0, prm.at("zA"));
+  const auto& o = stage.spec().primordia.options;
+  const Tissue& t = sim.tissue();
+  const auto& auxin = t.cellProperties().get<double>("auxin");
+  const auto& inh = t.cellProperties().get<double>("inh");
+  const auto& id = t.cellProperties().get<int>(kPrimordiumProperty);
+  const auto& model = stage.spec().model;
+  REQUIRE(model.speciesIndex("inh") >= 0);
+  const double P = model.species.at(static_cast<std::size_t>(model.speciesIndex("inh"))).permeability;
+  // Clone centres (mean centroid of the cells carrying each id).
+  std::vector<Vec3> centre(records.size() + 1, Vec3::Zero());
+  std::vector<int> count(records.size() + 1, 0);
+  for (CellId c : t.cells())
+    if (id[c] > 0) {
+      centre[static_cast<std::size_t>(id[c])] += cellCentroid(t, c);
+      ++count[static_cast<std::size_t>(id[c])];
+    }
+  for (std::size_t p = 1; p < centre.size(); ++p) centre[p] /= count[p];
+  // The slope of log(inh) against the distance to the nearest clone, over the cells 0.6 to 2 from it whose
+  // second-nearest clone is more than twice as far (the field of one clone): least squares with one intercept
+  // per clone (clones of more cells have a higher field at the same distance), and the cells' mean area.
+  struct Sample {
+    std::size_t clone;
+    double r, y;
+  };
+  std::vector<Sample> samples;
+  double area = 0;
+  std::size_t held = 0;
+  for (CellId c : t.cells()) {
+    const Vec3 x = cellCentroid(t, c);
+    const double r = (x - apex).norm();
+    if (id[c] > 0) {
+      INFO("primordium cell " << c.index() << " of primordium " << id[c] << ", inhibitor " << inh[c]);
+      CHECK(inh[c] > IP / 2);
+      continue;
+    }
+    if (r >= Rc && r < Rc + W && inh[c] >= 2) {
+      INFO("annulus cell " << c.index() << " at distance " << r << ", inhibitor " << inh[c]);
+      CHECK(auxin[c] < o.threshold);
+      ++held;
+    }
+    double d1 = 1e300, d2 = 1e300;
+    std::size_t nearest = 0;
+    for (std::size_t p = 1; p < centre.size(); ++p) {
+      const double d = (x - centre[p]).norm();
+      if (d < d1) {
+        d2 = d1;
+        d1 = d;
+        nearest = p;
+      } else if (d < d2) {
+        d2 = d;
+      }
+    }
+    if (d1 > 0.6 && d1 < 2.0 && d2 > 2 * d1 && inh[c] > 0) {
+      samples.push_back({nearest, d1, std::log(inh[c])});
+      area += cellMeasure(t, c);
+    }
+  }
+  CHECK(held > 0);
+  REQUIRE(samples.size() >= 20);
+  std::vector<double> mr(centre.size(), 0), my(centre.size(), 0), n(centre.size(), 0);
+  for (const auto& e : samples) mr[e.clone] += e.r, my[e.clone] += e.y, n[e.clone] += 1;
+  double sxy = 0, sxx = 0;
+  for (const auto& e : samples) {
+    const double dr = e.r - mr[e.clone] / n[e.clone];
+    sxy += dr * (e.y - my[e.clone] / n[e.clone]);
+    sxx += dr * dr;
+  }
+  const double length = -sxx / sxy;
+  const double V = area / static_cast<double>(samples.size());
+  const double h = std::sqrt(2 * V / std::sqrt(3.0));  // centre spacing of hexagons of area V
+  const double lambda = std::sqrt(P * h / mu);
+  INFO("fitted decay length " << length << ", continuum " << lambda << " (" << samples.size()
+                              << " cells, mean area " << V << ")");
+  // The field of a source of radius a is K0(r / lambda), whose log falls a little faster than r / lambda
+  // (by about 1 / (2 r)): the fitted length is at most lambda, up to the irregular tiling.
+  CHECK(length < 1.1 * lambda);
+  CHECK(length > 0.85 * lambda);
+}
