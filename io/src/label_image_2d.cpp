@@ -7,7 +7,10 @@
 // edges between junctions) is simplified by Douglas-Peucker with its ends
 // fixed, both cells seeing the same polyline, and a wall whose simplification
 // would cross another wall or flatten a cell is simplified again with half
-// the tolerance until none does.
+// the tolerance until none does. The walls are traced on a graph of the
+// corners where the boundary turns or branches, its edges straight stretches
+// of pixel edges; the result is that of the graph of every pixel corner
+// (see "Vertices and boundary edges" below and simplifyEdge).
 //
 // Pixel-diagonal contacts: at a pixel corner where two diagonal pixels carry
 // one label and the other two pixels other labels (a pinch), the label of the
@@ -37,7 +40,6 @@ namespace tessella::io {
 
 namespace {
 
-using detail::douglasPeucker;
 using detail::Label;
 constexpr Label kOutside = std::numeric_limits<Label>::min();
 constexpr double kSplit = 0.25;  // offset of the two vertices of a bridged corner, in pixels
@@ -95,23 +97,90 @@ struct Walls {
   std::size_t size() const { return tol.size(); }
 };
 
-void simplifyWall(const Walls& ws, std::size_t wi, const std::vector<Vec3>& pos, std::vector<char>& keep) {
+// The pixel edges along a graph edge between two vertices (of a bridged corner: the corner's).
+std::int32_t pixelLength(const Vec3& a, const Vec3& b) {
+  return static_cast<std::int32_t>(std::abs(std::round(a.x()) - std::round(b.x())) +
+                                   std::abs(std::round(a.y()) - std::round(b.y())));
+}
+
+// A pixel corner inside a graph edge kept by the simplification: the edge's ends a, b in the wall's order and
+// the corner's distance from a in pixels.
+struct InnerCorner {
+  std::int32_t a, b, i;
+};
+
+// Douglas-Peucker (detail::douglasPeucker) on the pixel corners of the graph edge from a to b: a, the corners
+// inside, b, as the graph of every pixel corner has them. Its inner corners lie on a segment and are kept
+// only where the test's rounding says they lie off it (a corner inside [x, 0] to [0, 0] at a few ulp) or
+// keep_one asks for one (a straight wall that must not become a segment).
+void simplifyEdge(const std::vector<Vec3>& pos, std::int32_t a, std::int32_t b, double tol, bool keep_one,
+                  std::vector<InnerCorner>& inner) {
+  const Vec3 &pa = pos[a], &pb = pos[b];
+  const int n = pixelLength(pa, pb);
+  if (n < 2) return;
+  const double ax = std::round(pa.x()), ay = std::round(pa.y());
+  const double dx = (std::round(pb.x()) - ax) / n, dy = (std::round(pb.y()) - ay) / n;
+  auto at = [&](int i) { return i == 0 ? pa : i == n ? pb : Vec3(ax + i * dx, ay + i * dy, 0); };
+  auto dp = [&](auto&& self, int lo, int hi, bool one) -> void {
+    if (hi <= lo + 1) return;
+    const Vec3 p = at(lo), q = at(hi);
+    double worst = -1;
+    int arg = lo;
+    for (int i = lo + 1; i < hi; ++i)
+      if (const double d = detail::pointSegmentDistance(at(i), p, q); d > worst) worst = d, arg = i;
+    if (worst <= tol && !one) return;
+    inner.push_back({a, b, arg});
+    self(self, lo, arg, false);
+    self(self, arg, hi, false);
+  };
+  dp(dp, 0, n, keep_one);
+}
+
+// detail::douglasPeucker on the wall chain[lo..hi] of graph vertices, the same as on every pixel corner of it:
+// along a straight stretch the distance to a segment is convex, so the farthest corner (the first of equals)
+// is a vertex of the graph, or the chord is one edge, whose inner corners simplifyEdge visits.
+void douglasPeuckerWall(const std::vector<std::int32_t>& ch, std::size_t lo, std::size_t hi,
+                        const std::vector<Vec3>& pos, double tol, bool keep_one, std::vector<char>& keep,
+                        std::vector<InnerCorner>& inner) {
+  if (hi == lo + 1) return simplifyEdge(pos, ch[lo], ch[hi], tol, keep_one, inner);
+  if (hi <= lo) return;
+  double worst = -1;
+  std::size_t at = lo;
+  for (std::size_t i = lo + 1; i < hi; ++i)
+    if (const double d = detail::pointSegmentDistance(pos[ch[i]], pos[ch[lo]], pos[ch[hi]]); d > worst)
+      worst = d, at = i;
+  if (worst <= tol && !keep_one) return;
+  keep[ch[at]] = 1;
+  douglasPeuckerWall(ch, lo, at, pos, tol, false, keep, inner);
+  douglasPeuckerWall(ch, at, hi, pos, tol, false, keep, inner);
+}
+
+// Simplifies wall wi: sets `keep` of its inner vertices and lists the pixel corners kept inside its edges.
+void simplifyWall(const Walls& ws, std::size_t wi, const std::vector<Vec3>& pos, std::vector<char>& keep,
+                  std::vector<InnerCorner>& inner) {
+  inner.clear();
   const auto& ch = ws.chain;
   const auto b = static_cast<std::size_t>(ws.off[wi]), last = static_cast<std::size_t>(ws.off[wi + 1]) - 1;
   const double tol = ws.tol[wi];
-  for (std::size_t i = b + 1; i < last; ++i) keep[ch[i]] = tol < 0;  // tol < 0: keep every vertex
-  if (tol < 0) return;
+  for (std::size_t i = b + 1; i < last; ++i) keep[ch[i]] = tol < 0;  // tol < 0: keep every pixel corner
+  if (tol < 0) {
+    for (std::size_t i = b; i < last; ++i)
+      for (std::int32_t k = 1, n = pixelLength(pos[ch[i]], pos[ch[i + 1]]); k < n; ++k)
+        inner.push_back({ch[i], ch[i + 1], k});
+    return;
+  }
   if (ch[b] == ch[last]) {  // a loop: split at the vertex farthest from its start, keep one more on each side
     std::size_t far = b + 1;
     for (std::size_t i = b + 1; i < last; ++i)
       if ((pos[ch[i]] - pos[ch[b]]).squaredNorm() > (pos[ch[far]] - pos[ch[b]]).squaredNorm()) far = i;
     if (last < b + 2) return;
     keep[ch[far]] = 1;
-    douglasPeucker(ch, b, far, pos, tol, far > b + 1, keep);
-    douglasPeucker(ch, far, last, pos, tol, last - far > 1, keep);
+    // keep_one: moot where no corner lies between the ends (as where it is false for every pixel corner)
+    douglasPeuckerWall(ch, b, far, pos, tol, true, keep, inner);
+    douglasPeuckerWall(ch, far, last, pos, tol, true, keep, inner);
     return;
   }
-  douglasPeucker(ch, b, last, pos, tol, ws.keep_one[wi] != 0, keep);
+  douglasPeuckerWall(ch, b, last, pos, tol, ws.keep_one[wi] != 0, keep, inner);
 }
 
 // Compressed sparse rows: the items of row r are items[off[r] .. off[r + 1]).
@@ -489,102 +558,140 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
     return c < 0 ? std::string("the background") : "label " + std::to_string(pieces[order[c]].label);
   };
 
-  // Vertices and boundary edges, numbered as a scan of every pixel edge would create them: first the vertical
-  // edges (row by row, each creating its lower corner, then its upper one), then the horizontal ones. A pixel
-  // corner on a boundary is a vertex (two at a bridged corner), in pixel units. The vertices first met by a
-  // horizontal edge (on a straight horizontal stretch) are numbered after all the others, from `h_vertex`, and
-  // the horizontal edges after the vertical ones, from `h_edge`.
-  const std::size_t n_verts = n_corners + bridge_row.size() + n_hcorners;
-  const std::size_t n_vedges = runs.x.size() - static_cast<std::size_t>(H), n_edges = n_vedges + n_hedges;
-  std::vector<Vec3> pos(n_verts);
-  std::int32_t v_vertex = 0;
-  std::vector<BoundaryEdge> edges(n_edges);
-  std::size_t v_edge = 0, h_edge = n_vedges;
-  auto h_vertex = static_cast<std::int32_t>(n_corners + bridge_row.size());
-  std::size_t bp_this = 0, bp_next = 0;  // into the bridge lists
+  // Vertices and boundary edges. The pixel corners on a boundary (two at a bridged corner) are numbered as a
+  // scan of every pixel edge would create them: the corners on a vertical pixel edge row by row (each vertical
+  // edge creating its lower corner, then its upper one), then those inside straight horizontal stretches (row by
+  // row). The graph made here holds only the corners where the boundary turns or branches, the bridged ones,
+  // and the corner next to a bridged one along a straight stretch (a kink); each of its edges is a straight
+  // stretch of pixel edges between two cells (a stack of vertical pixel edges, or a run of horizontal ones),
+  // its inner corners on the segment between its ends. Vertical edges are numbered before horizontal ones,
+  // each by its first pixel edge in the scan's order, and every vertex keeps its scan order as `key`: the
+  // walls, the outlines and the simplification then see the pixel corners' graph with its straight stretches
+  // drawn as one edge (simplifyWall visits the corners inside them).
+  const std::size_t n_verts = n_corners + bridge_row.size() + n_hcorners;  // the pixel corners on a boundary
+  const std::size_t n_vedges = runs.x.size() - static_cast<std::size_t>(H);  // the pixel edges, vertical
+  const std::int64_t h_key = 2 * W * (H + 1);  // the keys of the corners inside horizontal stretches start here
+  std::vector<Vec3> pos;
+  std::vector<std::int64_t> key;
+  std::vector<BoundaryEdge> edges, h_edges;
+  pos.reserve(n_corners + 3 * bridge_row.size()), key.reserve(n_corners + 3 * bridge_row.size());
+  edges.reserve(n_vedges + n_hedges), h_edges.reserve(n_hedges);
+  std::size_t pixel_edges = 0;  // in the edges made, checked against the counts above
+  std::size_t bp_this = 0, bp_next = 0, bp_above = 0;  // into the bridge lists
   auto bridgeAt = [&](std::size_t& bp, std::int32_t row, std::int32_t x) -> int {
     while (bp < bridge_row.size() && (bridge_row[bp] < row || (bridge_row[bp] == row && bridge_x[bp] < x))) ++bp;
     return bp < bridge_row.size() && bridge_row[bp] == row && bridge_x[bp] == x ? bridge_type[bp] : 0;
   };
   // The vertex at corner (ci, cj): at a bridged corner, `second` is the one on the side of the edges leaving
   // it up or left (type 1) or up or right (type 2), a quarter pixel off the corner.
-  auto newVertex = [&](std::int32_t ci, std::int32_t cj, int type, bool second) {
+  auto newVertex = [&](std::int32_t ci, std::int32_t cj, int type, bool second, std::int64_t k) {
     const double x = ci - 1, y = cj - 1;
-    Vec3& p = pos[static_cast<std::size_t>(v_vertex)];
-    if (type == 1) p = second ? Vec3(x - kSplit, y + kSplit, 0) : Vec3(x + kSplit, y - kSplit, 0);
-    else if (type == 2) p = second ? Vec3(x + kSplit, y + kSplit, 0) : Vec3(x - kSplit, y - kSplit, 0);
-    else p = Vec3(x, y, 0);
-    return v_vertex++;
+    if (type == 1) pos.push_back(second ? Vec3(x - kSplit, y + kSplit, 0) : Vec3(x + kSplit, y - kSplit, 0));
+    else if (type == 2) pos.push_back(second ? Vec3(x + kSplit, y + kSplit, 0) : Vec3(x - kSplit, y - kSplit, 0));
+    else pos.push_back(Vec3(x, y, 0));
+    key.push_back(k);
+    return static_cast<std::int32_t>(pos.size() - 1);
   };
+  // The scan's order of a corner met by a vertical pixel edge of pixel row `row`: its lower or upper end.
+  auto vKey = [&](std::int32_t row, std::int32_t x, int upper) { return (row * W + x) * 2 + upper; };
   struct Corner {
-    std::int32_t x, v0, v1;  // v1: the second vertex of a bridged corner
+    std::int32_t x, v0, v1;  // v1: the second vertex of a bridged corner; v0 -1: inside a vertical stack
     int type;
   };
+  struct Up {
+    std::int32_t x, vertex, edge;  // vertex -1: the stack of `edge` goes on into the row above
+  };
   std::vector<Corner> corners;  // of corner row cj: those on a vertical edge, by x
-  std::vector<std::pair<std::int32_t, std::int32_t>> up, next_up;  // x, vertex: upper ends of the row below's edges
+  std::vector<Up> up, next_up;  // the upper ends of the row below's vertical edges
   constexpr std::int32_t kNone = std::numeric_limits<std::int32_t>::max();
   for (std::int32_t cj = 1; cj < static_cast<std::int32_t>(H); ++cj) {
     // The vertical edges of pixel row cj (none in the padding row H - 1).
     corners.clear(), next_up.clear();
     std::size_t p = 0, k = static_cast<std::size_t>(runs.off[cj]) + 1;
     const auto k_end = static_cast<std::size_t>(runs.off[cj + 1]);
+    // Row cj + 1's label changes, to tell whether a stack goes on.
+    std::size_t ka = 0, ka_end = 0;
+    if (cj + 1 < static_cast<std::int32_t>(H))
+      ka = static_cast<std::size_t>(runs.off[cj + 1]) + 1, ka_end = static_cast<std::size_t>(runs.off[cj + 2]);
     while (p < up.size() || k < k_end) {
-      const std::int32_t xa = p < up.size() ? up[p].first : kNone, xb = k < k_end ? runs.x[k] : kNone;
+      const std::int32_t xa = p < up.size() ? up[p].x : kNone, xb = k < k_end ? runs.x[k] : kNone;
       if (xa < xb) {
-        corners.push_back({xa, up[p++].second, -1, 0});
+        corners.push_back({xa, up[p++].vertex, -1, 0});
         continue;
       }
+      const std::int32_t left = cell[k - 1], right = cell[k];
       const int type = bridgeAt(bp_this, cj, xb);
-      std::int32_t v0, v1 = -1, lower;
-      if (xa == xb) {
-        v0 = up[p++].second;
-        lower = type ? (v1 = newVertex(xb, cj, type, true)) : v0;
+      std::int32_t v0 = -1, v1 = -1, e;
+      bool starts = true;
+      if (xa == xb && up[p].vertex < 0) {  // the stack below goes on: its corner here is no vertex
+        e = up[p++].edge, starts = false;
       } else {
-        lower = v0 = newVertex(xb, cj, 0, false);
+        std::int32_t lower;
+        if (xa == xb) {
+          v0 = up[p++].vertex;
+          lower = type ? (v1 = newVertex(xb, cj, type, true, vKey(cj, xb, 0))) : v0;
+        } else {
+          lower = v0 = newVertex(xb, cj, 0, false, vKey(cj, xb, 0));
+        }
+        e = static_cast<std::int32_t>(edges.size());
+        edges.push_back({lower, -1, left, right});
       }
-      const std::int32_t upper = newVertex(xb, cj + 1, bridgeAt(bp_next, cj + 1, xb), false);
-      edges[v_edge++] = {lower, upper, cell[k - 1], cell[k]};
+      ++pixel_edges;
+      // The stack goes on into row cj + 1 where that row has a vertical edge at xb between the same cells (no
+      // corner between them is bridged), unless a bridged corner lies just below (a stack starting at one) or
+      // two corners up: the corner next to a bridged one is a vertex.
+      while (ka < ka_end && runs.x[ka] < xb) ++ka;
+      const int type_up = bridgeAt(bp_next, cj + 1, xb);
+      const bool goes_on = ka < ka_end && runs.x[ka] == xb && cell[ka - 1] == left && cell[ka] == right &&
+                           !(starts && type) && !bridgeAt(bp_above, cj + 2, xb);
+      if (goes_on) {
+        next_up.push_back({xb, -1, e});
+      } else {
+        const std::int32_t upper = newVertex(xb, cj + 1, type_up, false, vKey(cj, xb, 1));
+        edges[static_cast<std::size_t>(e)].v = upper;
+        next_up.push_back({xb, upper, e});
+      }
       corners.push_back({xb, v0, v1, type});
-      next_up.emplace_back(xb, upper);
       ++k;
     }
     std::swap(up, next_up);
     // The horizontal edges along corner row cj, between pixel rows cj - 1 (below) and cj (above): each
-    // stretch [s, e) starts and ends at a corner on a vertical edge, corners[q - 1] and corners[q].
+    // stretch [s, e) starts and ends at a corner on a vertical edge, corners[q - 1] and corners[q]; a bridged
+    // end makes the corner next to it a vertex (kink).
     std::size_t q = 0;
     sideBySide(static_cast<std::size_t>(cj) - 1, static_cast<std::size_t>(cj),
-               [&](std::size_t ka, std::size_t kb, std::int32_t s, std::int32_t e, bool, bool) {
-                 const std::int32_t below = cell[ka], above = cell[kb];
+               [&](std::size_t kb, std::size_t kc, std::int32_t s, std::int32_t e, bool, bool) {
+                 const std::int32_t below = cell[kb], above = cell[kc];
                  if (below != above) {
-                   const Corner& cs = corners[q - 1];
+                   const Corner &cs = corners[q - 1], &ce = corners[q];
                    std::int32_t u = cs.type == 2 ? cs.v1 : cs.v0;  // leaving right: type 2's second vertex
-                   for (std::int32_t i = s; i < e; ++i) {
-                     std::int32_t v;
-                     if (i + 1 < e) {
-                       pos[static_cast<std::size_t>(h_vertex)] = Vec3(i, cj - 1, 0);
-                       v = h_vertex++;
-                     } else {
-                       const Corner& ce = corners[q];
-                       v = ce.type == 1 ? ce.v1 : ce.v0;  // leaving left: type 1's second vertex
-                     }
-                     edges[h_edge++] = {u, v, above, below};
-                     u = v;
-                   }
+                   const std::int32_t v = ce.type == 1 ? ce.v1 : ce.v0;  // leaving left: type 1's second vertex
+                   auto kink = [&](std::int32_t ci) {
+                     const std::int32_t kv = newVertex(ci, cj, 0, false, h_key + cj * W + ci);
+                     h_edges.push_back({u, kv, above, below});
+                     u = kv;
+                   };
+                   if (cs.type && e - s >= 2) kink(s + 1);
+                   if (ce.type && e - s >= 2 && !(cs.type && e - s == 2)) kink(e - 1);
+                   h_edges.push_back({u, v, above, below});
+                   pixel_edges += static_cast<std::size_t>(e - s);
                  }
                  q += e < width;
                });
   }
-  if (static_cast<std::size_t>(v_vertex) != n_corners + bridge_row.size() ||
-      static_cast<std::size_t>(h_vertex) != n_verts || v_edge != n_vedges || h_edge != n_edges)
+  edges.insert(edges.end(), h_edges.begin(), h_edges.end());
+  std::vector<BoundaryEdge>().swap(h_edges);
+  const std::size_t n_edges = edges.size(), nv = pos.size();
+  if (pixel_edges != n_vedges + n_hedges || nv + pixel_edges - n_edges != n_verts)
     throw InputError(file + ": the pixel corners were miscounted (an internal error)");
   Runs().x.swap(runs.x);
-  std::vector<std::array<std::int32_t, 4>> incident(n_verts);
-  std::vector<std::uint8_t> degree(n_verts, 0);
+  std::vector<std::array<std::int32_t, 4>> incident(nv);
+  std::vector<std::uint8_t> degree(nv, 0);
   for (std::size_t e = 0; e < n_edges; ++e)
     for (const std::int32_t v : {edges[e].u, edges[e].v}) incident[v][degree[v]++] = static_cast<std::int32_t>(e);
   auto pairOf = [&](std::size_t e) { return std::minmax(edges[e].left, edges[e].right); };
-  std::vector<char> junction(n_verts, 0);
-  for (std::size_t v = 0; v < n_verts; ++v)
+  std::vector<char> junction(nv, 0);
+  for (std::size_t v = 0; v < nv; ++v)
     junction[v] = degree[v] != 2 || pairOf(incident[v][0]) != pairOf(incident[v][1]);
   // The edge that follows each edge around each of its two cells: follow[e][0] leaves v, the end of e, along the
   // left cell of e (which runs u -> v); follow[e][1] leaves u along the right cell (v -> u); -1 if there is none.
@@ -630,7 +737,7 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
     walls.keep_one.push_back(0);
     wall_cells.push_back({edges[e0].left, edges[e0].right});
   };
-  for (std::size_t v = 0; v < n_verts; ++v)
+  for (std::size_t v = 0; v < nv; ++v)
     if (junction[v])
       for (int k = 0; k < degree[v]; ++k)
         if (edge_wall[incident[v][k]] < 0) walk(static_cast<std::int32_t>(v), incident[v][k]);
@@ -753,23 +860,56 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
                      ". A cell is one polygon without holes; drop the inner labels (drop_labels), merge them "
                      "(min_cell_size with small_cells: merge), or make the hole part of the cell");
   }
+  // A cell's outline starts, as in the graph of every pixel corner, at the upper end of its first pixel edge
+  // (the lowest of its left side). Where the cell's first edge is a longer stack, that corner lies inside it,
+  // just above the stack's lower end, which the walk met second: the outline then starts at the lower end, and
+  // the corner is the last inside its closing edge (`rotated`).
+  std::vector<char> rotated(n_cells, 0);
+#pragma omp parallel for schedule(static)
+  for (std::ptrdiff_t cc = 0; cc < static_cast<std::ptrdiff_t>(n_cells); ++cc) {
+    const auto c = static_cast<std::size_t>(cc);
+    const auto& first = edges[static_cast<std::size_t>(cell_edges.items[static_cast<std::size_t>(cell_edges.off[c])])];
+    if (pixelLength(pos[first.u], pos[first.v]) < 2) continue;
+    rotated[c] = 1;
+    const auto begin = outlines.items.begin();
+    std::rotate(begin + cell_edges.off[c], begin + cell_edges.off[c] + 1, begin + cell_edges.off[c + 1]);
+  }
   Csr<std::int32_t>().items.swap(cell_edges.items);
   std::vector<std::array<std::int32_t, 2>>().swap(follow);
 
   // Simplify, then make sure no two walls cross and no cell flattens.
   std::vector<char> keep(junction.begin(), junction.end());
-  // In parallel: a wall sets `keep` of its inner vertices only.
-#pragma omp parallel for schedule(dynamic, 1024)
-  for (std::ptrdiff_t wi = 0; wi < static_cast<std::ptrdiff_t>(n_walls); ++wi)
-    simplifyWall(walls, static_cast<std::size_t>(wi), pos, keep);
+  // The pixel corners kept inside edges, by wall (few or none: see simplifyEdge); has_inner[w]: wall w has some.
+  std::map<std::int32_t, std::vector<InnerCorner>> wall_inner;
+  std::vector<char> has_inner(n_walls, 0);
+  auto simplify = [&](std::size_t wi, std::vector<InnerCorner>& inner) {
+    simplifyWall(walls, wi, pos, keep, inner);
+    if (inner.empty() && !has_inner[wi]) return;
+#pragma omp critical(label_image_2d_inner)
+    {
+      if (inner.empty()) wall_inner.erase(static_cast<std::int32_t>(wi));
+      else wall_inner[static_cast<std::int32_t>(wi)] = inner;
+    }
+    has_inner[wi] = !inner.empty();
+  };
+  // In parallel: a wall sets `keep` of its inner vertices only, and its own entry of has_inner.
+#pragma omp parallel
+  {
+    std::vector<InnerCorner> inner;
+#pragma omp for schedule(dynamic, 1024)
+    for (std::ptrdiff_t wi = 0; wi < static_cast<std::ptrdiff_t>(n_walls); ++wi)
+      simplify(static_cast<std::size_t>(wi), inner);
+  }
   {
     // Of the walls with the same two ends, one at most may become a straight segment (they would collapse):
     // the first of them, in wall order.
     std::vector<std::pair<std::uint64_t, std::int32_t>> straight;  // ends, wall
     for (std::size_t wi = 0; wi < n_walls; ++wi) {
       const auto b = static_cast<std::size_t>(walls.off[wi]), last = static_cast<std::size_t>(walls.off[wi + 1]) - 1;
-      if (walls.chain[b] == walls.chain[last] || last - b < 2) continue;
-      bool inner = false;
+      if (walls.chain[b] == walls.chain[last] ||
+          (last - b < 2 && pixelLength(pos[walls.chain[b]], pos[walls.chain[last]]) < 2))
+        continue;  // a loop, or a single pixel edge
+      bool inner = has_inner[wi] != 0;
       for (std::size_t k = b + 1; k < last && !inner; ++k) inner = keep[walls.chain[k]];
       if (inner) continue;
       const auto [lo, hi] = std::minmax(walls.chain[b], walls.chain[last]);
@@ -777,11 +917,12 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
                             static_cast<std::int32_t>(wi));
     }
     std::sort(straight.begin(), straight.end());
+    std::vector<InnerCorner> inner;
     for (std::size_t k = 1; k < straight.size(); ++k)
       if (straight[k].first == straight[k - 1].first) {
         const auto wi = static_cast<std::size_t>(straight[k].second);
         walls.keep_one[wi] = 1;
-        simplifyWall(walls, wi, pos, keep);
+        simplify(wi, inner);
       }
   }
   // With simplify 0 every wall is its pixel staircase but for the corners it passes straight through: the
@@ -873,61 +1014,138 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
           for (auto k = cell_walls.off[c]; k < cell_walls.off[c + 1]; ++k) setRedo(cell_walls.items[k]);
       }
       if (std::find(redo.begin(), redo.end(), 1) == redo.end()) break;
-#pragma omp parallel for schedule(dynamic, 1024)
-      for (std::ptrdiff_t wi = 0; wi < static_cast<std::ptrdiff_t>(n_walls); ++wi) {
-        if (!redo[wi] || walls.tol[wi] < 0) continue;
-        walls.tol[wi] = walls.tol[wi] > 1.0 / 64 ? walls.tol[wi] / 2 : -1;
-        simplifyWall(walls, static_cast<std::size_t>(wi), pos, keep);
+#pragma omp parallel
+      {
+        std::vector<InnerCorner> inner;
+#pragma omp for schedule(dynamic, 1024)
+        for (std::ptrdiff_t wi = 0; wi < static_cast<std::ptrdiff_t>(n_walls); ++wi) {
+          if (!redo[wi] || walls.tol[wi] < 0) continue;
+          walls.tol[wi] = walls.tol[wi] > 1.0 / 64 ? walls.tol[wi] / 2 : -1;
+          simplify(static_cast<std::size_t>(wi), inner);
+        }
       }
       dirty.swap(redo);
       if (round > 64) throw InputError(file + ": simplifying the walls did not converge (an internal error)");
     }
   }
-  // Positions: corner (x, y) in pixels is the edge of pixel x, at origin + (x - 1/2) * spacing.
+  // Positions: corner (x, y) in pixels is the edge of pixel x, at origin + (x - 1/2) * spacing, in the scan's
+  // order of the pixel corners (`key`): the kept vertices met by a vertical pixel edge, in the graph's order,
+  // then those inside horizontal stretches, and the kept corners inside edges (few or none) merged in by key.
   // In parallel over fixed blocks of vertices, then of cells (the same result for any number of threads).
-  constexpr std::ptrdiff_t kBlocks = 64;
-  std::vector<std::size_t> block_start(kBlocks + 1, 0);
-  auto blockOf = [&](std::ptrdiff_t b) { return static_cast<std::size_t>(b) * n_verts / kBlocks; };
+  auto place = [&](const Vec3& p) {
+    const double x = img.origin[0] + (p.x() + static_cast<double>(x0) - 0.5) * sx;
+    const double y = img.origin[1] + (p.y() + static_cast<double>(y0) - 0.5) * sy;
+    return Vec3(o.scale * x, o.scale * y, 0.0);
+  };
+  std::vector<std::int32_t> new_index(nv, -1);
+  std::vector<Vec3> positions;
+  std::vector<Index> polygon_off(n_cells + 1, 0), polygon_vertices;
+  if (wall_inner.empty()) {
+    constexpr std::ptrdiff_t kBlocks = 64;
+    std::vector<std::size_t> start_v(kBlocks + 1, 0), start_h(kBlocks + 1, 0);
+    auto blockOf = [&](std::ptrdiff_t b) { return static_cast<std::size_t>(b) * nv / kBlocks; };
 #pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t b = 0; b < kBlocks; ++b)
-    block_start[static_cast<std::size_t>(b) + 1] =
-        static_cast<std::size_t>(std::count(keep.begin() + static_cast<std::ptrdiff_t>(blockOf(b)),
-                                            keep.begin() + static_cast<std::ptrdiff_t>(blockOf(b + 1)), 1));
-  std::partial_sum(block_start.begin(), block_start.end(), block_start.begin());
-  const std::size_t n_positions = block_start.back();
-  std::vector<std::int32_t> new_index(n_verts, -1);
-  std::vector<Vec3> positions(n_positions);
+    for (std::ptrdiff_t b = 0; b < kBlocks; ++b) {
+      std::size_t n_v = 0, n_h = 0;
+      for (std::size_t v = blockOf(b); v < blockOf(b + 1); ++v)
+        if (keep[v]) ++(key[v] < h_key ? n_v : n_h);
+      start_v[static_cast<std::size_t>(b) + 1] = n_v, start_h[static_cast<std::size_t>(b) + 1] = n_h;
+    }
+    std::partial_sum(start_v.begin(), start_v.end(), start_v.begin());
+    start_h[0] = start_v.back();
+    std::partial_sum(start_h.begin(), start_h.end(), start_h.begin());
+    positions.resize(start_h.back());
 #pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t b = 0; b < kBlocks; ++b) {
-    std::size_t next = block_start[static_cast<std::size_t>(b)];
-    for (std::size_t v = blockOf(b); v < blockOf(b + 1); ++v)
-      if (keep[v]) {
-        new_index[v] = static_cast<std::int32_t>(next);
-        const double x = img.origin[0] + (pos[v].x() + static_cast<double>(x0) - 0.5) * sx;
-        const double y = img.origin[1] + (pos[v].y() + static_cast<double>(y0) - 0.5) * sy;
-        positions[next++] = Vec3(o.scale * x, o.scale * y, 0.0);
+    for (std::ptrdiff_t b = 0; b < kBlocks; ++b) {
+      std::size_t next_v = start_v[static_cast<std::size_t>(b)], next_h = start_h[static_cast<std::size_t>(b)];
+      for (std::size_t v = blockOf(b); v < blockOf(b + 1); ++v)
+        if (keep[v]) {
+          std::size_t& next = key[v] < h_key ? next_v : next_h;
+          new_index[v] = static_cast<std::int32_t>(next);
+          positions[next++] = place(pos[v]);
+        }
+    }
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t cc = 0; cc < static_cast<std::ptrdiff_t>(n_cells); ++cc) {
+      const auto c = static_cast<std::size_t>(cc);
+      Index n = 0;
+      for (auto k = outlines.off[c]; k < outlines.off[c + 1]; ++k) n += keep[outlines.items[k]] != 0;
+      polygon_off[c + 1] = n;
+    }
+    std::partial_sum(polygon_off.begin(), polygon_off.end(), polygon_off.begin());
+    polygon_vertices.resize(polygon_off.back());
+#pragma omp parallel for schedule(static)
+    for (std::ptrdiff_t cc = 0; cc < static_cast<std::ptrdiff_t>(n_cells); ++cc) {
+      const auto c = static_cast<std::size_t>(cc);
+      Index next = polygon_off[c];
+      for (auto k = outlines.off[c]; k < outlines.off[c + 1]; ++k)
+        if (const std::int32_t v = outlines.items[k]; keep[v])
+          polygon_vertices[next++] = static_cast<Index>(new_index[v]);
+    }
+  } else {
+    // Kept corners inside edges: ordered with the vertices by key, listed by edge for the outlines.
+    std::vector<InnerCorner> inner;
+    for (const auto& entry : wall_inner) inner.insert(inner.end(), entry.second.begin(), entry.second.end());
+    auto innerPos = [&](const InnerCorner& ic) {
+      const Vec3 &pa = pos[ic.a], &pb = pos[ic.b];
+      const int n = pixelLength(pa, pb);
+      const double ax = std::round(pa.x()), ay = std::round(pa.y());
+      return Vec3(ax + ic.i * ((std::round(pb.x()) - ax) / n), ay + ic.i * ((std::round(pb.y()) - ay) / n), 0);
+    };
+    std::vector<std::pair<std::int64_t, std::int64_t>> by_key;  // key, vertex or -1 - the corner's index
+    for (std::size_t v = 0; v < nv; ++v)
+      if (keep[v]) by_key.emplace_back(key[v], static_cast<std::int64_t>(v));
+    for (std::size_t k = 0; k < inner.size(); ++k) {
+      const Vec3 p = innerPos(inner[k]);
+      const auto ci = static_cast<std::int32_t>(std::lround(p.x())) + 1;
+      const auto cj = static_cast<std::int32_t>(std::lround(p.y())) + 1;
+      const bool vertical = std::round(pos[inner[k].a].x()) == std::round(pos[inner[k].b].x());
+      by_key.emplace_back(vertical ? vKey(cj - 1, ci, 1) : h_key + cj * W + ci, -1 - static_cast<std::int64_t>(k));
+    }
+    std::sort(by_key.begin(), by_key.end());
+    // (lower vertex, higher vertex) of an edge -> (pixels from the lower one, position index) of its kept corners
+    std::map<std::pair<std::int32_t, std::int32_t>, std::vector<std::pair<std::int32_t, std::int32_t>>> edge_inner;
+    positions.resize(by_key.size());
+    for (std::size_t n = 0; n < by_key.size(); ++n) {
+      const std::int64_t ref = by_key[n].second;
+      if (ref >= 0) {
+        new_index[static_cast<std::size_t>(ref)] = static_cast<std::int32_t>(n);
+        positions[n] = place(pos[static_cast<std::size_t>(ref)]);
+        continue;
       }
+      const InnerCorner& ic = inner[static_cast<std::size_t>(-1 - ref)];
+      positions[n] = place(innerPos(ic));
+      const std::int32_t len = pixelLength(pos[ic.a], pos[ic.b]);
+      edge_inner[std::minmax(ic.a, ic.b)].emplace_back(ic.a < ic.b ? ic.i : len - ic.i, static_cast<std::int32_t>(n));
+    }
+    for (auto& entry : edge_inner) std::sort(entry.second.begin(), entry.second.end());
+    for (std::size_t c = 0; c < n_cells; ++c) {
+      const auto b = static_cast<std::size_t>(outlines.off[c]), m = static_cast<std::size_t>(outlines.off[c + 1]) - b;
+      const std::size_t start = polygon_vertices.size();
+      std::int64_t front = -1;  // of a rotated outline: the corner it starts at, inside its closing edge
+      for (std::size_t k = 0; k < m; ++k) {
+        const std::int32_t v = outlines.items[b + k], to = outlines.items[b + (k + 1) % m];
+        if (keep[v]) polygon_vertices.push_back(static_cast<Index>(new_index[v]));
+        const auto it = edge_inner.find(std::minmax(v, to));
+        if (it == edge_inner.end()) continue;
+        const std::int32_t len = pixelLength(pos[v], pos[to]);
+        auto add = [&](const std::pair<std::int32_t, std::int32_t>& corner) {
+          const std::int32_t from_to = v < to ? len - corner.first : corner.first;
+          if (rotated[c] && k + 1 == m && from_to == 1) front = corner.second;
+          else polygon_vertices.push_back(static_cast<Index>(corner.second));
+        };
+        if (v < to) std::for_each(it->second.begin(), it->second.end(), add);
+        else std::for_each(it->second.rbegin(), it->second.rend(), add);
+      }
+      if (front >= 0)
+        polygon_vertices.insert(polygon_vertices.begin() + static_cast<std::ptrdiff_t>(start),
+                                static_cast<Index>(front));
+      polygon_off[c + 1] = static_cast<Index>(polygon_vertices.size());
+    }
   }
+  const std::size_t n_positions = positions.size();
   report.file_vertices = 0;
   report.simplified_vertices = n_verts - n_positions;
-  std::vector<Index> polygon_off(n_cells + 1, 0), polygon_vertices;
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t cc = 0; cc < static_cast<std::ptrdiff_t>(n_cells); ++cc) {
-    const auto c = static_cast<std::size_t>(cc);
-    Index n = 0;
-    for (auto k = outlines.off[c]; k < outlines.off[c + 1]; ++k) n += keep[outlines.items[k]] != 0;
-    polygon_off[c + 1] = n;
-  }
-  std::partial_sum(polygon_off.begin(), polygon_off.end(), polygon_off.begin());
-  polygon_vertices.resize(polygon_off.back());
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t cc = 0; cc < static_cast<std::ptrdiff_t>(n_cells); ++cc) {
-    const auto c = static_cast<std::size_t>(cc);
-    Index next = polygon_off[c];
-    for (auto k = outlines.off[c]; k < outlines.off[c + 1]; ++k)
-      if (const std::int32_t v = outlines.items[k]; keep[v])
-        polygon_vertices[next++] = static_cast<Index>(new_index[v]);
-  }
   try {
     result.tissue = buildPolygonTissue(std::move(positions), polygon_off, polygon_vertices, Embedding::Planar);
   } catch (const Error& e) {
