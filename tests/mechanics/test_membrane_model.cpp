@@ -9,6 +9,7 @@
 #include <catch2/catch.hpp>
 
 #include "membrane_derivatives.hpp"
+#include "membrane_strains.hpp"
 #include "surface_meshes.hpp"
 #include "tessella/mechanics/equilibrium.hpp"
 #include "tessella/mechanics/membrane_model.hpp"
@@ -25,21 +26,9 @@ using namespace tessella;
 using namespace tessella::mechanics;
 
 using test::supports;
+using test::inPlane;
 
 namespace {
-
-// The two in-plane principal tensions of a membrane tension tensor.
-Eigen::Vector2d inPlane(const Eigen::Matrix3d& N) {
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(N);
-  Eigen::Vector3d v = eig.eigenvalues();
-  int drop = 0;  // the normal direction: the eigenvalue of smallest magnitude
-  for (int i = 1; i < 3; ++i)
-    if (std::abs(v[i]) < std::abs(v[drop])) drop = i;
-  Eigen::Vector2d out;
-  for (int i = 0, k = 0; i < 3; ++i)
-    if (i != drop) out[k++] = v[i];
-  return out;
-}
 
 Eigen::Vector3d centroid(const Eigen::VectorXd& x, const std::array<Index, 3>& t) {
   return (x.segment<3>(3 * t[0]) + x.segment<3>(3 * t[1]) + x.segment<3>(3 * t[2])) / 3.0;

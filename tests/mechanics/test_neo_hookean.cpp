@@ -10,6 +10,7 @@
 #include <catch2/catch.hpp>
 
 #include "membrane_derivatives.hpp"
+#include "membrane_strains.hpp"
 #include "surface_meshes.hpp"
 #include "tessella/mechanics/equilibrium.hpp"
 #include "tessella/mechanics/membrane_model.hpp"
@@ -27,10 +28,11 @@ using namespace tessella;
 using namespace tessella::mechanics;
 
 using test::supports;
+using test::gradientOf;
+using test::inPlane;
+using test::Mat32;
 
 namespace {
-
-using Mat32 = Eigen::Matrix<double, 3, 2>;
 
 MembraneMaterial neoHookean(double young, double thickness, double ratio) {
   MembraneMaterial m;
@@ -39,30 +41,6 @@ MembraneMaterial neoHookean(double young, double thickness, double ratio) {
   m.thickness = thickness;
   m.fibre_ratio = ratio;
   return m;
-}
-
-// A deformation gradient (3 x 2) whose Green strain is eps (Voigt: E11, E22, 2 E12),
-// rotated into space by an arbitrary rotation: F = R_3x2 U, U = sqrt(C).
-Mat32 gradientOf(const Eigen::Vector3d& eps) {
-  Eigen::Matrix2d C;
-  C << 1 + 2 * eps(0), eps(2), eps(2), 1 + 2 * eps(1);
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(C);
-  const Eigen::Matrix2d U = eig.operatorSqrt();
-  Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
-  return R.leftCols<2>() * U;
-}
-
-// The in-plane principal values of a membrane tension tensor (3 x 3, rank 2).
-Eigen::Vector2d inPlane(const Eigen::Matrix3d& N) {
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(N);
-  Eigen::Vector3d v = eig.eigenvalues();
-  int drop = 0;
-  for (int i = 1; i < 3; ++i)
-    if (std::abs(v[i]) < std::abs(v[drop])) drop = i;
-  Eigen::Vector2d out;
-  for (int i = 0, k = 0; i < 3; ++i)
-    if (i != drop) out[k++] = v[i];
-  return out;
 }
 
 // The stable stretch of the inflated incompressible neo-Hookean sphere:
@@ -84,7 +62,7 @@ TEST_CASE("neo-Hookean law: stress and tangent are the derivatives of its energy
     CHECK(law.mu == Approx(1.7));
     CHECK(law.kappa == Approx(4 * 1.7 * (ratio - 1)));
     // Large strains of both signs, shear included.
-    for (const Eigen::Vector3d eps : {Eigen::Vector3d(0.3, -0.2, 0.25), Eigen::Vector3d(-0.3, 0.6, -0.4),
+    for (const Eigen::Vector3d& eps : {Eigen::Vector3d(0.3, -0.2, 0.25), Eigen::Vector3d(-0.3, 0.6, -0.4),
                                       Eigen::Vector3d(1.2, 0.05, 0.3)}) {
       CAPTURE(ratio, eps.transpose());
       const MembraneResponse r = law.at(gradientOf(eps), true);
