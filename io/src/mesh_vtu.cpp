@@ -3,6 +3,7 @@
 // FeMesh -> .vtu. The mesh's Eigen arrays are handed to VTK without copies
 // where their layout allows (node coordinates, connectivity, cell ids).
 
+#include <algorithm>
 #include <map>
 #include <string>
 #include <vector>
@@ -50,34 +51,48 @@ void checkFields(const std::map<std::string, Eigen::VectorXd>& fields, Eigen::In
   }
 }
 
-// The row of fields.walls of every wall facet (empty without wall arrays).
-std::vector<std::size_t> facetWallRows(const mesh::FeMesh& mesh, const MeshFields& fields) {
-  const WallArrays& walls = fields.walls;
-  if (walls.scalars.empty() && walls.vectors.empty() && walls.tensors.empty()) return {};
-  const std::size_t n = fields.wall_ids.size();
+// The row of `arrays` of every mesh item (wall facet or element) whose tissue wall or cell is owner(i)
+// (empty without arrays); `reserved` lists the item file's own array names.
+template <typename Owner>
+std::vector<std::size_t> rowsOf(const WallArrays& arrays, const std::vector<int>& ids, const Owner& owner,
+                                const std::vector<std::string>& reserved,
+                                const std::map<std::string, Eigen::VectorXd>& fields, const std::string& kind,
+                                const std::string& item) {
+  if (arrays.scalars.empty() && arrays.vectors.empty() && arrays.tensors.empty()) return {};
+  const std::size_t n = ids.size();
+  const std::string list = "MeshFields::" + kind + "_ids";
   auto check = [&](const std::string& name, std::size_t size) {
-    if (name.empty() || name == "wall_id" || name == "on_boundary" || fields.facet.count(name))
-      throw InputError("wall array name '" + name + "' is empty or taken by the wall facets' own arrays");
+    if (name.empty() || std::find(reserved.begin(), reserved.end(), name) != reserved.end() || fields.count(name))
+      throw InputError(kind + " array name '" + name + "' is empty or taken by the " + item + "s' own arrays");
     if (size != n)
-      throw InputError("wall array '" + name + "' has " + std::to_string(size) + " values for " + std::to_string(n) +
-                       " walls (MeshFields::wall_ids)");
+      throw InputError(kind + " array '" + name + "' has " + std::to_string(size) + " values for " +
+                       std::to_string(n) + " " + kind + "s (" + list + ")");
   };
-  for (const auto& [name, values] : walls.scalars) check(name, values.size());
-  for (const auto& [name, values] : walls.vectors) check(name, values.size());
-  for (const auto& [name, values] : walls.tensors) check(name, values.size());
+  for (const auto& [name, values] : arrays.scalars) check(name, values.size());
+  for (const auto& [name, values] : arrays.vectors) check(name, values.size());
+  for (const auto& [name, values] : arrays.tensors) check(name, values.size());
   std::map<int, std::size_t> row_of;
   for (std::size_t i = 0; i < n; ++i)
-    if (!row_of.emplace(fields.wall_ids[i], i).second)
-      throw InputError("MeshFields::wall_ids lists wall " + std::to_string(fields.wall_ids[i]) + " twice");
-  std::vector<std::size_t> rows(static_cast<std::size_t>(mesh.facet_wall.size()));
-  for (Eigen::Index f = 0; f < mesh.facet_wall.size(); ++f) {
-    const auto it = row_of.find(mesh.facet_wall(f));
+    if (!row_of.emplace(ids[i], i).second)
+      throw InputError(list + " lists " + kind + " " + std::to_string(ids[i]) + " twice");
+  std::vector<std::size_t> rows(static_cast<std::size_t>(owner.size()));
+  for (Eigen::Index f = 0; f < owner.size(); ++f) {
+    const auto it = row_of.find(owner(f));
     if (it == row_of.end())
-      throw InputError("wall facet " + std::to_string(f) + " lies on wall " + std::to_string(mesh.facet_wall(f)) +
-                       ", which has no values in the wall arrays (MeshFields::wall_ids)");
+      throw InputError(item + " " + std::to_string(f) + " lies on " + kind + " " + std::to_string(owner(f)) +
+                       ", which has no values in the " + kind + " arrays (" + list + ")");
     rows[static_cast<std::size_t>(f)] = it->second;
   }
   return rows;
+}
+
+// The row of fields.walls of every wall facet, of fields.cells of every element.
+std::vector<std::size_t> facetWallRows(const mesh::FeMesh& mesh, const MeshFields& fields) {
+  return rowsOf(fields.walls, fields.wall_ids, mesh.facet_wall, {"wall_id", "on_boundary"}, fields.facet, "wall",
+                "wall facet");
+}
+std::vector<std::size_t> elementCellRows(const mesh::FeMesh& mesh, const MeshFields& fields) {
+  return rowsOf(fields.cells, fields.cell_ids, mesh.element_cell, {"cell_id"}, fields.element, "cell", "element");
 }
 
 vtkSmartPointer<vtkPoints> nodesOf(const mesh::FeMesh& mesh) {
@@ -147,6 +162,7 @@ void checkFeMesh(const mesh::FeMesh& mesh, const MeshFields& fields) {
   checkFields(fields.element, mesh.elements.rows(), "element");
   checkFields(fields.facet, mesh.wall_facets.rows(), "facet");
   facetWallRows(mesh, fields);
+  elementCellRows(mesh, fields);
 }
 
 void writeFeMeshVtu(const mesh::FeMesh& mesh, const std::string& path, const MeshFields& fields, const VtuOptions& options) {
@@ -155,7 +171,21 @@ void writeFeMeshVtu(const mesh::FeMesh& mesh, const std::string& path, const Mes
   setUniformCells(grid, mesh.elements, mesh.dim + 1, mesh.dim == 2 ? VTK_TRIANGLE : VTK_TETRA);
   grid->GetCellData()->AddArray(int32View("cell_id", mesh.element_cell));
   addFields(grid->GetCellData(), fields.element);
+  detail::addWallArrays(grid->GetCellData(), fields.cells, elementCellRows(mesh, fields));
   detail::writeGridFile(grid, path, options);
+}
+
+FeMeshElementsFile readFeMeshElementsVtu(const std::string& path) {
+  vtkSmartPointer<vtkUnstructuredGrid> grid = detail::readGridFile(path);
+  detail::checkCellArrays(grid, path);
+  vtkCellData* data = grid->GetCellData();
+  auto* ids = data->GetArray("cell_id");
+  if (!ids || ids->GetNumberOfComponents() != 1 || ids->GetNumberOfTuples() != grid->GetNumberOfCells())
+    throw InputError("'" + path + "': no cell_id array with one value per cell; not a mesh elements file");
+  FeMeshElementsFile out;
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) out.cell_id.push_back(static_cast<int>(ids->GetTuple1(c)));
+  out.arrays = detail::readWallArrays(data, grid->GetNumberOfCells(), "cell_id", path, "elements");
+  return out;
 }
 
 void writeWallFacetsVtu(const mesh::FeMesh& mesh, const std::string& path, const MeshFields& fields,

@@ -2,9 +2,14 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 #include "wall_array_data.hpp"
 
+#include <string>
+
 #include <vtkCellData.h>
+#include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkSmartPointer.h>
+
+#include "tessella/tissue/errors.hpp"
 
 namespace tessella::io::detail {
 
@@ -41,6 +46,36 @@ void addWallArrays(vtkCellData* data, const WallArrays& arrays, const std::vecto
     }
     data->AddArray(a);
   }
+}
+
+WallArrays readWallArrays(vtkCellData* data, vtkIdType cells, const std::string& skip, const std::string& path,
+                          const std::string& items) {
+  WallArrays out;
+  for (int k = 0; k < data->GetNumberOfArrays(); ++k) {
+    vtkDataArray* a = data->GetArray(k);
+    if (!a || !a->GetName() || std::string(a->GetName()) == skip) continue;
+    if (a->GetNumberOfTuples() != cells)
+      throw InputError("'" + path + "': array '" + a->GetName() + "' has " + std::to_string(a->GetNumberOfTuples()) +
+                       " values for " + std::to_string(cells) + " " + items);
+    if (a->GetNumberOfComponents() == 1) {
+      auto& v = out.scalars[a->GetName()];
+      for (vtkIdType c = 0; c < a->GetNumberOfTuples(); ++c) v.push_back(a->GetTuple1(c));
+    } else if (a->GetNumberOfComponents() == 3) {
+      auto& v = out.vectors[a->GetName()];
+      for (vtkIdType c = 0; c < a->GetNumberOfTuples(); ++c) {
+        const double* t = a->GetTuple3(c);
+        v.emplace_back(t[0], t[1], t[2]);
+      }
+    } else if (a->GetNumberOfComponents() == 6) {
+      auto& v = out.tensors[a->GetName()];
+      double t[6];
+      for (vtkIdType c = 0; c < a->GetNumberOfTuples(); ++c) {
+        a->GetTuple(c, t);
+        v.push_back(Sym3{{t[0], t[1], t[2], t[3], t[5], t[4]}});
+      }
+    }
+  }
+  return out;
 }
 
 }  // namespace tessella::io::detail

@@ -72,9 +72,13 @@ void writeWallsVtu(const Tissue& tissue, const std::string& path, const WallArra
   detail::writeGridFile(grid, path, options);
 }
 
-WallArrays wallPropertyArrays(const Tissue& tissue, const std::vector<std::string>& names) {
+namespace {
+
+// The columns of `store` named in `names` (double, Vec3 or Sym3), one value per id of `ids` in order.
+template <typename Ids>
+WallArrays propertyArrays(const PropertyStore& store, const Ids& ids, const std::vector<std::string>& names,
+                          const std::string& source, const std::string& kind) {
   WallArrays out;
-  const PropertyStore& store = tissue.wallProperties();
   for (const std::string& name : names) {
     const PropertyColumnBase* column = nullptr;
     for (std::size_t k = 0; k < store.numColumns() && !column; ++k)
@@ -84,21 +88,31 @@ WallArrays wallPropertyArrays(const Tissue& tissue, const std::vector<std::strin
     if (type == typeid(Vec3)) {
       auto& v = out.vectors[name];
       const auto& c = store.get<Vec3>(name);
-      for (WallId w : tissue.walls()) v.push_back(c[w]);
+      for (auto id : ids) v.push_back(c[id]);
     } else if (type == typeid(Sym3)) {
       auto& v = out.tensors[name];
       const auto& c = store.get<Sym3>(name);
-      for (WallId w : tissue.walls()) v.push_back(c[w]);
+      for (auto id : ids) v.push_back(c[id]);
     } else if (type == typeid(double)) {
       auto& v = out.scalars[name];
       const auto& c = store.get<double>(name);
-      for (WallId w : tissue.walls()) v.push_back(c[w]);
+      for (auto id : ids) v.push_back(c[id]);
     } else {
-      throw InputError("walls file: the wall property '" + name + "' is not a number, a vector or a symmetric "
-                       "tensor per wall");
+      throw InputError(source + ": the " + kind + " property '" + name +
+                       "' is not a number, a vector or a symmetric tensor per " + kind);
     }
   }
   return out;
+}
+
+}  // namespace
+
+WallArrays wallPropertyArrays(const Tissue& tissue, const std::vector<std::string>& names) {
+  return propertyArrays(tissue.wallProperties(), tissue.walls(), names, "walls file", "wall");
+}
+
+WallArrays cellPropertyArrays(const Tissue& tissue, const std::vector<std::string>& names) {
+  return propertyArrays(tissue.cellProperties(), tissue.cells(), names, "mesh series", "cell");
 }
 
 WallsFile readWallsVtu(const std::string& path) {
@@ -116,30 +130,7 @@ WallsFile readWallsVtu(const std::string& path) {
     grid->GetCellPoints(c, points);
     out.points_per_wall.push_back(static_cast<int>(points->GetNumberOfIds()));
   }
-  for (int k = 0; k < data->GetNumberOfArrays(); ++k) {
-    vtkDataArray* a = data->GetArray(k);
-    if (!a || !a->GetName() || std::string(a->GetName()) == "wall_id") continue;
-    if (a->GetNumberOfTuples() != grid->GetNumberOfCells())
-      throw InputError("'" + path + "': array '" + a->GetName() + "' has " + std::to_string(a->GetNumberOfTuples()) +
-                       " values for " + std::to_string(grid->GetNumberOfCells()) + " walls");
-    if (a->GetNumberOfComponents() == 1) {
-      auto& v = out.arrays.scalars[a->GetName()];
-      for (vtkIdType c = 0; c < a->GetNumberOfTuples(); ++c) v.push_back(a->GetTuple1(c));
-    } else if (a->GetNumberOfComponents() == 3) {
-      auto& v = out.arrays.vectors[a->GetName()];
-      for (vtkIdType c = 0; c < a->GetNumberOfTuples(); ++c) {
-        const double* t = a->GetTuple3(c);
-        v.emplace_back(t[0], t[1], t[2]);
-      }
-    } else if (a->GetNumberOfComponents() == 6) {
-      auto& v = out.arrays.tensors[a->GetName()];
-      double t[6];
-      for (vtkIdType c = 0; c < a->GetNumberOfTuples(); ++c) {
-        a->GetTuple(c, t);
-        v.push_back(Sym3{{t[0], t[1], t[2], t[3], t[5], t[4]}});
-      }
-    }
-  }
+  out.arrays = detail::readWallArrays(data, grid->GetNumberOfCells(), "wall_id", path, "walls");
   return out;
 }
 

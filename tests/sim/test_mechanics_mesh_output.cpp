@@ -3,7 +3,9 @@
 // The walls' mechanics in the mesh series (mesh.output): every wall facet of
 // mesh_walls_NNNNNN.vtu carries its wall's values, the very numbers of the
 // walls file beside the snapshot, and on a pressurised sphere the closed-form
-// membrane tension P r / 2 in the facet's plane.
+// membrane tension P r / 2 in the facet's plane. A curved sheet's membranes
+// are its cells: every element of mesh_NNNNNN.vtu carries its cell's values,
+// those of the tissue snapshot, and on a pressurised sphere sheet P r / 2.
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -19,10 +21,13 @@
 #include "tessella/io/wall_vtu.hpp"
 #include "tessella/mechanics/equilibrium.hpp"
 #include "tessella/mechanics/tissue_membranes.hpp"
+#include "tessella/mechanics/wall_state.hpp"
 #include "tessella/mechanics/wall_stress.hpp"
 #include "tessella/mesh/mesh_tissue.hpp"
 #include "tessella/sim/run/run.hpp"
+#include "tessella/sim/sections/mechanics_section.hpp"
 #include "tessella/sim/sections/simulation_config.hpp"
+#include "tessella/io/vtu.hpp"
 #include "tessella/tissue/builders.hpp"
 #include "test_support.hpp"
 
@@ -33,10 +38,17 @@ using tessella::sim::test::sourcePath;
 
 namespace {
 
-// A sphere of radius R as a 3D tissue of one cell whose walls are triangles (outward): the poles are vertices 0
-// (south) and 1 (north), then `rings` staggered rings of `around` points (ring 0 starts on the +x axis, vertex 2).
-Tissue sphereCell(double R, int rings, int around) {
-  std::vector<Vec3> points = {Vec3(0, 0, -R), Vec3(0, 0, R)};
+// A sphere of radius R as triangles (outward): the poles are vertices 0 (south) and 1 (north), then `rings`
+// staggered rings of `around` points (ring 0 starts on the +x axis, vertex 2).
+struct SphereTriangles {
+  std::vector<Vec3> points;
+  std::vector<std::vector<Index>> faces;
+};
+
+SphereTriangles sphereTriangles(double R, int rings, int around) {
+  SphereTriangles s;
+  std::vector<Vec3>& points = s.points;
+  points = {Vec3(0, 0, -R), Vec3(0, 0, R)};
   for (int k = 0; k < rings; ++k) {
     const double theta = std::numbers::pi * (k + 1) / (rings + 1), shift = 0.5 * (k % 2);
     for (int j = 0; j < around; ++j) {
@@ -46,7 +58,7 @@ Tissue sphereCell(double R, int rings, int around) {
     }
   }
   auto ring = [&](int k, int j) { return static_cast<Index>(2 + k * around + (j + around) % around); };
-  std::vector<std::vector<Index>> faces;
+  std::vector<std::vector<Index>>& faces = s.faces;
   for (int j = 0; j < around; ++j) faces.push_back({0, ring(0, j + 1), ring(0, j)});
   for (int k = 0; k + 1 < rings; ++k)
     for (int j = 0; j < around; ++j) {
@@ -59,9 +71,21 @@ Tissue sphereCell(double R, int rings, int around) {
       }
     }
   for (int j = 0; j < around; ++j) faces.push_back({1, ring(rings - 1, j), ring(rings - 1, j + 1)});
+  return s;
+}
+
+// The sphere as a 3D tissue of one cell whose walls are its triangles.
+Tissue sphereCell(double R, int rings, int around) {
+  const SphereTriangles s = sphereTriangles(R, rings, around);
   std::vector<std::vector<CellFace>> cells(1);
-  for (std::size_t f = 0; f < faces.size(); ++f) cells[0].push_back({static_cast<Index>(f), false});
-  return buildPolyhedralTissue(points, faces, cells);
+  for (std::size_t f = 0; f < s.faces.size(); ++f) cells[0].push_back({static_cast<Index>(f), false});
+  return buildPolyhedralTissue(s.points, s.faces, cells);
+}
+
+// The sphere as a closed curved sheet whose cells are its triangles (each cell a membrane).
+Tissue sphereSheet(double R, int rings, int around) {
+  const SphereTriangles s = sphereTriangles(R, rings, around);
+  return buildPolygonTissue(s.points, s.faces, Embedding::Surface);
 }
 
 // No rigid motion left, free to inflate: the north pole fixed, the south pole held in x and y, the first ring
@@ -218,4 +242,150 @@ TEST_CASE("mesh series: wall arrays that do not fit the mesh are errors naming t
   fields.walls.scalars["stress_max"].push_back(1.0);
   fields.walls.scalars["wall_id"] = fields.walls.scalars["stress_max"];
   CHECK_THROWS_WITH(io::checkFeMesh(m, fields), Contains("wall array name 'wall_id'"));
+}
+
+// A closed curved sheet's element: its triangle's unit normal.
+Vec3 elementNormal(const mesh::FeMesh& m, Eigen::Index e) {
+  const Vec3 a = m.nodes.row(m.elements(e, 0)).transpose(), b = m.nodes.row(m.elements(e, 1)).transpose(),
+             c = m.nodes.row(m.elements(e, 2)).transpose();
+  return (b - a).cross(c - a).normalized();
+}
+
+TEST_CASE("mesh series of a curved sheet's membranes run: each element carries its cell's values from the snapshot",
+          "[sim][mechanics][output][mesh]") {
+  namespace fs = std::filesystem;
+  ScratchDir dir;
+  const std::string out = (dir.path() / "run").string();
+  PreparedRun run = PreparedRun::prepare(
+      loadSimulationConfigFile(sourcePath("configs/turgor_dome_2p5d.yaml"),
+                               {"time.end=0.2", "output.every=1", "mesh.output=true"}),
+      RunOptions{out, false});
+  run.execute();
+  const auto meshes = io::readPvdFile((fs::path(out) / "mesh.pvd").string());
+  const auto snapshots = io::readPvdFile((fs::path(out) / "tissue.pvd").string());
+  REQUIRE(meshes.size() == 3);
+  REQUIRE(snapshots.size() == meshes.size());
+  const std::vector<std::string> names = MechanicsStage::sheetCellOutputNames();
+  for (std::size_t k = 0; k < meshes.size(); ++k) {
+    CAPTURE(k);
+    CHECK(meshes[k].time == snapshots[k].time);
+    const Tissue snapshot = io::readTissueVtu((fs::path(out) / snapshots[k].file).string());
+    REQUIRE(snapshot.embedding() == Embedding::Surface);
+    const io::FeMeshElementsFile elements = io::readFeMeshElementsVtu((fs::path(out) / meshes[k].file).string());
+    REQUIRE(elements.cell_id.size() > snapshot.numCells());  // several elements per cell
+    // Every cell column of the table the snapshot holds is on every element, value for value.
+    const PropertyStore& cells = snapshot.cellProperties();
+    std::size_t arrays = 0, nonzero = 0;
+    for (const std::string& name : names) {
+      CAPTURE(name);
+      if (!cells.has(name)) continue;
+      ++arrays;
+      for (std::size_t e = 0; e < elements.cell_id.size(); ++e) {
+        const CellId c(static_cast<Index>(elements.cell_id[e]));
+        REQUIRE(snapshot.alive(c));
+        if (elements.arrays.scalars.count(name)) {
+          REQUIRE(elements.arrays.scalars.at(name)[e] == cells.get<double>(name)[c]);
+          nonzero += elements.arrays.scalars.at(name)[e] != 0.0;
+        } else if (elements.arrays.vectors.count(name)) {
+          REQUIRE(elements.arrays.vectors.at(name)[e] == cells.get<Vec3>(name)[c]);
+        } else {
+          REQUIRE(elements.arrays.tensors.count(name));
+          REQUIRE(elements.arrays.tensors.at(name)[e].v == cells.get<Sym3>(name)[c].v);
+        }
+      }
+    }
+    // The sheet's cells hold the tension tensor, its principal values and direction, the strains' principal
+    // values, the growth rate and the turgor.
+    CHECK(arrays == 8);
+    CHECK(elements.arrays.tensors.count(mechanics::kWallStressName));
+    CHECK(elements.arrays.vectors.count(mechanics::kStressDirectionName));
+    CHECK(elements.arrays.scalars.count(mechanics::kTurgorPressureName));
+    // Nothing else but the arrays of the table (no stray columns such as young_scale).
+    CHECK(elements.arrays.scalars.size() + elements.arrays.vectors.size() + elements.arrays.tensors.size() == arrays);
+    if (k > 0) CHECK(nonzero > 3 * elements.cell_id.size());  // the step's values, not the zeros before it
+  }
+}
+
+// The sphere as a closed sheet of 11 rings, its cells the triangles, inflated by P: the exact St Venant-Kirchhoff
+// sphere as above, N = P r / 2 both ways. Every element of the mesh series carries its cell's tension: within
+// 2 % RMS (the same constant-tension triangles as the walls of the 3D sphere), directions unit and in the plane.
+TEST_CASE("mesh series: the elements of a pressurised sphere sheet carry the closed-form tension P r / 2",
+          "[sim][mechanics][output][mesh]") {
+  const double R = 1.0, P = 1.0, E = 1000.0, t = 0.01, nu = 0.3;
+  const double c = P * R * (1 - nu) / (t * E);
+  const double lambda = 0.5 * (c + std::sqrt(c * c + 4.0));
+  const double N = P * lambda * R / 2.0;
+  Tissue tissue = sphereSheet(R, 11, 24);
+  REQUIRE(tissue.embedding() == Embedding::Surface);
+  mechanics::MembraneGrowthParams params;
+  params.material = {.young = E, .poisson = nu, .thickness = t};
+  params.pressure = P;
+  mechanics::MembraneRestState state;
+  const mechanics::FanMembraneModel model = mechanics::buildTissueMembranes(tissue, params, state);
+  Eigen::VectorXd x = mechanics::spatialDofs(tissue);
+  mechanics::solveEquilibrium(model, x, sphereSupports(tissue), params.solver);
+  mechanics::setSpatialDofs(tissue, x);
+  mechanics::cellOutput(tissue, mechanics::kTurgorPressureName, P);
+  mechanics::writeMembraneCellStress(tissue, model, x);
+
+  ScratchDir dir;
+  io::MeshSeriesWriter writer(dir.path().string(), "mesh");
+  const mesh::FeMesh m = mesh::meshTissue(tissue);
+  io::MeshFields fields;
+  fields.cells = io::cellPropertyArrays(tissue, MechanicsStage::sheetCellOutputNames());
+  for (CellId cell : tissue.cells()) fields.cell_ids.push_back(static_cast<int>(cell.index()));
+  writer.write(m, 0.0, fields);
+  const io::FeMeshElementsFile f = io::readFeMeshElementsVtu((dir.path() / "mesh_000000.vtu").string());
+  REQUIRE(static_cast<Eigen::Index>(f.cell_id.size()) == m.numElements());
+  const auto& high = f.arrays.scalars.at(mechanics::kStressMaxName);
+  const auto& low = f.arrays.scalars.at(mechanics::kStressMinName);
+  const auto& dir_max = f.arrays.vectors.at(mechanics::kStressDirectionName);
+  const auto& tensor = f.arrays.tensors.at(mechanics::kWallStressName);
+  const auto& pressure = f.arrays.scalars.at(mechanics::kTurgorPressureName);
+  double sum = 0.0, weight = 0.0;
+  for (Eigen::Index k = 0; k < m.numElements(); ++k) {
+    const auto i = static_cast<std::size_t>(k);
+    CHECK(f.cell_id[i] == m.element_cell(k));
+    CHECK(pressure[i] == P);
+    const Vec3 a = m.nodes.row(m.elements(k, 0)).transpose(), b = m.nodes.row(m.elements(k, 1)).transpose(),
+               d = m.nodes.row(m.elements(k, 2)).transpose();
+    const double area = 0.5 * (b - a).cross(d - a).norm();
+    sum += area * (std::pow(high[i] / N - 1.0, 2) + std::pow(low[i] / N - 1.0, 2)) / 2.0;
+    weight += area;
+    // Each cell is one flat triangle, so is each of its elements: the tension lies in the element's plane.
+    const Vec3 n = elementNormal(m, k);
+    CHECK(dir_max[i].norm() == Approx(1.0).epsilon(1e-12));
+    CHECK(std::abs(dir_max[i].dot(n)) < 1e-8);
+    const Mat3 s = tensor[i].matrix();
+    CHECK(dir_max[i].dot(s * dir_max[i]) == Approx(high[i]).epsilon(1e-10));
+    CHECK(std::abs(n.dot(s * n)) < 1e-8 * N);
+  }
+  const double rms = std::sqrt(sum / weight);
+  CAPTURE(rms);
+  CHECK(rms < 0.02);
+}
+
+TEST_CASE("mesh series: cell arrays that do not fit the mesh are errors naming them", "[sim][output][mesh]") {
+  const Tissue tissue = sphereSheet(1.0, 3, 6);
+  const mesh::FeMesh m = mesh::meshTissue(tissue);
+  io::MeshFields fields;
+  for (CellId c : tissue.cells()) fields.cell_ids.push_back(static_cast<int>(c.index()));
+  fields.cells.scalars["stress_max"] = std::vector<double>(tissue.numCells() - 1, 1.0);
+  using Catch::Matchers::Contains;
+  CHECK_THROWS_WITH(io::checkFeMesh(m, fields),
+                    Contains("cell array 'stress_max' has " + std::to_string(tissue.numCells() - 1) + " values for " +
+                             std::to_string(tissue.numCells()) + " cells"));
+  fields.cells.scalars["stress_max"].push_back(1.0);
+  fields.cell_ids.pop_back();
+  fields.cells.scalars["stress_max"].pop_back();
+  const int last = static_cast<int>(tissue.numCells() - 1);
+  CHECK_THROWS_WITH(io::checkFeMesh(m, fields), Contains("lies on cell " + std::to_string(last) +
+                                                         ", which has no values in the cell arrays"));
+  fields.cell_ids.push_back(last);
+  fields.cells.scalars["stress_max"].push_back(1.0);
+  fields.cells.scalars["cell_id"] = fields.cells.scalars["stress_max"];
+  CHECK_THROWS_WITH(io::checkFeMesh(m, fields), Contains("cell array name 'cell_id'"));
+  fields.cells.scalars.erase("cell_id");
+  fields.element["stress_max"] = Eigen::VectorXd::Zero(m.numElements());
+  CHECK_THROWS_WITH(io::checkFeMesh(m, fields), Contains("cell array name 'stress_max'"));
 }

@@ -24,15 +24,20 @@ void MeshOutput::write(const Simulation& simulation) {
     geometry_ = tissue.geometryVersion();
     ++meshes_;
   }
-  // The stages' values per wall (a membranes run's tension, strain, fibre...) on each wall's facets.
+  // The stages' values per wall (a membranes run's tension, strain, fibre...) on each wall's facets, and
+  // per cell (a curved sheet's membranes are its cells) on each cell's elements.
   io::MeshFields fields;
+  auto merge = [](io::WallArrays& into, io::WallArrays a) {
+    into.scalars.merge(a.scalars);
+    into.vectors.merge(a.vectors);
+    into.tensors.merge(a.tensors);
+  };
   for (std::size_t i = 0; i < simulation.numStages(); ++i) {
-    io::WallArrays a = simulation.stage(i).meshWallArrays(tissue);
-    fields.walls.scalars.merge(a.scalars);
-    fields.walls.vectors.merge(a.vectors);
-    fields.walls.tensors.merge(a.tensors);
+    merge(fields.walls, simulation.stage(i).meshWallArrays(tissue));
+    merge(fields.cells, simulation.stage(i).meshCellArrays(tissue));
   }
   for (WallId w : tissue.walls()) fields.wall_ids.push_back(static_cast<int>(w.index()));
+  for (CellId c : tissue.cells()) fields.cell_ids.push_back(static_cast<int>(c.index()));
   writer_.write(*mesh_, simulation.time(), fields);
   last_written_step_ = simulation.stepsDone();
 }

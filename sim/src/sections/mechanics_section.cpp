@@ -194,6 +194,17 @@ io::WallArrays MechanicsStage::wallArrays(const Tissue& tissue) const {
   return a;
 }
 
+std::vector<std::string> MechanicsStage::sheetCellOutputNames() {
+  std::vector<std::string> names = mechanics::membraneWallOutputNames();
+  names.push_back(mechanics::kTurgorPressureName);
+  return names;
+}
+
+io::WallArrays MechanicsStage::meshCellArrays(const Tissue& tissue) const {
+  if (!spec_.membranes || tissue.dim() != 2 || tissue.embedding() != Embedding::Surface) return {};
+  return io::cellPropertyArrays(tissue, sheetCellOutputNames());
+}
+
 void MechanicsStage::saveState(const Tissue& tissue, const std::string& snapshot_path,
                                const io::VtuOptions& options, io::RunState& state) const {
   if (tissue.numWalls() > 0 && (!spec_.membranes || tissue.dim() == 3))

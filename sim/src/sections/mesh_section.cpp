@@ -68,7 +68,8 @@ void declareMeshSection(Schema& s) {
         "Write the mesh as a ParaView series DIR/mesh.pvd listing DIR/mesh_000000.vtu, ... beside the "
         "tissue series (cell and wall ids as data), and its wall facets as DIR/mesh_walls.pvd; with a `mechanics` "
         "section each wall facet also carries its wall's values of the walls file (tension, strain, fibre "
-        "direction...; docs/output.md). The mesh is rebuilt when the tissue changed.")
+        "direction...; docs/output.md), and on a curved sheet each element its cell's mechanics values. The mesh "
+        "is rebuilt when the tissue changed.")
       .byDefault(false);
   s.key("mesh.every", ValueType::Int,
         "With mesh.output: write a mesh every this many steps (the initial and final states always).")

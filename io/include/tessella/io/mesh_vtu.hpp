@@ -8,6 +8,7 @@
 //
 //   elements file     cells: VTK_TRIANGLE (dim 2) | VTK_TETRA (dim 3)
 //                     cell data  cell_id (Int32) + MeshFields::element
+//                                + MeshFields::cells (each element its tissue cell's values)
 //                     point data vertex_id (Int32, -1 for mesher nodes) + MeshFields::point
 //   wall facets file  cells: VTK_LINE (dim 2) | VTK_TRIANGLE (dim 3), same points
 //                     cell data  wall_id (Int32), on_boundary (UInt8) + MeshFields::facet
@@ -19,6 +20,7 @@
 #include <cstddef>
 #include <map>
 #include <string>
+#include <vector>
 
 #include <Eigen/Core>
 
@@ -40,19 +42,38 @@ struct MeshFields {
   /// gives the live walls in slot order).
   WallArrays walls{};
   std::vector<int> wall_ids{};
+  /// Values per tissue cell in the same encoding (io::cellPropertyArrays: a
+  /// curved sheet's membrane tensions, strains, pressure...), written on every
+  /// element of that cell (FeMesh::element_cell). Row i belongs to the cell
+  /// slot cell_ids[i].
+  WallArrays cells{};
+  std::vector<int> cell_ids{};
 };
 
 /// Checks the mesh's arrays agree (row widths, sizes, node indices in range)
 /// and the fields' sizes; InputError naming the array or field, its size and
 /// the expected one, a wall array with an empty or reserved name (wall_id,
 /// on_boundary, a facet field's), or a wall facet whose wall has no row in
-/// fields.walls. Called by both writers before anything is written.
+/// fields.walls; the same for a cell array (reserved: cell_id, an element
+/// field's) and an element whose cell has no row in fields.cells. Called by both writers before anything is written.
 void checkFeMesh(const mesh::FeMesh& mesh, const MeshFields& fields = {});
 
 void writeFeMeshVtu(const mesh::FeMesh& mesh, const std::string& path, const MeshFields& fields = {},
                     const VtuOptions& options = {});
 void writeWallFacetsVtu(const mesh::FeMesh& mesh, const std::string& path, const MeshFields& fields = {},
                         const VtuOptions& options = {});
+
+/// What an elements file holds besides its geometry: each element's cell_id
+/// and every other cell array (MeshFields::element fields and MeshFields::cells
+/// rows) as scalars, vectors or tensors, one value per element.
+struct FeMeshElementsFile {
+  std::vector<int> cell_id;
+  WallArrays arrays;
+};
+
+/// Reads the cell data of a file writeFeMeshVtu wrote (InputError naming the
+/// path when it is missing, damaged or has no cell_id array).
+FeMeshElementsFile readFeMeshElementsVtu(const std::string& path);
 
 /// Time series of meshes with the conventions of SeriesWriter: DIR/<name>.pvd
 /// lists DIR/<name>_000000.vtu, ... and DIR/<name>_walls.pvd lists

@@ -39,6 +39,11 @@ struct WallArrays {
 /// when it has another type.
 WallArrays wallPropertyArrays(const Tissue& tissue, const std::vector<std::string>& names);
 
+/// The same for the cell property columns of `tissue`: one value per live
+/// cell in slot order (the rows of MeshFields::cells; the encoding is the one
+/// of wall arrays).
+WallArrays cellPropertyArrays(const Tissue& tissue, const std::vector<std::string>& names);
+
 /// The file beside `snapshot_path` named with `tag`: <directory>/<stem>.<tag>.vtu.
 std::string besideSnapshotPath(const std::string& snapshot_path, const std::string& tag);
 

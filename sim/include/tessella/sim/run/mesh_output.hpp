@@ -5,7 +5,9 @@
 // tissue as a ParaView series beside the tissue series: DIR/mesh.pvd listing
 // DIR/mesh_NNNNNN.vtu (elements with cell_id) and DIR/mesh_walls.pvd (wall
 // facets with wall_id and the stages' values per wall, Stage::meshWallArrays:
-// a mechanics run's walls-file arrays on each wall's facets), on the schedule of SeriesOutput (initial state, every
+// a mechanics run's walls-file arrays on each wall's facets; the elements carry
+// the stages' values per cell, Stage::meshCellArrays: a curved sheet's membrane
+// outputs on each cell's elements), on the schedule of SeriesOutput (initial state, every
 // mesh.every steps, final state). The mesh is rebuilt only when the tissue's
 // topology or geometry version moved since the last mesh.
 

@@ -88,6 +88,15 @@ class MechanicsStage final : public Stage {
   io::WallArrays wallArrays(const Tissue& tissue) const;
   /// wallArrays(): the mesh series shows the walls file's values on each wall's facets.
   io::WallArrays meshWallArrays(const Tissue& tissue) const override { return wallArrays(tissue); }
+  /// A curved sheet's membranes are its cells: their outputs, the cell
+  /// columns named in mechanics::membraneWallOutputNames() (wall_stress,
+  /// stress_max, stress_min, stress_direction, strain_max, strain_min,
+  /// growth_rate) and turgor_pressure, for the mesh series' elements. Empty
+  /// for a 3D tissue (its membranes are its walls: meshWallArrays) and for
+  /// wall springs.
+  io::WallArrays meshCellArrays(const Tissue& tissue) const override;
+  /// The names meshCellArrays reads (those the cells have).
+  static std::vector<std::string> sheetCellOutputNames();
   /// The last step's report (Newton iterations, residuals, strains).
   const mechanics::TurgorStepReport& lastReport() const { return report_; }
   /// The last step's report of the membrane model.

@@ -82,6 +82,10 @@ class Stage {
   /// wall facet of each wall (mesh.output: <name>_walls_NNNNNN.vtu): the
   /// mechanics stage's walls-file arrays. Default: none.
   virtual io::WallArrays meshWallArrays(const Tissue& /*tissue*/) const { return {}; }
+  /// Values per live cell (slot order, io::cellPropertyArrays) that the mesh
+  /// series writes on every element of each cell (mesh.output:
+  /// <name>_NNNNNN.vtu): a curved sheet's membrane outputs. Default: none.
+  virtual io::WallArrays meshCellArrays(const Tissue& /*tissue*/) const { return {}; }
 };
 
 }  // namespace tessella::sim
