@@ -498,6 +498,66 @@ std::vector<double> cellRestAreas(const Tissue& tissue, const FanMembraneModel& 
   return a;
 }
 
+// The columns of membraneWallOutputNames() in a property store (a 3D tissue's
+// walls, a sheet's cells), added when missing (zero, policy Copy), and one
+// polygon's values written into a slot of them; the growth rate is written
+// after the growth update.
+void addPolygonOutputs(PropertyStore& store) {
+  for (const char* name : {kWallStressName, kGreenStrainName})
+    if (!store.has(name)) store.add<Sym3>(name, Sym3{}, DivisionPolicy::Copy);
+  for (const char* name : {kStressDirectionName, kStressMinDirectionName, kStrainDirectionName,
+                           kStrainMinDirectionName, kFibreDirectionName})
+    if (!store.has(name)) store.add<Vec3>(name, Vec3::Zero(), DivisionPolicy::Copy);
+  for (const char* name : {kStressMaxName, kStressMinName, kStrainMaxName, kStrainMinName, kRestAreaName,
+                           kGrowthRateName, kPressureLoadName})
+    if (!store.has(name)) store.add<double>(name, 0.0, DivisionPolicy::Copy);
+}
+
+class PolygonOutputs {
+ public:
+  explicit PolygonOutputs(PropertyStore& store)
+      : stress_((addPolygonOutputs(store), store.get<Sym3>(kWallStressName))),
+        strain_(store.get<Sym3>(kGreenStrainName)),
+        stress_max_(store.get<double>(kStressMaxName)),
+        stress_min_(store.get<double>(kStressMinName)),
+        strain_max_(store.get<double>(kStrainMaxName)),
+        strain_min_(store.get<double>(kStrainMinName)),
+        rest_area_(store.get<double>(kRestAreaName)),
+        load_(store.get<double>(kPressureLoadName)),
+        stress_dir_(store.get<Vec3>(kStressDirectionName)),
+        stress_min_dir_(store.get<Vec3>(kStressMinDirectionName)),
+        strain_dir_(store.get<Vec3>(kStrainDirectionName)),
+        strain_min_dir_(store.get<Vec3>(kStrainMinDirectionName)),
+        fibre_(store.get<Vec3>(kFibreDirectionName)) {}
+
+  void write(std::size_t slot, const FanMembraneModel& model, const Eigen::VectorXd& x, std::size_t i) {
+    Vec3 n;
+    const Eigen::Matrix3d t = model.meanTension(x, i, &n);
+    const Eigen::Matrix3d e = model.meanStrain(x, i);
+    const Principal pt = inPlane(t, n), pe = inPlane(e, n);
+    stress_[slot] = Sym3::fromMatrix(t);
+    strain_[slot] = Sym3::fromMatrix(e);
+    stress_max_[slot] = pt.high;
+    stress_min_[slot] = pt.low;
+    stress_dir_[slot] = pt.direction;
+    stress_min_dir_[slot] = n.cross(pt.direction);
+    strain_max_[slot] = pe.high;
+    strain_min_[slot] = pe.low;
+    strain_dir_[slot] = pe.direction;
+    strain_min_dir_[slot] = n.cross(pe.direction);
+    const Vec3& g = model.polygon(i).fibre;  // zero: none (the first edge of each triangle)
+    const Vec3 f = g - g.dot(n) * n;
+    fibre_[slot] = f.norm() > 1e-12 * g.norm() ? Vec3(f.normalized()) : Vec3::Zero();
+    rest_area_[slot] = model.restArea(i);
+    load_[slot] = std::abs(model.polygon(i).pressure);
+  }
+
+ private:
+  PropertyColumn<Sym3>&stress_, &strain_;
+  PropertyColumn<double>&stress_max_, &stress_min_, &strain_max_, &strain_min_, &rest_area_, &load_;
+  PropertyColumn<Vec3>&stress_dir_, &stress_min_dir_, &strain_dir_, &strain_min_dir_, &fibre_;
+};
+
 }  // namespace
 
 void writeMembraneCellStress(Tissue& tissue, const FanMembraneModel& model, const Eigen::VectorXd& x) {
@@ -519,12 +579,9 @@ void writeMembraneCellStress(Tissue& tissue, const FanMembraneModel& model, cons
     strain_max[c] = e.high;
     strain_min[c] = e.low;
   };
-  if (tissue.dim() == 2) {
-    for (std::size_t i = 0; i < faces.size(); ++i) {
-      Vec3 n;
-      const Eigen::Matrix3d tension = model.meanTension(x, i, &n);
-      write(CellId(faces[i].index()), tension, inPlane(tension, n), inPlane(model.meanStrain(x, i), n));
-    }
+  if (tissue.dim() == 2) {  // a sheet's membranes are its cells: each gets what a 3D wall gets
+    PolygonOutputs outputs(cells);
+    for (std::size_t i = 0; i < faces.size(); ++i) outputs.write(faces[i].index(), model, x, i);
     return;
   }
   std::vector<Eigen::Matrix3d> tension(faces.size()), strain(faces.size());
@@ -559,16 +616,8 @@ const std::vector<std::string>& membraneWallOutputNames() {
   return names;
 }
 
-void prepareMembraneWallOutputs(Tissue& tissue) {
-  PropertyStore& walls = tissue.wallProperties();
-  for (const char* name : {kWallStressName, kGreenStrainName})
-    if (!walls.has(name)) walls.add<Sym3>(name, Sym3{}, DivisionPolicy::Copy);
-  for (const char* name : {kStressDirectionName, kStressMinDirectionName, kStrainDirectionName,
-                           kStrainMinDirectionName, kFibreDirectionName})
-    if (!walls.has(name)) walls.add<Vec3>(name, Vec3::Zero(), DivisionPolicy::Copy);
-  for (const char* name : {kStressMaxName, kStressMinName, kStrainMaxName, kStrainMinName, kRestAreaName,
-                           kGrowthRateName, kPressureLoadName})
-    wallOutput(tissue, name);
+void prepareMembranePolygonOutputs(Tissue& tissue) {
+  addPolygonOutputs(tissue.dim() == 3 ? tissue.wallProperties() : tissue.cellProperties());
 }
 
 void writeMembraneWallOutputs(Tissue& tissue, const FanMembraneModel& model, const Eigen::VectorXd& x) {
@@ -579,45 +628,8 @@ void writeMembraneWallOutputs(Tissue& tissue, const FanMembraneModel& model, con
   if (model.numPolygons() < faces.size())
     throw MechanicsError("mechanics: the membrane model has " + std::to_string(model.numPolygons()) +
                          " polygons for " + std::to_string(faces.size()) + " walls");
-  prepareMembraneWallOutputs(tissue);
-  PropertyStore& walls = tissue.wallProperties();
-  auto tensor = [&](const char* name) -> PropertyColumn<Sym3>& { return walls.get<Sym3>(name); };
-  auto vector = [&](const char* name) -> PropertyColumn<Vec3>& { return walls.get<Vec3>(name); };
-  auto& stress = tensor(kWallStressName);
-  auto& strain = tensor(kGreenStrainName);
-  auto& stress_max = wallOutput(tissue, kStressMaxName);
-  auto& stress_min = wallOutput(tissue, kStressMinName);
-  auto& strain_max = wallOutput(tissue, kStrainMaxName);
-  auto& strain_min = wallOutput(tissue, kStrainMinName);
-  auto& stress_dir = vector(kStressDirectionName);
-  auto& stress_min_dir = vector(kStressMinDirectionName);
-  auto& strain_dir = vector(kStrainDirectionName);
-  auto& strain_min_dir = vector(kStrainMinDirectionName);
-  auto& fibre = vector(kFibreDirectionName);
-  auto& rest_area = wallOutput(tissue, kRestAreaName);
-  auto& load = wallOutput(tissue, kPressureLoadName);
-  for (std::size_t i = 0; i < faces.size(); ++i) {
-    const WallId w(faces[i].index());
-    Vec3 n;
-    const Eigen::Matrix3d t = model.meanTension(x, i, &n);
-    const Eigen::Matrix3d e = model.meanStrain(x, i);
-    const Principal pt = inPlane(t, n), pe = inPlane(e, n);
-    stress[w] = Sym3::fromMatrix(t);
-    strain[w] = Sym3::fromMatrix(e);
-    stress_max[w] = pt.high;
-    stress_min[w] = pt.low;
-    stress_dir[w] = pt.direction;
-    stress_min_dir[w] = n.cross(pt.direction);
-    strain_max[w] = pe.high;
-    strain_min[w] = pe.low;
-    strain_dir[w] = pe.direction;
-    strain_min_dir[w] = n.cross(pe.direction);
-    const Vec3& g = model.polygon(i).fibre;  // zero: none (the first edge of each triangle)
-    const Vec3 f = g - g.dot(n) * n;
-    fibre[w] = f.norm() > 1e-12 * g.norm() ? Vec3(f.normalized()) : Vec3::Zero();
-    rest_area[w] = model.restArea(i);
-    load[w] = std::abs(model.polygon(i).pressure);
-  }
+  PolygonOutputs outputs(tissue.wallProperties());
+  for (std::size_t i = 0; i < faces.size(); ++i) outputs.write(faces[i].index(), model, x, i);
 }
 
 MembraneStepReport membraneGrowthStep(Tissue& tissue, const MembraneGrowthParams& params, MembraneRestState& state,

@@ -294,11 +294,13 @@ TEST_CASE("mesh series of a curved sheet's membranes run: each element carries i
         }
       }
     }
-    // The sheet's cells hold the tension tensor, its principal values and direction, the strains' principal
-    // values, the growth rate and the turgor.
-    CHECK(arrays == 8);
+    // The sheet's cells hold what a 3D wall holds (tension and Green strain tensors, their principal values and
+    // directions, the fibre direction, rest area, growth rate and pressure load) and the turgor.
+    CHECK(arrays == names.size());
     CHECK(elements.arrays.tensors.count(mechanics::kWallStressName));
+    CHECK(elements.arrays.tensors.count(mechanics::kGreenStrainName));
     CHECK(elements.arrays.vectors.count(mechanics::kStressDirectionName));
+    CHECK(elements.arrays.vectors.count(mechanics::kFibreDirectionName));
     CHECK(elements.arrays.scalars.count(mechanics::kTurgorPressureName));
     // Nothing else but the arrays of the table (no stray columns such as young_scale).
     CHECK(elements.arrays.scalars.size() + elements.arrays.vectors.size() + elements.arrays.tensors.size() == arrays);

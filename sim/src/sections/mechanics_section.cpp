@@ -102,7 +102,7 @@ void MechanicsStage::prepare(Tissue& tissue, double /*time*/) {
       cells.add<Sym3>(mechanics::kWallStressName, Sym3{}, DivisionPolicy::Copy);
     if (!cells.has(mechanics::kStressDirectionName))
       cells.add<Vec3>(mechanics::kStressDirectionName, Vec3::Zero(), DivisionPolicy::Copy);
-    if (tissue.dim() == 3) mechanics::prepareMembraneWallOutputs(tissue);  // zero until the first equilibrium
+    mechanics::prepareMembranePolygonOutputs(tissue);  // zero until the first equilibrium
     if (!spec_.soft_center) {
       Vec3 sum = Vec3::Zero();
       for (VertexId v : tissue.vertices()) sum += tissue.position(v);

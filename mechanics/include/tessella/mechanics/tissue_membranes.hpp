@@ -180,11 +180,13 @@ FanMembraneModel buildTissueMembranes(Tissue& tissue, const MembraneGrowthParams
 std::vector<double> membraneCellVolumes(const Tissue& tissue, const FanMembraneModel& model, const Eigen::VectorXd& x);
 
 /// The per-cell outputs of the membranes at x (docs/mechanics.md, "Membrane
-/// outputs"): a sheet's cell its fan's, a 3D cell the mean over its walls'
-/// fans weighted by their current areas, of the mean tension (wall_stress;
-/// stress_max, stress_min, stress_direction: in-plane principal values for a
-/// sheet, the largest and smallest nonzero ones in 3D) and of the mean Green
-/// strain (strain_max, strain_min). Columns added with policy Copy when missing.
+/// outputs"). A sheet's cell is a membrane: it gets its fan's values of every
+/// column of membraneWallOutputNames() but the growth rate (written after the
+/// growth update), as a 3D wall does. A 3D cell gets the mean over its walls'
+/// fans weighted by their current areas of the mean tension (wall_stress;
+/// stress_max, stress_min, stress_direction: the largest and smallest nonzero
+/// principal values) and of the mean Green strain (strain_max, strain_min).
+/// Columns added with policy Copy when missing.
 void writeMembraneCellStress(Tissue& tissue, const FanMembraneModel& model, const Eigen::VectorXd& x);
 
 /// The wall properties membraneGrowthStep writes on a 3D tissue's walls, in
@@ -192,8 +194,10 @@ void writeMembraneCellStress(Tissue& tissue, const FanMembraneModel& model, cons
 const std::vector<std::string>& membraneWallOutputNames();
 
 /// Adds the columns of membraneWallOutputNames() (zero, policy Copy) that the
-/// tissue's walls do not have yet: what a walls file shows before the first step.
-void prepareMembraneWallOutputs(Tissue& tissue);
+/// membranes do not have yet: a 3D tissue's walls (what a walls file shows
+/// before the first step) or a sheet's cells (writeMembraneCellStress fills
+/// them for a sheet).
+void prepareMembranePolygonOutputs(Tissue& tissue);
 
 /// The per-wall outputs of a 3D tissue's membranes at x (each wall polygon's
 /// own, docs/mechanics.md "Membrane outputs per wall"): the mean tension
