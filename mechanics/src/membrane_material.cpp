@@ -93,6 +93,29 @@ MembraneElementLaw MembraneElementLaw::of(const MembraneMaterial& material, doub
 
 namespace {
 
+// The in-plane Green strain E (Voigt: E11, E22, 2 E12) of both neo-Hookean
+// laws, its invariants and delta = det C - 1 = 2 tr E + 4 det E, from the
+// strain so that nothing cancels at small strains.
+struct StrainInvariants {
+  explicit StrainInvariants(const Eigen::Vector3d& eps)
+      : e11(eps(0)), e22(eps(1)), e12(0.5 * eps(2)), tr(e11 + e22), det(e11 * e22 - e12 * e12),
+        delta(2.0 * tr + 4.0 * det), J2(1.0 + delta) {}
+  double e11, e22, e12, tr, det, delta;
+  double J2;  // det C
+};
+
+// An inverted or collapsed element (det C <= 0): infinite energy, no stress.
+MembraneResponse inverted(bool tangent) {
+  MembraneResponse r;
+  r.energy = std::numeric_limits<double>::infinity();
+  r.stress.setConstant(std::numeric_limits<double>::quiet_NaN());
+  if (tangent) r.tangent.setConstant(std::numeric_limits<double>::quiet_NaN());
+  return r;
+}
+
+// Voigt index I -> the tensor index pair (i, j) of the tangents.
+constexpr int kVoigtPairs[3][2] = {{0, 0}, {1, 1}, {0, 1}};
+
 // delta - log(1 + delta), without the cancellation of the two at small delta (series below |delta| = 0.1,
 // truncated where its terms fall below 1e-17 of the sum).
 double deltaMinusLog1p(double delta) {
@@ -112,16 +135,9 @@ MembraneResponse compressibleNeoHookean(double mu, double lambda, double kappa, 
   //   S = mu (I - C^-1) + lambda ln J C^-1 + kappa E11 e1 e1,   I - C^-1 = 2 C^-1 E (no cancellation),
   //   dS/dE = lambda C^-1 (x) C^-1 + 2 (mu - lambda ln J) Isym(C^-1) + kappa e1 e1 e1 e1.
   MembraneResponse r;
-  const double e11 = eps(0), e22 = eps(1), e12 = 0.5 * eps(2);
-  const double tr = e11 + e22, det = e11 * e22 - e12 * e12;
-  const double delta = 2.0 * tr + 4.0 * det;
-  const double J2 = 1.0 + delta;  // det C
-  if (!(J2 > 0.0)) {
-    r.energy = std::numeric_limits<double>::infinity();
-    r.stress.setConstant(std::numeric_limits<double>::quiet_NaN());
-    if (tangent) r.tangent.setConstant(std::numeric_limits<double>::quiet_NaN());
-    return r;
-  }
+  const StrainInvariants v(eps);
+  if (!(v.J2 > 0.0)) return inverted(tangent);
+  const double e11 = v.e11, e22 = v.e22, e12 = v.e12, det = v.det, delta = v.delta, J2 = v.J2;
   const double log_j = 0.5 * std::log1p(delta);
   r.energy = 0.5 * mu * (deltaMinusLog1p(delta) - 4.0 * det) + 0.5 * lambda * log_j * log_j + 0.5 * kappa * e11 * e11;
   Eigen::Matrix2d C, E;
@@ -134,11 +150,10 @@ MembraneResponse compressibleNeoHookean(double mu, double lambda, double kappa, 
   const Eigen::Matrix2d s = 2.0 * mu * Ci * E + lambda * log_j * Ci;
   r.stress = Eigen::Vector3d(s(0, 0) + kappa * e11, s(1, 1), 0.5 * (s(0, 1) + s(1, 0)));
   if (!tangent) return r;
-  static constexpr int pairs[3][2] = {{0, 0}, {1, 1}, {0, 1}};
   const double f = 2.0 * (mu - lambda * log_j);
   for (int I = 0; I < 3; ++I)
     for (int K = 0; K < 3; ++K) {
-      const int i = pairs[I][0], j = pairs[I][1], k = pairs[K][0], l = pairs[K][1];
+      const int i = kVoigtPairs[I][0], j = kVoigtPairs[I][1], k = kVoigtPairs[K][0], l = kVoigtPairs[K][1];
       r.tangent(I, K) = lambda * Ci(i, j) * Ci(k, l) + f * 0.5 * (Ci(i, k) * Ci(j, l) + Ci(i, l) * Ci(j, k));
     }
   r.tangent(0, 0) += kappa;
@@ -162,16 +177,9 @@ MembraneResponse MembraneElementLaw::at(const Eigen::Matrix<double, 3, 2>& F, bo
   //   W = mu (2 tr^2 + 4 tr det - 2 det) / det C + kappa / 2 E11^2,
   //   S = mu (I - adj(C) / det C^2) + kappa E11 e1 e1,
   //   I - adj(C) / det C^2 = [[2 delta + delta^2 - 2 E22, 2 E12], [2 E12, 2 delta + delta^2 - 2 E11]] / det C^2.
-  const double e11 = eps(0), e22 = eps(1), e12 = 0.5 * eps(2);
-  const double tr = e11 + e22, det = e11 * e22 - e12 * e12;
-  const double delta = 2.0 * tr + 4.0 * det;
-  const double J2 = 1.0 + delta;  // det C
-  if (!(J2 > 0.0)) {
-    r.energy = std::numeric_limits<double>::infinity();
-    r.stress.setConstant(std::numeric_limits<double>::quiet_NaN());
-    if (tangent) r.tangent.setConstant(std::numeric_limits<double>::quiet_NaN());
-    return r;
-  }
+  const StrainInvariants v(eps);
+  if (!(v.J2 > 0.0)) return inverted(tangent);
+  const double e11 = v.e11, e22 = v.e22, e12 = v.e12, tr = v.tr, det = v.det, delta = v.delta, J2 = v.J2;
   const double common = 2.0 * delta + delta * delta;
   r.energy = mu * (2.0 * tr * tr + 4.0 * tr * det - 2.0 * det) / J2 + 0.5 * kappa * e11 * e11;
   r.stress = Eigen::Vector3d(mu * (common - 2.0 * e22), mu * (common - 2.0 * e11), mu * 2.0 * e12) / (J2 * J2);
@@ -181,11 +189,10 @@ MembraneResponse MembraneElementLaw::at(const Eigen::Matrix<double, 3, 2>& F, bo
   Eigen::Matrix2d C;
   C << 1.0 + 2.0 * e11, 2.0 * e12, 2.0 * e12, 1.0 + 2.0 * e22;
   const Eigen::Matrix2d Ci = C.inverse();
-  static constexpr int pairs[3][2] = {{0, 0}, {1, 1}, {0, 1}};
   const double f = 2.0 * mu / J2;
   for (int I = 0; I < 3; ++I)
     for (int K = 0; K < 3; ++K) {
-      const int i = pairs[I][0], j = pairs[I][1], k = pairs[K][0], l = pairs[K][1];
+      const int i = kVoigtPairs[I][0], j = kVoigtPairs[I][1], k = kVoigtPairs[K][0], l = kVoigtPairs[K][1];
       r.tangent(I, K) = f * (0.5 * (Ci(i, k) * Ci(j, l) + Ci(i, l) * Ci(j, k)) + Ci(i, j) * Ci(k, l));
     }
   r.tangent(0, 0) += kappa;
