@@ -17,45 +17,15 @@ namespace tessella::detail {
 // Reused memory of closedOrientedSurface, so that a caller checking many
 // surfaces allocates once.
 struct ClosedSurfaceScratch {
-  std::vector<std::uint64_t> table;          // edge + 1 (high 32 bits), uses forward / backward (low bits)
+  std::vector<std::uint64_t> table;          // edge + 1 (high 32 bits), uses backward / forward (16 bits each)
+  std::vector<std::uint32_t> touched;        // the slots in use
   std::vector<std::pair<Index, int>> uses;   // the sorted uses when a surface fails
 };
 
-// An oriented surface is closed and consistently oriented when every edge is
-// traversed exactly once in each direction by its faces' loops.
-// The uses are counted in a small open-addressing table keyed by edge (linear
-// in the number of uses); only a failing surface is sorted, to name its lowest
-// bad edge.
+// The lowest edge not used exactly once in each direction, from the sorted
+// uses (or kInvalidIndex).
 template <typename LoopOf>
-inline bool closedOrientedSurface(std::span<const OrientedFace> faces, LoopOf loopOf, Index* bad_edge,
-                                  ClosedSurfaceScratch* scratch = nullptr) {
-  ClosedSurfaceScratch own;
-  ClosedSurfaceScratch& s = scratch ? *scratch : own;
-  std::size_t count = 0;
-  for (OrientedFace of : faces) count += loopOf(of.handle()).size();
-  std::size_t size = 16;  // each edge is used twice: at most half full
-  while (size < count) size *= 2;
-  if (s.table.size() < size) s.table.assign(size, 0);
-  const std::size_t mask = size - 1;
-  // Per slot: forward uses in bits 0-1, backward uses in bits 2-3 (saturating at 2).
-  for (OrientedFace of : faces) {
-    for (OrientedEdge oe : loopOf(of.handle())) {
-      const std::uint64_t key = static_cast<std::uint64_t>(oe.handle().index()) + 1;
-      const int shift = oe.reversed() == of.reversed() ? 0 : 2;
-      std::size_t i = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 40) & mask;
-      while (s.table[i] != 0 && (s.table[i] >> 32) != key) i = (i + 1) & mask;
-      std::uint64_t& slot = s.table[i];
-      if (slot == 0) slot = key << 32;
-      if (((slot >> shift) & 3u) < 2) slot += std::uint64_t{1} << shift;
-    }
-  }
-  bool closed = true;
-  for (std::size_t i = 0; i < size; ++i) {  // clears the table for the next call (branch-free)
-    const std::uint64_t slot = s.table[i];
-    closed &= slot == 0 || (slot & 15u) == 5u;
-    s.table[i] = 0;
-  }
-  if (closed || !bad_edge) return closed;
+inline Index firstBadEdge(std::span<const OrientedFace> faces, LoopOf loopOf, ClosedSurfaceScratch& s) {
   std::vector<std::pair<Index, int>>& uses = s.uses;  // (edge, +1 forward / -1 backward)
   uses.clear();
   for (OrientedFace of : faces) {
@@ -72,13 +42,58 @@ inline bool closedOrientedSurface(std::span<const OrientedFace> faces, LoopOf lo
       (uses[j].second > 0 ? fwd : bwd)++;
       ++j;
     }
-    if (fwd != 1 || bwd != 1) {
-      *bad_edge = uses[i].first;
-      return false;
-    }
+    if (fwd != 1 || bwd != 1) return uses[i].first;
     i = j;
   }
-  return false;  // (not reached: the table found a bad edge)
+  return kInvalidIndex;
+}
+
+// An oriented surface is closed and consistently oriented when every edge is
+// traversed exactly once in each direction by its faces' loops.
+// The uses are counted in a small open-addressing table keyed by edge (linear
+// in the number of uses; at most a quarter full, and updated without a branch
+// on whether an edge was seen before); only a failing surface is sorted, to
+// name its lowest bad edge. (A surface of 2^16 uses or more, whose counts
+// could overflow, is sorted too.)
+template <typename LoopOf>
+inline bool closedOrientedSurface(std::span<const OrientedFace> faces, LoopOf loopOf, Index* bad_edge,
+                                  ClosedSurfaceScratch* scratch = nullptr) {
+  ClosedSurfaceScratch own;
+  ClosedSurfaceScratch& s = scratch ? *scratch : own;
+  std::size_t count = 0;
+  for (OrientedFace of : faces) count += loopOf(of.handle()).size();
+  if (count >= (std::size_t{1} << 16)) {
+    const Index bad = firstBadEdge(faces, loopOf, s);
+    if (bad_edge && bad != kInvalidIndex) *bad_edge = bad;
+    return bad == kInvalidIndex;
+  }
+  std::size_t size = 32;  // each edge is used twice: at most a quarter full
+  while (size < 2 * count) size *= 2;
+  if (s.table.size() < size) s.table.assign(size, 0);
+  if (s.touched.size() < count) s.touched.resize(count);
+  const std::size_t mask = size - 1;
+  std::size_t used = 0;
+  for (OrientedFace of : faces) {
+    for (OrientedEdge oe : loopOf(of.handle())) {
+      const std::uint64_t key = static_cast<std::uint64_t>(oe.handle().index()) + 1;
+      const int shift = oe.reversed() == of.reversed() ? 0 : 16;
+      std::size_t i = static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 40) & mask;
+      std::uint64_t slot;
+      while ((slot = s.table[i]) != 0 && (slot >> 32) != key) i = (i + 1) & mask;
+      s.touched[used] = static_cast<std::uint32_t>(i);
+      used += slot == 0;
+      s.table[i] = (key << 32) | ((slot & 0xffffffffu) + (std::uint64_t{1} << shift));
+    }
+  }
+  bool closed = true;
+  for (std::size_t k = 0; k < used; ++k) {  // clears the table for the next call
+    std::uint64_t& slot = s.table[s.touched[k]];
+    closed &= (slot & 0xffffffffu) == 0x10001u;
+    slot = 0;
+  }
+  if (closed || !bad_edge) return closed;
+  *bad_edge = firstBadEdge(faces, loopOf, s);
+  return false;
 }
 
 }  // namespace tessella::detail
