@@ -37,6 +37,7 @@
 #pragma GCC diagnostic pop
 
 #include <Eigen/Dense>
+#include <omp.h>
 
 #include "tessella/generators/voronoi.hpp"
 #include "tessella/tissue/builders.hpp"
@@ -154,12 +155,16 @@ Delaunay triangulate(std::span<const Vec3> seeds) {
   return x;
 }
 
-// One wall of a cell before numbering: its label (neighbour seed or domain
-// face) and its vertex keys, counter-clockwise seen from outside the cell.
-struct CellWalls {
+// The walls of many cells before numbering, cell after cell (one store per
+// thread, no allocation per cell): wall w has a label (neighbour seed or
+// domain face) and the vertex keys keys[starts[w] .. starts[w + 1]),
+// counter-clockwise seen from outside its cell. A boundary cell's clipped
+// vertices wait in `points` until welded (its walls number them locally).
+struct WallStore {
   std::vector<int> labels;
   std::vector<Index> starts{0};
   std::vector<Index> keys;
+  std::vector<Vec3> points;
   void add(int label, std::vector<Index>& loop) {
     while (loop.size() > 1 && loop.back() == loop.front()) loop.pop_back();
     if (loop.size() < 3) return;  // a wall welded to nothing (cospherical seeds)
@@ -167,6 +172,32 @@ struct CellWalls {
     keys.insert(keys.end(), loop.begin(), loop.end());
     starts.push_back(static_cast<Index>(keys.size()));
   }
+  std::size_t size() const { return labels.size(); }
+  // Drops the walls from `walls` on (a cell's walls that are not kept).
+  void truncate(std::size_t walls) {
+    labels.resize(walls);
+    keys.resize(starts[walls]);
+    starts.resize(walls + 1);
+  }
+};
+
+// Where a cell's walls are: `count` walls from wall `first` of store `store`;
+// a boundary cell before welding also has points [first_point, +num_points).
+struct CellWallsRef {
+  Index store = 0, first = 0, count = 0, first_point = 0, num_points = 0;
+};
+
+// A cell's walls read through its CellWallsRef.
+struct CellWalls {
+  std::span<const int> labels;
+  const Index* starts = nullptr;  // wall f: keys[starts[f] .. starts[f + 1])
+  const Index* keys = nullptr;
+  CellWalls(const std::vector<WallStore>& stores, const CellWallsRef& r)
+      : labels(stores[r.store].labels.data() + r.first, r.count),
+        starts(stores[r.store].starts.data() + r.first),
+        keys(stores[r.store].keys.data()) {}
+  std::size_t size() const { return labels.size(); }
+  std::span<const Index> loop(std::size_t f) const { return {keys + starts[f], starts[f + 1] - starts[f]}; }
 };
 
 bool reverseOf(std::span<const Index> a, std::span<const Index> b) {
@@ -336,10 +367,12 @@ void groupCloseCircumcentres(const Tetrahedra& tets, double weld, DualVertices3&
 
 // What reading the cells found, per seed.
 struct CellReadout3 {
-  std::vector<CellWalls> walls;  // complex output only
-  // Boundary cells: clipped vertices (canonical positions) their walls number
-  // locally, welded (sequentially) by weldBoundaryCells.
-  std::vector<std::vector<Vec3>> clipped_points;
+  // Complex output only: the walls, in one store per thread (and the last
+  // for the welded boundary cells). Boundary cells first list clipped
+  // vertices (canonical positions) their walls number locally, welded
+  // (sequentially) by weldBoundaryCells.
+  std::vector<WallStore> stores;
+  std::vector<CellWallsRef> walls;
   std::vector<std::uint8_t> is_boundary;
   std::vector<std::string> errors;
   std::vector<Index> duplicate;  // the lowest seed closer than the duplicate distance (by rank)
@@ -369,7 +402,8 @@ struct CellReader3 {
     std::vector<std::pair<Index, Index>> pairs;  // (neighbour, the lowest cell around the edge to it)
     std::vector<std::pair<double, Index>> by_distance;  // (squared distance, neighbour): clipping order
     std::vector<Index> seen_by;                  // the last cell that listed rank j (never cleared)
-    CellWalls local;
+    WallStore* store = nullptr;                  // this thread's (complex output), else `local`
+    WallStore local;
   };
 
   // The seed's Delaunay neighbours (sorted) into s.nbrs, with one cell around
@@ -441,10 +475,8 @@ struct CellReader3 {
   // the cones of its walls' fans to the seed.
   void readInterior(Index i, Scratch& s) const {
     const Vec3& seed = seeds[i];
-    CellWalls& local = s.local;
-    local.labels.clear();
-    local.starts.assign(1, 0);
-    local.keys.clear();
+    WallStore& local = s.store ? *s.store : s.local;
+    const std::size_t first = local.size();
     double v6 = 0;
     Vec3 moment = Vec3::Zero();
     for (std::size_t q = 0; q < s.nbrs.size(); ++q) {
@@ -463,12 +495,21 @@ struct CellReader3 {
         moment += d * (q0 + q1 + q2) / 4;
       }
     }
-    if (local.labels.size() < 4 || !(v6 > 0)) {
+    const std::size_t count = local.size() - first;
+    if (count < 4 || !(v6 > 0)) {
       readout.errors[i] = "the Voronoi cell of " + describeSeed(tets.order[i], seed) + " has no volume";
+      local.truncate(first);
       return;
     }
     out.centroids[tets.order[i]] = seed + moment / v6;
-    if (complex) readout.walls[i] = local;  // exact-size copies; the scratch keeps its capacity
+    if (complex) {
+      CellWallsRef& r = readout.walls[i];
+      r.store = static_cast<Index>(s.store - readout.stores.data());
+      r.first = static_cast<Index>(first);
+      r.count = static_cast<Index>(count);
+    } else {
+      local.truncate(first);
+    }
   }
 
   // A boundary cell: the domain (or the ball's scaffold box) cut by the
@@ -509,25 +550,30 @@ struct CellReader3 {
     }
     double volume = 0;
     cell.volumeAndCentroid(volume, out.centroids[tets.order[i]]);
-    if (complex) boundaryWalls(i, cell);
+    if (complex) boundaryWalls(i, cell, *s.store);
   }
 
   // A clipped cell's walls with local vertex numbers, welded later.
-  void boundaryWalls(Index i, const ClipPolytope& cell) const {
-    CellWalls& cw = readout.walls[i];
-    std::vector<Vec3>& pts = readout.clipped_points[i];
+  void boundaryWalls(Index i, const ClipPolytope& cell, WallStore& store) const {
+    CellWallsRef& r = readout.walls[i];
+    r.store = static_cast<Index>(&store - readout.stores.data());
+    r.first = static_cast<Index>(store.size());
+    r.first_point = static_cast<Index>(store.points.size());
+    r.num_points = static_cast<Index>(cell.vertices().size());
     for (std::size_t v = 0; v < cell.vertices().size(); ++v)
-      pts.push_back(canonicalPosition(cell.vertices()[v], i, cell.vertexLabels(v), seeds, tets.order, domain));
+      store.points.push_back(
+          canonicalPosition(cell.vertices()[v], i, cell.vertexLabels(v), seeds, tets.order, domain));
     for (std::size_t f = 0; f < cell.numFaces(); ++f) {
       if (cell.faceLabel(f) == kScaffoldLabel) {
         readout.errors[i] =
             "the Voronoi cell of " + describeSeed(tets.order[i], seeds[i]) + " was not closed by the ball's faces";
         break;
       }
-      cw.labels.push_back(cell.faceLabel(f));
-      for (const int* v = cell.faceBegin(f); v != cell.faceEnd(f); ++v) cw.keys.push_back(static_cast<Index>(*v));
-      cw.starts.push_back(static_cast<Index>(cw.keys.size()));
+      store.labels.push_back(cell.faceLabel(f));
+      for (const int* v = cell.faceBegin(f); v != cell.faceEnd(f); ++v) store.keys.push_back(static_cast<Index>(*v));
+      store.starts.push_back(static_cast<Index>(store.keys.size()));
     }
+    r.count = static_cast<Index>(store.size() - r.first);
   }
 };
 
@@ -540,7 +586,17 @@ CellReadout3 readCells(std::span<const Vec3> seeds, const ConvexDomain3& domain,
   const std::size_t n = seeds.size();
   CellReadout3 readout;
   readout.walls.resize(complex ? n : 0);
-  readout.clipped_points.resize(complex ? n : 0);
+  // One store per thread, and the welded boundary cells' (reserved for a
+  // uniform share of ~16 walls of ~5 vertices per cell: untouched pages cost nothing).
+  const std::size_t threads = static_cast<std::size_t>(omp_get_max_threads());
+  if (complex) {
+    readout.stores.resize(threads + 1);
+    for (std::size_t k = 0; k < threads; ++k) {
+      readout.stores[k].labels.reserve(20 * n / threads + 64);
+      readout.stores[k].starts.reserve(20 * n / threads + 64);
+      readout.stores[k].keys.reserve(110 * n / threads + 320);
+    }
+  }
   readout.is_boundary.assign(n, 0);
   readout.errors.resize(n);
   readout.duplicate.assign(n, kInvalidIndex);
@@ -555,6 +611,7 @@ CellReadout3 readCells(std::span<const Vec3> seeds, const ConvexDomain3& domain,
 #pragma omp parallel
   {
     CellReader3::Scratch scratch;
+    if (complex) scratch.store = &readout.stores[static_cast<std::size_t>(omp_get_thread_num()) % threads];
 #pragma omp for schedule(dynamic, 256)
     for (std::int64_t q = 0; q < ns; ++q) {
       const Index i = static_cast<Index>(q);
@@ -604,10 +661,15 @@ std::vector<Vec3> weldBoundaryCells(const ConvexDomain3& domain, const Tetrahedr
     }
   }
   std::vector<Index> local_key, loop;
+  WallStore& welded = readout.stores.back();
+  const Index welded_store = static_cast<Index>(readout.stores.size() - 1);
   for (std::size_t i = 0; i < n; ++i) {
     if (!readout.is_boundary[i]) continue;
+    CellWallsRef& r = readout.walls[i];
+    const WallStore& from = readout.stores[r.store];
     local_key.clear();
-    for (const Vec3& p : readout.clipped_points[i]) {
+    for (Index k = r.first_point; k < r.first_point + r.num_points; ++k) {
+      const Vec3& p = from.points[k];
       const Index w = welder.weld(p);
       if (w == key_of_weld.size()) {
         key_of_weld.push_back(static_cast<Index>(nt + extra.size()));
@@ -615,18 +677,17 @@ std::vector<Vec3> weldBoundaryCells(const ConvexDomain3& domain, const Tetrahedr
       }
       local_key.push_back(key_of_weld[w]);
     }
-    CellWalls raw = std::move(readout.walls[i]);
-    CellWalls& cw = readout.walls[i];
-    cw = CellWalls{};
-    for (std::size_t f = 0; f < raw.labels.size(); ++f) {
+    const CellWalls raw(readout.stores, r);
+    const Index first = static_cast<Index>(welded.size());
+    for (std::size_t f = 0; f < raw.size(); ++f) {
       loop.clear();
-      for (Index k = raw.starts[f]; k < raw.starts[f + 1]; ++k) {
-        const Index g = local_key[raw.keys[k]];
+      for (Index k : raw.loop(f)) {
+        const Index g = local_key[k];
         if (loop.empty() || loop.back() != g) loop.push_back(g);
       }
-      cw.add(raw.labels[f], loop);
+      welded.add(raw.labels[f], loop);
     }
-    readout.clipped_points[i] = {};
+    r = CellWallsRef{welded_store, first, static_cast<Index>(welded.size() - first), 0, 0};
   }
   return extra;
 }
@@ -643,18 +704,21 @@ std::vector<Vec3> weldBoundaryCells(const ConvexDomain3& domain, const Tetrahedr
 // listing each cell's faces run in parallel; only the vertex numbering (one
 // pass over the loops) is sequential.
 void assembleCells(std::span<const Vec3> seeds, const Tetrahedra& tets, const DualVertices3& dual,
-                   const std::vector<Vec3>& extra, const std::vector<CellWalls>& walls, ClippedCells3& out) {
+                   const std::vector<Vec3>& extra, const std::vector<WallStore>& wall_stores,
+                   const std::vector<CellWallsRef>& refs, ClippedCells3& out) {
+  const std::vector<WallStore>& stores_ = wall_stores;
   const std::size_t n = seeds.size(), nt = dual.cc.size();
   const std::int64_t ns = static_cast<std::int64_t>(n);
   auto stores = [](int label, std::size_t i) { return label < 0 || static_cast<std::size_t>(label) > i; };
+  auto wallsOf = [&](Index i) { return CellWalls(stores_, refs[i]); };
   // Per rank: stored walls and their keys.
   std::vector<Index> face_start(n + 1, 0), key_start(n + 1, 0);
 #pragma omp parallel for schedule(static)
   for (std::int64_t q = 0; q < ns; ++q) {
     const Index i = static_cast<Index>(q);
-    const CellWalls& cw = walls[i];
+    const CellWalls cw = wallsOf(i);
     Index nf = 0, nk = 0;
-    for (std::size_t f = 0; f < cw.labels.size(); ++f)
+    for (std::size_t f = 0; f < cw.size(); ++f)
       if (stores(cw.labels[f], i)) {
         ++nf;
         nk += cw.starts[f + 1] - cw.starts[f];
@@ -675,10 +739,10 @@ void assembleCells(std::span<const Vec3> seeds, const Tetrahedra& tets, const Du
 #pragma omp parallel for schedule(static)
   for (std::int64_t q = 0; q < ns; ++q) {
     const Index i = static_cast<Index>(q);
-    const CellWalls& cw = walls[i];
+    const CellWalls cw = wallsOf(i);
     first_face[i] = face_start[q];
     Index face = face_start[q], at = key_start[q];
-    for (std::size_t f = 0; f < cw.labels.size(); ++f) {
+    for (std::size_t f = 0; f < cw.size(); ++f) {
       if (!stores(cw.labels[f], i)) continue;
       out.face_offsets[face++] = at;
       for (Index k = cw.starts[f]; k < cw.starts[f + 1]; ++k) out.face_loops[at++] = cw.keys[k];
@@ -707,7 +771,7 @@ void assembleCells(std::span<const Vec3> seeds, const Tetrahedra& tets, const Du
   // towards a higher neighbour must be listed by it.
   out.cell_offsets.assign(n + 1, 0);
   for (std::size_t k = 0; k < n; ++k)
-    out.cell_offsets[k + 1] = out.cell_offsets[k] + static_cast<Index>(walls[tets.rank[k]].labels.size());
+    out.cell_offsets[k + 1] = out.cell_offsets[k] + refs[tets.rank[k]].count;
   out.cell_faces.resize(out.cell_offsets[n]);
   // Per rank: the first lower neighbour whose wall differs, the first higher one missing a stored wall.
   std::vector<Index> differs_from(n, kInvalidIndex), missing_in(n, kInvalidIndex);
@@ -715,11 +779,13 @@ void assembleCells(std::span<const Vec3> seeds, const Tetrahedra& tets, const Du
   // neighbour rank): then a binary search finds a wall.
   std::vector<std::uint8_t> ascending(n);
 #pragma omp parallel for schedule(static)
-  for (std::int64_t q = 0; q < ns; ++q)
-    ascending[q] = std::is_sorted(walls[q].labels.begin(), walls[q].labels.end(), std::less_equal<int>());
+  for (std::int64_t q = 0; q < ns; ++q) {
+    const CellWalls cw = wallsOf(static_cast<Index>(q));
+    ascending[q] = std::is_sorted(cw.labels.begin(), cw.labels.end(), std::less_equal<int>());
+  }
   // The position of the wall towards `label` in cell j's list, or -1.
   auto wallTowards = [&](Index j, Index label) -> std::ptrdiff_t {
-    const std::vector<int>& labels = walls[j].labels;
+    const std::span<const int> labels = wallsOf(j).labels;
     const int l = static_cast<int>(label);
     const auto it = ascending[j] ? std::lower_bound(labels.begin(), labels.end(), l)
                                  : std::find(labels.begin(), labels.end(), l);
@@ -728,10 +794,10 @@ void assembleCells(std::span<const Vec3> seeds, const Tetrahedra& tets, const Du
 #pragma omp parallel for schedule(dynamic, 256)
   for (std::int64_t q = 0; q < ns; ++q) {
     const Index i = static_cast<Index>(q);
-    const CellWalls& cw = walls[i];
+    const CellWalls cw = wallsOf(i);
     Index own = first_face[i];
     CellFace* list = out.cell_faces.data() + out.cell_offsets[tets.order[i]];
-    for (std::size_t f = 0; f < cw.labels.size(); ++f) {
+    for (std::size_t f = 0; f < cw.size(); ++f) {
       const int label = cw.labels[f];
       if (stores(label, i)) {
         list[f] = {own++, false};
@@ -744,13 +810,11 @@ void assembleCells(std::span<const Vec3> seeds, const Tetrahedra& tets, const Du
       Index face = kInvalidIndex;
       if (g >= 0) {
         // j's stored walls before g give the face id.
+        const CellWalls wj = wallsOf(j);
         face = first_face[j];
         for (std::ptrdiff_t h = 0; h < g; ++h)
-          if (stores(walls[j].labels[h], j)) ++face;
-        const std::span<const Index> mine(cw.keys.data() + cw.starts[f], cw.starts[f + 1] - cw.starts[f]);
-        const std::span<const Index> theirs(walls[j].keys.data() + walls[j].starts[g],
-                                            walls[j].starts[g + 1] - walls[j].starts[g]);
-        if (!reverseOf(theirs, mine)) face = kInvalidIndex;
+          if (stores(wj.labels[h], j)) ++face;
+        if (!reverseOf(wj.loop(static_cast<std::size_t>(g)), cw.loop(f))) face = kInvalidIndex;
       }
       if (face == kInvalidIndex) {
         if (differs_from[i] == kInvalidIndex) differs_from[i] = j;
@@ -787,7 +851,7 @@ ClippedCells3 clipVoronoi3(std::span<const Vec3> seeds, const ConvexDomain3& dom
   throwCellErrors(seeds, tets, readout);
   if (!complex) return out;
   const std::vector<Vec3> extra = weldBoundaryCells(domain, tets, dual, readout);
-  assembleCells(seeds, tets, dual, extra, readout.walls, out);
+  assembleCells(seeds, tets, dual, extra, readout.stores, readout.walls, out);
   return out;
 }
 
