@@ -128,3 +128,33 @@ TEST_CASE("addVolumes checks every volume's surface like addVolume", "[tissue][c
     }
   }
 }
+
+TEST_CASE("a surface of 2^16 edge uses or more is checked by sorting its uses", "[tissue][closed_surface]") {
+  // A prism over an 11000-gon: 6 * 11000 = 66000 edge uses, past the table's 16-bit counts.
+  const int n = 11000;
+  const std::size_t nf = static_cast<std::size_t>(n) + 2;
+  const std::size_t none = nf;
+  for (std::size_t flip : {none, std::size_t{0}, nf / 2, nf - 1})
+    for (std::size_t drop : {none, std::size_t{1}}) {
+      CellComplex c = prismFaces(n);
+      const std::vector<OrientedFace> faces = surface(nf, flip, drop);
+      const Index bad = lowestBadEdge(c, faces);
+      INFO("flip " << flip << " drop " << drop);
+      if (bad == kInvalidIndex) {
+        REQUIRE(flip == none);
+        REQUIRE(drop == none);
+        CHECK(c.addVolume(faces).index() == 0);
+        const std::vector<Index> offsets{0, static_cast<Index>(faces.size())};
+        CellComplex d = prismFaces(n);
+        d.addVolumes(offsets, faces);
+        CHECK(d.volumeFaces(VolumeId(0)).size() == nf);
+        continue;
+      }
+      try {
+        c.addVolume(faces);
+        FAIL("an open surface was accepted");
+      } catch (const TopologyError& e) {
+        CHECK(std::string(e.what()).ends_with("at edge " + std::to_string(bad)));
+      }
+    }
+}
