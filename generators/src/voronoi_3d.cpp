@@ -456,16 +456,16 @@ struct CellReader3 {
     Index a = tets.tv[t0][slot[inversions % 2 == 0 ? 2 : 3]];
     loop.clear();
     Index t = t0;
+    // Every cell around an edge of an interior cell is finite: its vertices
+    // are i, j, a and the next a (their sum less the other three, mod 2^32),
+    // found without a branch.
+    const Index ij = i + j;
     do {
       const Index g = dual.group[t];
       if (loop.empty() || loop.back() != g) loop.push_back(g);
-      int ka = 0;
-      Index next_b = kInvalidIndex;
-      for (int k = 0; k < 4; ++k) {
-        const Index v = tets.tv[t][k];
-        if (v == a) ka = k;
-        else if (v != i && v != j) next_b = v;
-      }
+      const std::array<Index, 4>& v = tets.tv[t];
+      const int ka = (v[1] == a) + 2 * (v[2] == a) + 3 * (v[3] == a);
+      const Index next_b = v[0] + v[1] + v[2] + v[3] - a - ij;
       t = tets.tn[t][ka];
       a = next_b;
     } while (t != t0);
