@@ -3,7 +3,10 @@
 // Prints how long the Voronoi generators take, next to CGAL's bare Delaunay
 // triangulation of the same seeds timed in the same run (the ratio is what to
 // compare between machines) and, in 2D, CGAL's Delaunay plus the dual cells
-// (the floor the 2D target is stated against).
+// (the floor the 2D target is stated against). Each line also gives the CPU
+// times of CGAL's Delaunay and of voronoiTissue (all its threads, OpenMP's
+// spinning included) and their ratio: on a shared machine, where wall times
+// stretch with the load, the steadier figure.
 //
 //   generation_bench            2D: 1e4 1e5 1e6 cells, 3D: 1e3 1e4 1e5 cells
 //   generation_bench --quick    2D: 1e4 1e5,           3D: 1e3 1e4
@@ -12,6 +15,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <ctime>
 #include <utility>
 #include <vector>
 
@@ -43,8 +47,19 @@ double seconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
 
+// CPU time of the process (all threads): on a shared machine, where wall
+// times stretch with the load, the CPU ratio of one thread's work is the
+// steadier figure.
+double cpuSeconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+}
+
+// Wall time; `cpu` gets the CPU time (both without the triangulation's destruction).
 template <typename Triangulation, typename MakePoint>
-double timeDelaunay(const std::vector<Vec3>& seeds, MakePoint make_point) {
+double timeDelaunay(const std::vector<Vec3>& seeds, MakePoint make_point, double& cpu) {
+  const double c0 = cpuSeconds();
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<std::pair<typename Triangulation::Point, unsigned>> points;
   points.reserve(seeds.size());
@@ -52,6 +67,7 @@ double timeDelaunay(const std::vector<Vec3>& seeds, MakePoint make_point) {
   Triangulation dt;
   dt.insert(points.begin(), points.end());
   const double t = seconds(t0);
+  cpu = cpuSeconds() - c0;
   if (dt.number_of_vertices() != seeds.size()) std::printf("  (duplicate seeds?)\n");
   return t;
 }
@@ -84,14 +100,18 @@ double timeDelaunayDual2(const std::vector<Vec3>& seeds) {
 template <typename Domain, typename Triangulation, typename MakePoint>
 void run(const char* label, const Domain& domain, std::size_t n, MakePoint make_point) {
   const auto seeds = randomSeeds(domain, n, 2024);
-  const double delaunay = timeDelaunay<Triangulation>(seeds, make_point);
+  double delaunay_cpu = 0;
+  const double delaunay = timeDelaunay<Triangulation>(seeds, make_point, delaunay_cpu);
   const double dual = Triangulation::Point::Ambient_dimension::value == 2 ? timeDelaunayDual2(seeds) : 0.0;
   const auto t0 = std::chrono::steady_clock::now();
+  const double c1 = cpuSeconds();
   const Tissue t = voronoiTissue(seeds, domain);
-  const double voronoi = seconds(t0);
+  const double voronoi = seconds(t0), voronoi_cpu = cpuSeconds() - c1;
   std::printf("%-12s %9zu cells  %8zu vertices  %8zu walls  CGAL Delaunay %7.3f s  voronoiTissue %7.3f s  ratio %5.2f",
               label, t.numCells(), t.numVertices(), t.numWalls(), delaunay, voronoi, voronoi / delaunay);
   if (dual > 0) std::printf("  (CGAL Delaunay + dual cells %7.3f s, ratio %5.2f)", dual, voronoi / dual);
+  std::printf("  [CPU: Delaunay %.3f s, voronoiTissue %.3f s, ratio %.2f]", delaunay_cpu, voronoi_cpu,
+              voronoi_cpu / delaunay_cpu);
   std::printf("\n");
   std::fflush(stdout);
   std::string name = std::string(label) + "." + std::to_string(t.numCells()) + "cells";
