@@ -5,6 +5,7 @@
 #include "voronoi_domain.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -85,9 +86,61 @@ double ConvexDomain2::area() const {
 }
 
 double ConvexDomain3::excess(const Vec3& p) const {
-  double worst = -std::numeric_limits<double>::infinity();
-  for (const HalfSpace& f : faces) worst = std::max(worst, f.excess(p));
+  auto scan = [&](std::size_t begin, std::size_t end, double worst) {
+    for (std::size_t k = begin; k < end; ++k) worst = std::max(worst, faces[k].excess(p));
+    return worst;
+  };
+  const double none = -std::numeric_limits<double>::infinity();
+  if (groups.empty() || !p.allFinite()) return scan(0, faces.size(), none);
+  // A face of group g has excess n . q - depth <= |q| cos(max(0, angle(q, axis) - half)) - min_depth
+  // (q = p - center). Groups whose bound, plus a slack far above the rounding
+  // of the bounds, lies below the largest excess found cannot hold it: the
+  // result is the maximum over every face, as a full scan gives.
+  const Vec3 q = p - center;
+  const double r = q.norm();
+  const double slack = 1e-8 * (scale + r + center.norm());
+  std::array<double, kMaxFaceGroups> bound{};
+  std::size_t first = 0;
+  for (std::size_t g = 0; g < groups.size(); ++g) {
+    const FaceGroup& fg = groups[g];
+    const double c = r > 0 ? std::clamp(fg.axis.dot(q) / r, -1.0, 1.0) : 1.0;
+    const double cb = c >= fg.cos_half ? 1.0 : c * fg.cos_half + std::sqrt(std::max(0.0, 1 - c * c)) * fg.sin_half;
+    bound[g] = r * cb - fg.min_depth;
+    if (bound[g] > bound[first]) first = g;
+  }
+  double worst = scan(groups[first].begin, groups[first].end, none);
+  for (std::size_t g = 0; g < groups.size(); ++g)
+    if (g != first && bound[g] + slack >= worst) worst = scan(groups[g].begin, groups[g].end, worst);
   return worst;
+}
+
+void groupFaces(ConvexDomain3& d, std::size_t count) {
+  const std::size_t n = d.faces.size();
+  if (count == 0 || count > ConvexDomain3::kMaxFaceGroups || n % count != 0)
+    throw GeometryError("groupFaces: " + std::to_string(n) + " faces do not split into " + std::to_string(count) +
+                        " groups");
+  d.groups.clear();
+  for (std::size_t g = 0; g < count; ++g) {
+    FaceGroup fg;
+    fg.begin = g * (n / count);
+    fg.end = fg.begin + n / count;
+    Vec3 sum = Vec3::Zero();
+    for (std::size_t k = fg.begin; k < fg.end; ++k) sum += d.faces[k].normal;
+    if (!(sum.norm() > 0)) {  // normals cancelling out: no useful cone, scan every face
+      d.groups.clear();
+      return;
+    }
+    fg.axis = sum.normalized();
+    fg.cos_half = 1.0;
+    fg.min_depth = std::numeric_limits<double>::infinity();
+    for (std::size_t k = fg.begin; k < fg.end; ++k) {
+      fg.cos_half = std::min(fg.cos_half, d.faces[k].normal.dot(fg.axis));
+      fg.min_depth = std::min(fg.min_depth, d.faces[k].offset - d.faces[k].normal.dot(d.center));
+    }
+    fg.cos_half = std::max(-1.0, fg.cos_half - 1e-12);  // rounded outwards: a wider cone
+    fg.sin_half = std::min(1.0, std::sqrt(std::max(0.0, 1 - fg.cos_half * fg.cos_half)) + 1e-12);
+    d.groups.push_back(fg);
+  }
 }
 
 ConvexDomain2 makeDomain(const Rectangle& r) {
@@ -194,6 +247,9 @@ ConvexDomain3 makeDomain(const Ball& b) {
     d.volume_value += (p0 - b.center).dot((p1 - b.center).cross(p2 - b.center)) / 6;
   }
   d.inner_radius = inradius * (1 - 1e-12);
+  // The subdivision keeps each icosahedron face's triangles together: one
+  // group per face, so excess() reads about a twentieth of the faces.
+  if (b.subdivisions >= 2) groupFaces(d, 20);
   return d;
 }
 

@@ -44,6 +44,15 @@ struct ConvexDomain2 {
   double area() const;
 };
 
+/// Consecutive faces of a ConvexDomain3 whose outward normals lie in a cone
+/// around `axis`: excess() skips the groups that cannot hold the maximum.
+struct FaceGroup {
+  Vec3 axis = Vec3::UnitZ();               // unit
+  double cos_half = -1.0, sin_half = 0.0;  // the cone's half-angle, rounded outwards
+  double min_depth = 0.0;                  // least offset - normal . center over the group
+  std::size_t begin = 0, end = 0;          // faces[begin .. end)
+};
+
 /// A convex polyhedron given by its face planes.
 struct ConvexDomain3 {
   std::vector<HalfSpace> faces;
@@ -53,9 +62,19 @@ struct ConvexDomain3 {
   Vec3 center = Vec3::Zero();
   bool is_box = false;
   double volume_value = 0.0;
+  /// Balls: the faces in at most kMaxFaceGroups groups (empty: excess scans every face).
+  std::vector<FaceGroup> groups;
+  static constexpr std::size_t kMaxFaceGroups = 32;
+  /// How far p lies outside (positive) or inside (negative): the largest
+  /// face excess, the same value with or without groups.
   double excess(const Vec3& p) const;
   double volume() const { return volume_value; }
 };
+
+/// Splits the faces of d into `count` groups of consecutive faces (count
+/// divides the number of faces and is at most kMaxFaceGroups), each with the
+/// cone of its normals.
+void groupFaces(ConvexDomain3& d, std::size_t count);
 
 /// Throw InputError naming the bad field when a domain is empty or not finite.
 ConvexDomain2 makeDomain(const Rectangle& r);
