@@ -15,7 +15,7 @@ namespace tessella::growth {
 
 namespace {
 
-void drawOneByOne(Rng& rng, double mean, double stddev, std::span<double> out) {
+[[maybe_unused]] void drawOneByOne(Rng& rng, double mean, double stddev, std::span<double> out) {
   std::normal_distribution<double> draw(mean, stddev);
   for (double& v : out) {
     do v = draw(rng);
@@ -35,14 +35,15 @@ void drawPositiveNormals(Rng& rng, double mean, double stddev, std::span<double>
   // followed by the next one of the stream.
   //
   // Here, chunk by chunk: the engine's raw numbers are drawn serially into a
-  // buffer (the only serial work besides pairing; a bit fewer numbers than
-  // the chunk needs on average), turned into uniforms in parallel by
-  // generate_canonical itself (fed the buffered numbers), paired and tested
-  // serially, the values computed in parallel and dealt out in order. When
-  // the buffer holds more than is used, the engine is put back and advanced
-  // by the numbers used. The rest of the chunk is drawn pair by pair; a
-  // pair's second value not used by a chunk starts the next one.
-  constexpr std::size_t kChunk = std::size_t{1} << 16;  // values per chunk
+  // buffer (a bit fewer than the chunk needs on average); in one parallel
+  // pass each try (two numbers) is turned into its uniforms by
+  // generate_canonical itself (fed the buffered numbers), tested, and when
+  // accepted gives its two values; then the tries are scanned serially and
+  // their values dealt out in order. When the buffer holds more than is used,
+  // the engine is put back and advanced by the numbers used. The rest of the
+  // chunk is drawn pair by pair; a pair's second value not used by a chunk
+  // starts the next one.
+  constexpr std::size_t kChunk = std::size_t{1} << 18;  // values per chunk
   struct Replay {  // the engine's interface, giving buffered numbers
     using result_type = Rng::result_type;
     static constexpr result_type min() { return Rng::min(); }
@@ -54,13 +55,12 @@ void drawPositiveNormals(Rng& rng, double mean, double stddev, std::span<double>
     return std::generate_canonical<double, std::numeric_limits<double>::digits>(engine);
   };
   auto value = [&](double v) { return v * stddev + mean; };
-  struct Pair {
-    double x, y, r2;
-    std::size_t end;  // buffered numbers used up to this pair's, included
+  struct Try {
+    double first, second;  // the pair's values, when accepted
+    bool accepted;
   };
   std::vector<Rng::result_type> raw;
-  std::vector<double> uniform, values;
-  std::vector<Pair> pairs;
+  std::vector<Try> tries;
   std::optional<double> carry;  // the unused second value of the last pair
   std::size_t filled = 0;
   while (filled < out.size()) {
@@ -72,44 +72,46 @@ void drawPositiveNormals(Rng& rng, double mean, double stddev, std::span<double>
     }
     const std::size_t goal = filled + std::min(kChunk, out.size() - filled);
     const std::size_t want_pairs = (goal - filled + 1) / 2;
-    // Two numbers per try, a try accepted with probability pi / 4: 90 % of the expected need.
-    const std::size_t n_raw = 2 * static_cast<std::size_t>(0.9 * static_cast<double>(want_pairs) / (M_PI / 4));
+    // A try is accepted with probability pi / 4: 90 % of the expected need.
+    const std::size_t n_tries = static_cast<std::size_t>(0.9 * static_cast<double>(want_pairs) / (M_PI / 4));
+    const std::size_t n_raw = 2 * n_tries;
     const Rng saved = rng;
     raw.resize(n_raw);
     for (auto& r : raw) r = rng();
-    uniform.resize(n_raw);
-    const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(n_raw);
-#pragma omp parallel for schedule(static) if (m >= kParallelMinItems)
+    tries.resize(n_tries);
+    const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(n_tries);
+#pragma omp parallel for schedule(static) if (m >= kParallelMinItems / 2)
     for (std::ptrdiff_t i = 0; i < m; ++i) {
-      Replay replay{raw.data() + i};
-      uniform[i] = canonical(replay);
-    }
-    pairs.clear();
-    for (std::size_t i = 0; i < n_raw && pairs.size() < want_pairs; i += 2) {
-      const double x = 2.0 * uniform[i] - 1.0, y = 2.0 * uniform[i + 1] - 1.0;
+      Replay replay{raw.data() + 2 * i};
+      const double x = 2.0 * canonical(replay) - 1.0;
+      const double y = 2.0 * canonical(replay) - 1.0;
       const double r2 = x * x + y * y;
-      if (!(r2 > 1.0 || r2 == 0.0)) pairs.push_back(Pair{x, y, r2, i + 2});
+      Try& t = tries[i];
+      t.accepted = !(r2 > 1.0 || r2 == 0.0);
+      if (!t.accepted) continue;
+      const double mult = std::sqrt(-2 * std::log(r2) / r2);
+      t.first = value(y * mult);
+      t.second = value(x * mult);
     }
-    values.resize(2 * pairs.size());
-    const std::ptrdiff_t np = static_cast<std::ptrdiff_t>(pairs.size());
-#pragma omp parallel for schedule(static) if (np >= kParallelMinItems / 2)
-    for (std::ptrdiff_t i = 0; i < np; ++i) {
-      const Pair& p = pairs[i];
-      const double mult = std::sqrt(-2 * std::log(p.r2) / p.r2);
-      values[2 * i] = value(p.y * mult);
-      values[2 * i + 1] = value(p.x * mult);
-    }
-    std::size_t used = 0;  // values of the buffer used
-    for (; used < values.size() && filled < goal; ++used)
-      if (values[used] > 0) out[filled++] = values[used];
-    // The numbers the one-by-one loop would have drawn by now: up to the pair
-    // of the last value used, or every try when all pairs were used and fell short.
-    std::size_t consumed = n_raw;
-    if (used < values.size()) {
-      consumed = pairs[(used - 1) / 2].end;
-      if (used % 2 == 1) carry = values[used];
-    } else if (pairs.size() == want_pairs && !pairs.empty()) {
-      consumed = pairs.back().end;
+    // Dealt out in order; `consumed`: the numbers the one-by-one loop would
+    // have drawn by now (every try scanned, or up to the pair of the last
+    // value used, or up to the last pair when the chunk's pairs are all there).
+    std::size_t consumed = n_raw, pairs = 0;
+    for (std::size_t i = 0; i < n_tries; ++i) {
+      const Try& t = tries[i];
+      if (!t.accepted) continue;
+      ++pairs;
+      if (t.first > 0) out[filled++] = t.first;
+      if (filled == goal) {
+        carry = t.second;
+        consumed = 2 * (i + 1);
+        break;
+      }
+      if (t.second > 0) out[filled++] = t.second;
+      if (filled == goal || pairs == want_pairs) {
+        consumed = 2 * (i + 1);
+        break;
+      }
     }
     if (consumed < n_raw) {
       rng = saved;
