@@ -13,6 +13,7 @@
 #include "tessella/growth/positive_normal_draws.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
+#include "tessella/tissue/uninitialized_vector.hpp"
 
 namespace tessella::growth {
 
@@ -92,7 +93,7 @@ void SizeThreshold::prepare(Tissue& t, Rng& rng) const {
     const double v = column[c];
     return !(v > 0 && std::isfinite(v));
   });
-  std::vector<double> drawn(undrawn.size());
+  UninitializedVector<double> drawn(undrawn.size());  // written whole by the draws
   drawPositiveNormals(rng, size_, stddev_, drawn);
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(undrawn.size());
 #pragma omp parallel for schedule(static) if (n >= kParallelMinItems)

@@ -182,7 +182,7 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
     edge_face_sizes.push_back(2);
     s.face = FaceId(f0 + static_cast<Index>(i));
   }
-  std::vector<std::uint32_t> vertex_edge_sizes(nv, 3);
+  UninitializedVector<std::uint32_t> vertex_edge_sizes = filledInParallel<std::uint32_t>(nv, 3);
   for (std::ptrdiff_t i = 0; i < n; ++i)
     for (int k = 0; k < 2; ++k)
       if (chords[i].ends[k].same_as >= 0) ++vertex_edge_sizes[out[i].vertex[k].index() - v0];
@@ -355,7 +355,7 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
   face_vertices_.resizeLists(affected, loop_sizes);
   face_edges_.appendLists(new_face_sizes);
   face_vertices_.appendLists(new_face_sizes);
-  face_volumes_.appendLists(std::vector<std::uint32_t>(chords.size(), 0));
+  face_volumes_.appendLists(filledInParallel<std::uint32_t>(chords.size(), 0));
 
   // Pass A: the cut edges (by the thread of the first chord cutting each) and the chords' edges.
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
