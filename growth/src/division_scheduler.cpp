@@ -3,7 +3,12 @@
 #include "tessella/growth/division_scheduler.hpp"
 
 #include <cmath>
+#include <cstddef>
 #include <exception>
+#include <memory>
+#include <new>
+#include <span>
+#include <type_traits>
 #include <Eigen/Geometry>
 
 #include "tessella/growth/cell_frame.hpp"
@@ -25,6 +30,39 @@ Plane withCanonicalSide(Plane plane) {
   if (plane.normal[largest] < 0) plane.normal = -plane.normal;
   return plane;
 }
+
+// n default-constructed items, constructed (and destroyed) in parallel: the
+// per-cell arrays of a step (tens of MB on a large tissue) are then not
+// written, and their pages not first touched, by one thread while the other
+// waits. A fixed-size array with std::vector's element access.
+template <typename T>
+class ParallelArray {
+ public:
+  explicit ParallelArray(std::size_t n) : data_(std::allocator<T>().allocate(n)), n_(n) {
+    const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(n);
+#pragma omp parallel for schedule(static) if (m >= kParallelMinItems)
+    for (std::ptrdiff_t i = 0; i < m; ++i) ::new (static_cast<void*>(data_ + i)) T();
+  }
+  ParallelArray(const ParallelArray&) = delete;
+  ParallelArray& operator=(const ParallelArray&) = delete;
+  ~ParallelArray() {
+    const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(n_);
+    if constexpr (!std::is_trivially_destructible_v<T>) {
+#pragma omp parallel for schedule(static) if (m >= kParallelMinItems)
+      for (std::ptrdiff_t i = 0; i < m; ++i) data_[i].~T();
+    }
+    std::allocator<T>().deallocate(data_, n_);
+  }
+  T& operator[](std::ptrdiff_t i) { return data_[i]; }
+  const T& operator[](std::ptrdiff_t i) const { return data_[i]; }
+  std::span<const T> first(std::size_t count) const { return {data_, count}; }
+  T* begin() { return data_; }
+  T* end() { return data_ + n_; }
+
+ private:
+  T* data_;
+  std::size_t n_;
+};
 }  // namespace
 
 DivisionScheduler::DivisionScheduler(SizeThreshold trigger, std::shared_ptr<const DivisionRule> rule,
@@ -103,9 +141,9 @@ void DivisionScheduler::divideAll(Tissue& t, const std::vector<CellId>& due, Rng
   // random stream is drawn as always), then each cell's plan with its
   // retries. A GeometryError skips the cell; any other error stops the step
   // (the first in cell order), before the tissue changes.
-  std::vector<Plane> planes(cells.size());
-  std::vector<std::string> errors(cells.size());
-  std::vector<std::exception_ptr> failures(cells.size());
+  ParallelArray<Plane> planes(cells.size());
+  ParallelArray<std::string> errors(cells.size());
+  ParallelArray<std::exception_ptr> failures(cells.size());
   auto findPlane = [&](std::ptrdiff_t i) {
     try {
       planes[i] = withCanonicalSide(rule_->plane(t, cells[i], rng));
@@ -121,8 +159,8 @@ void DivisionScheduler::divideAll(Tissue& t, const std::vector<CellId>& due, Rng
   } else {
     for (std::ptrdiff_t i = 0; i < n; ++i) findPlane(i);
   }
-  std::vector<CellSplitPlan2D> plans(cells.size());
-  std::vector<int> attempts(cells.size(), 0);
+  ParallelArray<CellSplitPlan2D> plans(cells.size());
+  ParallelArray<int> attempts(cells.size());
 #pragma omp parallel for schedule(dynamic, 64) if (n >= kParallelMinItems)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     if (failures[i] || !errors[i].empty()) continue;
@@ -152,9 +190,8 @@ void DivisionScheduler::divideAll(Tissue& t, const std::vector<CellId>& due, Rng
     }
     ++kept;
   }
-  plans.resize(kept);
   if (options_.tag_walls) divisionWallTags(t);
-  const std::vector<CellSplit> splits = t.splitCells(plans);
+  const std::vector<CellSplit> splits = t.splitCells(plans.first(kept));
   report.divided.reserve(kept);
   for (std::size_t k = 0; k < kept; ++k)
     report.divided.push_back(DivisionRecord{mothers[k], cells[k], splits[k].daughter, splits[k].wall, attempts[k]});

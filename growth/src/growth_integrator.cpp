@@ -8,6 +8,7 @@
 #include "tessella/growth/parallel_threshold.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
+#include "tessella/tissue/resize_discarding.hpp"
 
 namespace tessella::growth {
 
@@ -132,8 +133,10 @@ void GrowthIntegrator::step(Tissue& t, double dt, GeometryCache& geometry) {
     throw InputError("growth step: dt = " + formatNumber(dt) + " must be positive and finite");
   const double t0 = t.time(), t1 = t0 + dt;
   const std::size_t n = t.slots(0);
-  x0_.resize(n);  // filled by the first update sweep
-  k1_.resize(n);
+  // Both are rewritten every step (x0_ by the first update sweep, k1_ by the
+  // field), so a growing tissue's arrays are not copied when they move.
+  resizeDiscarding(x0_, n);
+  resizeDiscarding(k1_, n);
 
   // Surface cells are checked against their orientation before the step.
   // (From the cache, fresh since the last step unless the tissue changed:
@@ -163,7 +166,7 @@ void GrowthIntegrator::step(Tissue& t, double dt, GeometryCache& geometry) {
     checkPositions(t, t0, t1, {});
     if (options_.scheme == IntegrationScheme::Heun) {
       // Heun: predictor x1 = x0 + dt k1 (above), corrector x0 + dt/2 (k1 + v(x1, t1)).
-      k2_.resize(n);
+      resizeDiscarding(k2_, n);
       velocities(t, x, t1, k2_);
       checkVelocities(t, x, k2_, t1);
 #pragma omp parallel for schedule(static) if(m >= kParallelMinItems)

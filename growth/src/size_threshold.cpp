@@ -10,8 +10,10 @@
 #include <vector>
 
 #include "tessella/growth/parallel_threshold.hpp"
+#include "tessella/growth/positive_normal_draws.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
+#include "tessella/tissue/uninitialized_vector.hpp"
 
 namespace tessella::growth {
 
@@ -83,19 +85,19 @@ void SizeThreshold::prepare(Tissue& t, Rng& rng) const {
   if (!cells.has(property_))
     cells.add<double>(property_, std::numeric_limits<double>::quiet_NaN(), DivisionPolicy::Reset);
   auto& column = cells.get<double>(property_);
-  std::normal_distribution<double> draw(size_, stddev_);
   // NaN marks "not drawn yet"; a value that is no size (0 from a column
   // read back without its default, say) is redrawn too, never used. Found in
-  // parallel, drawn in cell order.
+  // parallel, drawn in cell order from one normal distribution, each redrawn
+  // until positive (a size threshold must be positive).
   const std::vector<CellId> undrawn = cellsWhere(t, [&](CellId c) {
     const double v = column[c];
     return !(v > 0 && std::isfinite(v));
   });
-  for (CellId c : undrawn) {
-    double& v = column[c];
-    do v = draw(rng);
-    while (!(v > 0));  // a size threshold must be positive
-  }
+  UninitializedVector<double> drawn(undrawn.size());  // written whole by the draws
+  drawPositiveNormals(rng, size_, stddev_, drawn);
+  const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(undrawn.size());
+#pragma omp parallel for schedule(static) if (n >= kParallelMinItems)
+  for (std::ptrdiff_t i = 0; i < n; ++i) column[undrawn[i]] = drawn[i];
 }
 
 double SizeThreshold::threshold(const Tissue& t, CellId c) const {

@@ -15,6 +15,7 @@
 
 #include "tessella/tissue/cell_complex.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/uninitialized_vector.hpp"
 
 namespace tessella {
 
@@ -112,7 +113,9 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
     }
     return {};
   };
-  std::vector<std::uint8_t> bad(chords.size(), 0);
+  // The per-chord scratch arrays are UninitializedVectors written whole by the
+  // parallel passes (no serial zeroing and first touch of tens of MB).
+  UninitializedVector<std::uint8_t> bad(chords.size());
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (std::ptrdiff_t i = 0; i < n; ++i) bad[i] = !problem(i).empty();
   for (std::ptrdiff_t i = 0; i < n; ++i)
@@ -133,12 +136,16 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
     return -1;
   };
   // Also per new end: how many faces its edge bounds, and the neighbour across it.
-  std::vector<std::int32_t> partner(2 * chords.size(), -1);
-  std::vector<std::uint32_t> edge_face_count(2 * chords.size(), 0);
-  std::vector<Index> across(2 * chords.size(), kInvalidIndex);
+  UninitializedVector<std::int32_t> partner(2 * chords.size()), reused_by(2 * chords.size());
+  UninitializedVector<std::uint32_t> edge_face_count(2 * chords.size());
+  UninitializedVector<Index> across(2 * chords.size());
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (std::ptrdiff_t i = 0; i < n; ++i)
     for (int k = 0; k < 2; ++k) {
+      partner[2 * i + k] = -1;
+      reused_by[2 * i + k] = -1;  // the later end that reuses this end's vertex (numbering, below)
+      edge_face_count[2 * i + k] = 0;
+      across[2 * i + k] = kInvalidIndex;
       if (!chords[i].ends[k].isNew()) continue;
       partner[2 * i + k] = partnerOf(i, k);
       const auto faces = edge_faces_[chords[i].ends[k].edge.index()];
@@ -152,7 +159,7 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
   const Index v0 = static_cast<Index>(slots(0)), e0 = static_cast<Index>(slots(1));
   Index nv = 0, ne = 0;
   std::vector<std::uint32_t> edge_face_sizes;
-  std::vector<std::int32_t> reused_by(2 * chords.size(), -1);  // the later end that reuses this end's vertex
+  edge_face_sizes.reserve(3 * chords.size());  // at most two cut edges' pieces and the chord per chord
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     ChordSplit& s = out[i];
     for (int k = 0; k < 2; ++k) {
@@ -175,7 +182,7 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
     edge_face_sizes.push_back(2);
     s.face = FaceId(f0 + static_cast<Index>(i));
   }
-  std::vector<std::uint32_t> vertex_edge_sizes(nv, 3);
+  UninitializedVector<std::uint32_t> vertex_edge_sizes = filledInParallel<std::uint32_t>(nv, 3);
   for (std::ptrdiff_t i = 0; i < n; ++i)
     for (int k = 0; k < 2; ++k)
       if (chords[i].ends[k].same_as >= 0) ++vertex_edge_sizes[out[i].vertex[k].index() - v0];
@@ -234,7 +241,7 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
     }
   }
   std::vector<Index> affected;
-  affected.reserve(2 * chords.size());
+  affected.reserve(3 * chords.size());
   for (std::ptrdiff_t i = 0; i < n; ++i) affected.push_back(chords[i].face.index());
   for (std::ptrdiff_t p = 0; p < n2; ++p)
     if (across[p] != kInvalidIndex && chord_of[across[p]] == -2 - p) affected.push_back(across[p]);
@@ -294,7 +301,7 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
     std::uint32_t pool = 0, at = 0, size = 0;
   };
   std::vector<Outlines> pools;
-  std::vector<OutlineAt> outline(affected.size());
+  UninitializedVector<OutlineAt> outline(affected.size());
   auto outlineEdges = [&](std::ptrdiff_t q) {
     const OutlineAt& o = outline[q];
     return std::span<const OrientedEdge>(pools[o.pool].edges.data() + o.at, o.size);
@@ -306,7 +313,7 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
 
   // Sizes of the new loops: a split face keeps from..to plus the chord, its
   // new face gets to..from plus the chord.
-  std::vector<std::uint32_t> loop_sizes(affected.size()), new_face_sizes(chords.size());
+  UninitializedVector<std::uint32_t> loop_sizes(affected.size()), new_face_sizes(chords.size());
 #pragma omp parallel if (n >= kParallelMin)
   {
 #pragma omp single
@@ -348,7 +355,7 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
   face_vertices_.resizeLists(affected, loop_sizes);
   face_edges_.appendLists(new_face_sizes);
   face_vertices_.appendLists(new_face_sizes);
-  face_volumes_.appendLists(std::vector<std::uint32_t>(chords.size(), 0));
+  face_volumes_.appendLists(filledInParallel<std::uint32_t>(chords.size(), 0));
 
   // Pass A: the cut edges (by the thread of the first chord cutting each) and the chords' edges.
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)

@@ -11,6 +11,7 @@
 #include "polygon_kernels.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
+#include "tessella/tissue/resize_discarding.hpp"
 
 namespace tessella {
 
@@ -168,11 +169,11 @@ void volumesLoop(const Tissue& t, GeometryCache& cache, bool measures, bool mome
       if (face_alive[f]) surfaces[f] = faceSurface(t, FaceId(static_cast<Index>(f)));
   }
   if (measures) {
-    cache.volume.resize(nc);
-    cache.volume_surface.resize(nc);
-    cache.volume_centroid.resize(nc);
+    resizeDiscarding(cache.volume, nc);
+    resizeDiscarding(cache.volume_surface, nc);
+    resizeDiscarding(cache.volume_centroid, nc);
   }
-  if (moments) cache.volume_second_moment.resize(nc);
+  if (moments) resizeDiscarding(cache.volume_second_moment, nc);
 #pragma omp parallel for schedule(static)
   for (std::int64_t c = 0; c < nc; ++c) {
     if (!vol_alive[c]) {
@@ -436,7 +437,7 @@ void GeometryCache::compute(const Tissue& t, GeometryQuantities quantities) {
   if (quantities.contains(Q::EdgeLengths)) {
     const auto& edge_alive = k.aliveFlags(1);
     const std::int64_t ne = static_cast<std::int64_t>(k.slots(1));
-    edge_length.resize(ne);
+    resizeDiscarding(edge_length, ne);
 #pragma omp parallel for schedule(static)
     for (std::int64_t e = 0; e < ne; ++e)
       edge_length[e] = edge_alive[e] ? edgeLength(t, EdgeId(static_cast<Index>(e))) : 0.0;
@@ -445,12 +446,14 @@ void GeometryCache::compute(const Tissue& t, GeometryQuantities quantities) {
   const bool face_measures = quantities.contains(Q::FaceMeasures);
   const bool face_moments = quantities.contains(Q::FaceSecondMoments);
   const std::size_t nf = k.slots(2);
+  // Each pass below writes every slot (dead ones get zeros): a growing
+  // tissue's arrays are not copied when they move.
   if (face_measures) {
-    face_area.resize(nf);
-    face_centroid.resize(nf);
-    face_normal.resize(nf);
+    resizeDiscarding(face_area, nf);
+    resizeDiscarding(face_centroid, nf);
+    resizeDiscarding(face_normal, nf);
   }
-  if (face_moments) face_second_moment.resize(nf);
+  if (face_moments) resizeDiscarding(face_second_moment, nf);
   const bool volume_measures = quantities.contains(Q::VolumeMeasures);
   const bool volume_moments = quantities.contains(Q::VolumeSecondMoments);
   // A face pass before a volume pass keeps the faces' surfaces for it.

@@ -45,11 +45,13 @@ std::vector<CellSplit> Tissue::splitCells(std::span<const CellSplitPlan2D> plans
   // Plans as chords. A new vertex on an edge another plan cuts first is
   // reused when it lies within this plan's snap distance of its plane (as
   // planning after that plan was applied would have snapped to it).
-  std::vector<FaceChord> chords(plans.size());
+  // (Unwritten until the loop, which writes each chord whole: no serial zeroing.)
+  UninitializedVector<FaceChord> chords(plans.size());
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     const CellSplitPlan2D& p = plans[i];
     FaceChord& ch = chords[i];
+    ch = FaceChord{};
     ch.face = FaceId(p.cell.index());
     ch.new_face_from_0_to_1 = p.daughter_from_a_to_b;
     const CutNode* nodes[2] = {&p.a, &p.b};
