@@ -144,6 +144,18 @@ void douglasPeuckerWall(const std::vector<std::int32_t>& ch, std::size_t lo, std
                         std::vector<InnerCorner>& inner) {
   if (hi == lo + 1) return simplifyEdge(pos, ch[lo], ch[hi], tol, keep_one, inner);
   if (hi <= lo) return;
+  if (tol == 0) {
+    // Where every inner vertex turns (its edges not on one line), each range of two or more edges has one at a
+    // positive distance from its chord, which the test finds positive (quarter-pixel coordinates, exact orient):
+    // the recursion keeps every vertex and ends at every edge, left to right. The same result without it.
+    bool turns = true;
+    for (std::size_t i = lo + 1; i < hi && turns; ++i) turns = orient(pos[ch[i - 1]], pos[ch[i]], pos[ch[i + 1]]) != 0;
+    if (turns) {
+      for (std::size_t i = lo + 1; i < hi; ++i) keep[ch[i]] = 1;
+      for (std::size_t i = lo; i < hi; ++i) simplifyEdge(pos, ch[i], ch[i + 1], tol, false, inner);
+      return;
+    }
+  }
   double worst = -1;
   std::size_t at = lo;
   for (std::size_t i = lo + 1; i < hi; ++i)
