@@ -961,6 +961,7 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
     std::vector<char> dirty(n_walls, 1), redo(n_walls, 0);
     std::vector<Segment> segs;
     std::vector<std::int32_t> bucket_off, bucket_segs;
+    std::vector<char> active;  // after the first round: the buckets to test
     for (int round = 0;; ++round) {
       std::fill(redo.begin(), redo.end(), 0);
       segs.clear();
@@ -974,23 +975,35 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
           prev = v;
         }
       }
+      // The buckets a segment's bounding box meets (x + 1 > 0: the cast is the floor).
       auto forBuckets = [&](const Segment& sg, auto&& f) {
         const Vec3 &p = pos[sg.a], &q = pos[sg.b];
-        const auto bx0 = static_cast<std::size_t>(std::floor((std::min(p.x(), q.x()) + 1) / bucket));
-        const auto bx1 = static_cast<std::size_t>(std::floor((std::max(p.x(), q.x()) + 1) / bucket));
-        const auto by0 = static_cast<std::size_t>(std::floor((std::min(p.y(), q.y()) + 1) / bucket));
-        const auto by1 = static_cast<std::size_t>(std::floor((std::max(p.y(), q.y()) + 1) / bucket));
+        const auto bx0 = static_cast<std::size_t>((std::min(p.x(), q.x()) + 1) / bucket);
+        const auto bx1 = static_cast<std::size_t>((std::max(p.x(), q.x()) + 1) / bucket);
+        const auto by0 = static_cast<std::size_t>((std::min(p.y(), q.y()) + 1) / bucket);
+        const auto by1 = static_cast<std::size_t>((std::max(p.y(), q.y()) + 1) / bucket);
         for (std::size_t by = by0; by <= by1; ++by)
           for (std::size_t bx = bx0; bx <= bx1; ++bx) f(by * nbx + bx);
       };
+      // Only the buckets a changed wall's segment passes through are tested (a pair of unchanged walls is
+      // skipped anyway); in the first round every wall has changed.
+      if (round > 0) {
+        active.assign(nbx * nby, 0);
+        for (const Segment& sg : segs)
+          if (dirty[sg.wall]) forBuckets(sg, [&](std::size_t b) { active[b] = 1; });
+      }
+      auto used = [&](std::size_t b) { return round == 0 || active[b]; };
       bucket_off.assign(nbx * nby + 1, 0);
-      for (const Segment& sg : segs) forBuckets(sg, [&](std::size_t b) { ++bucket_off[b + 1]; });
+      for (const Segment& sg : segs)
+        forBuckets(sg, [&](std::size_t b) { bucket_off[b + 1] += used(b); });
       std::partial_sum(bucket_off.begin(), bucket_off.end(), bucket_off.begin());
       bucket_segs.resize(static_cast<std::size_t>(bucket_off.back()));
       {
         std::vector<std::int32_t> fill(bucket_off.begin(), bucket_off.end() - 1);
-        for (std::size_t s = 0; s < segs.size(); ++s)
-          forBuckets(segs[s], [&](std::size_t b) { bucket_segs[fill[b]++] = static_cast<std::int32_t>(s); });
+        for (std::size_t k = 0; k < segs.size(); ++k)
+          forBuckets(segs[k], [&](std::size_t b) {
+            if (used(b)) bucket_segs[static_cast<std::size_t>(fill[b]++)] = static_cast<std::int32_t>(k);
+          });
       }
       // Buckets and cells in parallel: `redo` only ever becomes 1.
       auto setRedo = [&](std::int32_t wi) {
