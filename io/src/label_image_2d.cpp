@@ -729,97 +729,108 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
   }
 
   // Walls: chains of edges between junctions; a closed chain without one starts at its first vertex.
+  // Outlines: per cell, its boundary edges chained the way the cell runs (counter-clockwise), from its first
+  // edge (the edges of each cell in increasing order); the loop through a cell's first edge (each cell writes
+  // its own outline); a cell whose loop misses some of its edges has several loops (a hole), reported below.
+  // The two walks share no data: they run side by side, one thread each (the outlines' loop over blocks of cells
+  // then runs on its section's thread; the result is the same for any number of threads).
   Walls walls;
   std::vector<std::array<std::int32_t, 2>> wall_cells;  // -1: none (the outside)
-  std::vector<std::int32_t> edge_wall(n_edges, -1);
-  auto walk = [&](std::int32_t start, std::int32_t e0) {
-    const auto wi = static_cast<std::int32_t>(walls.size());
-    walls.chain.push_back(start);
-    std::int32_t v = start, e = e0;
-    for (;;) {
-      edge_wall[e] = wi;
-      const bool forward = edges[e].u == v;  // arriving at v, the end of e: follow[e][0] is the other edge there
-      v = forward ? edges[e].v : edges[e].u;
-      walls.chain.push_back(v);
-      if (junction[v]) break;
-      e = follow[e][forward ? 0 : 1];
-    }
-    walls.off.push_back(static_cast<std::int32_t>(walls.chain.size()));
-    walls.tol.push_back(o.simplify);
-    walls.keep_one.push_back(0);
-    wall_cells.push_back({edges[e0].left, edges[e0].right});
-  };
-  for (std::size_t v = 0; v < nv; ++v)
-    if (junction[v])
-      for (int k = 0; k < degree[v]; ++k)
-        if (edge_wall[incident[v][k]] < 0) walk(static_cast<std::int32_t>(v), incident[v][k]);
-  for (std::size_t e = 0; e < n_edges; ++e)
-    if (edge_wall[e] < 0) {
-      junction[edges[e].u] = 1;
-      walk(edges[e].u, static_cast<std::int32_t>(e));
-    }
-  std::vector<std::int32_t>().swap(edge_wall);
-  const std::size_t n_walls = walls.size();
-
-  // Outlines: per cell, its boundary edges chained the way the cell runs (counter-clockwise), from its first
-  // edge (the edges of each cell in increasing order).
   Csr<std::int32_t> cell_edges;
-  cell_edges.off.assign(n_cells + 1, 0);
-  for (const BoundaryEdge& e : edges) {
-    if (e.left >= 0) ++cell_edges.off[static_cast<std::size_t>(e.left) + 1];
-    if (e.right >= 0) ++cell_edges.off[static_cast<std::size_t>(e.right) + 1];
-  }
-  std::partial_sum(cell_edges.off.begin(), cell_edges.off.end(), cell_edges.off.begin());
-  cell_edges.items.resize(static_cast<std::size_t>(cell_edges.off.back()));
-  {
-    std::vector<std::int32_t> fill(cell_edges.off.begin(), cell_edges.off.end() - 1);
-    for (std::size_t e = 0; e < n_edges; ++e) {
-      if (edges[e].left >= 0) cell_edges.items[fill[edges[e].left]++] = static_cast<std::int32_t>(e);
-      if (edges[e].right >= 0) cell_edges.items[fill[edges[e].right]++] = static_cast<std::int32_t>(e);
-    }
-  }
-  // The loop through a cell's first edge, for every cell in parallel (each writes its own outline); a cell
-  // whose loop misses some of its edges has several loops (a hole), reported below.
   Csr<std::int32_t> outlines;  // the vertices, in loop order
-  outlines.off = cell_edges.off;
-  outlines.items.resize(cell_edges.items.size());
   std::vector<std::uint8_t> outline_fault(n_cells, 0);
-  // Each step of a walk waits for a load from memory (the edges are far apart): a block of cells is walked
-  // kLanes at a time, one step of each in turn, so that their loads overlap. Each cell's walk is its own.
-  {
-    constexpr std::size_t kBlock = 512;
-    constexpr int kLanes = 8;
-    const auto n_blocks = static_cast<std::ptrdiff_t>((n_cells + kBlock - 1) / kBlock);
-#pragma omp parallel for schedule(dynamic, 1)
-    for (std::ptrdiff_t blk = 0; blk < n_blocks; ++blk) {
-      struct Lane {
-        std::int32_t c = -1, begin = 0, count = 0, e0 = 0, e = 0, k = 0;
-      };
-      std::array<Lane, kLanes> lanes;
-      std::size_t c_next = static_cast<std::size_t>(blk) * kBlock;
-      const std::size_t c_end = std::min(n_cells, c_next + kBlock);
-      auto start = [&](Lane& l) {
-        if (c_next == c_end) return false;
-        const std::size_t c = c_next++;
-        l.c = static_cast<std::int32_t>(c), l.begin = cell_edges.off[c], l.count = cell_edges.off[c + 1] - l.begin;
-        l.e = l.e0 = cell_edges.items[static_cast<std::size_t>(l.begin)], l.k = 0;
-        return true;
-      };
-      int active = 0;
-      for (Lane& l : lanes) active += start(l);
-      while (active > 0)
-        for (Lane& l : lanes) {
-          if (l.c < 0) continue;
-          // The cell's edge leaving each vertex: one at most, as pinched corners are bridged.
-          const bool left = edges[l.e].left == l.c;
-          outlines.items[static_cast<std::size_t>(l.begin + l.k++)] = left ? edges[l.e].u : edges[l.e].v;
-          l.e = follow[l.e][left ? 0 : 1];
-          if (l.e >= 0 && l.e != l.e0 && l.k < l.count) continue;
-          outline_fault[static_cast<std::size_t>(l.c)] = l.e != l.e0 || l.k > l.count ? 2 : l.k < l.count ? 1 : 0;
-          if (!start(l)) l.c = -1, --active;
-        }
+  auto traceWalls = [&] {
+    std::vector<std::int32_t> edge_wall(n_edges, -1);
+    auto walk = [&](std::int32_t start, std::int32_t e0) {
+      const auto wi = static_cast<std::int32_t>(walls.size());
+      walls.chain.push_back(start);
+      std::int32_t v = start, e = e0;
+      for (;;) {
+        edge_wall[e] = wi;
+        const bool forward = edges[e].u == v;  // arriving at v, the end of e: follow[e][0] is the other edge there
+        v = forward ? edges[e].v : edges[e].u;
+        walls.chain.push_back(v);
+        if (junction[v]) break;
+        e = follow[e][forward ? 0 : 1];
+      }
+      walls.off.push_back(static_cast<std::int32_t>(walls.chain.size()));
+      walls.tol.push_back(o.simplify);
+      walls.keep_one.push_back(0);
+      wall_cells.push_back({edges[e0].left, edges[e0].right});
+    };
+    for (std::size_t v = 0; v < nv; ++v)
+      if (junction[v])
+        for (int k = 0; k < degree[v]; ++k)
+          if (edge_wall[incident[v][k]] < 0) walk(static_cast<std::int32_t>(v), incident[v][k]);
+    for (std::size_t e = 0; e < n_edges; ++e)
+      if (edge_wall[e] < 0) {
+        junction[edges[e].u] = 1;
+        walk(edges[e].u, static_cast<std::int32_t>(e));
+      }
+    std::vector<std::int32_t>().swap(edge_wall);
+  };
+  auto traceOutlines = [&] {
+    cell_edges.off.assign(n_cells + 1, 0);
+    for (const BoundaryEdge& e : edges) {
+      if (e.left >= 0) ++cell_edges.off[static_cast<std::size_t>(e.left) + 1];
+      if (e.right >= 0) ++cell_edges.off[static_cast<std::size_t>(e.right) + 1];
     }
+    std::partial_sum(cell_edges.off.begin(), cell_edges.off.end(), cell_edges.off.begin());
+    cell_edges.items.resize(static_cast<std::size_t>(cell_edges.off.back()));
+    {
+      std::vector<std::int32_t> fill(cell_edges.off.begin(), cell_edges.off.end() - 1);
+      for (std::size_t e = 0; e < n_edges; ++e) {
+        if (edges[e].left >= 0) cell_edges.items[fill[edges[e].left]++] = static_cast<std::int32_t>(e);
+        if (edges[e].right >= 0) cell_edges.items[fill[edges[e].right]++] = static_cast<std::int32_t>(e);
+      }
+    }
+    outlines.off = cell_edges.off;
+    outlines.items.resize(cell_edges.items.size());
+    // Each step of a walk waits for a load from memory (the edges are far apart): a block of cells is walked
+    // kLanes at a time, one step of each in turn, so that their loads overlap. Each cell's walk is its own.
+    {
+      constexpr std::size_t kBlock = 512;
+      constexpr int kLanes = 8;
+      const auto n_blocks = static_cast<std::ptrdiff_t>((n_cells + kBlock - 1) / kBlock);
+#pragma omp parallel for schedule(dynamic, 1)
+      for (std::ptrdiff_t blk = 0; blk < n_blocks; ++blk) {
+        struct Lane {
+          std::int32_t c = -1, begin = 0, count = 0, e0 = 0, e = 0, k = 0;
+        };
+        std::array<Lane, kLanes> lanes;
+        std::size_t c_next = static_cast<std::size_t>(blk) * kBlock;
+        const std::size_t c_end = std::min(n_cells, c_next + kBlock);
+        auto start = [&](Lane& l) {
+          if (c_next == c_end) return false;
+          const std::size_t c = c_next++;
+          l.c = static_cast<std::int32_t>(c), l.begin = cell_edges.off[c], l.count = cell_edges.off[c + 1] - l.begin;
+          l.e = l.e0 = cell_edges.items[static_cast<std::size_t>(l.begin)], l.k = 0;
+          return true;
+        };
+        int active = 0;
+        for (Lane& l : lanes) active += start(l);
+        while (active > 0)
+          for (Lane& l : lanes) {
+            if (l.c < 0) continue;
+            // The cell's edge leaving each vertex: one at most, as pinched corners are bridged.
+            const bool left = edges[l.e].left == l.c;
+            outlines.items[static_cast<std::size_t>(l.begin + l.k++)] = left ? edges[l.e].u : edges[l.e].v;
+            l.e = follow[l.e][left ? 0 : 1];
+            if (l.e >= 0 && l.e != l.e0 && l.k < l.count) continue;
+            outline_fault[static_cast<std::size_t>(l.c)] = l.e != l.e0 || l.k > l.count ? 2 : l.k < l.count ? 1 : 0;
+            if (!start(l)) l.c = -1, --active;
+          }
+      }
+    }
+  };
+#pragma omp parallel sections num_threads(std::min(2, omp_get_max_threads()))
+  {
+#pragma omp section
+    traceWalls();
+#pragma omp section
+    traceOutlines();
   }
+  const std::size_t n_walls = walls.size();
   for (std::size_t c = 0; c < n_cells; ++c) {
     if (!outline_fault[c]) continue;
     // Every loop of the cell, for the message.
