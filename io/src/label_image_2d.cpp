@@ -964,11 +964,17 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
         for (const std::int32_t c : wall_cells[wi])
           if (c >= 0) cell_walls.items[fill[c]++] = static_cast<std::int32_t>(wi);
     }
-    // The crossing test: every pair of segments in one bucket of a grid of 4 x 4 pixels is tested, unless
-    // neither wall changed since the last round (a pair that did not conflict then does not now; a wall that
-    // conflicted was redone). Cells are checked again when one of their walls changed.
-    const double bucket = 4;
-    const auto nbx = static_cast<std::size_t>(w / 4 + 2), nby = static_cast<std::size_t>(h / 4 + 2);
+    // The crossing test: every pair of segments in one bucket of a grid of kBucket x kBucket pixels whose
+    // bounding boxes meet is tested, unless neither wall changed since the last round (a pair that did not
+    // conflict then does not now; a wall that conflicted was redone). Two segments that conflict share a point,
+    // so a bucket and their boxes hold it: the size of the buckets changes what is tested, not the result.
+    // Cells are checked again when one of their walls changed.
+    constexpr std::int64_t kBucket = 8;
+    const auto nbx = static_cast<std::size_t>(w / kBucket + 2), nby = static_cast<std::size_t>(h / kBucket + 2);
+    struct Box {
+      float x0, y0, x1, y1;  // quarter pixels: exact
+    };
+    std::vector<Box> boxes;
     std::vector<char> dirty(n_walls, 1), redo(n_walls, 0);
     std::vector<Segment> segs;
     std::vector<std::int32_t> bucket_off, bucket_segs;
@@ -986,33 +992,39 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
           prev = v;
         }
       }
+      boxes.resize(segs.size());
+      for (std::size_t k = 0; k < segs.size(); ++k) {
+        const Vec3 &p = pos[segs[k].a], &q = pos[segs[k].b];
+        boxes[k] = {static_cast<float>(std::min(p.x(), q.x())), static_cast<float>(std::min(p.y(), q.y())),
+                    static_cast<float>(std::max(p.x(), q.x())), static_cast<float>(std::max(p.y(), q.y()))};
+      }
       // The buckets a segment's bounding box meets (x + 1 > 0: the cast is the floor).
-      auto forBuckets = [&](const Segment& sg, auto&& f) {
-        const Vec3 &p = pos[sg.a], &q = pos[sg.b];
-        const auto bx0 = static_cast<std::size_t>((std::min(p.x(), q.x()) + 1) / bucket);
-        const auto bx1 = static_cast<std::size_t>((std::max(p.x(), q.x()) + 1) / bucket);
-        const auto by0 = static_cast<std::size_t>((std::min(p.y(), q.y()) + 1) / bucket);
-        const auto by1 = static_cast<std::size_t>((std::max(p.y(), q.y()) + 1) / bucket);
+      auto forBuckets = [&](std::size_t k, auto&& f) {
+        const Box& bx = boxes[k];
+        constexpr float size = kBucket;
+        const auto bx0 = static_cast<std::size_t>((bx.x0 + 1) / size);
+        const auto bx1 = static_cast<std::size_t>((bx.x1 + 1) / size);
+        const auto by0 = static_cast<std::size_t>((bx.y0 + 1) / size);
+        const auto by1 = static_cast<std::size_t>((bx.y1 + 1) / size);
         for (std::size_t by = by0; by <= by1; ++by)
-          for (std::size_t bx = bx0; bx <= bx1; ++bx) f(by * nbx + bx);
+          for (std::size_t x = bx0; x <= bx1; ++x) f(by * nbx + x);
       };
       // Only the buckets a changed wall's segment passes through are tested (a pair of unchanged walls is
       // skipped anyway); in the first round every wall has changed.
       if (round > 0) {
         active.assign(nbx * nby, 0);
-        for (const Segment& sg : segs)
-          if (dirty[sg.wall]) forBuckets(sg, [&](std::size_t b) { active[b] = 1; });
+        for (std::size_t k = 0; k < segs.size(); ++k)
+          if (dirty[segs[k].wall]) forBuckets(k, [&](std::size_t b) { active[b] = 1; });
       }
       auto used = [&](std::size_t b) { return round == 0 || active[b]; };
       bucket_off.assign(nbx * nby + 1, 0);
-      for (const Segment& sg : segs)
-        forBuckets(sg, [&](std::size_t b) { bucket_off[b + 1] += used(b); });
+      for (std::size_t k = 0; k < segs.size(); ++k) forBuckets(k, [&](std::size_t b) { bucket_off[b + 1] += used(b); });
       std::partial_sum(bucket_off.begin(), bucket_off.end(), bucket_off.begin());
       bucket_segs.resize(static_cast<std::size_t>(bucket_off.back()));
       {
         std::vector<std::int32_t> fill(bucket_off.begin(), bucket_off.end() - 1);
         for (std::size_t k = 0; k < segs.size(); ++k)
-          forBuckets(segs[k], [&](std::size_t b) {
+          forBuckets(k, [&](std::size_t b) {
             if (used(b)) bucket_segs[static_cast<std::size_t>(fill[b]++)] = static_cast<std::int32_t>(k);
           });
       }
@@ -1024,6 +1036,8 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
       for (std::ptrdiff_t b = 0; b < static_cast<std::ptrdiff_t>(nbx * nby); ++b)
         for (auto i = bucket_off[b]; i < bucket_off[b + 1]; ++i)
           for (auto j = i + 1; j < bucket_off[b + 1]; ++j) {
+            const Box &bs = boxes[bucket_segs[i]], &bt = boxes[bucket_segs[j]];
+            if (bs.x0 > bt.x1 || bt.x0 > bs.x1 || bs.y0 > bt.y1 || bt.y0 > bs.y1) continue;
             const Segment &s = segs[bucket_segs[i]], &t = segs[bucket_segs[j]];
             if ((dirty[s.wall] || dirty[t.wall]) && conflict(s, t, pos)) setRedo(s.wall), setRedo(t.wall);
           }
