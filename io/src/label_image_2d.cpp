@@ -144,6 +144,18 @@ void douglasPeuckerWall(const std::vector<std::int32_t>& ch, std::size_t lo, std
                         std::vector<InnerCorner>& inner) {
   if (hi == lo + 1) return simplifyEdge(pos, ch[lo], ch[hi], tol, keep_one, inner);
   if (hi <= lo) return;
+  if (tol == 0) {
+    // Where every inner vertex turns (its edges not on one line), each range of two or more edges has one at a
+    // positive distance from its chord, which the test finds positive (quarter-pixel coordinates, exact orient):
+    // the recursion keeps every vertex and ends at every edge, left to right. The same result without it.
+    bool turns = true;
+    for (std::size_t i = lo + 1; i < hi && turns; ++i) turns = orient(pos[ch[i - 1]], pos[ch[i]], pos[ch[i + 1]]) != 0;
+    if (turns) {
+      for (std::size_t i = lo + 1; i < hi; ++i) keep[ch[i]] = 1;
+      for (std::size_t i = lo; i < hi; ++i) simplifyEdge(pos, ch[i], ch[i + 1], tol, false, inner);
+      return;
+    }
+  }
   double worst = -1;
   std::size_t at = lo;
   for (std::size_t i = lo + 1; i < hi; ++i)
@@ -717,97 +729,108 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
   }
 
   // Walls: chains of edges between junctions; a closed chain without one starts at its first vertex.
+  // Outlines: per cell, its boundary edges chained the way the cell runs (counter-clockwise), from its first
+  // edge (the edges of each cell in increasing order); the loop through a cell's first edge (each cell writes
+  // its own outline); a cell whose loop misses some of its edges has several loops (a hole), reported below.
+  // The two walks share no data: they run side by side, one thread each (the outlines' loop over blocks of cells
+  // then runs on its section's thread; the result is the same for any number of threads).
   Walls walls;
   std::vector<std::array<std::int32_t, 2>> wall_cells;  // -1: none (the outside)
-  std::vector<std::int32_t> edge_wall(n_edges, -1);
-  auto walk = [&](std::int32_t start, std::int32_t e0) {
-    const auto wi = static_cast<std::int32_t>(walls.size());
-    walls.chain.push_back(start);
-    std::int32_t v = start, e = e0;
-    for (;;) {
-      edge_wall[e] = wi;
-      const bool forward = edges[e].u == v;  // arriving at v, the end of e: follow[e][0] is the other edge there
-      v = forward ? edges[e].v : edges[e].u;
-      walls.chain.push_back(v);
-      if (junction[v]) break;
-      e = follow[e][forward ? 0 : 1];
-    }
-    walls.off.push_back(static_cast<std::int32_t>(walls.chain.size()));
-    walls.tol.push_back(o.simplify);
-    walls.keep_one.push_back(0);
-    wall_cells.push_back({edges[e0].left, edges[e0].right});
-  };
-  for (std::size_t v = 0; v < nv; ++v)
-    if (junction[v])
-      for (int k = 0; k < degree[v]; ++k)
-        if (edge_wall[incident[v][k]] < 0) walk(static_cast<std::int32_t>(v), incident[v][k]);
-  for (std::size_t e = 0; e < n_edges; ++e)
-    if (edge_wall[e] < 0) {
-      junction[edges[e].u] = 1;
-      walk(edges[e].u, static_cast<std::int32_t>(e));
-    }
-  std::vector<std::int32_t>().swap(edge_wall);
-  const std::size_t n_walls = walls.size();
-
-  // Outlines: per cell, its boundary edges chained the way the cell runs (counter-clockwise), from its first
-  // edge (the edges of each cell in increasing order).
   Csr<std::int32_t> cell_edges;
-  cell_edges.off.assign(n_cells + 1, 0);
-  for (const BoundaryEdge& e : edges) {
-    if (e.left >= 0) ++cell_edges.off[static_cast<std::size_t>(e.left) + 1];
-    if (e.right >= 0) ++cell_edges.off[static_cast<std::size_t>(e.right) + 1];
-  }
-  std::partial_sum(cell_edges.off.begin(), cell_edges.off.end(), cell_edges.off.begin());
-  cell_edges.items.resize(static_cast<std::size_t>(cell_edges.off.back()));
-  {
-    std::vector<std::int32_t> fill(cell_edges.off.begin(), cell_edges.off.end() - 1);
-    for (std::size_t e = 0; e < n_edges; ++e) {
-      if (edges[e].left >= 0) cell_edges.items[fill[edges[e].left]++] = static_cast<std::int32_t>(e);
-      if (edges[e].right >= 0) cell_edges.items[fill[edges[e].right]++] = static_cast<std::int32_t>(e);
-    }
-  }
-  // The loop through a cell's first edge, for every cell in parallel (each writes its own outline); a cell
-  // whose loop misses some of its edges has several loops (a hole), reported below.
   Csr<std::int32_t> outlines;  // the vertices, in loop order
-  outlines.off = cell_edges.off;
-  outlines.items.resize(cell_edges.items.size());
   std::vector<std::uint8_t> outline_fault(n_cells, 0);
-  // Each step of a walk waits for a load from memory (the edges are far apart): a block of cells is walked
-  // kLanes at a time, one step of each in turn, so that their loads overlap. Each cell's walk is its own.
-  {
-    constexpr std::size_t kBlock = 512;
-    constexpr int kLanes = 8;
-    const auto n_blocks = static_cast<std::ptrdiff_t>((n_cells + kBlock - 1) / kBlock);
-#pragma omp parallel for schedule(dynamic, 1)
-    for (std::ptrdiff_t blk = 0; blk < n_blocks; ++blk) {
-      struct Lane {
-        std::int32_t c = -1, begin = 0, count = 0, e0 = 0, e = 0, k = 0;
-      };
-      std::array<Lane, kLanes> lanes;
-      std::size_t c_next = static_cast<std::size_t>(blk) * kBlock;
-      const std::size_t c_end = std::min(n_cells, c_next + kBlock);
-      auto start = [&](Lane& l) {
-        if (c_next == c_end) return false;
-        const std::size_t c = c_next++;
-        l.c = static_cast<std::int32_t>(c), l.begin = cell_edges.off[c], l.count = cell_edges.off[c + 1] - l.begin;
-        l.e = l.e0 = cell_edges.items[static_cast<std::size_t>(l.begin)], l.k = 0;
-        return true;
-      };
-      int active = 0;
-      for (Lane& l : lanes) active += start(l);
-      while (active > 0)
-        for (Lane& l : lanes) {
-          if (l.c < 0) continue;
-          // The cell's edge leaving each vertex: one at most, as pinched corners are bridged.
-          const bool left = edges[l.e].left == l.c;
-          outlines.items[static_cast<std::size_t>(l.begin + l.k++)] = left ? edges[l.e].u : edges[l.e].v;
-          l.e = follow[l.e][left ? 0 : 1];
-          if (l.e >= 0 && l.e != l.e0 && l.k < l.count) continue;
-          outline_fault[static_cast<std::size_t>(l.c)] = l.e != l.e0 || l.k > l.count ? 2 : l.k < l.count ? 1 : 0;
-          if (!start(l)) l.c = -1, --active;
-        }
+  auto traceWalls = [&] {
+    std::vector<std::int32_t> edge_wall(n_edges, -1);
+    auto walk = [&](std::int32_t start, std::int32_t e0) {
+      const auto wi = static_cast<std::int32_t>(walls.size());
+      walls.chain.push_back(start);
+      std::int32_t v = start, e = e0;
+      for (;;) {
+        edge_wall[e] = wi;
+        const bool forward = edges[e].u == v;  // arriving at v, the end of e: follow[e][0] is the other edge there
+        v = forward ? edges[e].v : edges[e].u;
+        walls.chain.push_back(v);
+        if (junction[v]) break;
+        e = follow[e][forward ? 0 : 1];
+      }
+      walls.off.push_back(static_cast<std::int32_t>(walls.chain.size()));
+      walls.tol.push_back(o.simplify);
+      walls.keep_one.push_back(0);
+      wall_cells.push_back({edges[e0].left, edges[e0].right});
+    };
+    for (std::size_t v = 0; v < nv; ++v)
+      if (junction[v])
+        for (int k = 0; k < degree[v]; ++k)
+          if (edge_wall[incident[v][k]] < 0) walk(static_cast<std::int32_t>(v), incident[v][k]);
+    for (std::size_t e = 0; e < n_edges; ++e)
+      if (edge_wall[e] < 0) {
+        junction[edges[e].u] = 1;
+        walk(edges[e].u, static_cast<std::int32_t>(e));
+      }
+    std::vector<std::int32_t>().swap(edge_wall);
+  };
+  auto traceOutlines = [&] {
+    cell_edges.off.assign(n_cells + 1, 0);
+    for (const BoundaryEdge& e : edges) {
+      if (e.left >= 0) ++cell_edges.off[static_cast<std::size_t>(e.left) + 1];
+      if (e.right >= 0) ++cell_edges.off[static_cast<std::size_t>(e.right) + 1];
     }
+    std::partial_sum(cell_edges.off.begin(), cell_edges.off.end(), cell_edges.off.begin());
+    cell_edges.items.resize(static_cast<std::size_t>(cell_edges.off.back()));
+    {
+      std::vector<std::int32_t> fill(cell_edges.off.begin(), cell_edges.off.end() - 1);
+      for (std::size_t e = 0; e < n_edges; ++e) {
+        if (edges[e].left >= 0) cell_edges.items[fill[edges[e].left]++] = static_cast<std::int32_t>(e);
+        if (edges[e].right >= 0) cell_edges.items[fill[edges[e].right]++] = static_cast<std::int32_t>(e);
+      }
+    }
+    outlines.off = cell_edges.off;
+    outlines.items.resize(cell_edges.items.size());
+    // Each step of a walk waits for a load from memory (the edges are far apart): a block of cells is walked
+    // kLanes at a time, one step of each in turn, so that their loads overlap. Each cell's walk is its own.
+    {
+      constexpr std::size_t kBlock = 512;
+      constexpr int kLanes = 8;
+      const auto n_blocks = static_cast<std::ptrdiff_t>((n_cells + kBlock - 1) / kBlock);
+#pragma omp parallel for schedule(dynamic, 1)
+      for (std::ptrdiff_t blk = 0; blk < n_blocks; ++blk) {
+        struct Lane {
+          std::int32_t c = -1, begin = 0, count = 0, e0 = 0, e = 0, k = 0;
+        };
+        std::array<Lane, kLanes> lanes;
+        std::size_t c_next = static_cast<std::size_t>(blk) * kBlock;
+        const std::size_t c_end = std::min(n_cells, c_next + kBlock);
+        auto start = [&](Lane& l) {
+          if (c_next == c_end) return false;
+          const std::size_t c = c_next++;
+          l.c = static_cast<std::int32_t>(c), l.begin = cell_edges.off[c], l.count = cell_edges.off[c + 1] - l.begin;
+          l.e = l.e0 = cell_edges.items[static_cast<std::size_t>(l.begin)], l.k = 0;
+          return true;
+        };
+        int active = 0;
+        for (Lane& l : lanes) active += start(l);
+        while (active > 0)
+          for (Lane& l : lanes) {
+            if (l.c < 0) continue;
+            // The cell's edge leaving each vertex: one at most, as pinched corners are bridged.
+            const bool left = edges[l.e].left == l.c;
+            outlines.items[static_cast<std::size_t>(l.begin + l.k++)] = left ? edges[l.e].u : edges[l.e].v;
+            l.e = follow[l.e][left ? 0 : 1];
+            if (l.e >= 0 && l.e != l.e0 && l.k < l.count) continue;
+            outline_fault[static_cast<std::size_t>(l.c)] = l.e != l.e0 || l.k > l.count ? 2 : l.k < l.count ? 1 : 0;
+            if (!start(l)) l.c = -1, --active;
+          }
+      }
+    }
+  };
+#pragma omp parallel sections num_threads(std::min(2, omp_get_max_threads()))
+  {
+#pragma omp section
+    traceWalls();
+#pragma omp section
+    traceOutlines();
   }
+  const std::size_t n_walls = walls.size();
   for (std::size_t c = 0; c < n_cells; ++c) {
     if (!outline_fault[c]) continue;
     // Every loop of the cell, for the message.
@@ -941,14 +964,21 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
         for (const std::int32_t c : wall_cells[wi])
           if (c >= 0) cell_walls.items[fill[c]++] = static_cast<std::int32_t>(wi);
     }
-    // The crossing test: every pair of segments in one bucket of a grid of 4 x 4 pixels is tested, unless
-    // neither wall changed since the last round (a pair that did not conflict then does not now; a wall that
-    // conflicted was redone). Cells are checked again when one of their walls changed.
-    const double bucket = 4;
-    const auto nbx = static_cast<std::size_t>(w / 4 + 2), nby = static_cast<std::size_t>(h / 4 + 2);
+    // The crossing test: every pair of segments in one bucket of a grid of kBucket x kBucket pixels whose
+    // bounding boxes meet is tested, unless neither wall changed since the last round (a pair that did not
+    // conflict then does not now; a wall that conflicted was redone). Two segments that conflict share a point,
+    // so a bucket and their boxes hold it: the size of the buckets changes what is tested, not the result.
+    // Cells are checked again when one of their walls changed.
+    constexpr std::int64_t kBucket = 8;
+    const auto nbx = static_cast<std::size_t>(w / kBucket + 2), nby = static_cast<std::size_t>(h / kBucket + 2);
+    struct Box {
+      float x0, y0, x1, y1;  // quarter pixels: exact
+    };
+    std::vector<Box> boxes;
     std::vector<char> dirty(n_walls, 1), redo(n_walls, 0);
     std::vector<Segment> segs;
     std::vector<std::int32_t> bucket_off, bucket_segs;
+    std::vector<char> active;  // after the first round: the buckets to test
     for (int round = 0;; ++round) {
       std::fill(redo.begin(), redo.end(), 0);
       segs.clear();
@@ -962,23 +992,41 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
           prev = v;
         }
       }
-      auto forBuckets = [&](const Segment& sg, auto&& f) {
-        const Vec3 &p = pos[sg.a], &q = pos[sg.b];
-        const auto bx0 = static_cast<std::size_t>(std::floor((std::min(p.x(), q.x()) + 1) / bucket));
-        const auto bx1 = static_cast<std::size_t>(std::floor((std::max(p.x(), q.x()) + 1) / bucket));
-        const auto by0 = static_cast<std::size_t>(std::floor((std::min(p.y(), q.y()) + 1) / bucket));
-        const auto by1 = static_cast<std::size_t>(std::floor((std::max(p.y(), q.y()) + 1) / bucket));
+      boxes.resize(segs.size());
+      for (std::size_t k = 0; k < segs.size(); ++k) {
+        const Vec3 &p = pos[segs[k].a], &q = pos[segs[k].b];
+        boxes[k] = {static_cast<float>(std::min(p.x(), q.x())), static_cast<float>(std::min(p.y(), q.y())),
+                    static_cast<float>(std::max(p.x(), q.x())), static_cast<float>(std::max(p.y(), q.y()))};
+      }
+      // The buckets a segment's bounding box meets (x + 1 > 0: the cast is the floor).
+      auto forBuckets = [&](std::size_t k, auto&& f) {
+        const Box& bx = boxes[k];
+        constexpr float size = kBucket;
+        const auto bx0 = static_cast<std::size_t>((bx.x0 + 1) / size);
+        const auto bx1 = static_cast<std::size_t>((bx.x1 + 1) / size);
+        const auto by0 = static_cast<std::size_t>((bx.y0 + 1) / size);
+        const auto by1 = static_cast<std::size_t>((bx.y1 + 1) / size);
         for (std::size_t by = by0; by <= by1; ++by)
-          for (std::size_t bx = bx0; bx <= bx1; ++bx) f(by * nbx + bx);
+          for (std::size_t x = bx0; x <= bx1; ++x) f(by * nbx + x);
       };
+      // Only the buckets a changed wall's segment passes through are tested (a pair of unchanged walls is
+      // skipped anyway); in the first round every wall has changed.
+      if (round > 0) {
+        active.assign(nbx * nby, 0);
+        for (std::size_t k = 0; k < segs.size(); ++k)
+          if (dirty[segs[k].wall]) forBuckets(k, [&](std::size_t b) { active[b] = 1; });
+      }
+      auto used = [&](std::size_t b) { return round == 0 || active[b]; };
       bucket_off.assign(nbx * nby + 1, 0);
-      for (const Segment& sg : segs) forBuckets(sg, [&](std::size_t b) { ++bucket_off[b + 1]; });
+      for (std::size_t k = 0; k < segs.size(); ++k) forBuckets(k, [&](std::size_t b) { bucket_off[b + 1] += used(b); });
       std::partial_sum(bucket_off.begin(), bucket_off.end(), bucket_off.begin());
       bucket_segs.resize(static_cast<std::size_t>(bucket_off.back()));
       {
         std::vector<std::int32_t> fill(bucket_off.begin(), bucket_off.end() - 1);
-        for (std::size_t s = 0; s < segs.size(); ++s)
-          forBuckets(segs[s], [&](std::size_t b) { bucket_segs[fill[b]++] = static_cast<std::int32_t>(s); });
+        for (std::size_t k = 0; k < segs.size(); ++k)
+          forBuckets(k, [&](std::size_t b) {
+            if (used(b)) bucket_segs[static_cast<std::size_t>(fill[b]++)] = static_cast<std::int32_t>(k);
+          });
       }
       // Buckets and cells in parallel: `redo` only ever becomes 1.
       auto setRedo = [&](std::int32_t wi) {
@@ -988,6 +1036,8 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
       for (std::ptrdiff_t b = 0; b < static_cast<std::ptrdiff_t>(nbx * nby); ++b)
         for (auto i = bucket_off[b]; i < bucket_off[b + 1]; ++i)
           for (auto j = i + 1; j < bucket_off[b + 1]; ++j) {
+            const Box &bs = boxes[bucket_segs[i]], &bt = boxes[bucket_segs[j]];
+            if (bs.x0 > bt.x1 || bt.x0 > bs.x1 || bs.y0 > bt.y1 || bt.y0 > bs.y1) continue;
             const Segment &s = segs[bucket_segs[i]], &t = segs[bucket_segs[j]];
             if ((dirty[s.wall] || dirty[t.wall]) && conflict(s, t, pos)) setRedo(s.wall), setRedo(t.wall);
           }
