@@ -47,6 +47,11 @@ namespace {
 constexpr std::int32_t kBackground = -1;  // outside inside the image; -2 - side beyond image side 0..5
 constexpr std::size_t kMaxNotes = 20;
 constexpr int kExtraSmoothing = 4;  // rounds of further smoothing for walls still crossing with every corner kept
+// The staircase (simplify 0): passes of smoothing along every junction line, rounds of further smoothing of the
+// lines of walls that fail the checks, then the largest Douglas-Peucker tolerance (voxels) tried on them.
+constexpr int kStaircasePasses = 2;
+constexpr int kStaircaseExtraSmoothing = 16;
+constexpr double kStaircaseMaxTolerance = 2;
 
 bool isPadding(std::int32_t l) { return l < kBackground; }
 
@@ -920,10 +925,11 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
     if (f.second >= 0) cell_walls[static_cast<std::size_t>(f.second)].push_back(static_cast<Index>(p));
   }
 
-  // With simplify > 0, smooth each junction polyline first (its ends fixed): repeated [1/4, 1/2, 1/4]
-  // averaging along it, ceil(8 * simplify) times (up to 32), takes the voxel staircase to a curve near the
-  // junction it samples, whose best-fit-plane projection no longer zigzags.
-  const int passes = static_cast<int>(std::min(32.0, std::ceil(8 * o.simplify)));
+  // Smooth each junction polyline first (its ends fixed): repeated [1/4, 1/2, 1/4] averaging along it,
+  // ceil(8 * simplify) times (up to 32; kStaircasePasses times at simplify 0), takes the voxel staircase to a
+  // curve near the junction it samples, whose best-fit-plane projection no longer zigzags.
+  const int passes =
+      o.simplify > 0 ? static_cast<int>(std::min(32.0, std::ceil(8 * o.simplify))) : kStaircasePasses;
   auto smoothLine = [&](const std::vector<std::int32_t>& ch) {
     std::vector<Vec3> next(ch.size());
     for (int pass = 0; pass < passes; ++pass) {
@@ -939,6 +945,14 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
   std::vector<char> keep(n_corners, 0);
   for (std::size_t u = 0; u < n_corners; ++u) keep[u] = is_vertex[u];
   for (const Polyline& pl : polylines) simplifyPolyline(pl, pos, keep);
+  std::map<std::pair<std::int32_t, std::int32_t>, int> same_ends;  // open junction lines by their two ends
+  std::map<std::pair<std::int32_t, std::int32_t>, std::int32_t> first_with_ends;  // and the first of them
+  for (std::size_t k = 0; k < polylines.size(); ++k) {
+    const auto& ch = polylines[k].chain;
+    if (ch.front() == ch.back()) continue;
+    ++same_ends[std::minmax(ch.front(), ch.back())];
+    first_with_ends.emplace(std::minmax(ch.front(), ch.back()), static_cast<std::int32_t>(k));
+  }
   {
     std::map<std::pair<std::int32_t, std::int32_t>, int> straight;
     for (Polyline& pl : polylines) {
@@ -951,6 +965,10 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       simplifyPolyline(pl, pos, keep);
     }
   }
+  // The staircase (simplify 0) keeps the corners where it turns (above), then smoothed.
+  if (o.simplify == 0)
+    for (const Polyline& pl : polylines)
+      if (pl.chain.size() >= 3) smoothLine(pl.chain);
   std::vector<double> six_volume(n_cells, 0);  // of each cell's wall polygons, in voxels
   // Walls changed since the last crossing test (two unchanged walls that did not meet still do not).
   std::vector<char> wall_changed(n_walls, 1);
@@ -968,12 +986,11 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
   // The crossing test's points: every junction-line corner, then the walls' fan centres (n_corners + wall).
   std::vector<Vec3> points(n_corners + n_walls);
   for (std::size_t u = 0; u < n_corners; ++u) points[u] = Vec3(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
-  // The staircase (simplify 0) is left as it is, and its walls are not tested against each other (that test
-  // costs as much as the rest of the import at 512^3): only the polygon and volume checks are reported.
-  const bool check_crossings = o.simplify > 0;
-  std::vector<char> refined(n_walls, 0);  // walls along a junction line simplified less than asked
+  std::vector<char> refined(n_walls, 0);    // walls along a junction line simplified less than asked (or smoothed)
+  std::vector<char> coarsened(n_walls, 0);  // simplify 0: walls along a junction line simplified after all
   std::size_t still_crossing = 0;
-  int extra_smoothing = 0;  // rounds of it, below: at most kExtraSmoothing
+  int extra_smoothing = 0;  // rounds of it, below: at most kExtraSmoothing (kStaircaseExtraSmoothing at simplify 0)
+  const int max_extra_smoothing = o.simplify > 0 ? kExtraSmoothing : kStaircaseExtraSmoothing;
   std::vector<char> unresolved(n_walls, 0);
   for (;;) {
     std::vector<char> redo(polylines.size(), 0), flagged(n_walls, 0);
@@ -1043,7 +1060,7 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       if (f.second >= 0) six_volume[static_cast<std::size_t>(f.second)] -= wall_volume[p];
       wall_tris.insert(wall_tris.end(), wall_tris_of[p].begin(), wall_tris_of[p].end());
     }
-    if (check_crossings) {
+    {
       // Triangles of two walls that cross (away from shared corners and edges): both walls are simplified less.
       // Pairs found through a grid of buckets; a pair is tested in the bucket holding the low corner
       // of the overlap of their bounding boxes only.
@@ -1122,7 +1139,7 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
         for (const Index p : cell_walls[c]) redoWall(p);
     if (!any) break;
     // Simplify less along the flagged walls' junction lines: half the tolerance, down to 1/64 voxel, then every
-    // corner. The staircase (simplify 0) is checked and left as it is.
+    // corner (simplify > 0); then smooth them further; at simplify 0, then simplify them after all (below).
     bool changed = false;
     std::fill(wall_changed.begin(), wall_changed.end(), 0);
     for (std::size_t k = 0; k < polylines.size() && o.simplify > 0; ++k) {
@@ -1132,17 +1149,40 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       changed = true;
       for (const std::int32_t p : polyline_walls[k]) wall_changed[static_cast<std::size_t>(p)] = 1, refined[p] = 1;
     }
-    if (!changed && o.simplify > 0 && extra_smoothing < kExtraSmoothing) {
+    auto smoothAgain = [&](std::size_t k) {
+      const auto& ch = polylines[k].chain;
+      if (ch.size() < 3) return;
+      // At simplify 0, of the lines with the same two ends only the first is smoothed further: smoothed on, two
+      // such lines tend to the same chord and their corners meet (a pinched wall).
+      if (o.simplify == 0 && ch.front() != ch.back() &&
+          first_with_ends.at(std::minmax(ch.front(), ch.back())) != static_cast<std::int32_t>(k))
+        return;
+      smoothLine(ch);
+      for (const std::int32_t u : ch) points[u] = Vec3(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
+      changed = true;
+      for (const std::int32_t p : polyline_walls[k]) wall_changed[static_cast<std::size_t>(p)] = 1, refined[p] = 1;
+    };
+    if (!changed && extra_smoothing < max_extra_smoothing) {
       // Every corner kept: smooth the flagged walls' junction lines further (as above, as many passes again).
       ++extra_smoothing;
+      for (std::size_t k = 0; k < polylines.size(); ++k)
+        if (redo[k]) smoothAgain(k);
+    } else if (!changed && o.simplify == 0) {
+      // The staircase still failing once smoothed: its junction lines are smoothed once more and simplified
+      // with 1/4 voxel, then twice that, up to kStaircaseMaxTolerance (fewer, longer segments: the fans
+      // through them follow the voxel interface less closely, which is what separates some thin cells').
       for (std::size_t k = 0; k < polylines.size(); ++k) {
-        if (!redo[k]) continue;
-        const auto& ch = polylines[k].chain;
-        if (ch.size() < 3) continue;
-        smoothLine(ch);
-        for (const std::int32_t u : ch) points[u] = Vec3(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
+        Polyline& pl = polylines[k];
+        if (!redo[k] || pl.tol >= kStaircaseMaxTolerance) continue;
+        pl.tol = pl.tol <= 0 ? 0.25 : 2 * pl.tol;
+        // A line sharing both ends with another keeps an inner corner (two straight ones would be one edge).
+        pl.keep_one = pl.keep_one || (pl.chain.front() != pl.chain.back() &&
+                                      same_ends[std::minmax(pl.chain.front(), pl.chain.back())] > 1);
+        smoothAgain(k);
+        simplifyPolyline(pl, pos, keep);
         changed = true;
-        for (const std::int32_t p : polyline_walls[k]) wall_changed[static_cast<std::size_t>(p)] = 1, refined[p] = 1;
+        for (const std::int32_t p : polyline_walls[k])
+          wall_changed[static_cast<std::size_t>(p)] = 1, refined[p] = 1, coarsened[p] = 1;
       }
     }
     for (std::size_t p = 0; p < n_walls; ++p) unresolved[p] = flagged[p] && !wall_changed[p];
@@ -1194,15 +1234,18 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
                          " of " + std::to_string(n_corners) + " junction-line voxel corners kept (simplify " +
                          formatNumber(o.simplify) + " voxels)");
   if (const auto n_refined = std::count(refined.begin(), refined.end(), 1); n_refined > 0)
-    report.notes.push_back(std::to_string(n_refined) + " wall(s) simplified less than asked along some of their "
-                           "junction lines (down to every corner, then smoothed further) so that no two walls cross");
+    report.notes.push_back(
+        std::to_string(n_refined) +
+        (o.simplify > 0 ? " wall(s) simplified less than asked along some of their junction lines (down to every "
+                          "corner, then smoothed further) so that no two walls cross"
+                        : " wall(s) smoothed further along some of their junction lines (" +
+                              std::to_string(std::count(coarsened.begin(), coarsened.end(), 1)) +
+                              " of them then simplified, up to " + formatNumber(kStaircaseMaxTolerance) +
+                              " voxels) so that no two walls cross"));
   if (still_crossing > 0)
     report.notes.push_back(std::to_string(still_crossing) +
-                           (check_crossings ? " wall(s) still cross another wall or fail the polygon checks with every "
-                                              "corner kept (voxel-scale features)"
-                                            : " wall(s) fail the polygon checks (simplify 0: walls are not tested "
-                                              "against each other)") +
-                           ": the mesher will refuse the tissue");
+                           " wall(s) still cross another wall or fail the polygon checks with every repair tried "
+                           "(voxel-scale features): the mesher will refuse the tissue");
   ImportOptions core = o;
   core.simplify = 0;  // done above, in voxels
   result = importComplex(m, core, std::move(report));
