@@ -309,6 +309,27 @@ bool trianglesCross(const std::array<std::int32_t, 3>& A, const std::array<std::
   for (const std::int32_t a : A)
     if (a == B[0] || a == B[1] || a == B[2]) ++shared, common = a;
   if (shared == 3) return true;
+  if (shared <= 1) {
+    // A quick no: one triangle's corners (but the shared one) all on one side of the other's plane, by more
+    // than a millionth of the larger triangle's size (far beyond the tests' 1e-9), and, with a shared corner,
+    // the other way round too: then no edge of either meets the other.
+    auto apart = [&](const std::array<std::int32_t, 3>& S, const std::array<std::int32_t, 3>& T) {
+      const Vec3 &a = points[T[0]], &b = points[T[1]], &c = points[T[2]];
+      const Vec3 n = (b - a).cross(c - a);
+      double size2 = std::max({(b - a).squaredNorm(), (c - a).squaredNorm(), (c - b).squaredNorm()});
+      for (int k = 0; k < 3; ++k) size2 = std::max(size2, (points[S[k]] - points[S[(k + 1) % 3]]).squaredNorm());
+      const double margin = 1e-6 * std::sqrt(size2) * n.norm();
+      int above = 0, below = 0;
+      for (const std::int32_t u : S) {
+        if (u == common && shared == 1) continue;
+        const double d = (points[u] - a).dot(n);
+        above += d > margin, below += d < -margin;
+      }
+      const int others = shared == 1 ? 2 : 3;
+      return margin > 0 && (above == others || below == others);
+    };
+    if (shared == 0 ? apart(A, B) || apart(B, A) : apart(A, B) && apart(B, A)) return false;
+  }
   if (shared == 2) {
     std::int32_t r = -1, t = -1, e0 = -1, e1 = -1;
     for (const std::int32_t a : A) {
@@ -1048,7 +1069,7 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
           wall_tris_of[p].push_back({{ids[t[0]], ids[t[1]], ids[t[2]]}, static_cast<std::int32_t>(p)});
       }
     }
-    std::vector<WallTriangle> wall_tris;
+    const bool all_changed = std::find(wall_changed.begin(), wall_changed.end(), 0) == wall_changed.end();
     for (std::size_t p = 0; p < n_walls; ++p) {
       if (wall_state[p] == 2) {
         redoWall(p);
@@ -1058,7 +1079,6 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       const Face& f = faces[patch_face[p]];
       six_volume[static_cast<std::size_t>(f.first)] += wall_volume[p];
       if (f.second >= 0) six_volume[static_cast<std::size_t>(f.second)] -= wall_volume[p];
-      wall_tris.insert(wall_tris.end(), wall_tris_of[p].begin(), wall_tris_of[p].end());
     }
     {
       // Triangles of two walls that cross (away from shared corners and edges): both walls are simplified less.
@@ -1066,7 +1086,6 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       // of the overlap of their bounding boxes only.
       std::vector<std::pair<std::uint64_t, std::int32_t>> buckets;
       const double bucket = 4 * std::max({s[0], s[1], s[2]});
-      std::vector<std::array<Vec3, 2>> box(wall_tris.size());
       auto cellOf = [&](const Vec3& x) {
         std::array<std::int64_t, 3> b;
         for (int a = 0; a < 3; ++a) b[a] = static_cast<std::int64_t>(std::floor(x[a] / bucket));
@@ -1076,28 +1095,54 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
         return (static_cast<std::uint64_t>(b[2] & 0x1FFFFF) << 42) |
                (static_cast<std::uint64_t>(b[1] & 0x1FFFFF) << 21) | static_cast<std::uint64_t>(b[0] & 0x1FFFFF);
       };
-      // Only buckets holding a changed wall's triangle can hold a pair to test: the unchanged walls' triangles
-      // go into those only (after the first round, most walls are unchanged).
-      for (std::size_t t = 0; t < wall_tris.size(); ++t) {
-        Vec3 lo_p = points[wall_tris[t].v[0]], hi_p = lo_p;
-        for (const std::int32_t u : wall_tris[t].v) lo_p = lo_p.cwiseMin(points[u]), hi_p = hi_p.cwiseMax(points[u]);
-        box[t] = {lo_p, hi_p};
-      }
-      auto forBuckets = [&](std::size_t t, const auto& f) {
-        const auto b0 = cellOf(box[t][0]), b1 = cellOf(box[t][1]);
+      auto boxOf = [&](const auto& ids) {
+        std::array<Vec3, 2> b{points[ids[0]], points[ids[0]]};
+        for (const std::int32_t u : ids) b[0] = b[0].cwiseMin(points[u]), b[1] = b[1].cwiseMax(points[u]);
+        return b;
+      };
+      auto forBucketsOf = [&](const std::array<Vec3, 2>& bx, const auto& f) {
+        const auto b0 = cellOf(bx[0]), b1 = cellOf(bx[1]);
         for (std::int64_t z = b0[2]; z <= b1[2]; ++z)
           for (std::int64_t y = b0[1]; y <= b1[1]; ++y)
             for (std::int64_t x = b0[0]; x <= b1[0]; ++x) f(key({x, y, z}));
       };
-      const bool all_changed = std::find(wall_changed.begin(), wall_changed.end(), 0) == wall_changed.end();
+      // Only buckets holding a changed wall's triangle can hold a pair to test: the unchanged walls' triangles
+      // go into those only (after the first round, most walls are unchanged), and only the walls whose box
+      // (of its corners and fan centre) meets one of those buckets are looked at, in wall order.
       std::vector<std::uint64_t> hot;  // the buckets of the changed walls' triangles
+      std::vector<char> near(n_walls, 0);
+      for (std::size_t p = 0; p < n_walls; ++p) near[p] = wall_state[p] != 2 && (all_changed || wall_changed[p]);
+      if (!all_changed) {
+        for (std::size_t p = 0; p < n_walls; ++p)
+          if (near[p])
+            for (const WallTriangle& tr : wall_tris_of[p]) forBucketsOf(boxOf(tr.v), [&](std::uint64_t k) {
+              hot.push_back(k);
+            });
+        std::sort(hot.begin(), hot.end());
+        hot.erase(std::unique(hot.begin(), hot.end()), hot.end());
+        auto isHot = [&](std::uint64_t k) { return std::binary_search(hot.begin(), hot.end(), k); };
+        for (std::size_t p = 0; p < n_walls && !hot.empty(); ++p) {
+          if (near[p] || wall_state[p] == 2 || wall_tris_of[p].empty()) continue;
+          std::array<Vec3, 2> bx{points[wall_tris_of[p][0].v[0]], points[wall_tris_of[p][0].v[0]]};
+          for (const WallTriangle& tr : wall_tris_of[p]) {
+            const auto tb = boxOf(tr.v);
+            bx[0] = bx[0].cwiseMin(tb[0]), bx[1] = bx[1].cwiseMax(tb[1]);
+          }
+          bool meets = false;
+          forBucketsOf(bx, [&](std::uint64_t k) { meets = meets || isHot(k); });
+          near[p] = meets;
+        }
+      }
+      std::vector<WallTriangle> wall_tris;  // of the walls near a changed one, in wall order
+      for (std::size_t p = 0; p < n_walls; ++p)
+        if (near[p]) wall_tris.insert(wall_tris.end(), wall_tris_of[p].begin(), wall_tris_of[p].end());
+      std::vector<std::array<Vec3, 2>> box(wall_tris.size());
+      for (std::size_t t = 0; t < wall_tris.size(); ++t) box[t] = boxOf(wall_tris[t].v);
+      auto forBuckets = [&](std::size_t t, const auto& f) { forBucketsOf(box[t], f); };
       for (std::size_t t = 0; t < wall_tris.size(); ++t)
         if (wall_changed[wall_tris[t].wall])
           forBuckets(t, [&](std::uint64_t k) { buckets.emplace_back(k, static_cast<std::int32_t>(t)); });
       if (!all_changed) {
-        for (const auto& b : buckets) hot.push_back(b.first);
-        std::sort(hot.begin(), hot.end());
-        hot.erase(std::unique(hot.begin(), hot.end()), hot.end());
         for (std::size_t t = 0; t < wall_tris.size() && !hot.empty(); ++t)
           if (!wall_changed[wall_tris[t].wall])
             forBuckets(t, [&](std::uint64_t k) {
