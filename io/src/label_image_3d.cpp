@@ -1139,22 +1139,61 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       std::vector<std::array<Vec3, 2>> box(wall_tris.size());
       for (std::size_t t = 0; t < wall_tris.size(); ++t) box[t] = boxOf(wall_tris[t].v);
       auto forBuckets = [&](std::size_t t, const auto& f) { forBucketsOf(box[t], f); };
-      for (std::size_t t = 0; t < wall_tris.size(); ++t)
-        if (wall_changed[wall_tris[t].wall])
-          forBuckets(t, [&](std::uint64_t k) { buckets.emplace_back(k, static_cast<std::int32_t>(t)); });
-      if (!all_changed) {
-        for (std::size_t t = 0; t < wall_tris.size() && !hot.empty(); ++t)
+      // The buckets' runs of triangles, each in triangle (so wall) order: entry_tri[group_start[g] ..
+      // group_start[g + 1]) in the bucket group_key[g], the buckets in key order ((z, y, x) lexicographic).
+      std::vector<std::int32_t> entry_tri;
+      std::vector<std::size_t> group_start;
+      std::vector<std::uint64_t> group_key;
+      bool in_grid = true;  // every bucket coordinate >= 0 (true: corners and centres lie in the padded grid)
+      for (std::size_t t = 0; t < box.size() && in_grid; ++t) in_grid = (box[t][0].array() >= 0).all();
+      if (all_changed && in_grid) {
+        // Every triangle: a counting sort over the dense grid of buckets (no list of (bucket, triangle) pairs
+        // to sort: at 512^3 with every staircase corner kept it holds 3e7 of them).
+        std::array<std::int64_t, 3> nb{1, 1, 1};
+        for (std::size_t t = 0; t < wall_tris.size(); ++t) {
+          const auto b1 = cellOf(box[t][1]);
+          for (int a = 0; a < 3; ++a) nb[a] = std::max(nb[a], b1[a] + 1);
+        }
+        const auto nx = static_cast<std::size_t>(nb[0]), ny = static_cast<std::size_t>(nb[1]);
+        auto dense = [&](std::uint64_t k) {
+          return static_cast<std::size_t>(k & 0x1FFFFF) +
+                 nx * (static_cast<std::size_t>((k >> 21) & 0x1FFFFF) + ny * static_cast<std::size_t>(k >> 42));
+        };
+        const std::size_t n_buckets = static_cast<std::size_t>(nb[0] * nb[1] * nb[2]);
+        std::vector<std::size_t> start(n_buckets + 1, 0);
+        for (std::size_t t = 0; t < wall_tris.size(); ++t)
+          forBuckets(t, [&](std::uint64_t k) { ++start[dense(k) + 1]; });
+        for (std::size_t b = 0; b < n_buckets; ++b) start[b + 1] += start[b];
+        entry_tri.resize(start[n_buckets]);
+        std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+        for (std::size_t t = 0; t < wall_tris.size(); ++t)
+          forBuckets(t, [&](std::uint64_t k) { entry_tri[fill[dense(k)]++] = static_cast<std::int32_t>(t); });
+        std::vector<std::size_t>().swap(fill);
+        for (std::size_t b = 0; b < n_buckets; ++b)
+          if (start[b + 1] > start[b]) {
+            group_start.push_back(start[b]);
+            const std::uint64_t x = b % nx, y = (b / nx) % ny, z = b / (nx * ny);
+            group_key.push_back((z << 42) | (y << 21) | x);
+          }
+        group_start.push_back(entry_tri.size());
+      } else {  // (bucket, triangle) pairs, sorted
+        for (std::size_t t = 0; t < wall_tris.size(); ++t)
+          if (wall_changed[wall_tris[t].wall])
+            forBuckets(t, [&](std::uint64_t k) { buckets.emplace_back(k, static_cast<std::int32_t>(t)); });
+        for (std::size_t t = 0; t < wall_tris.size() && !hot.empty() && !all_changed; ++t)
           if (!wall_changed[wall_tris[t].wall])
             forBuckets(t, [&](std::uint64_t k) {
               if (std::binary_search(hot.begin(), hot.end(), k)) buckets.emplace_back(k, static_cast<std::int32_t>(t));
             });
+        std::sort(buckets.begin(), buckets.end());
+        for (std::size_t i = 0; i < buckets.size(); ++i) {
+          if (i == 0 || buckets[i].first != buckets[i - 1].first)
+            group_start.push_back(i), group_key.push_back(buckets[i].first);
+          entry_tri.push_back(buckets[i].second);
+        }
+        group_start.push_back(buckets.size());
       }
-      std::sort(buckets.begin(), buckets.end());
       const double slack = 1e-9 * bucket;
-      std::vector<std::size_t> group_start;  // the buckets' runs in the sorted list, tested in parallel
-      for (std::size_t i = 0; i < buckets.size(); ++i)
-        if (i == 0 || buckets[i].first != buckets[i - 1].first) group_start.push_back(i);
-      group_start.push_back(buckets.size());
 #pragma omp parallel for schedule(dynamic, 256)
       for (std::ptrdiff_t gi = 0; gi < static_cast<std::ptrdiff_t>(group_start.size()) - 1; ++gi) {
         const std::size_t i = group_start[static_cast<std::size_t>(gi)],
@@ -1162,17 +1201,17 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
         // A bucket's triangles are in wall order: each is tested against those of the walls after its own.
         std::size_t next_wall = i;
         for (std::size_t a = i; a < j; ++a) {
-          const std::int32_t x = buckets[a].second;
+          const std::int32_t x = entry_tri[a];
           const WallTriangle& ta = wall_tris[x];
           if (next_wall <= a)
-            for (next_wall = a + 1; next_wall < j && wall_tris[buckets[next_wall].second].wall == ta.wall;) ++next_wall;
+            for (next_wall = a + 1; next_wall < j && wall_tris[entry_tri[next_wall]].wall == ta.wall;) ++next_wall;
           for (std::size_t b = next_wall; b < j; ++b) {
-            const std::int32_t y = buckets[b].second;
+            const std::int32_t y = entry_tri[b];
             const WallTriangle& tb = wall_tris[y];
             if (!(wall_changed[ta.wall] || wall_changed[tb.wall])) continue;
             const Vec3 lo_o = box[x][0].cwiseMax(box[y][0]), hi_o = box[x][1].cwiseMin(box[y][1]);
             if ((lo_o.array() > hi_o.array() + slack).any()) continue;
-            if (key(cellOf(lo_o)) != buckets[i].first) continue;
+            if (key(cellOf(lo_o)) != group_key[static_cast<std::size_t>(gi)]) continue;
             if (trianglesCross(ta.v, tb.v, points)) redoWallShared(ta.wall), redoWallShared(tb.wall);
           }
         }
