@@ -47,6 +47,11 @@ namespace {
 constexpr std::int32_t kBackground = -1;  // outside inside the image; -2 - side beyond image side 0..5
 constexpr std::size_t kMaxNotes = 20;
 constexpr int kExtraSmoothing = 4;  // rounds of further smoothing for walls still crossing with every corner kept
+// The staircase (simplify 0): passes of smoothing along every junction line, rounds of further smoothing of the
+// lines of walls that fail the checks, then the largest Douglas-Peucker tolerance (voxels) tried on them.
+constexpr int kStaircasePasses = 2;
+constexpr int kStaircaseExtraSmoothing = 16;
+constexpr double kStaircaseMaxTolerance = 2;
 
 bool isPadding(std::int32_t l) { return l < kBackground; }
 
@@ -304,6 +309,27 @@ bool trianglesCross(const std::array<std::int32_t, 3>& A, const std::array<std::
   for (const std::int32_t a : A)
     if (a == B[0] || a == B[1] || a == B[2]) ++shared, common = a;
   if (shared == 3) return true;
+  if (shared <= 1) {
+    // A quick no: one triangle's corners (but the shared one) all on one side of the other's plane, by more
+    // than a millionth of the larger triangle's size (far beyond the tests' 1e-9), and, with a shared corner,
+    // the other way round too: then no edge of either meets the other.
+    auto apart = [&](const std::array<std::int32_t, 3>& S, const std::array<std::int32_t, 3>& T) {
+      const Vec3 &a = points[T[0]], &b = points[T[1]], &c = points[T[2]];
+      const Vec3 n = (b - a).cross(c - a);
+      double size2 = std::max({(b - a).squaredNorm(), (c - a).squaredNorm(), (c - b).squaredNorm()});
+      for (int k = 0; k < 3; ++k) size2 = std::max(size2, (points[S[k]] - points[S[(k + 1) % 3]]).squaredNorm());
+      const double margin = 1e-6 * std::sqrt(size2) * n.norm();
+      int above = 0, below = 0;
+      for (const std::int32_t u : S) {
+        if (u == common && shared == 1) continue;
+        const double d = (points[u] - a).dot(n);
+        above += d > margin, below += d < -margin;
+      }
+      const int others = shared == 1 ? 2 : 3;
+      return margin > 0 && (above == others || below == others);
+    };
+    if (shared == 0 ? apart(A, B) || apart(B, A) : apart(A, B) && apart(B, A)) return false;
+  }
   if (shared == 2) {
     std::int32_t r = -1, t = -1, e0 = -1, e1 = -1;
     for (const std::int32_t a : A) {
@@ -920,10 +946,11 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
     if (f.second >= 0) cell_walls[static_cast<std::size_t>(f.second)].push_back(static_cast<Index>(p));
   }
 
-  // With simplify > 0, smooth each junction polyline first (its ends fixed): repeated [1/4, 1/2, 1/4]
-  // averaging along it, ceil(8 * simplify) times (up to 32), takes the voxel staircase to a curve near the
-  // junction it samples, whose best-fit-plane projection no longer zigzags.
-  const int passes = static_cast<int>(std::min(32.0, std::ceil(8 * o.simplify)));
+  // Smooth each junction polyline first (its ends fixed): repeated [1/4, 1/2, 1/4] averaging along it,
+  // ceil(8 * simplify) times (up to 32; kStaircasePasses times at simplify 0), takes the voxel staircase to a
+  // curve near the junction it samples, whose best-fit-plane projection no longer zigzags.
+  const int passes =
+      o.simplify > 0 ? static_cast<int>(std::min(32.0, std::ceil(8 * o.simplify))) : kStaircasePasses;
   auto smoothLine = [&](const std::vector<std::int32_t>& ch) {
     std::vector<Vec3> next(ch.size());
     for (int pass = 0; pass < passes; ++pass) {
@@ -939,6 +966,14 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
   std::vector<char> keep(n_corners, 0);
   for (std::size_t u = 0; u < n_corners; ++u) keep[u] = is_vertex[u];
   for (const Polyline& pl : polylines) simplifyPolyline(pl, pos, keep);
+  std::map<std::pair<std::int32_t, std::int32_t>, int> same_ends;  // open junction lines by their two ends
+  std::map<std::pair<std::int32_t, std::int32_t>, std::int32_t> first_with_ends;  // and the first of them
+  for (std::size_t k = 0; k < polylines.size(); ++k) {
+    const auto& ch = polylines[k].chain;
+    if (ch.front() == ch.back()) continue;
+    ++same_ends[std::minmax(ch.front(), ch.back())];
+    first_with_ends.emplace(std::minmax(ch.front(), ch.back()), static_cast<std::int32_t>(k));
+  }
   {
     std::map<std::pair<std::int32_t, std::int32_t>, int> straight;
     for (Polyline& pl : polylines) {
@@ -951,6 +986,10 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       simplifyPolyline(pl, pos, keep);
     }
   }
+  // The staircase (simplify 0) keeps the corners where it turns (above), then smoothed.
+  if (o.simplify == 0)
+    for (const Polyline& pl : polylines)
+      if (pl.chain.size() >= 3) smoothLine(pl.chain);
   std::vector<double> six_volume(n_cells, 0);  // of each cell's wall polygons, in voxels
   // Walls changed since the last crossing test (two unchanged walls that did not meet still do not).
   std::vector<char> wall_changed(n_walls, 1);
@@ -968,12 +1007,11 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
   // The crossing test's points: every junction-line corner, then the walls' fan centres (n_corners + wall).
   std::vector<Vec3> points(n_corners + n_walls);
   for (std::size_t u = 0; u < n_corners; ++u) points[u] = Vec3(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
-  // The staircase (simplify 0) is left as it is, and its walls are not tested against each other (that test
-  // costs as much as the rest of the import at 512^3): only the polygon and volume checks are reported.
-  const bool check_crossings = o.simplify > 0;
-  std::vector<char> refined(n_walls, 0);  // walls along a junction line simplified less than asked
+  std::vector<char> refined(n_walls, 0);    // walls along a junction line simplified less than asked (or smoothed)
+  std::vector<char> coarsened(n_walls, 0);  // simplify 0: walls along a junction line simplified after all
   std::size_t still_crossing = 0;
-  int extra_smoothing = 0;  // rounds of it, below: at most kExtraSmoothing
+  int extra_smoothing = 0;  // rounds of it, below: at most kExtraSmoothing (kStaircaseExtraSmoothing at simplify 0)
+  const int max_extra_smoothing = o.simplify > 0 ? kExtraSmoothing : kStaircaseExtraSmoothing;
   std::vector<char> unresolved(n_walls, 0);
   for (;;) {
     std::vector<char> redo(polylines.size(), 0), flagged(n_walls, 0);
@@ -1031,7 +1069,7 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
           wall_tris_of[p].push_back({{ids[t[0]], ids[t[1]], ids[t[2]]}, static_cast<std::int32_t>(p)});
       }
     }
-    std::vector<WallTriangle> wall_tris;
+    const bool all_changed = std::find(wall_changed.begin(), wall_changed.end(), 0) == wall_changed.end();
     for (std::size_t p = 0; p < n_walls; ++p) {
       if (wall_state[p] == 2) {
         redoWall(p);
@@ -1041,15 +1079,13 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       const Face& f = faces[patch_face[p]];
       six_volume[static_cast<std::size_t>(f.first)] += wall_volume[p];
       if (f.second >= 0) six_volume[static_cast<std::size_t>(f.second)] -= wall_volume[p];
-      wall_tris.insert(wall_tris.end(), wall_tris_of[p].begin(), wall_tris_of[p].end());
     }
-    if (check_crossings) {
+    {
       // Triangles of two walls that cross (away from shared corners and edges): both walls are simplified less.
       // Pairs found through a grid of buckets; a pair is tested in the bucket holding the low corner
       // of the overlap of their bounding boxes only.
       std::vector<std::pair<std::uint64_t, std::int32_t>> buckets;
       const double bucket = 4 * std::max({s[0], s[1], s[2]});
-      std::vector<std::array<Vec3, 2>> box(wall_tris.size());
       auto cellOf = [&](const Vec3& x) {
         std::array<std::int64_t, 3> b;
         for (int a = 0; a < 3; ++a) b[a] = static_cast<std::int64_t>(std::floor(x[a] / bucket));
@@ -1059,40 +1095,105 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
         return (static_cast<std::uint64_t>(b[2] & 0x1FFFFF) << 42) |
                (static_cast<std::uint64_t>(b[1] & 0x1FFFFF) << 21) | static_cast<std::uint64_t>(b[0] & 0x1FFFFF);
       };
-      // Only buckets holding a changed wall's triangle can hold a pair to test: the unchanged walls' triangles
-      // go into those only (after the first round, most walls are unchanged).
-      for (std::size_t t = 0; t < wall_tris.size(); ++t) {
-        Vec3 lo_p = points[wall_tris[t].v[0]], hi_p = lo_p;
-        for (const std::int32_t u : wall_tris[t].v) lo_p = lo_p.cwiseMin(points[u]), hi_p = hi_p.cwiseMax(points[u]);
-        box[t] = {lo_p, hi_p};
-      }
-      auto forBuckets = [&](std::size_t t, const auto& f) {
-        const auto b0 = cellOf(box[t][0]), b1 = cellOf(box[t][1]);
+      auto boxOf = [&](const auto& ids) {
+        std::array<Vec3, 2> b{points[ids[0]], points[ids[0]]};
+        for (const std::int32_t u : ids) b[0] = b[0].cwiseMin(points[u]), b[1] = b[1].cwiseMax(points[u]);
+        return b;
+      };
+      auto forBucketsOf = [&](const std::array<Vec3, 2>& bx, const auto& f) {
+        const auto b0 = cellOf(bx[0]), b1 = cellOf(bx[1]);
         for (std::int64_t z = b0[2]; z <= b1[2]; ++z)
           for (std::int64_t y = b0[1]; y <= b1[1]; ++y)
             for (std::int64_t x = b0[0]; x <= b1[0]; ++x) f(key({x, y, z}));
       };
-      const bool all_changed = std::find(wall_changed.begin(), wall_changed.end(), 0) == wall_changed.end();
+      // Only buckets holding a changed wall's triangle can hold a pair to test: the unchanged walls' triangles
+      // go into those only (after the first round, most walls are unchanged), and only the walls whose box
+      // (of its corners and fan centre) meets one of those buckets are looked at, in wall order.
       std::vector<std::uint64_t> hot;  // the buckets of the changed walls' triangles
-      for (std::size_t t = 0; t < wall_tris.size(); ++t)
-        if (wall_changed[wall_tris[t].wall])
-          forBuckets(t, [&](std::uint64_t k) { buckets.emplace_back(k, static_cast<std::int32_t>(t)); });
+      std::vector<char> near(n_walls, 0);
+      for (std::size_t p = 0; p < n_walls; ++p) near[p] = wall_state[p] != 2 && (all_changed || wall_changed[p]);
       if (!all_changed) {
-        for (const auto& b : buckets) hot.push_back(b.first);
+        for (std::size_t p = 0; p < n_walls; ++p)
+          if (near[p])
+            for (const WallTriangle& tr : wall_tris_of[p]) forBucketsOf(boxOf(tr.v), [&](std::uint64_t k) {
+              hot.push_back(k);
+            });
         std::sort(hot.begin(), hot.end());
         hot.erase(std::unique(hot.begin(), hot.end()), hot.end());
-        for (std::size_t t = 0; t < wall_tris.size() && !hot.empty(); ++t)
+        auto isHot = [&](std::uint64_t k) { return std::binary_search(hot.begin(), hot.end(), k); };
+        for (std::size_t p = 0; p < n_walls && !hot.empty(); ++p) {
+          if (near[p] || wall_state[p] == 2 || wall_tris_of[p].empty()) continue;
+          std::array<Vec3, 2> bx{points[wall_tris_of[p][0].v[0]], points[wall_tris_of[p][0].v[0]]};
+          for (const WallTriangle& tr : wall_tris_of[p]) {
+            const auto tb = boxOf(tr.v);
+            bx[0] = bx[0].cwiseMin(tb[0]), bx[1] = bx[1].cwiseMax(tb[1]);
+          }
+          bool meets = false;
+          forBucketsOf(bx, [&](std::uint64_t k) { meets = meets || isHot(k); });
+          near[p] = meets;
+        }
+      }
+      std::vector<WallTriangle> wall_tris;  // of the walls near a changed one, in wall order
+      for (std::size_t p = 0; p < n_walls; ++p)
+        if (near[p]) wall_tris.insert(wall_tris.end(), wall_tris_of[p].begin(), wall_tris_of[p].end());
+      std::vector<std::array<Vec3, 2>> box(wall_tris.size());
+      for (std::size_t t = 0; t < wall_tris.size(); ++t) box[t] = boxOf(wall_tris[t].v);
+      auto forBuckets = [&](std::size_t t, const auto& f) { forBucketsOf(box[t], f); };
+      // The buckets' runs of triangles, each in triangle (so wall) order: entry_tri[group_start[g] ..
+      // group_start[g + 1]) in the bucket group_key[g], the buckets in key order ((z, y, x) lexicographic).
+      std::vector<std::int32_t> entry_tri;
+      std::vector<std::size_t> group_start;
+      std::vector<std::uint64_t> group_key;
+      bool in_grid = true;  // every bucket coordinate >= 0 (true: corners and centres lie in the padded grid)
+      for (std::size_t t = 0; t < box.size() && in_grid; ++t) in_grid = (box[t][0].array() >= 0).all();
+      if (all_changed && in_grid) {
+        // Every triangle: a counting sort over the dense grid of buckets (no list of (bucket, triangle) pairs
+        // to sort: at 512^3 with every staircase corner kept it holds 3e7 of them).
+        std::array<std::int64_t, 3> nb{1, 1, 1};
+        for (std::size_t t = 0; t < wall_tris.size(); ++t) {
+          const auto b1 = cellOf(box[t][1]);
+          for (int a = 0; a < 3; ++a) nb[a] = std::max(nb[a], b1[a] + 1);
+        }
+        const auto nx = static_cast<std::size_t>(nb[0]), ny = static_cast<std::size_t>(nb[1]);
+        auto dense = [&](std::uint64_t k) {
+          return static_cast<std::size_t>(k & 0x1FFFFF) +
+                 nx * (static_cast<std::size_t>((k >> 21) & 0x1FFFFF) + ny * static_cast<std::size_t>(k >> 42));
+        };
+        const std::size_t n_buckets = static_cast<std::size_t>(nb[0] * nb[1] * nb[2]);
+        std::vector<std::size_t> start(n_buckets + 1, 0);
+        for (std::size_t t = 0; t < wall_tris.size(); ++t)
+          forBuckets(t, [&](std::uint64_t k) { ++start[dense(k) + 1]; });
+        for (std::size_t b = 0; b < n_buckets; ++b) start[b + 1] += start[b];
+        entry_tri.resize(start[n_buckets]);
+        std::vector<std::size_t> fill(start.begin(), start.end() - 1);
+        for (std::size_t t = 0; t < wall_tris.size(); ++t)
+          forBuckets(t, [&](std::uint64_t k) { entry_tri[fill[dense(k)]++] = static_cast<std::int32_t>(t); });
+        std::vector<std::size_t>().swap(fill);
+        for (std::size_t b = 0; b < n_buckets; ++b)
+          if (start[b + 1] > start[b]) {
+            group_start.push_back(start[b]);
+            const std::uint64_t x = b % nx, y = (b / nx) % ny, z = b / (nx * ny);
+            group_key.push_back((z << 42) | (y << 21) | x);
+          }
+        group_start.push_back(entry_tri.size());
+      } else {  // (bucket, triangle) pairs, sorted
+        for (std::size_t t = 0; t < wall_tris.size(); ++t)
+          if (wall_changed[wall_tris[t].wall])
+            forBuckets(t, [&](std::uint64_t k) { buckets.emplace_back(k, static_cast<std::int32_t>(t)); });
+        for (std::size_t t = 0; t < wall_tris.size() && !hot.empty() && !all_changed; ++t)
           if (!wall_changed[wall_tris[t].wall])
             forBuckets(t, [&](std::uint64_t k) {
               if (std::binary_search(hot.begin(), hot.end(), k)) buckets.emplace_back(k, static_cast<std::int32_t>(t));
             });
+        std::sort(buckets.begin(), buckets.end());
+        for (std::size_t i = 0; i < buckets.size(); ++i) {
+          if (i == 0 || buckets[i].first != buckets[i - 1].first)
+            group_start.push_back(i), group_key.push_back(buckets[i].first);
+          entry_tri.push_back(buckets[i].second);
+        }
+        group_start.push_back(buckets.size());
       }
-      std::sort(buckets.begin(), buckets.end());
       const double slack = 1e-9 * bucket;
-      std::vector<std::size_t> group_start;  // the buckets' runs in the sorted list, tested in parallel
-      for (std::size_t i = 0; i < buckets.size(); ++i)
-        if (i == 0 || buckets[i].first != buckets[i - 1].first) group_start.push_back(i);
-      group_start.push_back(buckets.size());
 #pragma omp parallel for schedule(dynamic, 256)
       for (std::ptrdiff_t gi = 0; gi < static_cast<std::ptrdiff_t>(group_start.size()) - 1; ++gi) {
         const std::size_t i = group_start[static_cast<std::size_t>(gi)],
@@ -1100,17 +1201,17 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
         // A bucket's triangles are in wall order: each is tested against those of the walls after its own.
         std::size_t next_wall = i;
         for (std::size_t a = i; a < j; ++a) {
-          const std::int32_t x = buckets[a].second;
+          const std::int32_t x = entry_tri[a];
           const WallTriangle& ta = wall_tris[x];
           if (next_wall <= a)
-            for (next_wall = a + 1; next_wall < j && wall_tris[buckets[next_wall].second].wall == ta.wall;) ++next_wall;
+            for (next_wall = a + 1; next_wall < j && wall_tris[entry_tri[next_wall]].wall == ta.wall;) ++next_wall;
           for (std::size_t b = next_wall; b < j; ++b) {
-            const std::int32_t y = buckets[b].second;
+            const std::int32_t y = entry_tri[b];
             const WallTriangle& tb = wall_tris[y];
             if (!(wall_changed[ta.wall] || wall_changed[tb.wall])) continue;
             const Vec3 lo_o = box[x][0].cwiseMax(box[y][0]), hi_o = box[x][1].cwiseMin(box[y][1]);
             if ((lo_o.array() > hi_o.array() + slack).any()) continue;
-            if (key(cellOf(lo_o)) != buckets[i].first) continue;
+            if (key(cellOf(lo_o)) != group_key[static_cast<std::size_t>(gi)]) continue;
             if (trianglesCross(ta.v, tb.v, points)) redoWallShared(ta.wall), redoWallShared(tb.wall);
           }
         }
@@ -1122,7 +1223,7 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
         for (const Index p : cell_walls[c]) redoWall(p);
     if (!any) break;
     // Simplify less along the flagged walls' junction lines: half the tolerance, down to 1/64 voxel, then every
-    // corner. The staircase (simplify 0) is checked and left as it is.
+    // corner (simplify > 0); then smooth them further; at simplify 0, then simplify them after all (below).
     bool changed = false;
     std::fill(wall_changed.begin(), wall_changed.end(), 0);
     for (std::size_t k = 0; k < polylines.size() && o.simplify > 0; ++k) {
@@ -1132,17 +1233,40 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       changed = true;
       for (const std::int32_t p : polyline_walls[k]) wall_changed[static_cast<std::size_t>(p)] = 1, refined[p] = 1;
     }
-    if (!changed && o.simplify > 0 && extra_smoothing < kExtraSmoothing) {
+    auto smoothAgain = [&](std::size_t k) {
+      const auto& ch = polylines[k].chain;
+      if (ch.size() < 3) return;
+      // At simplify 0, of the lines with the same two ends only the first is smoothed further: smoothed on, two
+      // such lines tend to the same chord and their corners meet (a pinched wall).
+      if (o.simplify == 0 && ch.front() != ch.back() &&
+          first_with_ends.at(std::minmax(ch.front(), ch.back())) != static_cast<std::int32_t>(k))
+        return;
+      smoothLine(ch);
+      for (const std::int32_t u : ch) points[u] = Vec3(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
+      changed = true;
+      for (const std::int32_t p : polyline_walls[k]) wall_changed[static_cast<std::size_t>(p)] = 1, refined[p] = 1;
+    };
+    if (!changed && extra_smoothing < max_extra_smoothing) {
       // Every corner kept: smooth the flagged walls' junction lines further (as above, as many passes again).
       ++extra_smoothing;
+      for (std::size_t k = 0; k < polylines.size(); ++k)
+        if (redo[k]) smoothAgain(k);
+    } else if (!changed && o.simplify == 0) {
+      // The staircase still failing once smoothed: its junction lines are smoothed once more and simplified
+      // with 1/4 voxel, then twice that, up to kStaircaseMaxTolerance (fewer, longer segments: the fans
+      // through them follow the voxel interface less closely, which is what separates some thin cells').
       for (std::size_t k = 0; k < polylines.size(); ++k) {
-        if (!redo[k]) continue;
-        const auto& ch = polylines[k].chain;
-        if (ch.size() < 3) continue;
-        smoothLine(ch);
-        for (const std::int32_t u : ch) points[u] = Vec3(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
+        Polyline& pl = polylines[k];
+        if (!redo[k] || pl.tol >= kStaircaseMaxTolerance) continue;
+        pl.tol = pl.tol <= 0 ? 0.25 : 2 * pl.tol;
+        // A line sharing both ends with another keeps an inner corner (two straight ones would be one edge).
+        pl.keep_one = pl.keep_one || (pl.chain.front() != pl.chain.back() &&
+                                      same_ends[std::minmax(pl.chain.front(), pl.chain.back())] > 1);
+        smoothAgain(k);
+        simplifyPolyline(pl, pos, keep);
         changed = true;
-        for (const std::int32_t p : polyline_walls[k]) wall_changed[static_cast<std::size_t>(p)] = 1, refined[p] = 1;
+        for (const std::int32_t p : polyline_walls[k])
+          wall_changed[static_cast<std::size_t>(p)] = 1, refined[p] = 1, coarsened[p] = 1;
       }
     }
     for (std::size_t p = 0; p < n_walls; ++p) unresolved[p] = flagged[p] && !wall_changed[p];
@@ -1194,15 +1318,18 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
                          " of " + std::to_string(n_corners) + " junction-line voxel corners kept (simplify " +
                          formatNumber(o.simplify) + " voxels)");
   if (const auto n_refined = std::count(refined.begin(), refined.end(), 1); n_refined > 0)
-    report.notes.push_back(std::to_string(n_refined) + " wall(s) simplified less than asked along some of their "
-                           "junction lines (down to every corner, then smoothed further) so that no two walls cross");
+    report.notes.push_back(
+        std::to_string(n_refined) +
+        (o.simplify > 0 ? " wall(s) simplified less than asked along some of their junction lines (down to every "
+                          "corner, then smoothed further) so that no two walls cross"
+                        : " wall(s) smoothed further along some of their junction lines (" +
+                              std::to_string(std::count(coarsened.begin(), coarsened.end(), 1)) +
+                              " of them then simplified, up to " + formatNumber(kStaircaseMaxTolerance) +
+                              " voxels) so that no two walls cross"));
   if (still_crossing > 0)
     report.notes.push_back(std::to_string(still_crossing) +
-                           (check_crossings ? " wall(s) still cross another wall or fail the polygon checks with every "
-                                              "corner kept (voxel-scale features)"
-                                            : " wall(s) fail the polygon checks (simplify 0: walls are not tested "
-                                              "against each other)") +
-                           ": the mesher will refuse the tissue");
+                           " wall(s) still cross another wall or fail the polygon checks with every repair tried "
+                           "(voxel-scale features): the mesher will refuse the tissue");
   ImportOptions core = o;
   core.simplify = 0;  // done above, in voxels
   result = importComplex(m, core, std::move(report));

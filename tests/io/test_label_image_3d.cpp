@@ -274,7 +274,7 @@ void checkAgainstVoronoi(std::size_t cells, std::uint64_t rng_seed, std::int64_t
       WARN("n " << n << " simplify " << simplify << ": volume error mean " << fit.mean_volume_error << " max "
                 << fit.max_volume_error << ", " << fit.pairs_differing << " pairs differ, "
                 << r.tissue.numVertices() << " vertices, " << r.tissue.numWalls() << " walls");
-      if (mesh && simplify > 0) {  // docs/import.md: the staircase (simplify 0) does not mesh
+      if (mesh) {
         mesh::MeshOptions mo;
         mo.radius_edge_ratio = 2.0;  // proven to terminate; quick
         mo.min_angle_degrees = 0;
@@ -438,11 +438,9 @@ TEST_CASE("3D imports are the same bit for bit on one thread and on two", "[io][
   omp_set_num_threads(threads);
 }
 
-TEST_CASE("a 3D import with simplify > 0 meshes", "[io][label_image][slow]") {
-  // The 100-cell Voronoi tissue at 48^3 and 96^3: each import validates; with simplify > 0 no walls are left
-  // crossing and the tissue meshes (TetGen, the stage the tests above use). The staircase (simplify 0) is not
-  // tested for crossings (docs/import.md): when its report names walls failing the polygon checks, the mesher
-  // refuses the tissue; otherwise it is only validated (at 48^3 and 96^3 its walls cross: the mesher says so).
+TEST_CASE("a 3D import meshes at simplify 0, 0.5, 1 and 2", "[io][label_image][slow]") {
+  // The 100-cell Voronoi tissue at 48^3 and 96^3: each import validates, no walls are left crossing and the
+  // tissue meshes (TetGen, the stage the tests above use), the staircase (simplify 0) too (docs/import.md).
   const VoronoiCase v = voronoi3d(100, 5);
   std::size_t meshed = 0;
   for (const std::int64_t n : {48, 96}) {
@@ -456,23 +454,20 @@ TEST_CASE("a 3D import with simplify > 0 meshes", "[io][label_image][slow]") {
       bool crossing = false;
       for (const auto& note : r.report.notes)
         if (note.find("the mesher will refuse") != std::string::npos ||
-            note.find("simplified less") != std::string::npos) {
+            note.find("so that no two walls cross") != std::string::npos) {
           crossing = crossing || note.find("the mesher will refuse") != std::string::npos;
           WARN("n " << n << " simplify " << simplify << ": " << note);
         }
       mesh::MeshOptions mo;
       mo.radius_edge_ratio = 2.0;  // proven to terminate; quick
       mo.min_angle_degrees = 0;
-      if (simplify > 0) CHECK_FALSE(crossing);
-      if (crossing) {
-        CHECK_THROWS_AS(mesh::meshTissue(r.tissue, mo), GeometryError);
-      } else if (simplify > 0) {
-        const mesh::FeMesh m = mesh::meshTissue(r.tissue, mo);
-        CHECK(m.dim == 3);
-        CHECK(m.numElements() > 100);
-        ++meshed;
-      }
+      CHECK_FALSE(crossing);
+      const mesh::FeMesh m = mesh::meshTissue(r.tissue, mo);
+      CHECK(m.dim == 3);
+      CHECK(m.numElements() > 100);
+      ++meshed;
     }
   }
-  CHECK(meshed == 6);  // every simplify > 0
+  CHECK(meshed == 8);
 }
+

@@ -155,6 +155,20 @@ def test_the_bundled_label_image_is_what_its_script_writes(source_dir, tmp_path)
     assert sum("merged into" in note for note in report["notes"]) >= 3
 
 
+def test_the_bundled_3d_label_image_is_what_its_script_writes(source_dir, tmp_path):
+    import subprocess
+    import sys
+    out = tmp_path / "cells_3d.mha"
+    subprocess.run([sys.executable, str(source_dir / "scripts" / "make_label_image.py"), "--3d", str(out)],
+                   check=True)
+    assert out.read_bytes() == (source_dir / "configs" / "label_images" / "cells_3d.mha").read_bytes()
+    t, report = tessella.tissue_from_label_image_with_report(out, min_cell_size=50, small_cells="merge")
+    assert t.validate()[0]
+    # One cell per seed of the script (labels 2..19); the specks (500, 501) went to the cells around them.
+    assert sorted(set(labels_of(t))) == list(range(2, 20))
+    assert sum("merged into" in note for note in report["notes"]) == 2
+
+
 def shared_wall_lengths(t, labels, positions=None):
     """{(label a, label b): length of the walls they share}, from consecutive shared vertices of a's loop."""
     pos = t.positions() if positions is None else positions

@@ -4,10 +4,13 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <set>
 #include <string>
 
 #include "tessella/growth/bump_field.hpp"
+#include "tessella/mesh/mesh_tissue.hpp"
 #include "tessella/sim/config/config_error.hpp"
 #include "tessella/sim/simulation.hpp"
 #include "tessella/sim/stages/growth_stages.hpp"
@@ -109,6 +112,53 @@ TEST_CASE("box_growth_3d.yaml grows and divides polyhedra", "[sim][growth][confi
   CHECK(divisions > 10);
   // A linear field: the volume grows as exp(trace(G) t), trace = 0.45.
   CHECK(totalMeasure(sim.tissue()) == Approx(volume * std::exp(0.45 * 3.0)).epsilon(1e-3));
+}
+
+TEST_CASE("from_label_image_3d.yaml: a tissue imported from a 3D label image meshes, grows and divides",
+          "[sim][growth][configs]") {
+  // The shipped config (simplify 0) and the same at simplify 1. scripts/make_label_image.py labels the voxels
+  // of its 18 seeds 2..19 and adds two specks (500, 501), which min_cell_size merges: one cell per seed.
+  // The uniform field v = r (x - c) scales the tissue by exp(r t) (a wall's fan centre, the vertex mean, scales
+  // with it), so the volume grows by exp(3 r t); divisions conserve it. Every cell starts above v_min and
+  // passes the threshold (900 +- 45) before the end, so each of the 18 divides at least once.
+  const double rate = 0.1, end = 4.0;
+  for (const std::string simplify : {"0", "1"}) {
+    INFO("simplify " << simplify);
+    Simulation sim = Simulation::fromFile(sourcePath("configs/from_label_image_3d.yaml"),
+                                          {"tissue.import.simplify=" + simplify});
+    const Tissue& t = sim.tissue();
+    REQUIRE(t.numCells() == 18);
+    const auto& label = t.cellProperties().get<std::int64_t>("label");
+    std::set<std::int64_t> labels;
+    for (CellId c : t.cells()) labels.insert(label[c]);
+    CHECK(*labels.begin() == 2);
+    CHECK(*labels.rbegin() == 19);
+    double v_min = 1e300;
+    for (CellId c : t.cells()) v_min = std::min(v_min, cellMeasure(t, c));
+    REQUIRE(v_min * std::exp(3 * rate * end) > 900 + 6 * 45);
+    mesh::MeshOptions mo;
+    mo.radius_edge_ratio = 2.0;  // proven to terminate; quick
+    mo.min_angle_degrees = 0;
+    if (simplify == "0") CHECK(mesh::meshTissue(t, mo).numElements() > 18);
+    // Each step grows the volume by exp(3 r dt) (the integrator's error aside); a step that also divides cells
+    // changes it a little more (a cut through a non-planar wall re-fans its two halves).
+    double before = totalMeasure(t), worst_growth = 0, worst_division = 0;
+    std::size_t cells_before = t.numCells();
+    sim.onStep([&](const Simulation& s) {
+      const double ratio = totalMeasure(s.tissue()) / before / std::exp(3 * rate * 0.1) - 1;
+      double& worst = s.tissue().numCells() == cells_before ? worst_growth : worst_division;
+      worst = std::max(worst, std::abs(ratio));
+      before = totalMeasure(s.tissue()), cells_before = s.tissue().numCells();
+    });
+    const std::size_t divisions = runValidated(sim);
+    WARN("simplify " << simplify << ": volume per step off exp(3 r dt) by at most " << worst_growth
+                     << " without division, " << worst_division << " with");
+    CHECK(divisions >= 18);
+    CHECK(sim.tissue().numCells() == 18 + divisions);
+    CHECK(worst_growth < 1e-5);
+    CHECK(worst_division < 2e-3);  // losing a cell would be 2e-2
+    if (simplify == "0") CHECK(mesh::meshTissue(sim.tissue(), mo).numElements() > static_cast<int>(18 + divisions));
+  }
 }
 
 TEST_CASE("growth and division config errors name their key", "[sim][growth][configs]") {
