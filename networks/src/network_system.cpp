@@ -176,6 +176,14 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
       pattern_.row_start[pinIndex(k, side) + 1] = pattern_.column.size();
     }
   pattern_.value.assign(pattern_.column.size(), 0.0);
+  if (!reactions_[0]->empty())
+    for (std::size_t c = 0; c < n; ++c)
+      for (std::size_t s = 0; s < S; ++s) {
+        const auto row = pattern_.column.begin() + static_cast<std::ptrdiff_t>(pattern_.row_start[index(c, s)]);
+        const auto end = pattern_.column.begin() + static_cast<std::ptrdiff_t>(pattern_.row_start[index(c, s) + 1]);
+        const auto own = std::lower_bound(row, end, index(c, 0));
+        reaction_entry_.push_back(static_cast<std::size_t>(own - pattern_.column.begin()));
+      }
   pin_denominator_.assign(n, 0.0);
   pin_weight_.assign(n, 0.0);
   pin_weight_derivative_.assign(n, 0.0);
@@ -415,7 +423,8 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
     neighbourhoodTerms();
     const double root = std::cbrt(std::numeric_limits<double>::epsilon());
     // Only the reactions that read the perturbed value are evaluated (the others' differences are zero).
-    forEachCell(n, threads_, [&](std::size_t c, std::size_t thread) {
+    // Cell c's differences one by one: in its own concentrations when `own`, and in its neighbourhood terms.
+    auto cellByCell = [&](std::size_t c, std::size_t thread, bool own) {
       ReactionSet& reactions = *reactions_[thread];
       std::vector<double>& properties = property_values_[thread];
       for (std::size_t k = 0; k < property_columns_.size(); ++k) properties[k] = (*property_columns_[k])[c];
@@ -423,7 +432,7 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
       std::span<const double> nb;
       if (!neighbourhood_.empty()) nb = std::span<const double>(&neighbourhood_[c * 2 * S], 2 * S);
       reactions.set(t, graph_.measure[c], graph_.centroid[c], properties, cc, nb);
-      for (std::size_t q = 0; q < S; ++q) {
+      for (std::size_t q = 0; q < S && own; ++q) {
         const double h = root * std::max(std::abs(cc[q]), 1.0);
         for (std::size_t s = 0; s < S; ++s) {
           if (!reactions.reads(s, q)) continue;
@@ -467,6 +476,24 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
           }
         }
       }
+    };
+    // Over blocks of cells: the differences in the cells' own concentrations with each reaction's bytecode on the
+    // whole block (the same values as cell by cell), into the cached positions; then the neighbourhood terms' cell
+    // by cell. A rate that is not finite: the block again cell by cell, for the error cell by cell gives.
+    CellValues values;
+    values.t = t;
+    values.conc = conc_.data();
+    values.neighbourhood = neighbourhood_.empty() ? nullptr : neighbourhood_.data();
+    values.measure = graph_.measure.data();
+    values.centroid = graph_.centroid.data();
+    for (const std::vector<double>* column : property_columns_) values.properties.push_back(column->data());
+    forEachBlock(n, threads_, [&](std::size_t first, std::size_t count, std::size_t thread) {
+      if (!reactions_[thread]->differenceCells(values, first, count, root, reaction_entry_.data(), J.value.data())) {
+        for (std::size_t c = first; c < first + count; ++c) cellByCell(c, thread, true);
+        throw std::logic_error("network Jacobian: a rate not finite over a block of cells but finite cell by cell");
+      }
+      if (!neighbourhood_.empty())
+        for (std::size_t c = first; c < first + count; ++c) cellByCell(c, thread, false);
     });
   }
   for (std::size_t s = 0; s < S; ++s) {

@@ -143,7 +143,7 @@ void ReactionSet::setCell(const CellValues& values, std::size_t c) {
   z_ = values.centroid[c].z();
 }
 
-void ReactionSet::evaluateCells(const CellValues& values, std::size_t first, std::size_t count, double* rate) {
+void ReactionSet::cellColumns(const CellValues& values, std::size_t first) {
   const std::size_t S = species_.size(), P = props_.size();
   static_assert(sizeof(Vec3) == 3 * sizeof(double), "the centroids' coordinates are read with stride 3");
   static constexpr double zero = 0.0;
@@ -151,13 +151,20 @@ void ReactionSet::evaluateCells(const CellValues& values, std::size_t first, std
   // The columns in the order of variables().
   std::vector<Column>& columns = work_->columns;
   columns.clear();
-  for (std::size_t v = 0; v < S; ++v) columns.push_back({values.conc + v, S});
+  for (std::size_t v = 0; v < S; ++v) columns.push_back({values.conc + first * S + v, S});
   for (std::size_t v = 0; v < 2 * S; ++v)
-    columns.push_back(values.neighbourhood ? Column{values.neighbourhood + v, 2 * S} : Column{&zero, 0});
-  for (std::size_t v = 0; v < P; ++v) columns.push_back({values.properties[v], 1});
-  columns.push_back({values.measure, 1});
-  for (std::size_t d = 0; d < 3; ++d) columns.push_back({values.centroid->data() + d, 3});
+    columns.push_back(values.neighbourhood ? Column{values.neighbourhood + first * 2 * S + v, 2 * S}
+                                           : Column{&zero, 0});
+  for (std::size_t v = 0; v < P; ++v) columns.push_back({values.properties[v] + first, 1});
+  columns.push_back({values.measure + first, 1});
+  for (std::size_t d = 0; d < 3; ++d) columns.push_back({values.centroid[first].data() + d, 3});
   columns.push_back({&values.t, 0});
+}
+
+void ReactionSet::evaluateCells(const CellValues& values, std::size_t first, std::size_t count, double* rate) {
+  const std::size_t S = species_.size();
+  cellColumns(values, first);
+  const std::vector<detail::BatchExpression::Column>& columns = work_->columns;
   for (std::size_t s = 0; s < S; ++s)
     if (parser_of_[s] < 0)
       for (std::size_t c = first; c < first + count; ++c) rate[c * S + s] = 0.0;
@@ -172,7 +179,7 @@ void ReactionSet::evaluateCells(const CellValues& values, std::size_t first, std
     }
     for (std::size_t b = first; b < first + count; b += detail::BatchExpression::kBlock) {
       const std::size_t m = std::min(detail::BatchExpression::kBlock, first + count - b);
-      batch_[k]->evaluate(columns, b, m, work_->block.data());
+      batch_[k]->evaluate(columns, b - first, m, work_->block.data());
       for (std::size_t i = 0; i < m; ++i) rate[(b + i) * S + s] = work_->block[i];
     }
   }
@@ -183,6 +190,51 @@ void ReactionSet::evaluateCells(const CellValues& values, std::size_t first, std
         setCell(values, c);
         notFinite(target_[k], c, r);
       }
+}
+
+bool ReactionSet::differenceCells(const CellValues& values, std::size_t first, std::size_t count, double root,
+                                  const std::size_t* position, double* value) {
+  constexpr std::size_t B = detail::BatchExpression::kBlock;
+  const std::size_t S = species_.size();
+  double h[B], shifted[B], up[B], down[B];
+  bool finite = true;
+  for (std::size_t b = first; b < first + count; b += B) {
+    const std::size_t m = std::min(B, first + count - b);
+    cellColumns(values, b);
+    for (std::size_t q = 0; q < S; ++q) {
+      const double* cq = values.conc + b * S + q;
+      for (std::size_t i = 0; i < m; ++i) h[i] = root * std::max(std::abs(cq[i * S]), 1.0);
+      const detail::BatchExpression::Column kept = work_->columns[q];
+      work_->columns[q] = {shifted, 1};
+      for (std::size_t s = 0; s < S; ++s) {
+        if (!reads(s, q)) continue;
+        const auto k = static_cast<std::size_t>(parser_of_[s]);
+        const bool batch = batch_[k]->supported();
+        for (int side = 0; side < 2; ++side) {
+          double* out = side == 0 ? up : down;
+          for (std::size_t i = 0; i < m; ++i) shifted[i] = side == 0 ? cq[i * S] + h[i] : cq[i * S] - h[i];
+          if (batch) {
+            batch_[k]->evaluate(work_->columns, 0, m, out);
+          } else {
+            for (std::size_t i = 0; i < m; ++i) {
+              setCell(values, b + i);
+              conc_[q] = shifted[i];
+              out[i] = parsers_[k]->Eval();
+            }
+          }
+        }
+        for (std::size_t i = 0; i < m; ++i) {
+          if (!std::isfinite(up[i]) || !std::isfinite(down[i])) {
+            finite = false;
+            continue;
+          }
+          value[position[(b + i) * S + s] + q] += (up[i] - down[i]) / (2 * h[i]);
+        }
+      }
+      work_->columns[q] = kept;
+    }
+  }
+  return finite;
 }
 
 void ReactionSet::evaluate(double t, std::size_t cell, double measure, const Vec3& centroid,

@@ -152,6 +152,9 @@ class NetworkSystem {
   std::vector<std::size_t> adjacent_start_, adjacent_cell_;
   std::vector<double> adjacent_measure_;
   CsrMatrix pattern_;
+  // With reactions, per row index(c, s): the position in pattern_ of column index(c, 0) (the cell's own
+  // concentrations are the consecutive entries from there).
+  std::vector<std::size_t> reaction_entry_;
   JacobianKind jacobian_kind_ = JacobianKind::Exact;
   int pin_species_ = -1;
   std::vector<double> pin_denominator_, pin_weight_, pin_weight_derivative_, conc_;

@@ -71,6 +71,14 @@ class ReactionSet {
   /// InputError of evaluate() for the lowest such cell.
   void evaluateCells(const CellValues& values, std::size_t first, std::size_t count, double* rate);
 
+  /// The central differences of the reactions in the cells' own concentrations, cells first .. first + count - 1
+  /// (cell c's values as for evaluateCells): for each species s and concentration q its reaction reads,
+  /// (r_s(c_q + h) - r_s(c_q - h)) / (2 h), h = root max(|c_q|, 1), is added to value[position[c S + s] + q].
+  /// The same values, bit for bit, as set(), setConcentration() and rate() give cell by cell. Returns false,
+  /// having added only finite differences, when a perturbed rate is not finite (the caller repeats the cells one
+  /// by one with rate() for the error).
+  bool differenceCells(const CellValues& values, std::size_t first, std::size_t count, double root,
+                       const std::size_t* position, double* value);
   // One reaction at a time (what evaluate() does in parts): set() the cell's values, change single
   // concentrations or neighbourhood terms, and evaluate the reaction of one species.
   /// Whether the reaction of species s reads the concentration of species q.
@@ -100,6 +108,8 @@ class ReactionSet {
   // The addresses of the variables the parsers read: the batch programs' columns, in this order.
   std::vector<double*> variables();
   void setCell(const CellValues& values, std::size_t c);  // the members from cell c's values
+  // work_->columns: the columns of the cells' values in the order of variables(), cell `first` at row 0.
+  void cellColumns(const CellValues& values, std::size_t first);
   double t_ = 0, measure_ = 0, x_ = 0, y_ = 0, z_ = 0;
   std::vector<std::unique_ptr<mu::Parser>> parsers_;
   std::vector<std::unique_ptr<detail::BatchExpression>> batch_;  // per parser: its bytecode over blocks of cells
