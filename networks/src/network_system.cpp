@@ -53,6 +53,32 @@ void forEachCell(std::size_t n, std::size_t threads, Body body) {
   if (failure) std::rethrow_exception(failure);
 }
 
+// body(first, count, thread) for the blocks of kReactionBlock cells (the last one shorter) over OpenMP threads;
+// the blocks do not depend on the number of threads. An exception of the body is rethrown after the loop: the
+// one of the lowest block.
+constexpr std::size_t kReactionBlock = 256;
+template <class Body>
+void forEachBlock(std::size_t n, std::size_t threads, Body body) {
+  std::exception_ptr failure;
+  std::size_t failed = n;
+  const int team = static_cast<int>(threads);
+  const auto blocks = static_cast<std::ptrdiff_t>((n + kReactionBlock - 1) / kReactionBlock);
+#pragma omp parallel for schedule(static) if (team > 1 && n >= kParallelCells) num_threads(team)
+  for (std::ptrdiff_t b = 0; b < blocks; ++b) {
+    const std::size_t first = static_cast<std::size_t>(b) * kReactionBlock;
+    try {
+      body(first, std::min(kReactionBlock, n - first), static_cast<std::size_t>(omp_get_thread_num()));
+    } catch (...) {
+#pragma omp critical(tessella_network_blocks)
+      if (first < failed) {
+        failed = first;
+        failure = std::current_exception();
+      }
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
+}
+
 // J(r, c) += v on a fixed pattern.
 void addAt(CsrMatrix& J, std::size_t r, std::size_t c, double v) {
   const auto first = J.column.begin() + static_cast<std::ptrdiff_t>(J.row_start[r]);
@@ -150,6 +176,14 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
       pattern_.row_start[pinIndex(k, side) + 1] = pattern_.column.size();
     }
   pattern_.value.assign(pattern_.column.size(), 0.0);
+  if (!reactions_[0]->empty())
+    for (std::size_t c = 0; c < n; ++c)
+      for (std::size_t s = 0; s < S; ++s) {
+        const auto row = pattern_.column.begin() + static_cast<std::ptrdiff_t>(pattern_.row_start[index(c, s)]);
+        const auto end = pattern_.column.begin() + static_cast<std::ptrdiff_t>(pattern_.row_start[index(c, s) + 1]);
+        const auto own = std::lower_bound(row, end, index(c, 0));
+        reaction_entry_.push_back(static_cast<std::size_t>(own - pattern_.column.begin()));
+      }
   pin_denominator_.assign(n, 0.0);
   pin_weight_.assign(n, 0.0);
   pin_weight_derivative_.assign(n, 0.0);
@@ -157,6 +191,7 @@ NetworkSystem::NetworkSystem(NetworkModel model, NetworkGraph graph, JacobianKin
   conc_.assign(n * S, 0.0);
   neighbourhood_.assign(reactions_[0]->usesAnyNeighbourhood() ? n * 2 * S : 0, 0.0);
   pin_cell_.assign(n, 0.0);
+  for (const NetworkSpecies& species : model_.species) permeability_.push_back(species.permeability);
   readMeasures();
 }
 
@@ -219,17 +254,6 @@ void NetworkSystem::prepareThreads() {
   property_values_.resize(std::max(property_values_.size(), threads), std::vector<double>(property_columns_.size()));
 }
 
-void NetworkSystem::evaluateReactions(double t, std::size_t cell, std::span<const double> conc,
-                                      std::span<double> rate, std::size_t thread,
-                                      std::span<const double> neighbourhood) {
-  std::vector<double>& properties = property_values_[thread];
-  for (std::size_t k = 0; k < property_columns_.size(); ++k) properties[k] = (*property_columns_[k])[cell];
-  if (neighbourhood.empty() && !neighbourhood_.empty())
-    neighbourhood = std::span<const double>(&neighbourhood_[cell * 2 * numSpecies()], 2 * numSpecies());
-  reactions_[thread]->evaluate(t, cell, graph_.measure[cell], graph_.centroid[cell], properties, conc, rate,
-                               neighbourhood);
-}
-
 double NetworkSystem::pinWeight(double c) const {
   return model_.pin.function == PinFunction::Exponential ? std::exp(log_base_ * c) : model_.pin.weight(c);
 }
@@ -263,30 +287,49 @@ void NetworkSystem::rhs(double t, std::span<const double> y, std::span<double> y
   });
   if (reactions) neighbourhoodTerms();
   if (gradient) pinDenominators();  // and pin_out_
+  // The reactions' rates, over blocks of cells (each reaction's bytecode runs on a whole block).
+  if (reactions) {
+    CellValues values;
+    values.t = t;
+    values.conc = conc_.data();
+    values.neighbourhood = neighbourhood_.empty() ? nullptr : neighbourhood_.data();
+    values.measure = graph_.measure.data();
+    values.centroid = graph_.centroid.data();
+    for (const std::vector<double>* column : property_columns_) values.properties.push_back(column->data());
+    forEachBlock(n, threads_, [&](std::size_t first, std::size_t count, std::size_t thread) {
+      reactions_[thread]->evaluateCells(values, first, count, ydot.data());
+    });
+  }
   // Cell by cell: its reactions (the amount changes at measure * rate), the passive exchange P L (c_i - c_j)
   // from i to each neighbour j, and the PIN efflux G(c_i) L_ij f(c_j) / D_i from i to j and from j to i. A flux between
   // two cells is computed the same way in both, so what one loses the other gains exactly.
-  forEachCell(n, threads_, [&](std::size_t c, std::size_t thread) {
+  forEachCell(n, threads_, [&](std::size_t c, std::size_t) {
     std::span<double> rate(&ydot[index(c, 0)], S);
-    if (reactions) {
-      evaluateReactions(t, c, std::span<const double>(&conc_[index(c, 0)], S), rate, thread);
+    if (reactions)
       for (std::size_t s = 0; s < S; ++s) rate[s] *= graph_.measure[c];
-    } else {
+    else
       std::fill(rate.begin(), rate.end(), 0.0);
-    }
+    // The sums run in local variables (the same additions in the same order as into rate[s]).
     const std::size_t first = adjacent_start_[c], last = adjacent_start_[c + 1];
     for (std::size_t s = 0; s < S; ++s) {
-      const double P = model_.species[s].permeability;
+      const double P = permeability_[s];
       if (!(P > 0)) continue;
+      const double own = conc_[index(c, s)];
+      double r = rate[s];
       for (std::size_t a = first; a < last; ++a)
-        rate[s] -= P * adjacent_measure_[a] * (conc_[index(c, s)] - conc_[index(adjacent_cell_[a], s)]);
+        r -= P * adjacent_measure_[a] * (own - conc_[index(adjacent_cell_[a], s)]);
+      rate[s] = r;
     }
-    if (gradient)
+    if (gradient) {
+      const double out = pin_out_[c], weight = pin_weight_[c];
+      double r = rate[p];
       for (std::size_t a = first; a < last; ++a) {
         const std::size_t j = adjacent_cell_[a];
-        rate[p] -= pin_out_[c] * adjacent_measure_[a] * pin_weight_[j];
-        rate[p] += pin_out_[j] * adjacent_measure_[a] * pin_weight_[c];
+        r -= out * adjacent_measure_[a] * pin_weight_[j];
+        r += pin_out_[j] * adjacent_measure_[a] * weight;
       }
+      rate[p] = r;
+    }
   });
   if (model_.pin.dynamic()) {
     // PIN as a state: T L_ij (p_ij c_i - p_ji c_j) from i to j, and the densities' rates.
@@ -380,7 +423,8 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
     neighbourhoodTerms();
     const double root = std::cbrt(std::numeric_limits<double>::epsilon());
     // Only the reactions that read the perturbed value are evaluated (the others' differences are zero).
-    forEachCell(n, threads_, [&](std::size_t c, std::size_t thread) {
+    // Cell c's differences one by one: in its own concentrations when `own`, and in its neighbourhood terms.
+    auto cellByCell = [&](std::size_t c, std::size_t thread, bool own) {
       ReactionSet& reactions = *reactions_[thread];
       std::vector<double>& properties = property_values_[thread];
       for (std::size_t k = 0; k < property_columns_.size(); ++k) properties[k] = (*property_columns_[k])[c];
@@ -388,7 +432,7 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
       std::span<const double> nb;
       if (!neighbourhood_.empty()) nb = std::span<const double>(&neighbourhood_[c * 2 * S], 2 * S);
       reactions.set(t, graph_.measure[c], graph_.centroid[c], properties, cc, nb);
-      for (std::size_t q = 0; q < S; ++q) {
+      for (std::size_t q = 0; q < S && own; ++q) {
         const double h = root * std::max(std::abs(cc[q]), 1.0);
         for (std::size_t s = 0; s < S; ++s) {
           if (!reactions.reads(s, q)) continue;
@@ -432,6 +476,24 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
           }
         }
       }
+    };
+    // Over blocks of cells: the differences in the cells' own concentrations with each reaction's bytecode on the
+    // whole block (the same values as cell by cell), into the cached positions; then the neighbourhood terms' cell
+    // by cell. A rate that is not finite: the block again cell by cell, for the error cell by cell gives.
+    CellValues values;
+    values.t = t;
+    values.conc = conc_.data();
+    values.neighbourhood = neighbourhood_.empty() ? nullptr : neighbourhood_.data();
+    values.measure = graph_.measure.data();
+    values.centroid = graph_.centroid.data();
+    for (const std::vector<double>* column : property_columns_) values.properties.push_back(column->data());
+    forEachBlock(n, threads_, [&](std::size_t first, std::size_t count, std::size_t thread) {
+      if (!reactions_[thread]->differenceCells(values, first, count, root, reaction_entry_.data(), J.value.data())) {
+        for (std::size_t c = first; c < first + count; ++c) cellByCell(c, thread, true);
+        throw std::logic_error("network Jacobian: a rate not finite over a block of cells but finite cell by cell");
+      }
+      if (!neighbourhood_.empty())
+        for (std::size_t c = first; c < first + count; ++c) cellByCell(c, thread, false);
     });
   }
   for (std::size_t s = 0; s < S; ++s) {

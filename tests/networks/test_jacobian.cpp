@@ -4,11 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "jacobian_check.hpp"
 #include "tessella/generators/grids.hpp"
 #include "tessella/networks/network_integrator.hpp"
+#include "tessella/networks/reaction_set.hpp"
 
 using namespace tessella;
 using namespace tessella::networks;
@@ -89,4 +91,100 @@ TEST_CASE("The neighbours Jacobian is sparser, keeps zero column sums and integr
   const double total = exact.totalAmount(y, 0);
   CHECK(std::abs(near.totalAmount(yn, 0) - total) <= 1e-12 * total);
   for (std::size_t k = 0; k < y.size(); ++k) CHECK(yn[k] == Approx(ye[k]).epsilon(1e-6));
+}
+
+namespace {
+// A ring of n cells of measures 1 + (c mod 7) / 10 at x = c, with a property `g`.
+NetworkGraph ring(std::size_t n) {
+  NetworkGraph g;
+  for (std::size_t c = 0; c < n; ++c) {
+    g.measure.push_back(1.0 + double(c % 7) / 10.0);
+    g.centroid.push_back(Vec3(double(c), 0, 0));
+    g.properties["g"].push_back(0.5 + double(c % 5) / 4.0);
+  }
+  for (std::size_t c = 0; c < n; ++c) {
+    const int a = int(c), b = int((c + 1) % n);
+    g.interfaces.push_back({std::min(a, b), std::max(a, b), 1.0 + double(c % 3) / 8.0, Vec3(1, 0, 0)});
+  }
+  return g;
+}
+}  // namespace
+
+TEST_CASE("The reactions' part of the Jacobian is one cell's central differences, bit for bit, over blocks and threads",
+          "[networks]") {
+  // 4500 cells: several blocks of 128 cells, the last one short, and enough cells for the threads to share them.
+  const std::size_t n = 4500, S = 3;
+  NetworkModel m;
+  m.species = {{"a", "p * g - d * a + a^2 * b / (1 + (a / K)^2) + 0.01 * x * c", 0.0},
+               {"b", "a^3 - b * measure + mean_a", 0.0},
+               {"c", "", 0.0}};
+  m.parameters = {{"p", 1.0}, {"d", 0.5}, {"K", 0.7}};
+  m.cell_properties = {"g"};
+  const NetworkGraph graph = ring(n);
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0.2, 2.5);
+  std::vector<double> y(n * S);
+  for (double& v : y) v = u(rng);
+  // Independently: each cell's values set one by one, the perturbed rate of one reaction at a time.
+  ReactionSet one(m);
+  const double root = std::cbrt(std::numeric_limits<double>::epsilon());
+  std::vector<double> expected(n * S * S, 0.0);  // d rate_s / d c_q of cell c at c S S + s S + q
+  for (std::size_t c = 0; c < n; ++c) {
+    std::vector<double> conc(S);
+    for (std::size_t q = 0; q < S; ++q) conc[q] = y[c * S + q] / graph.measure[c];
+    // The neighbourhood: sum_a over the ring's two neighbours and mean_a.
+    std::vector<double> nb(2 * S, 0.0);
+    double walls = 0.0;
+    for (const NetworkInterface& f : graph.interfaces)
+      if (f.cell_i == int(c) || f.cell_j == int(c)) {
+        const auto j = std::size_t(f.cell_i == int(c) ? f.cell_j : f.cell_i);
+        for (std::size_t q = 0; q < S; ++q) nb[q] += f.measure * (y[j * S + q] / graph.measure[j]);
+        walls += f.measure;
+      }
+    for (std::size_t q = 0; q < S; ++q) nb[S + q] = nb[q] / walls;
+    const std::vector<double> props{graph.properties.at("g")[c]};
+    one.set(0.25, graph.measure[c], graph.centroid[c], props, conc, nb);
+    for (std::size_t q = 0; q < S; ++q) {
+      const double h = root * std::max(std::abs(conc[q]), 1.0);
+      for (std::size_t s = 0; s < S; ++s) {
+        if (!one.reads(s, q)) continue;
+        one.setConcentration(q, conc[q] + h);
+        const double up = one.rate(s, c);
+        one.setConcentration(q, conc[q] - h);
+        const double down = one.rate(s, c);
+        one.setConcentration(q, conc[q]);
+        expected[(c * S + s) * S + q] = (up - down) / (2 * h);
+      }
+    }
+  }
+  for (std::size_t threads : {1, 2}) {
+    NetworkSystem system(m, graph);
+    system.setThreads(threads);
+    CsrMatrix J;
+    system.jacobian(0.25, y, J);
+    std::size_t differ = 0;
+    for (std::size_t c = 0; c < n; ++c)
+      for (std::size_t s = 0; s < S; ++s)
+        for (std::size_t q = 0; q < S; ++q) differ += J.at(c * S + s, c * S + q) != expected[(c * S + s) * S + q];
+    INFO(threads << " threads");
+    CHECK(differ == 0);
+  }
+}
+
+TEST_CASE("A perturbed rate that is not finite names the lowest such cell, over blocks and threads", "[networks]") {
+  // sqrt(a) at a = 0 is finite, at a - h it is not: the Jacobian fails at the first cell holding a = 0.
+  const std::size_t n = 4500;
+  NetworkModel m;
+  m.species = {{"a", "-sqrt(a)", 0.0}};
+  const NetworkGraph graph = ring(n);
+  std::vector<double> y(n, 1.0);
+  y[3000] = y[333] = y[4400] = 0.0;
+  for (std::size_t threads : {1, 2}) {
+    NetworkSystem system(m, graph);
+    system.setThreads(threads);
+    std::vector<double> ydot(n);
+    system.rhs(0.0, y, ydot);
+    CsrMatrix J;
+    CHECK_THROWS_WITH(system.jacobian(0.0, y, J), Catch::Contains("in cell 333 "));
+  }
 }

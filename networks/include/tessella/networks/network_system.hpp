@@ -134,10 +134,6 @@ class NetworkSystem {
   void pinDenominators();  // pin_denominator_ from pin_weight_, and pin_out_
   // One ReactionSet and property buffer per OpenMP thread (muparser's variables are per parser).
   void prepareThreads();
-  // The reactions of one cell, with thread `thread`'s parser; `neighbourhood` empty: the cell's values in
-  // neighbourhood_.
-  void evaluateReactions(double t, std::size_t cell, std::span<const double> conc, std::span<double> rate,
-                         std::size_t thread, std::span<const double> neighbourhood = {});
   // up_the_gradient's f(c) and f'(c) (the exponential as exp(c ln b)).
   double pinWeight(double c) const;
   double pinWeightDerivative(double c) const;
@@ -156,9 +152,13 @@ class NetworkSystem {
   std::vector<std::size_t> adjacent_start_, adjacent_cell_;
   std::vector<double> adjacent_measure_;
   CsrMatrix pattern_;
+  // With reactions, per row index(c, s): the position in pattern_ of column index(c, 0) (the cell's own
+  // concentrations are the consecutive entries from there).
+  std::vector<std::size_t> reaction_entry_;
   JacobianKind jacobian_kind_ = JacobianKind::Exact;
   int pin_species_ = -1;
   std::vector<double> pin_denominator_, pin_weight_, pin_weight_derivative_, conc_;
+  std::vector<double> permeability_;  // per species
   std::vector<double> pin_out_;  // per cell: T P_tot c_i / D_i, the efflux per unit L_ij f(c_j)
   double log_base_ = 0.0;        // ln b of the exponential PIN weight
   std::size_t threads_ = 1;
