@@ -959,13 +959,6 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       for (std::size_t i = 1; i + 1 < ch.size(); ++i) pos[ch[i]] = next[i];
     }
   };
-  if (o.simplify > 0)
-    for (const Polyline& pl : polylines)
-      if (pl.chain.size() >= 3) smoothLine(pl.chain);
-  // Simplify, then make sure every wall keeps three corners and no cell loses much of its volume.
-  std::vector<char> keep(n_corners, 0);
-  for (std::size_t u = 0; u < n_corners; ++u) keep[u] = is_vertex[u];
-  for (const Polyline& pl : polylines) simplifyPolyline(pl, pos, keep);
   std::map<std::pair<std::int32_t, std::int32_t>, int> same_ends;  // open junction lines by their two ends
   std::map<std::pair<std::int32_t, std::int32_t>, std::int32_t> first_with_ends;  // and the first of them
   for (std::size_t k = 0; k < polylines.size(); ++k) {
@@ -974,6 +967,19 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
     ++same_ends[std::minmax(ch.front(), ch.back())];
     first_with_ends.emplace(std::minmax(ch.front(), ch.back()), static_cast<std::int32_t>(k));
   }
+  auto smoothedLine = [&](std::size_t k) {  // a closed line, or the first line with its two ends
+    const auto& ch = polylines[k].chain;
+    return ch.front() == ch.back() ||
+           first_with_ends.at(std::minmax(ch.front(), ch.back())) == static_cast<std::int32_t>(k);
+  };
+  const std::vector<Vec3> voxel_pos = pos;  // the corners before smoothing (below)
+  if (o.simplify > 0)
+    for (const Polyline& pl : polylines)
+      if (pl.chain.size() >= 3) smoothLine(pl.chain);
+  // Simplify, then make sure every wall keeps three corners and no cell loses much of its volume.
+  std::vector<char> keep(n_corners, 0);
+  for (std::size_t u = 0; u < n_corners; ++u) keep[u] = is_vertex[u];
+  for (const Polyline& pl : polylines) simplifyPolyline(pl, pos, keep);
   {
     std::map<std::pair<std::int32_t, std::int32_t>, int> straight;
     for (Polyline& pl : polylines) {
@@ -983,6 +989,14 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       if (inner) continue;
       if (straight[std::minmax(pl.chain.front(), pl.chain.back())]++ == 0) continue;
       pl.keep_one = true;
+      // Smoothing takes every line towards the chord between its ends, so two lines with the same ends meet
+      // there, and the wall between them (often a voxel face or two where two cells barely touch) would be a
+      // sliver through the corner kept here: on configs/label_images/cells_3d.mha at simplify 1, a one-face wall
+      // became a triangle with corners of 0.22, 0.22 and 179.6 degrees (1/500 of the face's area; at simplify 4
+      // the two lines met: duplicate vertices), which the mesher's angle bound refined into 3000 triangles and
+      // TetGen took tens of seconds over. So this line's corners go back to the voxel corners they were.
+      if (o.simplify > 0)
+        for (std::size_t k = 1; k + 1 < pl.chain.size(); ++k) pos[pl.chain[k]] = voxel_pos[pl.chain[k]];
       simplifyPolyline(pl, pos, keep);
     }
   }
@@ -1238,9 +1252,7 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       if (ch.size() < 3) return;
       // At simplify 0, of the lines with the same two ends only the first is smoothed further: smoothed on, two
       // such lines tend to the same chord and their corners meet (a pinched wall).
-      if (o.simplify == 0 && ch.front() != ch.back() &&
-          first_with_ends.at(std::minmax(ch.front(), ch.back())) != static_cast<std::int32_t>(k))
-        return;
+      if (o.simplify == 0 && !smoothedLine(k)) return;
       smoothLine(ch);
       for (const std::int32_t u : ch) points[u] = Vec3(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
       changed = true;
