@@ -29,45 +29,20 @@ std::size_t otherCell(const NetworkInterface& f, std::size_t c) { return static_
 // From this many cells on, the loops over cells are split over OpenMP threads.
 constexpr std::size_t kParallelCells = 4096;
 
-// body(c, thread) for every cell c < n, over OpenMP threads (each cell's work only writes that cell's
-// entries, so the results do not depend on the number of threads). An exception of the body is rethrown
-// after the loop: the one of the lowest cell, whatever the number of threads.
+// body(first, count, thread) for the blocks of `block` cells (the last one shorter) over OpenMP threads; the
+// blocks do not depend on the number of threads. An exception of the body is rethrown after the loop: the one of
+// the lowest block.
 template <class Body>
-void forEachCell(std::size_t n, std::size_t threads, Body body) {
+void forEachBlockOf(std::size_t block, std::size_t n, std::size_t threads, Body body) {
   std::exception_ptr failure;
   std::size_t failed = n;
   const int team = static_cast<int>(threads);
-#pragma omp parallel for schedule(static) if (team > 1 && n >= kParallelCells) num_threads(team)
-  for (std::ptrdiff_t k = 0; k < static_cast<std::ptrdiff_t>(n); ++k) {
-    const auto c = static_cast<std::size_t>(k);
-    try {
-      body(c, static_cast<std::size_t>(omp_get_thread_num()));
-    } catch (...) {
-#pragma omp critical(tessella_network_cells)
-      if (c < failed) {
-        failed = c;
-        failure = std::current_exception();
-      }
-    }
-  }
-  if (failure) std::rethrow_exception(failure);
-}
-
-// body(first, count, thread) for the blocks of kReactionBlock cells (the last one shorter) over OpenMP threads;
-// the blocks do not depend on the number of threads. An exception of the body is rethrown after the loop: the
-// one of the lowest block.
-constexpr std::size_t kReactionBlock = 256;
-template <class Body>
-void forEachBlock(std::size_t n, std::size_t threads, Body body) {
-  std::exception_ptr failure;
-  std::size_t failed = n;
-  const int team = static_cast<int>(threads);
-  const auto blocks = static_cast<std::ptrdiff_t>((n + kReactionBlock - 1) / kReactionBlock);
+  const auto blocks = static_cast<std::ptrdiff_t>((n + block - 1) / block);
 #pragma omp parallel for schedule(static) if (team > 1 && n >= kParallelCells) num_threads(team)
   for (std::ptrdiff_t b = 0; b < blocks; ++b) {
-    const std::size_t first = static_cast<std::size_t>(b) * kReactionBlock;
+    const std::size_t first = static_cast<std::size_t>(b) * block;
     try {
-      body(first, std::min(kReactionBlock, n - first), static_cast<std::size_t>(omp_get_thread_num()));
+      body(first, std::min(block, n - first), static_cast<std::size_t>(omp_get_thread_num()));
     } catch (...) {
 #pragma omp critical(tessella_network_blocks)
       if (first < failed) {
@@ -77,6 +52,21 @@ void forEachBlock(std::size_t n, std::size_t threads, Body body) {
     }
   }
   if (failure) std::rethrow_exception(failure);
+}
+
+// body(c, thread) for every cell c < n, over OpenMP threads (each cell's work only writes that cell's
+// entries, so the results do not depend on the number of threads). An exception of the body is rethrown
+// after the loop: the one of the lowest cell, whatever the number of threads.
+template <class Body>
+void forEachCell(std::size_t n, std::size_t threads, Body body) {
+  forEachBlockOf(1, n, threads, [&](std::size_t c, std::size_t, std::size_t thread) { body(c, thread); });
+}
+
+// The reactions run over blocks of kReactionBlock cells.
+constexpr std::size_t kReactionBlock = 256;
+template <class Body>
+void forEachBlock(std::size_t n, std::size_t threads, Body body) {
+  forEachBlockOf(kReactionBlock, n, threads, body);
 }
 
 // J(r, c) += v on a fixed pattern.
