@@ -253,6 +253,17 @@ double NetworkSystem::pinWeightDerivative(double c) const {
                                                          : model_.pin.weightDerivative(c);
 }
 
+CellValues NetworkSystem::cellValues(double t) const {
+  CellValues values;
+  values.t = t;
+  values.conc = conc_.data();
+  values.neighbourhood = neighbourhood_.empty() ? nullptr : neighbourhood_.data();
+  values.measure = graph_.measure.data();
+  values.centroid = graph_.centroid.data();
+  for (const std::vector<double>* column : property_columns_) values.properties.push_back(column->data());
+  return values;
+}
+
 void NetworkSystem::neighbourhoodTerms() {
   if (neighbourhood_.empty()) return;
   const std::size_t S = numSpecies();
@@ -279,13 +290,7 @@ void NetworkSystem::rhs(double t, std::span<const double> y, std::span<double> y
   if (gradient) pinDenominators();  // and pin_out_
   // The reactions' rates, over blocks of cells (each reaction's bytecode runs on a whole block).
   if (reactions) {
-    CellValues values;
-    values.t = t;
-    values.conc = conc_.data();
-    values.neighbourhood = neighbourhood_.empty() ? nullptr : neighbourhood_.data();
-    values.measure = graph_.measure.data();
-    values.centroid = graph_.centroid.data();
-    for (const std::vector<double>* column : property_columns_) values.properties.push_back(column->data());
+    const CellValues values = cellValues(t);
     forEachBlock(n, threads_, [&](std::size_t first, std::size_t count, std::size_t thread) {
       reactions_[thread]->evaluateCells(values, first, count, ydot.data());
     });
@@ -470,13 +475,7 @@ void NetworkSystem::jacobian(double t, std::span<const double> y, CsrMatrix& J) 
     // Over blocks of cells: the differences in the cells' own concentrations with each reaction's bytecode on the
     // whole block (the same values as cell by cell), into the cached positions; then the neighbourhood terms' cell
     // by cell. A rate that is not finite: the block again cell by cell, for the error cell by cell gives.
-    CellValues values;
-    values.t = t;
-    values.conc = conc_.data();
-    values.neighbourhood = neighbourhood_.empty() ? nullptr : neighbourhood_.data();
-    values.measure = graph_.measure.data();
-    values.centroid = graph_.centroid.data();
-    for (const std::vector<double>* column : property_columns_) values.properties.push_back(column->data());
+    const CellValues values = cellValues(t);
     forEachBlock(n, threads_, [&](std::size_t first, std::size_t count, std::size_t thread) {
       if (!reactions_[thread]->differenceCells(values, first, count, root, reaction_entry_.data(), J.value.data())) {
         for (std::size_t c = first; c < first + count; ++c) cellByCell(c, thread, true);

@@ -47,6 +47,7 @@ struct PinSides {
 };
 
 class ReactionSet;
+struct CellValues;
 class PinExpression;
 
 /// What jacobian() computes: `Exact`, dF/dy; `Neighbours`, dF/dy without the
@@ -138,6 +139,9 @@ class NetworkSystem {
   double pinWeight(double c) const;
   double pinWeightDerivative(double c) const;
   void neighbourhoodTerms();  // neighbourhood_ from conc_
+  // What the reactions read at time t over all cells (conc_, neighbourhood_, the graph's measures, centroids
+  // and property columns).
+  CellValues cellValues(double t) const;
   // Dynamic PIN: pin_cell_ from y; the rate of the density on `side` of interface k and, if `partial`, its
   // derivatives with respect to the PinExpression arguments.
   void pinCellAmounts(std::span<const double> y);
