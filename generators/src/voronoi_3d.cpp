@@ -319,6 +319,7 @@ struct DualVertices3 {
   std::vector<Vec3> cc;
   std::vector<std::uint8_t> inside;
   std::vector<Index> group;
+  std::vector<std::uint8_t> grouped;  // welded to another cell (a group of more than one)
 };
 
 void computeCircumcentres(std::span<const Vec3> seeds, const ConvexDomain3& domain, const Tetrahedra& tets,
@@ -347,6 +348,7 @@ void groupCloseCircumcentres(const Tetrahedra& tets, double weld, DualVertices3&
   const std::size_t nt = tets.size();
   std::vector<Index>& group = dual.group;
   group.resize(nt);
+  dual.grouped.assign(nt, 0);
   for (std::size_t t = 0; t < nt; ++t) group[t] = static_cast<Index>(t);
   auto root = [&](Index t) {
     while (group[t] != t) t = group[t] = group[group[t]];
@@ -358,6 +360,7 @@ void groupCloseCircumcentres(const Tetrahedra& tets, double weld, DualVertices3&
       if (u < t || !tets.finite[u] || (dual.cc[t] - dual.cc[u]).squaredNorm() > weld * weld) continue;
       const Index a = root(static_cast<Index>(t)), b = root(u);
       group[std::max(a, b)] = std::min(a, b);
+      dual.grouped[t] = dual.grouped[u] = 1;
     }
   }
   for (std::size_t t = 0; t < nt; ++t) group[t] = root(static_cast<Index>(t));
@@ -374,6 +377,7 @@ struct CellReadout3 {
   std::vector<WallStore> stores;
   std::vector<CellWallsRef> walls;
   std::vector<std::uint8_t> is_boundary;
+  std::vector<std::uint8_t> closed;  // read off the triangulation, no tetrahedron around it grouped
   std::vector<std::string> errors;
   std::vector<Index> duplicate;  // the lowest seed closer than the duplicate distance (by rank)
 };
@@ -411,11 +415,13 @@ struct CellReader3 {
   // the seed has its circumcentre inside the domain (the cell is interior).
   bool neighbours(Index i, Scratch& s) const {
     bool interior = true;
+    std::uint8_t grouped = 0;
     if (s.seen_by.empty()) s.seen_by.assign(seeds.size(), kInvalidIndex);
     s.pairs.clear();
     for (Index k = tets.inc_start[i]; k < tets.inc_start[i + 1]; ++k) {  // cells ascending
       const Index t = tets.inc[k];
       if (!dual.inside[t]) interior = false;
+      grouped |= dual.grouped[t];
       for (Index v : tets.tv[t])
         if (v != kInvalidIndex && v != i && s.seen_by[v] != i) {
           s.seen_by[v] = i;
@@ -432,6 +438,7 @@ struct CellReader3 {
     for (Index j : s.nbrs)  // the lowest seed index, as seed order would find it
       if ((seeds[j] - seeds[i]).squaredNorm() < d2 && tets.order[j] < readout.duplicate[i])
         readout.duplicate[i] = tets.order[j];
+    readout.closed[i] = interior && !grouped;  // (readInterior clears it for a cell without volume)
     return interior;
   }
 
@@ -498,6 +505,7 @@ struct CellReader3 {
     const std::size_t count = local.size() - first;
     if (count < 4 || !(v6 > 0)) {
       readout.errors[i] = "the Voronoi cell of " + describeSeed(tets.order[i], seed) + " has no volume";
+      readout.closed[i] = 0;
       local.truncate(first);
       return;
     }
@@ -598,6 +606,7 @@ CellReadout3 readCells(std::span<const Vec3> seeds, const ConvexDomain3& domain,
     }
   }
   readout.is_boundary.assign(n, 0);
+  readout.closed.assign(n, 0);
   readout.errors.resize(n);
   readout.duplicate.assign(n, kInvalidIndex);
   const int scaffold = kScaffoldLabel;
@@ -705,7 +714,7 @@ std::vector<Vec3> weldBoundaryCells(const ConvexDomain3& domain, const Tetrahedr
 // pass over the loops) is sequential.
 void assembleCells(std::span<const Vec3> seeds, const Tetrahedra& tets, const DualVertices3& dual,
                    const std::vector<Vec3>& extra, const std::vector<WallStore>& wall_stores,
-                   const std::vector<CellWallsRef>& refs, ClippedCells3& out) {
+                   const std::vector<CellWallsRef>& refs, std::span<const std::uint8_t> closed, ClippedCells3& out) {
   const std::vector<WallStore>& stores_ = wall_stores;
   const std::size_t n = seeds.size(), nt = dual.cc.size();
   const std::int64_t ns = static_cast<std::int64_t>(n);
@@ -770,8 +779,11 @@ void assembleCells(std::span<const Vec3> seeds, const Tetrahedra& tets, const Du
   // face towards i, which must be the same loop reversed; a stored wall
   // towards a higher neighbour must be listed by it.
   out.cell_offsets.assign(n + 1, 0);
-  for (std::size_t k = 0; k < n; ++k)
+  out.closed.resize(n);
+  for (std::size_t k = 0; k < n; ++k) {
     out.cell_offsets[k + 1] = out.cell_offsets[k] + refs[tets.rank[k]].count;
+    out.closed[k] = closed[tets.rank[k]];
+  }
   out.cell_faces.resize(out.cell_offsets[n]);
   // Per rank: the first lower neighbour whose wall differs, the first higher one missing a stored wall.
   std::vector<Index> differs_from(n, kInvalidIndex), missing_in(n, kInvalidIndex);
@@ -851,7 +863,7 @@ ClippedCells3 clipVoronoi3(std::span<const Vec3> seeds, const ConvexDomain3& dom
   throwCellErrors(seeds, tets, readout);
   if (!complex) return out;
   const std::vector<Vec3> extra = weldBoundaryCells(domain, tets, dual, readout);
-  assembleCells(seeds, tets, dual, extra, readout.stores, readout.walls, out);
+  assembleCells(seeds, tets, dual, extra, readout.stores, readout.walls, readout.closed, out);
   return out;
 }
 
@@ -872,7 +884,7 @@ Tissue solidVoronoi(std::span<const Vec3> seeds, const Domain& d, const VoronoiO
   detail::ClippedCells3 cells =
       detail::clipVoronoi3(seeds, domain, options.duplicate_tolerance, detail::CellOutput::Complex);
   return buildPolyhedralTissue(std::move(cells.positions), cells.face_offsets, cells.face_loops,
-                               cells.cell_offsets, cells.cell_faces);
+                               cells.cell_offsets, cells.cell_faces, cells.closed);
 }
 
 }  // namespace

@@ -4,6 +4,7 @@
 // Private: clipped Voronoi cells as plain arrays, before they become a Tissue
 // (shared by the generators, the dome and Lloyd relaxation).
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -28,6 +29,9 @@ struct ClippedCells3 {
   std::vector<Index> cell_offsets;  // cell k = seed k: its walls are
   std::vector<CellFace> cell_faces; //   cell_faces[cell_offsets[k] .. cell_offsets[k+1])
   std::vector<Vec3> centroids;      // of each clipped cell
+  // Per cell: read off the triangulation with all its Voronoi vertices
+  // distinct, so closed by construction (CellComplex::addVolumes).
+  std::vector<std::uint8_t> closed;
 };
 
 /// What to compute: Lloyd relaxation needs the centroids only.

@@ -6,6 +6,7 @@
 // count of the uses per edge.
 #include <catch2/catch.hpp>
 
+#include <cstdint>
 #include <map>
 #include <string>
 #include <utility>
@@ -157,4 +158,68 @@ TEST_CASE("a surface of 2^16 edge uses or more is checked by sorting its uses", 
         CHECK(std::string(e.what()).ends_with("at edge " + std::to_string(bad)));
       }
     }
+}
+
+TEST_CASE("addVolumes trusts closed-by-construction volumes for their surface only", "[tissue][closed_surface]") {
+  const int n = 6;
+  const std::size_t nf = static_cast<std::size_t>(n) + 2;
+  std::vector<Index> offsets{0}, items;
+  for (int copy = 0; copy < 2; ++copy)
+    for (const auto& loop : prismLoops(n)) {
+      for (Index v : loop) items.push_back(v + static_cast<Index>(copy * 2 * n));
+      offsets.push_back(static_cast<Index>(items.size()));
+    }
+  auto faces = [&](std::size_t flip1) {  // volume 0: prism 0; volume 1: prism 1 with face flip1 reversed
+    std::vector<OrientedFace> f = surface(nf, nf, nf);
+    for (std::size_t k = 0; k < nf; ++k) f.emplace_back(FaceId(static_cast<Index>(nf + k)), k == flip1);
+    return f;
+  };
+  const std::vector<Index> volume_offsets{0, static_cast<Index>(nf), static_cast<Index>(2 * nf)};
+  auto complex = [&] { return CellComplex::fromLoops(3, 4 * static_cast<std::size_t>(n), offsets, items); };
+  const std::vector<std::uint8_t> both{1, 1}, first{1, 0};
+
+  // Closed volumes: flagged or not, the same complex.
+  CellComplex checked = complex(), trusted = complex();
+  checked.addVolumes(volume_offsets, faces(nf));
+  trusted.addVolumes(volume_offsets, faces(nf), both);
+  CHECK(checked.layout() == trusted.layout());
+
+  // One flag per volume.
+  CellComplex c = complex();
+  CHECK_THROWS_WITH(c.addVolumes(volume_offsets, faces(nf), std::vector<std::uint8_t>{1}),
+                    Catch::Contains("1 closed-by-construction flags for 2 volumes"));
+  CHECK(c.count(3) == 0);
+
+  // An open surface in a volume that is not flagged is still refused.
+  CHECK_THROWS_WITH(c.addVolumes(volume_offsets, faces(3), first), Catch::Contains("volume 1: surface is not closed"));
+  CHECK(c.count(3) == 0);
+
+  // Flagged volumes still get every other check: a face twice, too few faces, a face in a third volume.
+  std::vector<OrientedFace> twice = faces(nf);
+  twice[1] = twice[0];
+  CHECK_THROWS_WITH(c.addVolumes(volume_offsets, twice, both), Catch::Contains("volume 0 uses face 0 twice"));
+  const std::vector<Index> short_offsets{0, 3, static_cast<Index>(3 + nf)};
+  std::vector<OrientedFace> short_faces = surface(nf, nf, nf);
+  short_faces.erase(short_faces.begin() + 3, short_faces.begin() + static_cast<std::ptrdiff_t>(nf));
+  for (std::size_t k = 0; k < nf; ++k) short_faces.emplace_back(FaceId(static_cast<Index>(nf + k)), false);
+  CHECK_THROWS_WITH(c.addVolumes(short_offsets, short_faces, both), Catch::Contains("needs at least 4 faces, got 3"));
+  CHECK(c.count(3) == 0);
+  c.addVolumes(volume_offsets, faces(nf), both);
+  std::vector<OrientedFace> prism0_twice = surface(nf, nf, nf);  // two more volumes on prism 0's faces
+  const std::vector<OrientedFace> prism0 = prism0_twice;
+  prism0_twice.insert(prism0_twice.end(), prism0.begin(), prism0.end());
+  CHECK_THROWS_WITH(c.addVolumes(volume_offsets, prism0_twice, both),
+                    Catch::Contains("volume 3: face 0 already bounds two volumes"));
+  CHECK(c.count(3) == 2);
+
+  // The flag is a promise: a flagged open surface is refused only where every surface is checked
+  // (debug and paranoid builds); elsewhere it is built, unchecked.
+  CellComplex open = complex();
+#if !defined(NDEBUG) || defined(TESSELLA_PARANOID)
+  CHECK_THROWS_WITH(open.addVolumes(volume_offsets, faces(3), both), Catch::Contains("surface is not closed"));
+#else
+  open.addVolumes(volume_offsets, faces(3), both);
+  CHECK(open.count(3) == 2);
+  CHECK(lowestBadEdge(open, faces(3)) != kInvalidIndex);  // (as built: open)
+#endif
 }

@@ -63,12 +63,16 @@ Tissue buildPolyhedralTissue(std::span<const Vec3> positions, const std::vector<
 
 Tissue buildPolyhedralTissue(std::vector<Vec3> positions, std::span<const Index> face_offsets,
                              std::span<const Index> face_vertices, std::span<const Index> cell_offsets,
-                             std::span<const CellFace> cell_faces) {
+                             std::span<const CellFace> cell_faces,
+                             std::span<const std::uint8_t> closed_by_construction) {
+  const std::size_t ncells = cell_offsets.empty() ? 0 : cell_offsets.size() - 1;
+  if (!closed_by_construction.empty() && closed_by_construction.size() != ncells)
+    throw InputError("buildPolyhedralTissue: " + std::to_string(closed_by_construction.size()) +
+                     " closed-by-construction flags for " + std::to_string(ncells) + " cells");
   CellComplex c = loopsComplex(3, positions.size(), face_offsets, face_vertices, "face");
   const std::size_t nf = c.slots(2);
   std::vector<OrientedFace> oriented;
   oriented.reserve(cell_faces.size());
-  const std::size_t ncells = cell_offsets.empty() ? 0 : cell_offsets.size() - 1;
   for (std::size_t k = 0; k < ncells; ++k)
     for (Index i = cell_offsets[k]; i < cell_offsets[k + 1]; ++i) {
       const CellFace& cf = cell_faces[i];
@@ -78,7 +82,7 @@ Tissue buildPolyhedralTissue(std::vector<Vec3> positions, std::span<const Index>
       oriented.emplace_back(FaceId(cf.face), cf.reversed);
     }
   try {
-    c.addVolumes(cell_offsets, oriented);
+    c.addVolumes(cell_offsets, oriented, closed_by_construction);
   } catch (const TopologyError& e) {
     throw InputError("cell " + std::to_string(e.element().index) + ": " + e.what());
   }

@@ -315,11 +315,20 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
   return c;
 }
 
-void CellComplex::addVolumes(std::span<const Index> offsets, std::span<const OrientedFace> faces) {
+void CellComplex::addVolumes(std::span<const Index> offsets, std::span<const OrientedFace> faces,
+                             std::span<const std::uint8_t> closed_by_construction) {
   if (dim_ != 3) throw TopologyError("volumes exist only in a 3D complex");
   const std::size_t nv = offsets.empty() ? 0 : offsets.size() - 1;
   if (nv && (offsets[0] != 0 || offsets[nv] != faces.size()))
     throw TopologyError("addVolumes: offsets do not cover the face list");
+  if (!closed_by_construction.empty() && closed_by_construction.size() != nv)
+    throw TopologyError("addVolumes: " + std::to_string(closed_by_construction.size()) +
+                        " closed-by-construction flags for " + std::to_string(nv) + " volumes");
+  // A volume the caller built closed skips the closed-surface check (the
+  // other checks still run); debug and paranoid builds check every volume.
+#if !defined(NDEBUG) || defined(TESSELLA_PARANOID)
+  closed_by_construction = {};
+#endif
   // Per-volume checks are independent: run them in parallel, report the
   // first. They visit the volumes by their highest face id: when faces are
   // numbered along space (generators), volumes listed in another order
@@ -355,7 +364,8 @@ void CellComplex::addVolumes(std::span<const Index> offsets, std::span<const Ori
       if (bad[k]) continue;
       std::sort(seen.begin(), seen.end());
       if (std::adjacent_find(seen.begin(), seen.end()) != seen.end() ||
-          !detail::closedOrientedSurface(list, [&](FaceId f) { return faceEdges(f); }, nullptr, &edge_uses))
+          ((closed_by_construction.empty() || !closed_by_construction[k]) &&
+           !detail::closedOrientedSurface(list, [&](FaceId f) { return faceEdges(f); }, nullptr, &edge_uses)))
         bad[k] = 1;
     }
   }

@@ -4,6 +4,7 @@
 // Building tissues from plain arrays (generators, file readers, tests).
 
 #include <array>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -43,9 +44,13 @@ Tissue buildPolyhedralTissue(std::span<const Vec3> positions,
 
 /// The same from flat (CSR) arrays: face k is face_vertices[face_offsets[k] ..
 /// face_offsets[k+1]), cell k is cell_faces[cell_offsets[k] .. cell_offsets[k+1]).
+/// `closed_by_construction` (optional, one flag per cell): cells whose
+/// surface the caller guarantees closed and consistently oriented, see
+/// CellComplex::addVolumes.
 Tissue buildPolyhedralTissue(std::vector<Vec3> positions, std::span<const Index> face_offsets,
                              std::span<const Index> face_vertices, std::span<const Index> cell_offsets,
-                             std::span<const CellFace> cell_faces);
+                             std::span<const CellFace> cell_faces,
+                             std::span<const std::uint8_t> closed_by_construction = {});
 
 /// How checkPolyhedra treats the `reversed` flags of the cells' faces.
 enum class FaceOrientation {

@@ -182,7 +182,20 @@ class CellComplex {
   /// Appends volumes in bulk (3D): volume k is faces[offsets[k] .. offsets[k+1]).
   /// Same checks as addVolume (run in parallel, the first bad volume is
   /// reported); on error nothing is added.
-  void addVolumes(std::span<const Index> offsets, std::span<const OrientedFace> faces);
+  ///
+  /// `closed_by_construction` (empty, or one flag per new volume): a volume
+  /// flagged non-zero is taken as closed and consistently oriented without
+  /// the per-edge count of its surface, because the caller's construction
+  /// guarantees it (the Voronoi generator flags a cell read off the Delaunay
+  /// triangulation whose Voronoi vertices are all distinct: its surface is
+  /// the dual of its seed's link, a triangulated sphere, so each of its
+  /// edges -- a Delaunay triangle -- is used once each way). Everything else
+  /// is still checked for every volume (at least 4 faces, live and distinct,
+  /// a face in at most two volumes); builds without NDEBUG or with
+  /// TESSELLA_PARANOID ignore the flags and check every surface, and
+  /// validate() checks the result in tests.
+  void addVolumes(std::span<const Index> offsets, std::span<const OrientedFace> faces,
+                  std::span<const std::uint8_t> closed_by_construction = {});
 
   /// Removes an element that bounds nothing (its regions are empty); its
   /// borders lose it from their regions.
