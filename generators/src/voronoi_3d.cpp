@@ -811,9 +811,15 @@ void assembleCells(std::span<const Vec3> seeds, const Tetrahedra& tets, const Du
     CellFace* list = out.cell_faces.data() + out.cell_offsets[tets.order[i]];
     for (std::size_t f = 0; f < cw.size(); ++f) {
       const int label = cw.labels[f];
+      // Two cells closed by construction (read off the triangulation, no
+      // welded vertex) list each other, and their walls are one walk around
+      // the Delaunay edge from its lowest cell, in opposite senses: the same
+      // loop reversed. Only walls with another cell are compared.
+      const bool both_read = label >= 0 && closed[i] && closed[static_cast<Index>(label)];
       if (stores(label, i)) {
         list[f] = {own++, false};
-        if (label >= 0 && missing_in[i] == kInvalidIndex && wallTowards(static_cast<Index>(label), i) < 0)
+        if (label >= 0 && !both_read && missing_in[i] == kInvalidIndex &&
+            wallTowards(static_cast<Index>(label), i) < 0)
           missing_in[i] = static_cast<Index>(label);
         continue;
       }
@@ -821,12 +827,20 @@ void assembleCells(std::span<const Vec3> seeds, const Tetrahedra& tets, const Du
       const std::ptrdiff_t g = wallTowards(j, i);
       Index face = kInvalidIndex;
       if (g >= 0) {
-        // j's stored walls before g give the face id.
+        // j's stored walls before g give the face id: its walls towards the
+        // domain and towards higher ranks (when its labels ascend, those
+        // below 0 and those in (j, i)).
         const CellWalls wj = wallsOf(j);
         face = first_face[j];
-        for (std::ptrdiff_t h = 0; h < g; ++h)
-          if (stores(wj.labels[h], j)) ++face;
-        if (!reverseOf(wj.loop(static_cast<std::size_t>(g)), cw.loop(f))) face = kInvalidIndex;
+        if (ascending[j]) {
+          const auto b = wj.labels.begin();
+          face += static_cast<Index>((std::lower_bound(b, b + g, 0) - b) +
+                                     (g - (std::upper_bound(b, b + g, static_cast<int>(j)) - b)));
+        } else {
+          for (std::ptrdiff_t h = 0; h < g; ++h)
+            if (stores(wj.labels[h], j)) ++face;
+        }
+        if (!both_read && !reverseOf(wj.loop(static_cast<std::size_t>(g)), cw.loop(f))) face = kInvalidIndex;
       }
       if (face == kInvalidIndex) {
         if (differs_from[i] == kInvalidIndex) differs_from[i] = j;
