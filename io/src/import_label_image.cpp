@@ -7,6 +7,7 @@
 #include <cctype>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <type_traits>
 
 #include <vtkDataArray.h>
@@ -21,6 +22,7 @@
 #include <vtkType.h>
 #include <vtkXMLImageDataReader.h>
 
+#include "label_image_2d.hpp"
 #include "vtk_integer_types.hpp"
 #include "tessella/io/import.hpp"
 #include "tessella/io/label_image.hpp"
@@ -48,13 +50,23 @@ void copyLabels(const T* values, std::vector<std::int64_t>& labels, const std::s
 
 }  // namespace
 
-LabelImage readLabelImage(const std::string& path) {
+namespace {
+
+// An image read by VTK: its header (no labels yet) and its scalars, kept alive by `reader`.
+struct VtkImage {
+  vtkSmartPointer<vtkAlgorithm> reader;
+  vtkDataArray* scalars = nullptr;
+  LabelImage header;
+};
+
+VtkImage readVtkImage(const std::string& path) {
   const std::string file = "'" + path + "'";
   if (!std::filesystem::is_regular_file(path)) throw InputError("cannot read label image " + file + ": no such file");
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   auto capture = vtkSmartPointer<detail::VtkErrorCapture>::New();
-  vtkSmartPointer<vtkAlgorithm> reader;
+  VtkImage out;
+  vtkSmartPointer<vtkAlgorithm>& reader = out.reader;
   if (ext == ".vti") {
     auto r = vtkSmartPointer<vtkXMLImageDataReader>::New();
     r->SetFileName(path.c_str());
@@ -91,7 +103,7 @@ LabelImage readLabelImage(const std::string& path) {
   if (scalars->GetNumberOfComponents() != 1)
     throw InputError("label image " + file + " has " + std::to_string(scalars->GetNumberOfComponents()) +
                      " components per pixel (colour?): a label image has one integer per pixel");
-  LabelImage img;
+  LabelImage& img = out.header;
   img.name = path;
   int dims[3];
   data->GetDimensions(dims);
@@ -103,7 +115,16 @@ LabelImage readLabelImage(const std::string& path) {
   if (n != static_cast<vtkIdType>(dims[0]) * dims[1] * dims[2])
     throw InputError("label image " + file + " has " + std::to_string(n) + " values for " + std::to_string(dims[0]) +
                      " x " + std::to_string(dims[1]) + " x " + std::to_string(dims[2]) + " pixels");
-  img.labels.resize(static_cast<std::size_t>(n));
+  out.scalars = scalars;
+  return out;
+}
+
+// The image's labels copied into image.header.labels (64-bit).
+LabelImage withLabels(VtkImage&& image) {
+  LabelImage img = std::move(image.header);
+  vtkDataArray* scalars = image.scalars;
+  const std::string file = "'" + img.name + "'";
+  img.labels.resize(static_cast<std::size_t>(scalars->GetNumberOfTuples()));
   switch (scalars->GetDataType()) {
     vtkTemplateMacro(copyLabels(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0)), img.labels, file));
     default:
@@ -112,8 +133,36 @@ LabelImage readLabelImage(const std::string& path) {
   return img;
 }
 
+// The scalars as they are stored, where every value is a label (not unsigned 64-bit).
+template <typename T>
+std::optional<detail::LabelPixels> storedPixels(const T* values) {
+  if constexpr (std::is_constructible_v<detail::LabelPixels, const T*> && std::is_integral_v<T> &&
+                !(std::is_unsigned_v<T> && sizeof(T) == 8))
+    return detail::LabelPixels(values);
+  else
+    return std::nullopt;
+}
+
+}  // namespace
+
+LabelImage readLabelImage(const std::string& path) { return withLabels(readVtkImage(path)); }
+
 ImportResult importLabelImage(const std::string& path, const ImportOptions& options) {
-  ImportResult r = tissueFromLabelImage(readLabelImage(path), options);
+  VtkImage image = readVtkImage(path);
+  std::optional<detail::LabelPixels> pixels;
+  if (image.header.dims[2] == 1) {  // 2D: read in place, without the 64-bit copy, where the type allows
+    vtkDataArray* scalars = image.scalars;
+    switch (scalars->GetDataType()) {
+      vtkTemplateMacro(pixels = storedPixels(static_cast<const VTK_TT*>(scalars->GetVoidPointer(0))));
+      default:
+        break;
+    }
+  }
+  ImportResult r =
+      pixels ? detail::tissueFromLabelPixels2d(image.header, *pixels,
+                                               static_cast<std::size_t>(image.scalars->GetNumberOfTuples()), options,
+                                               [&] { image.scalars = nullptr, image.reader = nullptr; })
+             : tissueFromLabelImage(withLabels(std::move(image)), options);
   r.report.path = path;
   return r;
 }

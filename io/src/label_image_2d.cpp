@@ -22,12 +22,16 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <map>
 #include <numeric>
+#include <type_traits>
+#include <variant>
 
 #include <omp.h>
 
+#include "label_image_2d.hpp"
 #include "label_image_3d.hpp"
 #include "labelled_surface.hpp"
 #include "polyline_simplification.hpp"
@@ -35,6 +39,7 @@
 #include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
+#include "tessella/tissue/uninitialized_vector.hpp"
 
 namespace tessella::io {
 
@@ -199,15 +204,16 @@ void simplifyWall(const Walls& ws, std::size_t wi, const std::vector<Vec3>& pos,
 template <typename T>
 struct Csr {
   std::vector<std::int32_t> off;
-  std::vector<T> items;
+  UninitializedVector<T> items;  // every item written after the resize
 };
 
 // The runs of equal labels along the rows of the padded image: row r's runs start at x[off[r]] (the first at 0),
 // each ends where the next starts (the last at the padded width); label[k] is the run's label (kOutside for
 // background, dropped labels and the padding, all joined into one run).
 struct Runs {
-  std::vector<std::int32_t> off, x;
-  std::vector<Label> label;
+  std::vector<std::int32_t> off;
+  UninitializedVector<std::int32_t> x;  // every item written after a resize
+  UninitializedVector<Label> label;
   std::int32_t end(std::size_t k, std::size_t row, std::int32_t width) const {
     return k + 1 < static_cast<std::size_t>(off[row + 1]) ? x[k + 1] : width;
   }
@@ -230,17 +236,20 @@ struct UnionFind32 {
 
 namespace {
 
-// `release`, when given, is img.labels, emptied once the runs are made.
-ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, std::vector<std::int64_t>* release) {
+// The labels are `pixels` (`count` of them: img.labels, or the file's pixels as stored); `release`, when given,
+// frees them once the runs are made; `labels_3d`, when given, is img.labels for a 3D image, emptied once read.
+ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels, std::size_t count,
+                               const ImportOptions& o, const std::function<void()>& release,
+                               std::vector<std::int64_t>* labels_3d) {
   detail::checkImportOptions(o);
   const LabelImageOptions& io = o.image;
   const std::string file = "'" + img.name + "'";
   const auto [nx, ny, nz] = img.dims;
   if (nx < 1 || ny < 1 || nz < 1 ||
-      img.labels.size() != static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny) * static_cast<std::size_t>(nz))
+      count != static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny) * static_cast<std::size_t>(nz))
     throw InputError(file + ": the image has dimensions " + std::to_string(nx) + " x " + std::to_string(ny) + " x " +
-                     std::to_string(nz) + " but " + std::to_string(img.labels.size()) + " labels");
-  if (nz != 1) return detail::tissueFromLabelImage3d(img, o, release);
+                     std::to_string(nz) + " but " + std::to_string(count) + " labels");
+  if (nz != 1) return detail::tissueFromLabelImage3d(img, o, labels_3d);
   // Pixel size.
   double sx = img.spacing[0], sy = img.spacing[1];
   if (!io.voxel_size.empty()) {
@@ -290,7 +299,7 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
   // depend on that row alone, so the result is the same for any number of threads).
   Runs runs;
   {
-    const Label first = img.labels[static_cast<std::size_t>(y0 * nx + x0)];
+    const Label first = std::visit([&](auto* px) { return static_cast<Label>(px[y0 * nx + x0]); }, pixels);
     struct Block {
       std::vector<std::int32_t> count, x;
       std::vector<Label> label;
@@ -298,28 +307,32 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
     };
     const int n_blocks = std::max(1, std::min<int>(omp_get_max_threads(), static_cast<int>(h)));
     std::vector<Block> blocks(static_cast<std::size_t>(n_blocks));
+    // In the pixels' stored type (the read's, without a 64-bit copy): each pixel compared, a run's label widened.
+    auto scan = [&](auto* px) {
 #pragma omp parallel for schedule(static, 1) num_threads(n_blocks)
-    for (int b = 0; b < n_blocks; ++b) {
-      Block& blk = blocks[static_cast<std::size_t>(b)];
-      const std::int64_t r0 = h * b / n_blocks, r1 = h * (b + 1) / n_blocks;
-      bool several = false;
-      for (std::int64_t r = r0; r < r1; ++r) {
-        const Label* src = img.labels.data() + static_cast<std::size_t>((r + y0) * nx + x0);
-        const std::size_t before = blk.x.size();
-        blk.x.push_back(0), blk.label.push_back(kOutside);
-        Label current = kOutside;
-        for (std::int64_t i = 0; i < w;) {
-          const Label l = src[i];
-          several = several || l != first;
-          const Label m = outsideLabel(l) ? kOutside : l;
-          if (m != current) blk.x.push_back(static_cast<std::int32_t>(i + 1)), blk.label.push_back(m), current = m;
-          for (++i; i < w && src[i] == l;) ++i;
+      for (int b = 0; b < n_blocks; ++b) {
+        Block& blk = blocks[static_cast<std::size_t>(b)];
+        const std::int64_t r0 = h * b / n_blocks, r1 = h * (b + 1) / n_blocks;
+        bool several = false;
+        for (std::int64_t r = r0; r < r1; ++r) {
+          const auto* src = px + static_cast<std::size_t>((r + y0) * nx + x0);
+          const std::size_t before = blk.x.size();
+          blk.x.push_back(0), blk.label.push_back(kOutside);
+          Label current = kOutside;
+          for (std::int64_t i = 0; i < w;) {
+            const Label l = src[i];
+            several = several || l != first;
+            const Label m = outsideLabel(l) ? kOutside : l;
+            if (m != current) blk.x.push_back(static_cast<std::int32_t>(i + 1)), blk.label.push_back(m), current = m;
+            for (++i; i < w && src[i] == l;) ++i;
+          }
+          if (current != kOutside) blk.x.push_back(static_cast<std::int32_t>(w + 1)), blk.label.push_back(kOutside);
+          blk.count.push_back(static_cast<std::int32_t>(blk.x.size() - before));
         }
-        if (current != kOutside) blk.x.push_back(static_cast<std::int32_t>(w + 1)), blk.label.push_back(kOutside);
-        blk.count.push_back(static_cast<std::int32_t>(blk.x.size() - before));
+        blk.several = several;
       }
-      blk.several = several;
-    }
+    };
+    std::visit(scan, pixels);
     bool several = false;
     std::size_t n_runs = 2;
     for (const Block& blk : blocks) several = several || blk.several, n_runs += blk.x.size();
@@ -328,28 +341,27 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
                        " holds one label only (" + std::to_string(first) + " in every pixel): no cells to tell apart");
     if (n_runs > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
       throw InputError(file + ": too many label changes for a 2D import (2^31); crop the image");
-    runs.off.reserve(static_cast<std::size_t>(H + 1));
-    runs.x.reserve(n_runs), runs.label.reserve(n_runs);
-    auto outsideRow = [&] {
-      runs.off.push_back(static_cast<std::int32_t>(runs.x.size()));
-      runs.x.push_back(0), runs.label.push_back(kOutside);
-    };
-    outsideRow();
-    for (const Block& blk : blocks) {
-      std::size_t k = 0;
-      for (const std::int32_t n : blk.count) {
-        runs.off.push_back(static_cast<std::int32_t>(runs.x.size()));
-        runs.x.insert(runs.x.end(), blk.x.begin() + static_cast<std::ptrdiff_t>(k),
-                      blk.x.begin() + static_cast<std::ptrdiff_t>(k + static_cast<std::size_t>(n)));
-        runs.label.insert(runs.label.end(), blk.label.begin() + static_cast<std::ptrdiff_t>(k),
-                          blk.label.begin() + static_cast<std::ptrdiff_t>(k + static_cast<std::size_t>(n)));
-        k += static_cast<std::size_t>(n);
-      }
+    // Joined into the runs of the padded image, each block copied to its place.
+    runs.off.resize(static_cast<std::size_t>(H + 1));
+    runs.x.resize(n_runs), runs.label.resize(n_runs);
+    std::vector<std::size_t> block_start(static_cast<std::size_t>(n_blocks) + 1, 1);  // after the padding row
+    for (int b = 0; b < n_blocks; ++b)
+      block_start[b + 1] = block_start[b] + blocks[static_cast<std::size_t>(b)].x.size();
+    runs.off[0] = 0, runs.x[0] = 0, runs.label[0] = kOutside;  // the padding rows: one outside run each
+    runs.off[H - 1] = static_cast<std::int32_t>(n_runs - 1);
+    runs.x[n_runs - 1] = 0, runs.label[n_runs - 1] = kOutside;
+    runs.off[H] = static_cast<std::int32_t>(n_runs);
+    for (int b = 0; b < n_blocks; ++b) {
+      const Block& blk = blocks[static_cast<std::size_t>(b)];
+      const std::size_t start = block_start[static_cast<std::size_t>(b)];
+      std::copy(blk.x.begin(), blk.x.end(), runs.x.begin() + static_cast<std::ptrdiff_t>(start));
+      std::copy(blk.label.begin(), blk.label.end(), runs.label.begin() + static_cast<std::ptrdiff_t>(start));
+      std::size_t at = start, row = static_cast<std::size_t>(h * b / n_blocks) + 1;
+      for (const std::int32_t n : blk.count)
+        runs.off[row++] = static_cast<std::int32_t>(at), at += static_cast<std::size_t>(n);
     }
-    outsideRow();
-    runs.off.push_back(static_cast<std::int32_t>(runs.x.size()));
   }
-  if (release) std::vector<std::int64_t>().swap(*release);  // img.labels: not read again
+  if (release) release();  // the pixels: not read again
   auto runEnd = [&](std::size_t k, std::size_t row) { return runs.end(k, row, width); };
   // Walks the runs of rows ra and rb side by side: f(ka, kb, s, e, a_ends, b_ends) for each stretch [s, e) of
   // the padded row over which run ka of row ra and run kb of row rb both lie (a_ends: run ka ends at e).
@@ -697,7 +709,7 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
   if (pixel_edges != n_vedges + n_hedges || nv + pixel_edges - n_edges != n_verts)
     throw InputError(file + ": the pixel corners were miscounted (an internal error)");
   Runs().x.swap(runs.x);
-  std::vector<std::array<std::int32_t, 4>> incident(nv);
+  UninitializedVector<std::array<std::int32_t, 4>> incident(nv);  // written up to degree
   std::vector<std::uint8_t> degree(nv, 0);
   for (std::size_t e = 0; e < n_edges; ++e)
     for (const std::int32_t v : {edges[e].u, edges[e].v}) incident[v][degree[v]++] = static_cast<std::int32_t>(e);
@@ -709,7 +721,7 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
   // left cell of e (which runs u -> v); follow[e][1] leaves u along the right cell (v -> u); -1 if there is none.
   // At a vertex of two edges, the other edge. Both walks below (walls, outlines) then read two arrays indexed
   // by the edge instead of chasing the vertex's incidence: in parallel, each edge writes its own entry.
-  std::vector<std::array<std::int32_t, 2>> follow(n_edges);
+  UninitializedVector<std::array<std::int32_t, 2>> follow(n_edges);  // each written below
 #pragma omp parallel for schedule(static)
   for (std::ptrdiff_t ee = 0; ee < static_cast<std::ptrdiff_t>(n_edges); ++ee) {
     const auto e = static_cast<std::int32_t>(ee);
@@ -741,6 +753,9 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
   std::vector<std::uint8_t> outline_fault(n_cells, 0);
   auto traceWalls = [&] {
     std::vector<std::int32_t> edge_wall(n_edges, -1);
+    // At most one wall per edge, and a wall's chain holds its edges and one more vertex: room for all.
+    walls.chain.reserve(2 * n_edges), walls.off.reserve(n_edges + 1), walls.tol.reserve(n_edges);
+    walls.keep_one.reserve(n_edges), wall_cells.reserve(n_edges);
     auto walk = [&](std::int32_t start, std::int32_t e0) {
       const auto wi = static_cast<std::int32_t>(walls.size());
       walls.chain.push_back(start);
@@ -888,7 +903,6 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
   // just above the stack's lower end, which the walk met second: the outline then starts at the lower end, and
   // the corner is the last inside its closing edge (`rotated`).
   std::vector<char> rotated(n_cells, 0);
-#pragma omp parallel for schedule(static)
   for (std::ptrdiff_t cc = 0; cc < static_cast<std::ptrdiff_t>(n_cells); ++cc) {
     const auto c = static_cast<std::size_t>(cc);
     const auto& first = edges[static_cast<std::size_t>(cell_edges.items[static_cast<std::size_t>(cell_edges.off[c])])];
@@ -897,11 +911,16 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
     const auto begin = outlines.items.begin();
     std::rotate(begin + cell_edges.off[c], begin + cell_edges.off[c] + 1, begin + cell_edges.off[c + 1]);
   }
-  Csr<std::int32_t>().items.swap(cell_edges.items);
-  std::vector<std::array<std::int32_t, 2>>().swap(follow);
+  UninitializedVector<std::int32_t>().swap(cell_edges.items);
+  decltype(follow)().swap(follow);
 
   // Simplify, then make sure no two walls cross and no cell flattens.
   std::vector<char> keep(junction.begin(), junction.end());
+  // Not read from here on: freed now, so that the arrays made below can take their memory.
+  auto drop = [](auto& v) { std::remove_cvref_t<decltype(v)>().swap(v); };
+  drop(edges), drop(incident), drop(degree), drop(junction), drop(piece_of_run);
+  drop(runs.off), drop(runs.label), drop(bridge_row), drop(bridge_x), drop(bridge_type);
+  drop(cell_edges.off);
   // The pixel corners kept inside edges, by wall (few or none: see simplifyEdge); has_inner[w]: wall w has some.
   std::map<std::int32_t, std::vector<InnerCorner>> wall_inner;
   std::vector<char> has_inner(n_walls, 0);
@@ -1078,6 +1097,8 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
       if (round > 64) throw InputError(file + ": simplifying the walls did not converge (an internal error)");
     }
   }
+  drop(walls.chain), drop(walls.off), drop(walls.tol), drop(walls.keep_one), drop(wall_cells);
+  drop(has_inner);
   // Positions: corner (x, y) in pixels is the edge of pixel x, at origin + (x - 1/2) * spacing, in the scan's
   // order of the pixel corners (`key`): the kept vertices met by a vertical pixel edge, in the graph's order,
   // then those inside horizontal stretches, and the kept corners inside edges (few or none) merged in by key.
@@ -1087,50 +1108,58 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
     const double y = img.origin[1] + (p.y() + static_cast<double>(y0) - 0.5) * sy;
     return Vec3(o.scale * x, o.scale * y, 0.0);
   };
-  std::vector<std::int32_t> new_index(nv, -1);
+  UninitializedVector<std::int32_t> new_index(nv);  // written and read for kept vertices only
   std::vector<Vec3> positions;
-  std::vector<Index> polygon_off(n_cells + 1, 0), polygon_vertices;
+  std::vector<Index> polygon_off(n_cells + 1, 0);
+  UninitializedVector<Index> polygon_vertices;
   if (wall_inner.empty()) {
     constexpr std::ptrdiff_t kBlocks = 64;
     std::vector<std::size_t> start_v(kBlocks + 1, 0), start_h(kBlocks + 1, 0);
     auto blockOf = [&](std::ptrdiff_t b) { return static_cast<std::size_t>(b) * nv / kBlocks; };
-#pragma omp parallel for schedule(static)
-    for (std::ptrdiff_t b = 0; b < kBlocks; ++b) {
-      std::size_t n_v = 0, n_h = 0;
-      for (std::size_t v = blockOf(b); v < blockOf(b + 1); ++v)
-        if (keep[v]) ++(key[v] < h_key ? n_v : n_h);
-      start_v[static_cast<std::size_t>(b) + 1] = n_v, start_h[static_cast<std::size_t>(b) + 1] = n_h;
-    }
-    std::partial_sum(start_v.begin(), start_v.end(), start_v.begin());
-    start_h[0] = start_v.back();
-    std::partial_sum(start_h.begin(), start_h.end(), start_h.begin());
-    positions.resize(start_h.back());
-#pragma omp parallel for schedule(static)
-    for (std::ptrdiff_t b = 0; b < kBlocks; ++b) {
-      std::size_t next_v = start_v[static_cast<std::size_t>(b)], next_h = start_h[static_cast<std::size_t>(b)];
-      for (std::size_t v = blockOf(b); v < blockOf(b + 1); ++v)
-        if (keep[v]) {
-          std::size_t& next = key[v] < h_key ? next_v : next_h;
-          new_index[v] = static_cast<std::int32_t>(next);
-          positions[next++] = place(pos[v]);
-        }
-    }
-#pragma omp parallel for schedule(static)
-    for (std::ptrdiff_t cc = 0; cc < static_cast<std::ptrdiff_t>(n_cells); ++cc) {
-      const auto c = static_cast<std::size_t>(cc);
-      Index n = 0;
-      for (auto k = outlines.off[c]; k < outlines.off[c + 1]; ++k) n += keep[outlines.items[k]] != 0;
-      polygon_off[c + 1] = n;
-    }
-    std::partial_sum(polygon_off.begin(), polygon_off.end(), polygon_off.begin());
-    polygon_vertices.resize(polygon_off.back());
-#pragma omp parallel for schedule(static)
-    for (std::ptrdiff_t cc = 0; cc < static_cast<std::ptrdiff_t>(n_cells); ++cc) {
-      const auto c = static_cast<std::size_t>(cc);
-      Index next = polygon_off[c];
-      for (auto k = outlines.off[c]; k < outlines.off[c + 1]; ++k)
-        if (const std::int32_t v = outlines.items[k]; keep[v])
-          polygon_vertices[next++] = static_cast<Index>(new_index[v]);
+    // One parallel region (each worker's wait between regions costs CPU): counts, their sums, then the lists.
+#pragma omp parallel
+    {
+#pragma omp for schedule(static) nowait
+      for (std::ptrdiff_t b = 0; b < kBlocks; ++b) {
+        std::size_t n_v = 0, n_h = 0;
+        for (std::size_t v = blockOf(b); v < blockOf(b + 1); ++v)
+          if (keep[v]) ++(key[v] < h_key ? n_v : n_h);
+        start_v[static_cast<std::size_t>(b) + 1] = n_v, start_h[static_cast<std::size_t>(b) + 1] = n_h;
+      }
+#pragma omp for schedule(static)
+      for (std::ptrdiff_t cc = 0; cc < static_cast<std::ptrdiff_t>(n_cells); ++cc) {
+        const auto c = static_cast<std::size_t>(cc);
+        Index n = 0;
+        for (auto k = outlines.off[c]; k < outlines.off[c + 1]; ++k) n += keep[outlines.items[k]] != 0;
+        polygon_off[c + 1] = n;
+      }
+#pragma omp single
+      {
+        std::partial_sum(start_v.begin(), start_v.end(), start_v.begin());
+        start_h[0] = start_v.back();
+        std::partial_sum(start_h.begin(), start_h.end(), start_h.begin());
+        positions.resize(start_h.back());
+        std::partial_sum(polygon_off.begin(), polygon_off.end(), polygon_off.begin());
+        polygon_vertices.resize(polygon_off.back());
+      }
+#pragma omp for schedule(static)
+      for (std::ptrdiff_t b = 0; b < kBlocks; ++b) {
+        std::size_t next_v = start_v[static_cast<std::size_t>(b)], next_h = start_h[static_cast<std::size_t>(b)];
+        for (std::size_t v = blockOf(b); v < blockOf(b + 1); ++v)
+          if (keep[v]) {
+            std::size_t& next = key[v] < h_key ? next_v : next_h;
+            new_index[v] = static_cast<std::int32_t>(next);
+            positions[next++] = place(pos[v]);
+          }
+      }
+#pragma omp for schedule(static)
+      for (std::ptrdiff_t cc = 0; cc < static_cast<std::ptrdiff_t>(n_cells); ++cc) {
+        const auto c = static_cast<std::size_t>(cc);
+        Index next = polygon_off[c];
+        for (auto k = outlines.off[c]; k < outlines.off[c + 1]; ++k)
+          if (const std::int32_t v = outlines.items[k]; keep[v])
+            polygon_vertices[next++] = static_cast<Index>(new_index[v]);
+      }
     }
   } else {
     // Kept corners inside edges: ordered with the vertices by key, listed by edge for the outlines.
@@ -1193,6 +1222,7 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
       polygon_off[c + 1] = static_cast<Index>(polygon_vertices.size());
     }
   }
+  drop(pos), drop(key), drop(new_index), drop(keep), drop(outlines.off), drop(outlines.items);
   const std::size_t n_positions = positions.size();
   report.file_vertices = 0;
   report.simplified_vertices = n_verts - n_positions;
@@ -1212,11 +1242,23 @@ ImportResult convertLabelImage(const LabelImage& img, const ImportOptions& o, st
 }  // namespace
 
 ImportResult tissueFromLabelImage(const LabelImage& image, const ImportOptions& options) {
-  return convertLabelImage(image, options, nullptr);
+  return convertLabelImage(image, image.labels.data(), image.labels.size(), options, {}, nullptr);
 }
 
 ImportResult tissueFromLabelImage(LabelImage&& image, const ImportOptions& options) {
-  return convertLabelImage(image, options, &image.labels);
+  return convertLabelImage(image, image.labels.data(), image.labels.size(), options,
+                           [&] { std::vector<std::int64_t>().swap(image.labels); }, &image.labels);
 }
+
+namespace detail {
+
+ImportResult tissueFromLabelPixels2d(const LabelImage& image, LabelPixels pixels, std::size_t count,
+                                     const ImportOptions& options, const std::function<void()>& release) {
+  if (image.dims[2] != 1)
+    throw InputError("'" + image.name + "': a 3D image has no 2D import (an internal error)");
+  return convertLabelImage(image, pixels, count, options, release, nullptr);
+}
+
+}  // namespace detail
 
 }  // namespace tessella::io

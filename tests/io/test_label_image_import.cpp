@@ -23,6 +23,7 @@
 #include <vtkSmartPointer.h>
 #include <vtkTIFFWriter.h>
 #include <vtkUnsignedShortArray.h>
+#include <vtkAOSDataArrayTemplate.h>
 #include <vtkXMLImageDataWriter.h>
 
 #include "io_test_support.hpp"
@@ -692,4 +693,91 @@ TEST_CASE("2D imports are the same bit for bit on one thread and on two", "[io][
       CHECK(one == two);
     }
   omp_set_num_threads(threads);
+}
+
+namespace {
+
+// The image's labels, label l stored as f(l): as a MetaImage of element type `met` (T: its C++ type), or, for
+// 64-bit types (which VTK 9.1's MetaImage reader corrupts memory on), as VTK image data of T (`met` names it).
+template <typename T, typename F>
+void writeTypedImage(const LabelImage& img, const std::string& path, const char* met, F f) {
+  if constexpr (sizeof(T) == 8) {
+    auto data = vtkSmartPointer<vtkImageData>::New();
+    data->SetDimensions(static_cast<int>(img.dims[0]), static_cast<int>(img.dims[1]), 1);
+    data->SetSpacing(img.spacing.data());
+    data->SetOrigin(img.origin.data());
+    auto values = vtkSmartPointer<vtkAOSDataArrayTemplate<T>>::New();
+    values->SetName(met);
+    values->SetNumberOfTuples(static_cast<vtkIdType>(img.labels.size()));
+    for (std::size_t k = 0; k < img.labels.size(); ++k)
+      values->SetValue(static_cast<vtkIdType>(k), static_cast<T>(f(img.labels[k])));
+    data->GetPointData()->SetScalars(values);
+    auto w = vtkSmartPointer<vtkXMLImageDataWriter>::New();
+    w->SetFileName(path.c_str());
+    w->SetInputData(data);
+    REQUIRE(w->Write() == 1);
+    return;
+  }
+  std::ofstream out(path, std::ios::binary);
+  out.precision(17);
+  out << "ObjectType = Image\nNDims = 2\nBinaryData = True\nBinaryDataByteOrderMSB = False\nDimSize = "
+      << img.dims[0] << " " << img.dims[1] << "\nElementSpacing = " << img.spacing[0] << " " << img.spacing[1]
+      << "\nOffset = " << img.origin[0] << " " << img.origin[1] << "\nElementType = " << met
+      << "\nElementDataFile = LOCAL\n";
+  for (const std::int64_t l : img.labels) {
+    const T v = static_cast<T>(f(l));
+    out.write(reinterpret_cast<const char*>(&v), sizeof v);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("a 2D label image file imports the same whatever integer type stores its labels", "[io][label_image]") {
+  TempDir dir;
+  const LabelImage img = rasterise(voronoi200(), 128);  // labels 2..201, 0 outside the cells
+  // Each type: the labels moved into its range (negative ones where signed), the outside a value of its own.
+  auto check = [&]<typename T>(T, const char* met, std::int64_t outside, std::int64_t scale, std::int64_t shift) {
+    auto f = [&](std::int64_t l) { return l == 0 ? outside : l * scale + shift; };
+    const std::string path = dir.file(std::string("cells_") + met + (sizeof(T) == 8 ? ".vti" : ".mha"));
+    writeTypedImage<T>(img, path, met, f);
+    LabelImage stored = img;  // the reference: the same labels through the 64-bit array
+    for (std::int64_t& l : stored.labels) l = f(l);
+    for (const double simplify : {0.0, 1.0}) {
+      LabelImageOptions options;
+      options.background = {outside};
+      options.keep_pieces = true;
+      options.crop = {3, 5, 120, 110};
+      const ImportResult from_file = importTissue(path, withImage(options, simplify));
+      const ImportResult from_array = tissueFromLabelImage(stored, withImage(options, simplify));
+      INFO(met << ", simplify " << simplify);
+      CHECK(from_file.tissue.numCells() > 150);
+      CHECK(dump(from_file.tissue) == dump(from_array.tissue));
+      CHECK(from_file.report.notes == from_array.report.notes);
+      const auto& label = from_file.tissue.cellProperties().get<std::int64_t>("label");
+      std::set<std::int64_t> labels(label.values().begin(), label.values().end());
+      std::set<std::int64_t> want;
+      for (std::int64_t j = 5; j < 110; ++j)
+        for (std::int64_t i = 3; i < 120; ++i)
+          if (const std::int64_t l = img.labels[static_cast<std::size_t>(j * 128 + i)]; l != 0) want.insert(f(l));
+      CHECK(labels == want);
+    }
+  };
+  check(std::uint8_t{}, "MET_UCHAR", 255, 1, 0);
+  check(std::int8_t{}, "MET_CHAR", -128, 1, -100);
+  check(std::int16_t{}, "MET_SHORT", 0, 100, -10001);
+  check(std::uint16_t{}, "MET_USHORT", 0, 300, 0);
+  check(std::int32_t{}, "MET_INT", 1, 1000000, -100000000);
+  check(std::uint32_t{}, "MET_UINT", 0, 20000000, 0);
+  check(std::int64_t{}, "int64", -1, 1000000000000, -100000000000000);
+  check(std::uint64_t{}, "uint64", 0, 1000000000000000, 0);
+  // An unsigned 64-bit label beyond a signed one: refused, naming the file, the pixel and the label.
+  const std::string big = dir.file("big.vti");
+  writeTypedImage<std::uint64_t>(img, big, "uint64",
+                                [](std::int64_t l) { return l == 0 ? 0 : (std::uint64_t{1} << 63) + l; });
+  std::size_t first = 0;  // the first pixel of a cell
+  while (img.labels[first] == 0) ++first;
+  const std::string message = "pixel " + std::to_string(first) + " has label " +
+                              std::to_string((std::uint64_t{1} << 63) + static_cast<std::uint64_t>(img.labels[first]));
+  CHECK_THROWS_WITH(importTissue(big, withImage({})),
+                    Contains("big.vti") && Contains(message) && Contains("beyond a 64-bit signed integer"));
 }

@@ -41,8 +41,9 @@ ImportResult tissueFromLabelImage(const LabelImage& image, const ImportOptions& 
 
 /// The same, releasing image.labels as soon as they are read (the first pass
 /// over the pixels), which lowers the peak memory of a large import by the
-/// image's size: what importTissue and the Python module do with an image
-/// they read.
+/// image's size: what the Python module does with an image it reads, and
+/// importTissue with a 3D file (a 2D file's pixels it reads as stored, without
+/// the 64-bit copy, and releases after the same pass).
 ImportResult tissueFromLabelImage(LabelImage&& image, const ImportOptions& options);
 
 }  // namespace tessella::io
