@@ -15,7 +15,11 @@
 // each wall (a patch of interface faces between one pair of labels, connected
 // across voxel edges that are no junction) becomes one face whose boundary
 // loop is its chain of junction polylines, each simplified by Douglas-Peucker
-// with its ends fixed (shared by every wall along it); the cells go to the
+// with its ends fixed (shared by every wall along it). Walls whose polygons
+// cross or fail the mesher's checks get their junction lines simplified less
+// and smoothed more; a wall still failing is made of the triangles of its
+// voxel interface (several faces between the same two cells), its lines put
+// back on their voxel corners if even that fails. The cells go to the
 // cell-complex core (cell_complex_core.hpp), which orients and checks them.
 
 #include "label_image_3d.hpp"
@@ -1043,8 +1047,25 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
   std::vector<std::vector<std::int32_t>> face_centre(n_walls);                // each face's fan centre slot
   std::vector<char> interior_tried(n_walls, 0);
   std::vector<char> line_restored(polylines.size(), 0), restored_wall(n_walls, 0);
-  std::vector<std::int32_t> interior_point;  // point ids of the walls' interior vertices
-  bool interiors = false;                     // in the phase of walls of several faces
+  bool interiors = false;  // in the phase of walls of several faces
+  // Whether kept corners a and b are in turn along a junction line (an edge of the tissue).
+  auto isTissueEdge = [&](std::int32_t a, std::int32_t b) {
+    for (int k = 0; k < degree[a]; ++k) {
+      const auto& ch = polylines[static_cast<std::size_t>(edge_polyline[incident[a][k]])].chain;
+      for (std::size_t i = 0; i < ch.size(); ++i) {
+        if (ch[i] != a) continue;
+        std::size_t j = i + 1;
+        while (j < ch.size() && !keep[ch[j]]) ++j;
+        if (j < ch.size() && ch[j] == b) return true;
+        j = i;
+        while (j > 0 && !keep[ch[j - 1]]) --j;
+        if (j > 0 && ch[j - 1] == b) return true;
+      }
+    }
+    return false;
+  };
+  std::map<std::pair<std::int32_t, std::int32_t>, std::size_t> chord_owner;  // such edges, by wall
+  std::vector<std::vector<std::pair<std::int32_t, std::int32_t>>> wall_chords(n_walls);
   auto makeInteriors = [&](const std::vector<std::size_t>& todo) {
     std::vector<char> wanted(n_walls, 0);
     for (const std::size_t p : todo) wanted[p] = 1, interior_tried[p] = 1;
@@ -1149,11 +1170,23 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
         ok = directed.count({a, b}) && !directed.count({b, a});
       }
       ok = ok && boundary_edges == kept_at.size();
+      // A triangle edge inside the wall between two junction-line corners must not be an edge of the tissue
+      // already (two kept corners in turn along a junction line, or such an edge inside another wall of faces):
+      // that edge would bound more faces of a cell.
+      std::vector<std::pair<std::int32_t, std::int32_t>> chords;
+      for (const auto& [e, count] : directed)
+        if (ok && e.first < e.second && static_cast<std::size_t>(e.second) < n_corners &&
+            directed.count({e.second, e.first})) {
+          const auto owner = chord_owner.find(e);
+          ok = !isTissueEdge(e.first, e.second) && (owner == chord_owner.end() || owner->second == p);
+          chords.push_back(e);
+        }
       if (!ok) continue;
+      for (const auto& e : chords) chord_owner[e] = p;
+      wall_chords[p] = std::move(chords);
       for (std::size_t i = 0; i < m; ++i) {
         const Vec3 x = gridPos(inner[i]) + disp[i];
         points.emplace_back(x.x() * s[0], x.y() * s[1], x.z() * s[2]);
-        interior_point.push_back(base + static_cast<std::int32_t>(i));
       }
       wall_faces[p] = std::move(tris);
       face_centre[p].resize(wall_faces[p].size());
@@ -1451,7 +1484,11 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
             wall_changed[ww] = 1;
             restored_wall[ww] = 1;
             interior_tried[ww] = 0;
-            if (!wall_faces[ww].empty() || ww == p) wall_faces[ww].clear(), todo_mark[ww] = 1;
+            if (!wall_faces[ww].empty() || ww == p) {
+              wall_faces[ww].clear(), todo_mark[ww] = 1;
+              for (const auto& e : wall_chords[ww]) chord_owner.erase(e);
+              wall_chords[ww].clear();
+            }
           }
         }
       };
