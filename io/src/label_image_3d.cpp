@@ -1609,7 +1609,8 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
           interior_index[u] = static_cast<Index>(m.positions.size());
           const Vec3& x = points[static_cast<std::size_t>(u)];
           Vec3 y;
-          for (int a = 0; a < 3; ++a) y[a] = img.origin[a] + (x[a] / s[a] - 1.0 + static_cast<double>(lo[a]) - 0.5) * s[a];
+          for (int a = 0; a < 3; ++a)
+            y[a] = img.origin[a] + (x[a] / s[a] - 1.0 + static_cast<double>(lo[a]) - 0.5) * s[a];
           m.positions.push_back(y);
         }
   }
@@ -1655,12 +1656,12 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
                               " voxels) so that no two walls cross"));
   if (n_faces_walls > 0) {
     const auto n_lines = std::count(line_restored.begin(), line_restored.end(), 1);
+    const auto n_along = std::count(restored_wall.begin(), restored_wall.end(), 1);
     report.notes.push_back(std::to_string(n_faces_walls) + " wall(s) made of the triangles of their voxel interface "
                            "(" + std::to_string(n_faces_made) + " faces, " + std::to_string(interior_index.size()) +
                            " vertices inside them) so that no two walls cross" +
                            (n_lines > 0 ? "; " + std::to_string(n_lines) + " junction line(s) of " +
-                                              std::to_string(std::count(restored_wall.begin(), restored_wall.end(), 1)) +
-                                              " wall(s) put back on their voxel corners"
+                                              std::to_string(n_along) + " wall(s) put back on their voxel corners"
                                         : std::string()));
   }
   if (!failing.empty()) {
