@@ -15,7 +15,11 @@
 // each wall (a patch of interface faces between one pair of labels, connected
 // across voxel edges that are no junction) becomes one face whose boundary
 // loop is its chain of junction polylines, each simplified by Douglas-Peucker
-// with its ends fixed (shared by every wall along it); the cells go to the
+// with its ends fixed (shared by every wall along it). Walls whose polygons
+// cross or fail the mesher's checks get their junction lines simplified less
+// and smoothed more; a wall still failing is made of the triangles of its
+// voxel interface (several faces between the same two cells), its lines put
+// back on their voxel corners if even that fails. The cells go to the
 // cell-complex core (cell_complex_core.hpp), which orients and checks them.
 
 #include "label_image_3d.hpp"
@@ -27,6 +31,7 @@
 #include <cmath>
 #include <functional>
 #include <map>
+#include <numbers>
 #include <numeric>
 #include <unordered_map>
 #include <unordered_set>
@@ -52,6 +57,10 @@ constexpr int kExtraSmoothing = 4;  // rounds of further smoothing for walls sti
 constexpr int kStaircasePasses = 2;
 constexpr int kStaircaseExtraSmoothing = 16;
 constexpr double kStaircaseMaxTolerance = 2;
+// Walls of several faces: the smallest corner of a face (degrees), and the sharpest fold between two faces
+// (the cosine of the angle between their normals).
+constexpr double kMinFaceAngle = 5;
+constexpr double kMinFoldCosine = -0.5;
 
 bool isPadding(std::int32_t l) { return l < kBackground; }
 
@@ -235,8 +244,9 @@ struct RankedSet {
 };
 
 struct WallTriangle {
-  std::array<std::int32_t, 3> v;  // corners, or n_corners + wall for a wall's fan centre
+  std::array<std::int32_t, 3> v;  // point ids: corners, fan centres, a wall's interior vertices
   std::int32_t wall;
+  std::int32_t face = 0;  // of a wall made of several faces (each a wall of the tissue), which one
 };
 
 // Whether segment pq, lying in the plane of triangle abc, meets it (touching
@@ -1011,7 +1021,7 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
   for (std::size_t p = 0; p < n_walls; ++p)
     for (const std::int32_t pl : wall_polylines[p]) polyline_walls[static_cast<std::size_t>(pl)].push_back(
         static_cast<std::int32_t>(p));
-  const double voxel_volume = s[0] * s[1] * s[2];
+  const double voxel_volume = s[0] * s[1] * s[2], max_voxel = std::max({s[0], s[1], s[2]});
   // Per wall, kept between rounds for the walls that did not change: 2 fewer than three corners, 1 a defect
   // the mesher refuses (pinched, or crossing itself where that folds its fan), 0 fine; the volume its surface
   // adds to its first cell; its triangles.
@@ -1023,10 +1033,169 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
   for (std::size_t u = 0; u < n_corners; ++u) points[u] = Vec3(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
   std::vector<char> refined(n_walls, 0);    // walls along a junction line simplified less than asked (or smoothed)
   std::vector<char> coarsened(n_walls, 0);  // simplify 0: walls along a junction line simplified after all
-  std::size_t still_crossing = 0;
+  std::vector<std::size_t> failing;  // walls still failing every repair
   int extra_smoothing = 0;  // rounds of it, below: at most kExtraSmoothing (kStaircaseExtraSmoothing at simplify 0)
   const int max_extra_smoothing = o.simplify > 0 ? kExtraSmoothing : kStaircaseExtraSmoothing;
   std::vector<char> unresolved(n_walls, 0);
+  // The last repair (docs/import.md, step 6, "Walls of several faces"): a wall still failing once its junction
+  // lines are as the repairs above left them is made of the triangles of its voxel interface, its boundary
+  // those junction lines unchanged (so no other wall changes): every voxel face of the patch two triangles,
+  // its corners off the junction lines moved by the harmonic extension of how far the repairs moved the
+  // corners of the boundary, the corners the junction lines dropped merged into the nearest kept one along
+  // the boundary. Each triangle is a wall of the tissue between the same two cells.
+  std::vector<std::vector<std::array<std::int32_t, 3>>> wall_faces(n_walls);  // point ids, loop orientation
+  std::vector<std::vector<std::int32_t>> face_centre(n_walls);                // each face's fan centre slot
+  std::vector<char> interior_tried(n_walls, 0);
+  std::vector<char> line_restored(polylines.size(), 0), restored_wall(n_walls, 0);
+  bool interiors = false;  // in the phase of walls of several faces
+  // Whether kept corners a and b are in turn along a junction line (an edge of the tissue).
+  auto isTissueEdge = [&](std::int32_t a, std::int32_t b) {
+    for (int k = 0; k < degree[a]; ++k) {
+      const auto& ch = polylines[static_cast<std::size_t>(edge_polyline[incident[a][k]])].chain;
+      for (std::size_t i = 0; i < ch.size(); ++i) {
+        if (ch[i] != a) continue;
+        std::size_t j = i + 1;
+        while (j < ch.size() && !keep[ch[j]]) ++j;
+        if (j < ch.size() && ch[j] == b) return true;
+        j = i;
+        while (j > 0 && !keep[ch[j - 1]]) --j;
+        if (j > 0 && ch[j - 1] == b) return true;
+      }
+    }
+    return false;
+  };
+  std::map<std::pair<std::int32_t, std::int32_t>, std::size_t> chord_owner;  // such edges, by wall
+  std::vector<std::vector<std::pair<std::int32_t, std::int32_t>>> wall_chords(n_walls);
+  auto makeInteriors = [&](const std::vector<std::size_t>& todo) {
+    std::vector<char> wanted(n_walls, 0);
+    for (const std::size_t p : todo) wanted[p] = 1, interior_tried[p] = 1;
+    std::vector<std::vector<Index>> faces_of(n_walls);
+    for (Index f = 0; f < faces.size(); ++f)
+      if (wanted[patch_of_face[f]]) faces_of[patch_of_face[f]].push_back(f);
+    std::size_t made = 0;
+    for (const std::size_t p : todo) {
+      // The boundary corners in loop order, and for each the kept corner it merges into.
+      const auto& loop = loops[p];
+      const std::size_t n = loop.size();
+      std::vector<std::size_t> kept_at;
+      for (std::size_t i = 0; i < n; ++i)
+        if (keep[loop[i]]) kept_at.push_back(i);
+      if (kept_at.size() < 3) continue;
+      std::unordered_map<std::int32_t, std::int32_t> merge_into;  // boundary corner -> kept corner
+      for (std::size_t i = 0; i < n; ++i) {
+        std::size_t back = 0, ahead = 0;
+        while (!keep[loop[(i + n - back) % n]]) ++back;
+        while (!keep[loop[(i + ahead) % n]]) ++ahead;
+        merge_into[loop[i]] = back <= ahead ? loop[(i + n - back) % n] : loop[(i + ahead) % n];
+      }
+      // The patch's voxel corners: on the boundary (corner ids) or interior (local ids, from n_corners up).
+      std::unordered_map<std::size_t, std::int32_t> local;  // grid corner -> interior index
+      std::vector<std::size_t> inner;                        // grid corner of each interior index
+      std::vector<std::array<std::int32_t, 4>> quads;        // boundary corner id, or -1 - interior index
+      bool ok = true;
+      for (const Index f : faces_of[p]) {
+        const std::size_t v = face_key[f] / 3;
+        const int ax = static_cast<int>(face_key[f] % 3), b = (ax + 1) % 3, cc = (ax + 2) % 3;
+        const std::size_t c0 = v + g.stride[0] + g.stride[1] + g.stride[2] - g.stride[b] - g.stride[cc];
+        const std::size_t cs[4] = {c0, c0 + g.stride[b], c0 + g.stride[b] + g.stride[cc], c0 + g.stride[cc]};
+        std::array<std::int32_t, 4> q;
+        for (int k = 0; k < 4; ++k) {
+          if (corner_set.contains(cs[k])) {
+            q[k] = cornerId(cs[k]);
+            ok = ok && merge_into.count(q[k]);  // a junction corner inside the patch: not a disc of corners
+            continue;
+          }
+          const auto [it, added] = local.emplace(cs[k], static_cast<std::int32_t>(inner.size()));
+          if (added) inner.push_back(cs[k]);
+          q[k] = -1 - it->second;
+        }
+        if (!faces[f].forward) std::swap(q[1], q[3]);
+        quads.push_back(q);
+      }
+      if (!ok) continue;
+      // The interior corners' displacement: the mean of their neighbours' (Gauss-Seidel), the boundary's given.
+      const std::size_t m = inner.size();
+      std::vector<std::vector<std::int32_t>> nbrs(m);
+      for (const auto& q : quads)
+        for (int k = 0; k < 4; ++k) {
+          const std::int32_t a = q[k], c = q[(k + 1) % 4];
+          if (a < 0) nbrs[static_cast<std::size_t>(-1 - a)].push_back(c);
+          if (c < 0) nbrs[static_cast<std::size_t>(-1 - c)].push_back(a);
+        }
+      for (auto& nb : nbrs) {
+        std::sort(nb.begin(), nb.end());
+        nb.erase(std::unique(nb.begin(), nb.end()), nb.end());
+      }
+      auto gridPos = [&](std::size_t c) {
+        const auto x = g.coords(c);
+        return Vec3(static_cast<double>(x[0]), static_cast<double>(x[1]), static_cast<double>(x[2]));
+      };
+      std::vector<Vec3> disp(m, Vec3::Zero());
+      for (int it = 0; it < 4000; ++it) {
+        double change = 0;
+        for (std::size_t i = 0; i < m; ++i) {
+          Vec3 sum = Vec3::Zero();
+          for (const std::int32_t u : nbrs[i])
+            sum += u >= 0 ? Vec3(pos[u] - voxel_pos[u]) : disp[static_cast<std::size_t>(-1 - u)];
+          const Vec3 next = sum / static_cast<double>(nbrs[i].size());
+          change = std::max(change, (next - disp[i]).cwiseAbs().maxCoeff());
+          disp[i] = next;
+        }
+        if (change < 1e-6) break;
+      }
+      // The triangles, the dropped boundary corners merged; then the boundary must be the kept loop.
+      const auto base = static_cast<std::int32_t>(points.size());
+      std::vector<std::array<std::int32_t, 3>> tris;
+      for (const auto& q : quads) {
+        std::array<std::int32_t, 4> id;
+        for (int k = 0; k < 4; ++k) id[k] = q[k] >= 0 ? merge_into.at(q[k]) : base - 1 - q[k];
+        // The diagonal from an interior corner where one is: no triangle of three junction-line corners,
+        // nearly in a line once the line is smoothed.
+        const int r = q[0] < 0 || q[2] < 0 || !(q[1] < 0 || q[3] < 0) ? 0 : 1;
+        for (const auto& t : {std::array<std::int32_t, 3>{id[r], id[r + 1], id[r + 2]},
+                              {id[r], id[r + 2], id[(r + 3) % 4]}})
+          if (t[0] != t[1] && t[1] != t[2] && t[0] != t[2]) tris.push_back(t);
+      }
+      std::map<std::pair<std::int32_t, std::int32_t>, int> directed;
+      for (const auto& t : tris)
+        for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
+      std::size_t boundary_edges = 0;
+      for (const auto& [e, count] : directed) {
+        const int back = directed.count({e.second, e.first}) ? directed.at({e.second, e.first}) : 0;
+        ok = ok && count == 1 && back <= 1;
+        boundary_edges += back == 0;
+      }
+      for (std::size_t i = 0; i < kept_at.size() && ok; ++i) {
+        const std::int32_t a = loop[kept_at[i]], b = loop[kept_at[(i + 1) % kept_at.size()]];
+        ok = directed.count({a, b}) && !directed.count({b, a});
+      }
+      ok = ok && boundary_edges == kept_at.size();
+      // A triangle edge inside the wall between two junction-line corners must not be an edge of the tissue
+      // already (two kept corners in turn along a junction line, or such an edge inside another wall of faces):
+      // that edge would bound more faces of a cell.
+      std::vector<std::pair<std::int32_t, std::int32_t>> chords;
+      for (const auto& [e, count] : directed)
+        if (ok && e.first < e.second && static_cast<std::size_t>(e.second) < n_corners &&
+            directed.count({e.second, e.first})) {
+          const auto owner = chord_owner.find(e);
+          ok = !isTissueEdge(e.first, e.second) && (owner == chord_owner.end() || owner->second == p);
+          chords.push_back(e);
+        }
+      if (!ok) continue;
+      for (const auto& e : chords) chord_owner[e] = p;
+      wall_chords[p] = std::move(chords);
+      for (std::size_t i = 0; i < m; ++i) {
+        const Vec3 x = gridPos(inner[i]) + disp[i];
+        points.emplace_back(x.x() * s[0], x.y() * s[1], x.z() * s[2]);
+      }
+      wall_faces[p] = std::move(tris);
+      face_centre[p].resize(wall_faces[p].size());
+      for (auto& c : face_centre[p]) c = static_cast<std::int32_t>(points.size()), points.emplace_back(Vec3::Zero());
+      wall_changed[p] = 1;
+      ++made;
+    }
+    return made;
+  };
   for (;;) {
     std::vector<char> redo(polylines.size(), 0), flagged(n_walls, 0);
     bool any = false;
@@ -1050,6 +1219,57 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       const auto p = static_cast<std::size_t>(pp);
       if (!wall_changed[p]) continue;
       wall_tris_of[p].clear();
+      if (!wall_faces[p].empty()) {  // a wall of several faces: each one's fan (tissue/geometry.hpp)
+        double vol = 0;
+        wall_state[p] = 0;
+        for (std::size_t j = 0; j < wall_faces[p].size(); ++j) {
+          const auto& ids = wall_faces[p][j];
+          const std::array<Vec3, 3> tp{points[ids[0]], points[ids[1]], points[ids[2]]};
+          const PolygonDefect defect = polygonDefect(tp);
+          // A sliver (mean width 2 area / perimeter, as the mesher measures it) is a defect too.
+          const double width = (tp[1] - tp[0]).cross(tp[2] - tp[0]).norm() /
+                               ((tp[1] - tp[0]).norm() + (tp[2] - tp[1]).norm() + (tp[0] - tp[2]).norm());
+          if (defect.kind != PolygonDefect::None || !(width > 1e-6 * max_voxel)) wall_state[p] = 1;
+          // And a corner under kMinFaceAngle degrees (the wall mesher's angle bound fills it with points).
+          for (int i = 0; i < 3; ++i) {
+            const Vec3 a = tp[(i + 1) % 3] - tp[i], b = tp[(i + 2) % 3] - tp[i];
+            if (!(a.cross(b).norm() > std::sin(kMinFaceAngle * std::numbers::pi / 180) * a.norm() * b.norm() ||
+                  a.dot(b) < 0))
+              wall_state[p] = 1;
+          }
+          if (defect.kind == PolygonDefect::NoArea || defect.kind == PolygonDefect::Pinched) continue;
+          const PolygonTriangulation tri = polygonTriangulation(tp);
+          const auto face = static_cast<std::int32_t>(j + 1);
+          if (tri.fan()) {
+            const std::int32_t centre = face_centre[p][j];
+            points[static_cast<std::size_t>(centre)] = tri.center;
+            for (int i = 0; i < 3; ++i) {
+              vol += tri.center.dot(tp[i].cross(tp[(i + 1) % 3]));
+              wall_tris_of[p].push_back({{centre, ids[i], ids[(i + 1) % 3]}, static_cast<std::int32_t>(p), face});
+            }
+          } else {
+            for (const auto& t : tri.triangles) {
+              vol += tp[t[0]].dot(tp[t[1]].cross(tp[t[2]]));
+              wall_tris_of[p].push_back({{ids[t[0]], ids[t[1]], ids[t[2]]}, static_cast<std::int32_t>(p), face});
+            }
+          }
+        }
+        wall_volume[p] = vol / voxel_volume;
+        // Two of its triangles sharing an edge must not fold onto each other (normals more than 120 degrees
+        // apart): nearly overlapping faces, which the mesher's exact test passes and TetGen fails on.
+        std::map<std::pair<std::int32_t, std::int32_t>, Vec3> edge_normal;
+        double worst = 1;
+        for (const auto& t : wall_faces[p]) {
+          const Vec3 nrm = (points[t[1]] - points[t[0]]).cross(points[t[2]] - points[t[0]]).normalized();
+          for (int k = 0; k < 3; ++k) {
+            const auto key = std::minmax(t[k], t[(k + 1) % 3]);
+            const auto [it, added] = edge_normal.emplace(key, nrm);
+            if (!added) worst = std::min(worst, it->second.dot(nrm));
+          }
+        }
+        if (!(worst > kMinFoldCosine)) wall_state[p] = 1;
+        continue;
+      }
       std::vector<Vec3> loop_points;
       std::vector<std::int32_t> ids;
       for (const std::int32_t u : loops[p])
@@ -1212,13 +1432,16 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       for (std::ptrdiff_t gi = 0; gi < static_cast<std::ptrdiff_t>(group_start.size()) - 1; ++gi) {
         const std::size_t i = group_start[static_cast<std::size_t>(gi)],
                           j = group_start[static_cast<std::size_t>(gi) + 1];
-        // A bucket's triangles are in wall order: each is tested against those of the walls after its own.
+        // A bucket's triangles are in wall (and face) order: each is tested against those of the faces after its
+        // own (a wall made of several faces: each is a wall of the tissue, tested against the others).
         std::size_t next_wall = i;
         for (std::size_t a = i; a < j; ++a) {
           const std::int32_t x = entry_tri[a];
           const WallTriangle& ta = wall_tris[x];
           if (next_wall <= a)
-            for (next_wall = a + 1; next_wall < j && wall_tris[entry_tri[next_wall]].wall == ta.wall;) ++next_wall;
+            for (next_wall = a + 1; next_wall < j && wall_tris[entry_tri[next_wall]].wall == ta.wall &&
+                                    wall_tris[entry_tri[next_wall]].face == ta.face;)
+              ++next_wall;
           for (std::size_t b = next_wall; b < j; ++b) {
             const std::int32_t y = entry_tri[b];
             const WallTriangle& tb = wall_tris[y];
@@ -1236,6 +1459,66 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       if (six_volume[c] < 3.0 * static_cast<double>(pieces[order[c]].voxels))  // lost more than half its volume
         for (const Index p : cell_walls[c]) redoWall(p);
     if (!any) break;
+    // The junction lines as the repairs left them, walls still failing: each made of several faces, once.
+    // The flagged walls are all tested again (a wall flagged with one made of faces now may pass).
+    auto interiorRound = [&] {
+      // A wall made of faces (or that could not be) and still failing gets its junction lines back on their
+      // voxel corners, every corner kept; the walls of faces along them are made again on the new boundary.
+      std::fill(wall_changed.begin(), wall_changed.end(), 0);
+      std::vector<char> todo_mark(n_walls, 0);
+      std::size_t progress = 0;
+      auto restore = [&](std::size_t p) {
+        for (const std::int32_t pl : wall_polylines[p]) {
+          if (line_restored[static_cast<std::size_t>(pl)]) continue;
+          line_restored[static_cast<std::size_t>(pl)] = 1;
+          ++progress;
+          Polyline& line = polylines[static_cast<std::size_t>(pl)];
+          line.tol = -1;
+          simplifyPolyline(line, pos, keep);
+          for (const std::int32_t u : line.chain) {
+            pos[u] = voxel_pos[u];
+            points[u] = Vec3(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
+          }
+          for (const std::int32_t wl : polyline_walls[static_cast<std::size_t>(pl)]) {
+            const auto ww = static_cast<std::size_t>(wl);
+            wall_changed[ww] = 1;
+            restored_wall[ww] = 1;
+            interior_tried[ww] = 0;
+            if (!wall_faces[ww].empty() || ww == p) {
+              wall_faces[ww].clear(), todo_mark[ww] = 1;
+              for (const auto& e : wall_chords[ww]) chord_owner.erase(e);
+              wall_chords[ww].clear();
+            }
+          }
+        }
+      };
+      for (std::size_t p = 0; p < n_walls; ++p) {
+        if (!flagged[p]) continue;
+        if (interior_tried[p]) restore(p);
+        else todo_mark[p] = 1;
+      }
+      for (;;) {
+        std::vector<std::size_t> todo;
+        for (std::size_t p = 0; p < n_walls; ++p)
+          if (todo_mark[p]) todo.push_back(p), todo_mark[p] = 0;
+        if (todo.empty()) break;
+        progress += makeInteriors(todo);
+        for (const std::size_t p : todo)
+          if (wall_faces[p].empty()) restore(p);  // could not be made of faces on this boundary
+      }
+      if (progress == 0) return false;
+      for (std::size_t p = 0; p < n_walls; ++p) {
+        if (flagged[p]) wall_changed[p] = 1;
+        unresolved[p] = 0;
+      }
+      return true;
+    };
+    if (interiors) {
+      if (interiorRound()) continue;
+      for (std::size_t p = 0; p < n_walls; ++p)
+        if (flagged[p]) failing.push_back(p);
+      break;
+    }
     // Simplify less along the flagged walls' junction lines: half the tolerance, down to 1/64 voxel, then every
     // corner (simplify > 0); then smooth them further; at simplify 0, then simplify them after all (below).
     bool changed = false;
@@ -1282,8 +1565,11 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       }
     }
     for (std::size_t p = 0; p < n_walls; ++p) unresolved[p] = flagged[p] && !wall_changed[p];
-    if (!changed) {  // every corner kept: what is left is reported, and the mesher names it
-      still_crossing = static_cast<std::size_t>(std::count(flagged.begin(), flagged.end(), 1));
+    if (!changed) {  // every repair of the junction lines tried: walls of several faces (above), else reported
+      interiors = true;
+      if (interiorRound()) continue;
+      for (std::size_t p = 0; p < n_walls; ++p)
+        if (flagged[p]) failing.push_back(p);
       break;
     }
   }
@@ -1311,22 +1597,52 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       for (int a = 0; a < 3; ++a) x[a] = img.origin[a] + (pos[u][a] - 1.0 + static_cast<double>(lo[a]) - 0.5) * s[a];
       m.positions.push_back(x);
     }
-  m.face_offsets = {0};
+  // The interior vertices of walls of several faces, those their triangles use, after the corners.
+  std::unordered_map<std::int32_t, Index> interior_index;
+  std::size_t n_faces_walls = 0, n_faces_made = 0;
   for (std::size_t p = 0; p < n_walls; ++p) {
-    for (const std::int32_t u : loops[p])
-      if (keep[u]) m.face_vertices.push_back(new_index[u]);
-    m.face_offsets.push_back(m.face_vertices.size());
+    n_faces_walls += !wall_faces[p].empty();
+    n_faces_made += wall_faces[p].size();
+    for (const auto& t : wall_faces[p])
+      for (const std::int32_t u : t)
+        if (static_cast<std::size_t>(u) >= n_corners && !interior_index.count(u)) {
+          interior_index[u] = static_cast<Index>(m.positions.size());
+          const Vec3& x = points[static_cast<std::size_t>(u)];
+          Vec3 y;
+          for (int a = 0; a < 3; ++a)
+            y[a] = img.origin[a] + (x[a] / s[a] - 1.0 + static_cast<double>(lo[a]) - 0.5) * s[a];
+          m.positions.push_back(y);
+        }
+  }
+  m.face_offsets = {0};
+  std::vector<Index> first_face(n_walls + 1, 0);  // the faces of wall p: first_face[p] .. first_face[p + 1]
+  for (std::size_t p = 0; p < n_walls; ++p) {
+    if (wall_faces[p].empty()) {
+      for (const std::int32_t u : loops[p])
+        if (keep[u]) m.face_vertices.push_back(new_index[u]);
+      m.face_offsets.push_back(m.face_vertices.size());
+    } else {
+      for (const auto& t : wall_faces[p]) {
+        for (const std::int32_t u : t)
+          m.face_vertices.push_back(static_cast<std::size_t>(u) < n_corners ? new_index[static_cast<std::size_t>(u)]
+                                                                            : interior_index.at(u));
+        m.face_offsets.push_back(m.face_vertices.size());
+      }
+    }
+    first_face[p + 1] = static_cast<Index>(m.face_offsets.size() - 1);
   }
   m.volume_offsets = {0};
   for (std::size_t c = 0; c < n_cells; ++c) {
-    m.volume_faces.insert(m.volume_faces.end(), cell_walls[c].begin(), cell_walls[c].end());
+    for (const Index p : cell_walls[c])
+      for (Index f = first_face[p]; f < first_face[p + 1]; ++f) m.volume_faces.push_back(f);
     m.volume_offsets.push_back(m.volume_faces.size());
     m.volume_label.push_back(cell_label[c]);
   }
   report.file_vertices = 0;
-  report.simplified_vertices = n_corners - m.positions.size();
+  const std::size_t n_kept = m.positions.size() - interior_index.size();
+  report.simplified_vertices = n_corners - n_kept;
   report.notes.push_back(std::to_string(n_cells) + " cells, " + std::to_string(n_walls) + " walls, " +
-                         std::to_string(polylines.size()) + " junction lines; " + std::to_string(m.positions.size()) +
+                         std::to_string(polylines.size()) + " junction lines; " + std::to_string(n_kept) +
                          " of " + std::to_string(n_corners) + " junction-line voxel corners kept (simplify " +
                          formatNumber(o.simplify) + " voxels)");
   if (const auto n_refined = std::count(refined.begin(), refined.end(), 1); n_refined > 0)
@@ -1338,10 +1654,27 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
                               std::to_string(std::count(coarsened.begin(), coarsened.end(), 1)) +
                               " of them then simplified, up to " + formatNumber(kStaircaseMaxTolerance) +
                               " voxels) so that no two walls cross"));
-  if (still_crossing > 0)
-    report.notes.push_back(std::to_string(still_crossing) +
+  if (n_faces_walls > 0) {
+    const auto n_lines = std::count(line_restored.begin(), line_restored.end(), 1);
+    const auto n_along = std::count(restored_wall.begin(), restored_wall.end(), 1);
+    report.notes.push_back(std::to_string(n_faces_walls) + " wall(s) made of the triangles of their voxel interface "
+                           "(" + std::to_string(n_faces_made) + " faces, " + std::to_string(interior_index.size()) +
+                           " vertices inside them) so that no two walls cross" +
+                           (n_lines > 0 ? "; " + std::to_string(n_lines) + " junction line(s) of " +
+                                              std::to_string(n_along) + " wall(s) put back on their voxel corners"
+                                        : std::string()));
+  }
+  if (!failing.empty()) {
+    std::string pairs;
+    for (std::size_t k = 0; k < failing.size() && k < 5; ++k) {
+      const Face& f = faces[patch_face[failing[k]]];
+      pairs += (k ? "; " : "") + labelName(f.first) + " and " + labelName(f.second);
+    }
+    report.notes.push_back(std::to_string(failing.size()) +
                            " wall(s) still cross another wall or fail the polygon checks with every repair tried "
-                           "(voxel-scale features): the mesher will refuse the tissue");
+                           "(voxel-scale features), between " + pairs + (failing.size() > 5 ? "; ..." : "") +
+                           ": the mesher will refuse the tissue; merge or drop one of the labels");
+  }
   ImportOptions core = o;
   core.simplify = 0;  // done above, in voxels
   result = importComplex(m, core, std::move(report));
