@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 #include <optional>
 #include <type_traits>
@@ -59,6 +60,30 @@ struct VtkImage {
   LabelImage header;
 };
 
+// VTK 9.1's vtkMetaImageReader corrupts memory on 64-bit element types (the process aborts or crashes inside
+// its Update(), docs/import.md), so such a MetaImage is refused by its header before VTK reads it. The header is
+// text lines "Key = Value"; ElementDataFile is its last one (in a .mha the raw pixels follow).
+void refuseWideMetaImage(const std::string& path, const std::string& file) {
+  std::ifstream in(path, std::ios::binary);
+  const auto trimmed = [](const std::string& s) {
+    const auto first = s.find_first_not_of(" \t\r");
+    return first == std::string::npos ? std::string() : s.substr(first, s.find_last_not_of(" \t\r") - first + 1);
+  };
+  std::string line;
+  for (int n = 0; n < 200 && std::getline(in, line); ++n) {
+    const auto eq = line.find('=');
+    if (eq == std::string::npos) continue;
+    std::string key = trimmed(line.substr(0, eq));
+    std::transform(key.begin(), key.end(), key.begin(), [](unsigned char c) { return std::tolower(c); });
+    const std::string value = trimmed(line.substr(eq + 1));
+    if (key == "elementtype" && (value == "MET_LONG_LONG" || value == "MET_ULONG_LONG"))
+      throw InputError("cannot read label image " + file + ": its MetaImage element type is " + value +
+                       " (64-bit integers), which VTK's MetaImage reader does not read safely (it corrupts "
+                       "memory); store the labels in 32 bits or as a .vti file");
+    if (key == "elementdatafile") break;
+  }
+}
+
 VtkImage readVtkImage(const std::string& path) {
   const std::string file = "'" + path + "'";
   if (!std::filesystem::is_regular_file(path)) throw InputError("cannot read label image " + file + ": no such file");
@@ -78,8 +103,10 @@ VtkImage readVtkImage(const std::string& path) {
       tiff->SetOrientationType(1);  // see docs/import.md: the first row stored is j = 0, as NumPy reads it
       r = tiff;
     } else if (ext == ".nrrd" || ext == ".nhdr") r = vtkSmartPointer<vtkNrrdReader>::New();
-    else if (ext == ".mha" || ext == ".mhd") r = vtkSmartPointer<vtkMetaImageReader>::New();
-    else
+    else if (ext == ".mha" || ext == ".mhd") {
+      refuseWideMetaImage(path, file);
+      r = vtkSmartPointer<vtkMetaImageReader>::New();
+    } else
       throw InputError("cannot read label image " + file + ": '" + ext +
                        "' is no image format read (.tif, .tiff, .nrrd, .nhdr, .mha, .mhd, .vti)");
     if (!r->CanReadFile(path.c_str()))
