@@ -131,9 +131,13 @@ DivisionReport DivisionScheduler::step(Tissue& t, GeometryCache& geometry, Rng& 
 
 void DivisionScheduler::divideAll(Tissue& t, const std::vector<CellId>& due, Rng& rng, DivisionReport& report) {
   std::vector<CellId> cells;
-  cells.reserve(due.size());
-  for (CellId c : due)
-    if (!options_.gate || options_.gate(t, c)) cells.push_back(c);
+  if (options_.gate) {
+    cells.reserve(due.size());
+    for (CellId c : due)
+      if (options_.gate(t, c)) cells.push_back(c);
+  } else {
+    cells = due;
+  }
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(cells.size());
   if (n == 0) return;
   // Everything is decided on the tissue as it is: the rule's planes (in
@@ -173,16 +177,14 @@ void DivisionScheduler::divideAll(Tissue& t, const std::vector<CellId>& due, Rng
   for (const std::exception_ptr& failure : failures)
     if (failure) std::rethrow_exception(failure);
 
-  // The cells that divide, in order (the plans of skipped cells dropped).
-  std::vector<std::int64_t> mothers;
-  mothers.reserve(cells.size());
+  // The cells that divide, in order (the plans of skipped cells dropped; rare:
+  // then the kept plans are moved, serially, in order).
   std::size_t kept = 0;
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     if (attempts[i] == 0) {
       report.skipped.push_back(SkippedDivision{cells[i], t.lineageId(cells[i]), errors[i]});
       continue;
     }
-    mothers.push_back(t.lineageId(cells[i]));
     if (kept != static_cast<std::size_t>(i)) {
       plans[kept] = std::move(plans[i]);
       cells[kept] = cells[i];
@@ -190,14 +192,23 @@ void DivisionScheduler::divideAll(Tissue& t, const std::vector<CellId>& due, Rng
     }
     ++kept;
   }
+  const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(kept);
+  ParallelArray<std::int64_t> mothers(kept);
+#pragma omp parallel for schedule(static) if (m >= kParallelMinItems)
+  for (std::ptrdiff_t k = 0; k < m; ++k) mothers[k] = t.lineageId(cells[k]);
   if (options_.tag_walls) divisionWallTags(t);
-  const std::vector<CellSplit> splits = t.splitCells(plans.first(kept));
-  report.divided.reserve(kept);
-  for (std::size_t k = 0; k < kept; ++k)
-    report.divided.push_back(DivisionRecord{mothers[k], cells[k], splits[k].daughter, splits[k].wall, attempts[k]});
-  if (options_.tag_walls) {
-    auto& tags = divisionWallTags(t);
-    for (const DivisionRecord& d : report.divided) tags[d.wall] = d.mother_lineage;
+  std::vector<CellSplit> splits = t.splitCells(plans.first(kept));
+  const std::size_t base = report.divided.size();
+  report.divided.resize(base + kept);
+  PropertyColumn<std::int64_t>* tags = options_.tag_walls ? &divisionWallTags(t) : nullptr;
+#pragma omp parallel for schedule(static) if (m >= kParallelMinItems)
+  for (std::ptrdiff_t k = 0; k < m; ++k) {
+    report.divided[base + k] = DivisionRecord{mothers[k], cells[k], splits[k].daughter, splits[k].wall, attempts[k]};
+    if (tags) (*tags)[splits[k].wall] = mothers[k];
+    // Freed in parallel here, not one by one when `splits` goes (for large
+    // batches by the thread that allocated it: splitCells' loop has the same
+    // static shares).
+    std::vector<VertexId>().swap(splits[k].new_vertices);
   }
 }
 

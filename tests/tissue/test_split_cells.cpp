@@ -249,3 +249,41 @@ TEST_CASE("splitCells refuses a cell given twice, a dead cell and a 3D tissue be
   Tissue box = boxGrid(1, 1, 1);
   CHECK_THROWS_AS(box.splitCells({}), InputError);
 }
+
+TEST_CASE("splitFaces names the first face given twice or dead, in chord order, before changing anything",
+          "[tissue][split_cells]") {
+  // 1600 chords (above the parallel threshold), each a diagonal of a grid cell.
+  const Tissue t = rectangularGrid(40, 40);
+  std::vector<FaceChord> chords;
+  for (CellId c : t.cells()) {
+    const auto loop = t.topology().faceVertices(FaceId(c.index()));
+    FaceChord ch;
+    ch.face = FaceId(c.index());
+    ch.ends[0].vertex = loop[0];
+    ch.ends[1].vertex = loop[2];
+    chords.push_back(ch);
+  }
+  REQUIRE(chords.size() == 1600);
+  for (int threads : {1, 2}) {
+    omp_set_num_threads(threads);
+    CellComplex twice = t.topology(), dead = t.topology(), fine = t.topology();
+    std::vector<FaceChord> repeated = chords, with_dead = chords;
+    repeated[1500].face = chords[700].face;  // face 700 again
+    repeated[1510].face = chords[710].face;  // a later repeat: not the one named
+    CHECK_THROWS_WITH(twice.splitFaces(repeated),
+                      Catch::Matchers::Contains("face 700 is split by chords 700 and 1500"));
+    CHECK(twice.layout() == t.topology().layout());
+    with_dead[900].face = FaceId(99999);
+    with_dead[1200].face = chords[100].face;  // a later defect
+    CHECK_THROWS_WITH(dead.splitFaces(with_dead), Catch::Matchers::Contains("chord 900: face 99999 is not alive"));
+    CHECK(dead.layout() == t.topology().layout());
+    // The chords as given split every face once: 1600 new faces and edges, no new vertex.
+    const auto out = fine.splitFaces(chords);
+    CHECK(fine.slots(2) == 3200);
+    CHECK(fine.slots(1) == t.topology().slots(1) + 1600);
+    CHECK(fine.slots(0) == t.topology().slots(0));
+    CHECK(out[1599].face == FaceId(3199));
+    CHECK(out[1599].chord == EdgeId(static_cast<Index>(t.topology().slots(1) + 1599)));
+  }
+  omp_set_num_threads(omp_get_num_procs());
+}

@@ -1,10 +1,12 @@
 // SPDX-FileCopyrightText: 2026 The Tessella developers
 // SPDX-License-Identifier: AGPL-3.0-or-later
 // CellComplex::splitFaces: many chords of a 2D complex at once. Ids are handed
-// out serially by prefix sums over the chords (the numbering the one-by-one
-// splitEdge / splitFace sequence gives), room for every list is made serially,
-// then the lists are written in parallel, each by one thread: the edges cut by
-// the chords (one thread per cut edge), then the face loops (one per face).
+// out by prefix sums over the chords (the numbering the one-by-one
+// splitEdge / splitFace sequence gives; parallelPrefixSum, the same for any
+// number of threads), room for every list is made (where each goes by prefix
+// sums too), then the lists are written in parallel, each by one thread: the
+// edges cut by the chords (one thread per cut edge), then the face loops (one
+// per face).
 
 #include <omp.h>
 
@@ -15,6 +17,7 @@
 
 #include "tessella/tissue/cell_complex.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/parallel_prefix_sum.hpp"
 #include "tessella/tissue/uninitialized_vector.hpp"
 
 namespace tessella {
@@ -36,24 +39,38 @@ struct EdgeChain {
 
 }  // namespace
 
-std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chords) {
+UninitializedVector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chords) {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(chords.size());
-  std::vector<ChordSplit> out(chords.size());
+  UninitializedVector<ChordSplit> out(chords.size());  // each written whole by the numbering pass
   if (n == 0) return out;
   if (dim_ != 2) throw TopologyError("splitFaces: the complex is 3D (chords split the faces of 2D complexes)", {});
   const Index f0 = static_cast<Index>(slots(2));
 
-  // Face -> chord; faces of the batch are distinct and alive.
+  // Face -> chord; faces of the batch are distinct and alive. Claimed in
+  // parallel; on a dead face or a face claimed twice the serial loop runs
+  // again to name the first defect in chord order.
   UninitializedVector<std::int32_t> chord_of = filledInParallel<std::int32_t>(slots(2), -1);
+  bool defect = false;
+#pragma omp parallel for schedule(static) reduction(|| : defect) if (n >= kParallelMin)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     const FaceId f = chords[i].face;
-    if (!alive(f)) throw TopologyError("splitFaces: chord " + std::to_string(i) + ": face " +
-                                           std::to_string(f.index()) + " is not alive", {2, f.index()});
-    if (chord_of[f.index()] >= 0)
-      throw TopologyError("splitFaces: face " + std::to_string(f.index()) + " is split by chords " +
-                              std::to_string(chord_of[f.index()]) + " and " + std::to_string(i),
-                          {2, f.index()});
-    chord_of[f.index()] = static_cast<std::int32_t>(i);
+    std::int32_t unclaimed = -1;
+    defect = defect || !alive(f) ||
+             !std::atomic_ref<std::int32_t>(chord_of[f.index()])
+                  .compare_exchange_strong(unclaimed, static_cast<std::int32_t>(i), std::memory_order_relaxed);
+  }
+  if (defect) {
+    std::fill(chord_of.begin(), chord_of.end(), -1);
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
+      const FaceId f = chords[i].face;
+      if (!alive(f)) throw TopologyError("splitFaces: chord " + std::to_string(i) + ": face " +
+                                             std::to_string(f.index()) + " is not alive", {2, f.index()});
+      if (chord_of[f.index()] >= 0)
+        throw TopologyError("splitFaces: face " + std::to_string(f.index()) + " is split by chords " +
+                                std::to_string(chord_of[f.index()]) + " and " + std::to_string(i),
+                            {2, f.index()});
+      chord_of[f.index()] = static_cast<std::int32_t>(i);
+    }
   }
   // The chord splitting a face (or the new face a chord made), -1 for none.
   // Edge-face lists are read with atomic loads: pass B rewrites other items of them.
@@ -116,10 +133,15 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
   // The per-chord scratch arrays are UninitializedVectors written whole by the
   // parallel passes (no serial zeroing and first touch of tens of MB).
   UninitializedVector<std::uint8_t> bad(chords.size());
-#pragma omp parallel for schedule(static) if (n >= kParallelMin)
-  for (std::ptrdiff_t i = 0; i < n; ++i) bad[i] = !problem(i).empty();
-  for (std::ptrdiff_t i = 0; i < n; ++i)
-    if (bad[i]) throw TopologyError(problem(i), {2, chords[i].face.index()});
+  bool any_bad = false;
+#pragma omp parallel for schedule(static) reduction(|| : any_bad) if (n >= kParallelMin)
+  for (std::ptrdiff_t i = 0; i < n; ++i) {
+    bad[i] = !problem(i).empty();
+    any_bad = any_bad || bad[i];
+  }
+  if (any_bad)
+    for (std::ptrdiff_t i = 0; i < n; ++i)
+      if (bad[i]) throw TopologyError(problem(i), {2, chords[i].face.index()});
 
   // The other new end on the same edge (a face's chord cuts an edge once; an
   // edge of a 2D complex bounds at most two faces).
@@ -155,37 +177,61 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
     }
 
   // Numbering, in the order of the one-by-one sequence: per chord the vertex
-  // and edge of end 0, of end 1, then the chord's edge and the new face.
+  // and edge of end 0, of end 1, then the chord's edge and the new face. So
+  // chord i's first new vertex is v0 + (new ends of the chords before it),
+  // its first new edge e0 + that + i: one prefix sum over the chords.
   const Index v0 = static_cast<Index>(slots(0)), e0 = static_cast<Index>(slots(1));
-  Index nv = 0, ne = 0;
-  std::vector<std::uint32_t> edge_face_sizes;
-  edge_face_sizes.reserve(3 * chords.size());  // at most two cut edges' pieces and the chord per chord
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    ChordSplit& s = out[i];
-    for (int k = 0; k < 2; ++k) {
-      const ChordEnd& end = chords[i].ends[k];
-      if (end.vertex) {
-        s.vertex[k] = end.vertex;
-      } else if (end.same_as >= 0) {
-        s.vertex[k] = out[end.same_as / 2].vertex[end.same_as % 2];
-        reused_by[end.same_as] = static_cast<std::int32_t>(2 * i + k);
-      } else {
-        s.vertex[k] = VertexId(v0 + nv++);
-        s.new_edge[k] = EdgeId(e0 + ne++);
-        edge_face_sizes.push_back(edge_face_count[2 * i + k]);
-        const std::int32_t p = partner[2 * i + k];
-        s.first_on_edge[k] = p < 0 || p > 2 * i + k;
-        if (s.first_on_edge[k] && p >= 0) s.next_on_edge[k] = p;
+  UninitializedVector<Index> new_before(chords.size());
+  const Index nv = parallelPrefixSum<Index>(
+      n, [&](std::ptrdiff_t i) { return Index{chords[i].ends[0].isNew()} + Index{chords[i].ends[1].isNew()}; },
+      [&](std::ptrdiff_t i, Index before) { new_before[i] = before; });
+  const Index ne = nv + static_cast<Index>(n);
+  // Faces per new edge (the pieces of cut edges, the chords), edges per new vertex.
+  UninitializedVector<std::uint32_t> edge_face_sizes(ne), vertex_edge_sizes(nv);
+#pragma omp parallel if (n >= kParallelMin)
+  {
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
+      ChordSplit& s = out[i];
+      s = ChordSplit{};
+      Index at = new_before[i];  // this chord's next new vertex, minus v0
+      for (int k = 0; k < 2; ++k) {
+        const ChordEnd& end = chords[i].ends[k];
+        if (end.vertex) {
+          s.vertex[k] = end.vertex;
+        } else if (end.same_as < 0) {
+          s.vertex[k] = VertexId(v0 + at);
+          s.new_edge[k] = EdgeId(e0 + at + static_cast<Index>(i));
+          edge_face_sizes[at + i] = edge_face_count[2 * i + k];
+          vertex_edge_sizes[at] = 3;
+          ++at;
+          const std::int32_t p = partner[2 * i + k];
+          s.first_on_edge[k] = p < 0 || p > 2 * i + k;
+          if (s.first_on_edge[k] && p >= 0) s.next_on_edge[k] = p;
+        }
       }
+      s.chord = EdgeId(e0 + at + static_cast<Index>(i));
+      edge_face_sizes[at + i] = 2;
+      s.face = FaceId(f0 + static_cast<Index>(i));
     }
-    s.chord = EdgeId(e0 + ne++);
-    edge_face_sizes.push_back(2);
-    s.face = FaceId(f0 + static_cast<Index>(i));
+    // Ends reusing an earlier end's vertex (a new end, numbered above): one
+    // more edge at it, and the reusing end (the last one, as the serial
+    // loop's last write, should two ends reuse one).
+#pragma omp for schedule(static)
+    for (std::ptrdiff_t i = 0; i < n; ++i)
+      for (int k = 0; k < 2; ++k) {
+        const std::int32_t same_as = chords[i].ends[k].same_as;
+        if (chords[i].ends[k].vertex || same_as < 0) continue;
+        const VertexId v = out[same_as / 2].vertex[same_as % 2];
+        out[i].vertex[k] = v;
+        std::atomic_ref<std::uint32_t>(vertex_edge_sizes[v.index() - v0]).fetch_add(1, std::memory_order_relaxed);
+        std::atomic_ref<std::int32_t> reuser(reused_by[same_as]);
+        const std::int32_t mine = static_cast<std::int32_t>(2 * i + k);
+        std::int32_t seen = reuser.load(std::memory_order_relaxed);
+        while (seen < mine && !reuser.compare_exchange_weak(seen, mine, std::memory_order_relaxed)) {
+        }
+      }
   }
-  UninitializedVector<std::uint32_t> vertex_edge_sizes = filledInParallel<std::uint32_t>(nv, 3);
-  for (std::ptrdiff_t i = 0; i < n; ++i)
-    for (int k = 0; k < 2; ++k)
-      if (chords[i].ends[k].same_as >= 0) ++vertex_edge_sizes[out[i].vertex[k].index() - v0];
 
   // The pieces of a cut edge, from the chords that cut it (one or two).
   auto chainOf = [&](std::int32_t first_end) {
@@ -240,12 +286,17 @@ std::vector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChord> chord
     while ((seen == -1 || seen < mine) && !owner.compare_exchange_weak(seen, mine, std::memory_order_relaxed)) {
     }
   }
-  std::vector<Index> affected;
-  affected.reserve(3 * chords.size());
-  for (std::ptrdiff_t i = 0; i < n; ++i) affected.push_back(chords[i].face.index());
-  for (std::ptrdiff_t p = 0; p < n2; ++p)
-    if (across[p] != kInvalidIndex && chord_of[across[p]] == -2 - p) affected.push_back(across[p]);
-  const std::ptrdiff_t na = static_cast<std::ptrdiff_t>(affected.size());
+  UninitializedVector<Index> affected(3 * chords.size());  // cut to its size below
+#pragma omp parallel for schedule(static) if (n >= kParallelMin)
+  for (std::ptrdiff_t i = 0; i < n; ++i) affected[i] = chords[i].face.index();
+  auto claimedAt = [&](std::ptrdiff_t p) { return across[p] != kInvalidIndex && chord_of[across[p]] == -2 - p; };
+  const std::ptrdiff_t na =
+      n + parallelPrefixSum<std::ptrdiff_t>(
+              n2, [&](std::ptrdiff_t p) { return std::ptrdiff_t{claimedAt(p)}; },
+              [&](std::ptrdiff_t p, std::ptrdiff_t before) {
+                if (claimedAt(p)) affected[n + before] = across[p];
+              });
+  affected.resize(static_cast<std::size_t>(na));
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (std::ptrdiff_t q = n; q < na; ++q) chord_of[affected[q]] = -1;
 

@@ -3,8 +3,15 @@
 #include "tessella/tissue/properties.hpp"
 
 #include <algorithm>
+#include <exception>
+#include <utility>
+#include <vector>
 
 namespace tessella {
+
+namespace {
+constexpr std::size_t kParallelResizeMin = std::size_t{1} << 14;  // fewer items added: one thread
+}  // namespace
 
 const char* divisionPolicyName(DivisionPolicy policy) {
   switch (policy) {
@@ -60,6 +67,33 @@ std::vector<std::string> PropertyStore::names() const {
 void PropertyStore::resize(std::size_t n) {
   size_ = n;
   for (auto& c : columns_) c->resize(n);
+}
+
+void PropertyStore::resizeTogether(std::span<PropertyStore* const> stores, std::span<const std::size_t> sizes) {
+  std::vector<std::pair<PropertyColumnBase*, std::size_t>> columns;
+  std::size_t added = 0;
+  for (std::size_t k = 0; k < stores.size(); ++k) {
+    stores[k]->size_ = sizes[k];
+    for (auto& c : stores[k]->columns_) {
+      columns.emplace_back(c.get(), sizes[k]);
+      added += sizes[k] > c->size() ? sizes[k] - c->size() : 0;
+    }
+  }
+  // A column grows in one thread (a std::vector: copied and filled by one
+  // thread); many columns grow side by side, each thread first touching the
+  // new memory of its columns.
+  const std::ptrdiff_t m = static_cast<std::ptrdiff_t>(columns.size());
+  std::vector<std::exception_ptr> failed(columns.size());  // (std::bad_alloc) rethrown outside the threads
+#pragma omp parallel for schedule(dynamic, 1) if (m > 1 && added >= kParallelResizeMin)
+  for (std::ptrdiff_t i = 0; i < m; ++i) {
+    try {
+      columns[static_cast<std::size_t>(i)].first->resize(columns[static_cast<std::size_t>(i)].second);
+    } catch (...) {
+      failed[static_cast<std::size_t>(i)] = std::current_exception();
+    }
+  }
+  for (const std::exception_ptr& e : failed)
+    if (e) std::rethrow_exception(e);
 }
 
 void PropertyStore::divide(Index mother, Index part, double fraction) {

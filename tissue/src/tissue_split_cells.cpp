@@ -5,6 +5,8 @@
 // numbers and builds everything in parallel); positions, property divisions
 // and lineage follow in parallel, each element written by one thread.
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <string>
 
@@ -30,16 +32,30 @@ bool hasCustomColumn(const PropertyStore& store) {
 std::vector<CellSplit> Tissue::splitCells(std::span<const CellSplitPlan2D> plans) {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(plans.size());
   if (dim() != 2) throw InputError("splitCells: the tissue is 3D (it divides the cells of 2D tissues)");
+  // Cell -> plan, claimed in parallel; on a dead cell or a cell claimed twice
+  // the serial loop runs again to name the first defect in plan order.
   UninitializedVector<std::int32_t> plan_of = filledInParallel<std::int32_t>(cellSlots(), -1);
+  bool defect = false;
+#pragma omp parallel for schedule(static) reduction(|| : defect) if (n >= kParallelMin)
   for (std::ptrdiff_t i = 0; i < n; ++i) {
     const CellId c = plans[i].cell;
-    if (!alive(c))
-      throw TopologyError("splitCells: plan " + std::to_string(i) + ": cell " + std::to_string(c.index()) +
-                              " is not alive", {2, c.index()});
-    if (plan_of[c.index()] >= 0)
-      throw InputError("splitCells: cell " + std::to_string(c.index()) + " has two plans (" +
-                       std::to_string(plan_of[c.index()]) + " and " + std::to_string(i) + ")");
-    plan_of[c.index()] = static_cast<std::int32_t>(i);
+    std::int32_t unclaimed = -1;
+    defect = defect || !alive(c) ||
+             !std::atomic_ref<std::int32_t>(plan_of[c.index()])
+                  .compare_exchange_strong(unclaimed, static_cast<std::int32_t>(i), std::memory_order_relaxed);
+  }
+  if (defect) {
+    std::fill(plan_of.begin(), plan_of.end(), -1);
+    for (std::ptrdiff_t i = 0; i < n; ++i) {
+      const CellId c = plans[i].cell;
+      if (!alive(c))
+        throw TopologyError("splitCells: plan " + std::to_string(i) + ": cell " + std::to_string(c.index()) +
+                                " is not alive", {2, c.index()});
+      if (plan_of[c.index()] >= 0)
+        throw InputError("splitCells: cell " + std::to_string(c.index()) + " has two plans (" +
+                         std::to_string(plan_of[c.index()]) + " and " + std::to_string(i) + ")");
+      plan_of[c.index()] = static_cast<std::int32_t>(i);
+    }
   }
 
   // Plans as chords. A new vertex on an edge another plan cuts first is
@@ -78,12 +94,12 @@ std::vector<CellSplit> Tissue::splitCells(std::span<const CellSplitPlan2D> plans
       }
     }
   }
-  const std::vector<ChordSplit> splits = complex_.splitFaces(chords);
+  const UninitializedVector<ChordSplit> splits = complex_.splitFaces(chords);
 
   growInParallel(positions_, complex_.slots(0));  // every new vertex is placed below
-  grew(0);
-  grew(1);
-  grew(2);
+  PropertyStore* stores[] = {&properties_[0], &properties_[1], &properties_[2]};
+  const std::size_t sizes[] = {complex_.slots(0), complex_.slots(1), complex_.slots(2)};
+  PropertyStore::resizeTogether(stores, sizes);  // as grew(0), grew(1), grew(2), the columns in parallel
 #pragma omp parallel for schedule(static) if (n >= kParallelMin)
   for (std::ptrdiff_t i = 0; i < n; ++i)
     for (int k = 0; k < 2; ++k)

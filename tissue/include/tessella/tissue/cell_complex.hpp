@@ -224,7 +224,8 @@ class CellComplex {
   /// the new face getting the part from `from` to `to`. Faces are distinct;
   /// the two ends of a chord are on different, non-adjacent places of its
   /// loop. Checked before anything changes (TopologyError naming the face).
-  std::vector<ChordSplit> splitFaces(std::span<const FaceChord> chords);
+  /// The numbering is the same for any number of threads (prefix sums).
+  UninitializedVector<ChordSplit> splitFaces(std::span<const FaceChord> chords);
 
   /// Drops tombstones and renumbers every degree, preserving order.
   Renumbering compact();

@@ -19,6 +19,7 @@
 #include <concepts>
 #include <functional>
 #include <memory>
+#include <span>
 #include <string>
 #include <type_traits>
 #include <typeindex>
@@ -192,6 +193,9 @@ class PropertyStore {
   // Kept in step with the element store by the Tissue.
   std::size_t size() const { return size_; }
   void resize(std::size_t n);
+  /// stores[k]->resize(sizes[k]) for every k, the columns of all the stores
+  /// resized in parallel (OpenMP), each by one thread, when many items are added.
+  static void resizeTogether(std::span<PropertyStore* const> stores, std::span<const std::size_t> sizes);
   void divide(Index mother, Index part, double fraction);
   void reset(Index i);
   void compact(const std::vector<Index>& old_to_new, std::size_t new_count);

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "tessella/tissue/handles.hpp"
+#include "tessella/tissue/parallel_prefix_sum.hpp"
 #include "tessella/tissue/uninitialized_vector.hpp"
 
 namespace tessella {
@@ -101,20 +102,20 @@ class RaggedArray {
   }
   void clearList(std::size_t i) { slots_[i].size = 0; }
 
-  // --- batch edits (Tissue::splitCells): room is made serially, then lists are
-  // written from several threads, each list by one thread.
+  // --- batch edits (Tissue::splitCells): room is made first (where each list
+  // goes by parallel prefix sums, parallelPrefixSum), then lists are written
+  // from several threads, each list by one thread.
 
   /// Appends one list per entry of `sizes`, their items unspecified until
   /// written; returns the index of the first.
   std::size_t appendLists(std::span<const std::uint32_t> sizes) {
     const std::size_t first = slots_.size();
     growInParallel(slots_, first + sizes.size());
-    std::uint32_t offset = static_cast<std::uint32_t>(data_.size());
-    for (std::size_t k = 0; k < sizes.size(); ++k) {
-      slots_[first + k] = Slot{offset, sizes[k], sizes[k]};
-      offset += sizes[k];
-    }
-    growInParallel(data_, offset);
+    const std::uint32_t start = static_cast<std::uint32_t>(data_.size());
+    const std::uint32_t added = parallelPrefixSum<std::uint32_t>(
+        static_cast<std::ptrdiff_t>(sizes.size()), [&](std::ptrdiff_t k) { return sizes[k]; },
+        [&](std::ptrdiff_t k, std::uint32_t at) { slots_[first + k] = Slot{start + at, sizes[k], sizes[k]}; });
+    growInParallel(data_, std::size_t{start} + added);
     return first;
   }
   /// Makes list lists[k] hold sizes[k] items (the lists distinct): a list
@@ -132,11 +133,12 @@ class RaggedArray {
       const Slot& s = slots_[lists[k]];
       room[k] = sizes[k] > s.capacity ? std::max<std::uint32_t>(sizes[k] + 2, s.size * 3 / 2) : 0;
     }
-    std::size_t end = data_.size();
-    for (std::ptrdiff_t k = 0; k < m; ++k) {
-      at[k] = static_cast<std::uint32_t>(end);
-      end += room[k];
-    }
+    const std::size_t start = data_.size();
+    const std::size_t end = start + parallelPrefixSum<std::size_t>(
+                                        m, [&](std::ptrdiff_t k) { return std::size_t{room[k]}; },
+                                        [&](std::ptrdiff_t k, std::size_t before) {
+                                          at[k] = static_cast<std::uint32_t>(start + before);
+                                        });
     growInParallel(data_, end);
     std::size_t freed = 0;
 #pragma omp parallel for schedule(static) reduction(+ : freed) if (m >= 4096)
@@ -201,11 +203,9 @@ class RaggedArray {
   void repack() {
     const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(slots_.size());
     UninitializedVector<std::uint32_t> at(slots_.size());
-    std::uint32_t total = 0;
-    for (std::ptrdiff_t i = 0; i < n; ++i) {
-      at[i] = total;
-      total += slots_[i].size;
-    }
+    const std::uint32_t total = parallelPrefixSum<std::uint32_t>(
+        n, [&](std::ptrdiff_t i) { return slots_[i].size; },
+        [&](std::ptrdiff_t i, std::uint32_t before) { at[i] = before; });
     UninitializedVector<T> data;
     data.reserve(std::max<std::size_t>(total, data_.size() - garbage_));
     data.resize(total);
