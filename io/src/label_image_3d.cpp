@@ -1028,6 +1028,7 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
   std::vector<char> wall_state(n_walls, 0);
   std::vector<double> wall_volume(n_walls, 0);
   std::vector<std::vector<WallTriangle>> wall_tris_of(n_walls);
+  std::vector<std::array<Vec3, 2>> wall_box(n_walls);  // of its triangles' points (changed walls only move them)
   // The crossing test's points: every junction-line corner, then the walls' fan centres (n_corners + wall).
   std::vector<Vec3> points(n_corners + n_walls);
   for (std::size_t u = 0; u < n_corners; ++u) points[u] = Vec3(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
@@ -1066,12 +1067,20 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
   };
   std::map<std::pair<std::int32_t, std::int32_t>, std::size_t> chord_owner;  // such edges, by wall
   std::vector<std::vector<std::pair<std::int32_t, std::int32_t>>> wall_chords(n_walls);
+  // Each wall's voxel faces (ascending): patch_faces[patch_faces_start[p] .. patch_faces_start[p + 1]), made on
+  // the first call (a counting sort).
+  std::vector<Index> patch_faces;
+  std::vector<std::size_t> patch_faces_start;
   auto makeInteriors = [&](const std::vector<std::size_t>& todo) {
-    std::vector<char> wanted(n_walls, 0);
-    for (const std::size_t p : todo) wanted[p] = 1, interior_tried[p] = 1;
-    std::vector<std::vector<Index>> faces_of(n_walls);
-    for (Index f = 0; f < faces.size(); ++f)
-      if (wanted[patch_of_face[f]]) faces_of[patch_of_face[f]].push_back(f);
+    if (patch_faces_start.empty()) {
+      patch_faces_start.assign(n_walls + 1, 0);
+      for (Index f = 0; f < faces.size(); ++f) ++patch_faces_start[patch_of_face[f] + 1];
+      for (std::size_t p = 0; p < n_walls; ++p) patch_faces_start[p + 1] += patch_faces_start[p];
+      patch_faces.resize(faces.size());
+      std::vector<std::size_t> fill(patch_faces_start.begin(), patch_faces_start.end() - 1);
+      for (Index f = 0; f < faces.size(); ++f) patch_faces[fill[patch_of_face[f]]++] = f;
+    }
+    for (const std::size_t p : todo) interior_tried[p] = 1;
     std::size_t made = 0;
     for (const std::size_t p : todo) {
       // The boundary corners in loop order, and for each the kept corner it merges into.
@@ -1093,7 +1102,8 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
       std::vector<std::size_t> inner;                        // grid corner of each interior index
       std::vector<std::array<std::int32_t, 4>> quads;        // boundary corner id, or -1 - interior index
       bool ok = true;
-      for (const Index f : faces_of[p]) {
+      for (std::size_t fi = patch_faces_start[p]; fi < patch_faces_start[p + 1]; ++fi) {
+        const Index f = patch_faces[fi];
         const std::size_t v = face_key[f] / 3;
         const int ax = static_cast<int>(face_key[f] % 3), b = (ax + 1) % 3, cc = (ax + 2) % 3;
         const std::size_t c0 = v + g.stride[0] + g.stride[1] + g.stride[2] - g.stride[b] - g.stride[cc];
@@ -1303,6 +1313,16 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
           wall_tris_of[p].push_back({{ids[t[0]], ids[t[1]], ids[t[2]]}, static_cast<std::int32_t>(p)});
       }
     }
+    // Each changed wall's box (the corners of an unchanged wall and its fan centres do not move).
+#pragma omp parallel for schedule(dynamic, 256)
+    for (std::ptrdiff_t pp = 0; pp < static_cast<std::ptrdiff_t>(n_walls); ++pp) {
+      const auto p = static_cast<std::size_t>(pp);
+      if (!wall_changed[p] || wall_tris_of[p].empty()) continue;
+      std::array<Vec3, 2> bx{points[wall_tris_of[p][0].v[0]], points[wall_tris_of[p][0].v[0]]};
+      for (const WallTriangle& tr : wall_tris_of[p])
+        for (const std::int32_t u : tr.v) bx[0] = bx[0].cwiseMin(points[u]), bx[1] = bx[1].cwiseMax(points[u]);
+      wall_box[p] = bx;
+    }
     const bool all_changed = std::find(wall_changed.begin(), wall_changed.end(), 0) == wall_changed.end();
     for (std::size_t p = 0; p < n_walls; ++p) {
       if (wall_state[p] == 2) {
@@ -1354,17 +1374,49 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
             });
         std::sort(hot.begin(), hot.end());
         hot.erase(std::unique(hot.begin(), hot.end()), hot.end());
-        auto isHot = [&](std::uint64_t k) { return std::binary_search(hot.begin(), hot.end(), k); };
+        // Whether a wall's box meets a hot bucket: a count of the hot buckets in a box of buckets, from the
+        // prefix sums of a dense grid of them over the hot buckets' range (bucket coordinates taken back from
+        // the keys: 21 bits each, two's complement).
+        auto coord = [](std::uint64_t k, int a) {
+          const auto c = static_cast<std::int64_t>((k >> (21 * a)) & 0x1FFFFF);
+          return c >= (std::int64_t{1} << 20) ? c - (std::int64_t{1} << 21) : c;
+        };
+        std::array<std::int64_t, 3> hlo{0, 0, 0}, hhi{-1, -1, -1};
+        for (std::size_t i = 0; i < hot.size(); ++i)
+          for (int a = 0; a < 3; ++a) {
+            const std::int64_t c = coord(hot[i], a);
+            hlo[a] = i == 0 ? c : std::min(hlo[a], c), hhi[a] = i == 0 ? c : std::max(hhi[a], c);
+          }
+        std::array<std::size_t, 3> hd{};
+        for (int a = 0; a < 3; ++a) hd[a] = static_cast<std::size_t>(hhi[a] - hlo[a] + 2);  // one more: sums
+        std::vector<std::int32_t> hot_sum(hot.empty() ? 0 : hd[0] * hd[1] * hd[2], 0);
+        auto at = [&](std::size_t x, std::size_t y, std::size_t z) -> std::int32_t& {
+          return hot_sum[x + hd[0] * (y + hd[1] * z)];
+        };
+        for (const std::uint64_t k : hot)
+          at(static_cast<std::size_t>(coord(k, 0) - hlo[0]) + 1, static_cast<std::size_t>(coord(k, 1) - hlo[1]) + 1,
+             static_cast<std::size_t>(coord(k, 2) - hlo[2]) + 1) = 1;
+        for (std::size_t z = 1; z < hd[2] && !hot.empty(); ++z)
+          for (std::size_t y = 1; y < hd[1]; ++y)
+            for (std::size_t x = 1; x < hd[0]; ++x)
+              at(x, y, z) += at(x - 1, y, z) + at(x, y - 1, z) + at(x, y, z - 1) - at(x - 1, y - 1, z) -
+                             at(x - 1, y, z - 1) - at(x, y - 1, z - 1) + at(x - 1, y - 1, z - 1);
+        auto meetsHot = [&](const std::array<Vec3, 2>& bx) {
+          auto b0 = cellOf(bx[0]), b1 = cellOf(bx[1]);
+          std::array<std::size_t, 3> bl{}, bh{};
+          for (int a = 0; a < 3; ++a) {
+            b0[a] = std::max(b0[a], hlo[a]), b1[a] = std::min(b1[a], hhi[a]);
+            if (b0[a] > b1[a]) return false;
+            bl[a] = static_cast<std::size_t>(b0[a] - hlo[a]), bh[a] = static_cast<std::size_t>(b1[a] - hlo[a]) + 1;
+          }
+          return at(bh[0], bh[1], bh[2]) - at(bl[0], bh[1], bh[2]) - at(bh[0], bl[1], bh[2]) -
+                     at(bh[0], bh[1], bl[2]) + at(bl[0], bl[1], bh[2]) + at(bl[0], bh[1], bl[2]) +
+                     at(bh[0], bl[1], bl[2]) - at(bl[0], bl[1], bl[2]) >
+                 0;
+        };
         for (std::size_t p = 0; p < n_walls && !hot.empty(); ++p) {
           if (near[p] || wall_state[p] == 2 || wall_tris_of[p].empty()) continue;
-          std::array<Vec3, 2> bx{points[wall_tris_of[p][0].v[0]], points[wall_tris_of[p][0].v[0]]};
-          for (const WallTriangle& tr : wall_tris_of[p]) {
-            const auto tb = boxOf(tr.v);
-            bx[0] = bx[0].cwiseMin(tb[0]), bx[1] = bx[1].cwiseMax(tb[1]);
-          }
-          bool meets = false;
-          forBucketsOf(bx, [&](std::uint64_t k) { meets = meets || isHot(k); });
-          near[p] = meets;
+          near[p] = meetsHot(wall_box[p]);
         }
       }
       std::vector<WallTriangle> wall_tris;  // of the walls near a changed one, in wall order
