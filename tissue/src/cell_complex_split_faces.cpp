@@ -19,6 +19,7 @@
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/parallel_prefix_sum.hpp"
 #include "tessella/tissue/uninitialized_vector.hpp"
+#include "parallel_claims.hpp"
 
 namespace tessella {
 
@@ -50,16 +51,9 @@ UninitializedVector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChor
   // parallel; on a dead face or a face claimed twice the serial loop runs
   // again to name the first defect in chord order.
   UninitializedVector<std::int32_t> chord_of = filledInParallel<std::int32_t>(slots(2), -1);
-  bool defect = false;
-#pragma omp parallel for schedule(static) reduction(|| : defect) if (n >= kParallelMin)
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    const FaceId f = chords[i].face;
-    std::int32_t unclaimed = -1;
-    defect = defect || !alive(f) ||
-             !std::atomic_ref<std::int32_t>(chord_of[f.index()])
-                  .compare_exchange_strong(unclaimed, static_cast<std::int32_t>(i), std::memory_order_relaxed);
-  }
-  if (defect) {
+  if (!detail::claimInParallel(
+          n, chord_of, [&](std::ptrdiff_t i) { return chords[i].face; }, [&](FaceId f) { return alive(f); },
+          kParallelMin)) {
     std::fill(chord_of.begin(), chord_of.end(), -1);
     for (std::ptrdiff_t i = 0; i < n; ++i) {
       const FaceId f = chords[i].face;

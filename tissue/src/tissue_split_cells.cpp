@@ -6,7 +6,6 @@
 // and lineage follow in parallel, each element written by one thread.
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <string>
 
@@ -14,6 +13,7 @@
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/tissue.hpp"
 #include "tessella/tissue/uninitialized_vector.hpp"
+#include "parallel_claims.hpp"
 
 namespace tessella {
 
@@ -35,16 +35,9 @@ std::vector<CellSplit> Tissue::splitCells(std::span<const CellSplitPlan2D> plans
   // Cell -> plan, claimed in parallel; on a dead cell or a cell claimed twice
   // the serial loop runs again to name the first defect in plan order.
   UninitializedVector<std::int32_t> plan_of = filledInParallel<std::int32_t>(cellSlots(), -1);
-  bool defect = false;
-#pragma omp parallel for schedule(static) reduction(|| : defect) if (n >= kParallelMin)
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
-    const CellId c = plans[i].cell;
-    std::int32_t unclaimed = -1;
-    defect = defect || !alive(c) ||
-             !std::atomic_ref<std::int32_t>(plan_of[c.index()])
-                  .compare_exchange_strong(unclaimed, static_cast<std::int32_t>(i), std::memory_order_relaxed);
-  }
-  if (defect) {
+  if (!detail::claimInParallel(
+          n, plan_of, [&](std::ptrdiff_t i) { return plans[i].cell; }, [&](CellId c) { return alive(c); },
+          kParallelMin)) {
     std::fill(plan_of.begin(), plan_of.end(), -1);
     for (std::ptrdiff_t i = 0; i < n; ++i) {
       const CellId c = plans[i].cell;
