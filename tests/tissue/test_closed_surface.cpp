@@ -95,16 +95,27 @@ TEST_CASE("addVolume accepts a closed surface and names the lowest bad edge of a
   }
 }
 
+namespace {
+
+// The faces of two disjoint n-gonal prisms as vertex loops in CSR form (offsets, items): prism 1's
+// vertices are prism 0's plus 2 n.
+std::pair<std::vector<Index>, std::vector<Index>> twoPrismLoops(int n) {
+  std::vector<Index> offsets{0}, items;
+  for (int copy = 0; copy < 2; ++copy)
+    for (const auto& loop : prismLoops(n)) {
+      for (Index v : loop) items.push_back(v + static_cast<Index>(copy * 2 * n));
+      offsets.push_back(static_cast<Index>(items.size()));
+    }
+  return {offsets, items};
+}
+
+}  // namespace
+
 TEST_CASE("addVolumes checks every volume's surface like addVolume", "[tissue][closed_surface]") {
   // Two prisms' faces in one complex: volume 0 closed, volume 1 with face `flip` reversed.
   for (int n : {5, 60}) {
     const std::size_t nf = static_cast<std::size_t>(n) + 2;
-    std::vector<Index> offsets{0}, items;
-    for (int copy = 0; copy < 2; ++copy)
-      for (const auto& loop : prismLoops(n)) {
-        for (Index v : loop) items.push_back(v + static_cast<Index>(copy * 2 * n));
-        offsets.push_back(static_cast<Index>(items.size()));
-      }
+    const auto [offsets, items] = twoPrismLoops(n);
     for (std::size_t flip : {nf, std::size_t{0}, nf / 2}) {
       CellComplex c = CellComplex::fromLoops(3, 4 * static_cast<std::size_t>(n), offsets, items);
       std::vector<OrientedFace> faces = surface(nf, nf, nf);
@@ -163,12 +174,7 @@ TEST_CASE("a surface of 2^16 edge uses or more is checked by sorting its uses", 
 TEST_CASE("addVolumes trusts closed-by-construction volumes for their surface only", "[tissue][closed_surface]") {
   const int n = 6;
   const std::size_t nf = static_cast<std::size_t>(n) + 2;
-  std::vector<Index> offsets{0}, items;
-  for (int copy = 0; copy < 2; ++copy)
-    for (const auto& loop : prismLoops(n)) {
-      for (Index v : loop) items.push_back(v + static_cast<Index>(copy * 2 * n));
-      offsets.push_back(static_cast<Index>(items.size()));
-    }
+  const auto [offsets, items] = twoPrismLoops(n);
   auto faces = [&](std::size_t flip1) {  // volume 0: prism 0; volume 1: prism 1 with face flip1 reversed
     std::vector<OrientedFace> f = surface(nf, nf, nf);
     for (std::size_t k = 0; k < nf; ++k) f.emplace_back(FaceId(static_cast<Index>(nf + k)), k == flip1);
