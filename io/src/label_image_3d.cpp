@@ -1440,10 +1440,11 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
           const auto b1 = cellOf(box[t][1]);
           for (int a = 0; a < 3; ++a) nb[a] = std::max(nb[a], b1[a] + 1);
         }
-        const auto nx = static_cast<std::size_t>(nb[0]), ny = static_cast<std::size_t>(nb[1]);
+        const auto bucket_nx = static_cast<std::size_t>(nb[0]), bucket_ny = static_cast<std::size_t>(nb[1]);
         auto dense = [&](std::uint64_t k) {
           return static_cast<std::size_t>(k & 0x1FFFFF) +
-                 nx * (static_cast<std::size_t>((k >> 21) & 0x1FFFFF) + ny * static_cast<std::size_t>(k >> 42));
+                 bucket_nx * (static_cast<std::size_t>((k >> 21) & 0x1FFFFF) +
+                              bucket_ny * static_cast<std::size_t>(k >> 42));
         };
         const std::size_t n_buckets = static_cast<std::size_t>(nb[0] * nb[1] * nb[2]);
         std::vector<std::size_t> start(n_buckets + 1, 0);
@@ -1458,7 +1459,7 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
         for (std::size_t b = 0; b < n_buckets; ++b)
           if (start[b + 1] > start[b]) {
             group_start.push_back(start[b]);
-            const std::uint64_t x = b % nx, y = (b / nx) % ny, z = b / (nx * ny);
+            const std::uint64_t x = b % bucket_nx, y = (b / bucket_nx) % bucket_ny, z = b / (bucket_nx * bucket_ny);
             group_key.push_back((z << 42) | (y << 21) | x);
           }
         group_start.push_back(entry_tri.size());
