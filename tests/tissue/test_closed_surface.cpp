@@ -65,6 +65,19 @@ std::vector<OrientedFace> surface(std::size_t nf, std::size_t flip, std::size_t 
   return faces;
 }
 
+// Runs `add`, which must refuse an open surface naming edge `bad`; returns the error's element.
+template <typename Add>
+ElementId refusedAtEdge(Add&& add, Index bad) {
+  try {
+    add();
+  } catch (const TopologyError& e) {
+    CHECK(std::string(e.what()).ends_with("at edge " + std::to_string(bad)));
+    return e.element();
+  }
+  FAIL("an open surface was accepted");
+  return {};
+}
+
 }  // namespace
 
 TEST_CASE("addVolume accepts a closed surface and names the lowest bad edge of an open one",
@@ -85,12 +98,7 @@ TEST_CASE("addVolume accepts a closed surface and names the lowest bad edge of a
           CHECK(c.addVolume(faces).index() == 0);
           continue;
         }
-        try {
-          c.addVolume(faces);
-          FAIL("an open surface was accepted");
-        } catch (const TopologyError& e) {
-          CHECK(std::string(e.what()).ends_with("at edge " + std::to_string(bad)));
-        }
+        refusedAtEdge([&] { c.addVolume(faces); }, bad);
       }
   }
 }
@@ -130,13 +138,7 @@ TEST_CASE("addVolumes checks every volume's surface like addVolume", "[tissue][c
         CHECK(c.volumeFaces(VolumeId(1)).size() == nf);
         continue;
       }
-      try {
-        c.addVolumes(volume_offsets, faces);
-        FAIL("an open surface was accepted");
-      } catch (const TopologyError& e) {
-        CHECK(e.element().index == 1);
-        CHECK(std::string(e.what()).ends_with("at edge " + std::to_string(bad)));
-      }
+      CHECK(refusedAtEdge([&] { c.addVolumes(volume_offsets, faces); }, bad).index == 1);
     }
   }
 }
@@ -162,12 +164,7 @@ TEST_CASE("a surface of 2^16 edge uses or more is checked by sorting its uses", 
         CHECK(d.volumeFaces(VolumeId(0)).size() == nf);
         continue;
       }
-      try {
-        c.addVolume(faces);
-        FAIL("an open surface was accepted");
-      } catch (const TopologyError& e) {
-        CHECK(std::string(e.what()).ends_with("at edge " + std::to_string(bad)));
-      }
+      refusedAtEdge([&] { c.addVolume(faces); }, bad);
     }
 }
 
