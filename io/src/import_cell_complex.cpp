@@ -19,6 +19,8 @@
 #include <array>
 #include <cmath>
 #include <compare>
+#include <exception>
+#include <limits>
 #include <numeric>
 #include <tuple>
 #include <unordered_map>
@@ -637,8 +639,23 @@ namespace detail {
 ImportResult importComplex(const ComplexFile& m, const ImportOptions& options, ImportReport report) {
   if (m.numVolumes() == 0) throw InputError("'" + m.path + "' has no " + m.volume_noun + "s: no cell to import");
   checkDuplicateFaces(m);
+  // Volumes are analysed independently, in parallel; of those that fail,
+  // the first in file order is reported, as a serial scan would.
   std::vector<VolumeSurface> surfaces(m.numVolumes());
-  for (std::size_t v = 0; v < m.numVolumes(); ++v) surfaces[v] = analyseVolume(m, v);
+  std::size_t first_failed = std::numeric_limits<std::size_t>::max();
+  std::exception_ptr failure;
+  const auto num_volumes = static_cast<std::ptrdiff_t>(m.numVolumes());
+#pragma omp parallel for schedule(dynamic, 64)
+  for (std::ptrdiff_t v = 0; v < num_volumes; ++v) {
+    try {
+      surfaces[v] = analyseVolume(m, static_cast<std::size_t>(v));
+    } catch (...) {
+#pragma omp critical(import_complex_first_failure)
+      if (static_cast<std::size_t>(v) < first_failed)
+        first_failed = static_cast<std::size_t>(v), failure = std::current_exception();
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
   for (std::size_t v = 1; v < m.numVolumes(); ++v)
     if (surfaces[v].shape != surfaces[0].shape) {
       const std::size_t closed = surfaces[0].shape == Shape::Closed ? 0 : v, open = closed == 0 ? v : 0;

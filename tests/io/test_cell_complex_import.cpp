@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include <catch2/catch.hpp>
+#include <omp.h>
 
 #include "io_test_support.hpp"
 #include "tessella/generators/dome.hpp"
@@ -466,6 +467,24 @@ TEST_CASE("cell complex: bad cells name the volume and its label", "[io][import]
     m.faces.push_back(copy);
     m.volumes[1][4] = static_cast<int>(m.faces.size()) - 1;
     CHECK_THAT(importError(m, dir), Contains(path) && Contains("have the same vertices"));
+  }
+  SECTION("of several bad cells, the first in file order is named, on 1 and 2 threads") {
+    // 300 boxes in a row (volumes are analysed in parallel chunks), with a
+    // fin on volume 70 and on volume 250: volume 70 is reported.
+    Complex m;
+    for (int i = 0; i < 300; ++i) m.box(Vec3(i, 0, 0), Vec3(i + 1, 1, 1), 1000 + i, false);
+    for (int bad : {250, 70}) {
+      const int a = m.vertex(Vec3(bad, 0, 0)), b = m.vertex(Vec3(bad, 1, 0));
+      const int c = m.vertex(Vec3(bad + 0.5, 0.5, -1));
+      m.volumes[bad].push_back(m.face({a, b, c}));
+    }
+    const int threads = omp_get_max_threads();
+    for (int n : {1, 2}) {
+      omp_set_num_threads(n);
+      CHECK_THAT(importError(m, dir), Contains(path) && Contains("volume 70 (label 1070): edge") &&
+                                          Contains("not a manifold"));
+    }
+    omp_set_num_threads(threads);
   }
   SECTION("patches sharing a face") {
     Complex m = twoSquares();
