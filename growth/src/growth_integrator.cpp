@@ -44,7 +44,7 @@ bool finite(const Vec3& v) { return std::isfinite(v.x()) && std::isfinite(v.y())
 std::size_t firstNonFinite(std::span<const Vec3> v, const std::vector<std::uint8_t>& alive) {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(v.size());
   std::ptrdiff_t bad = n;
-#pragma omp parallel for schedule(static) reduction(min : bad) if(n >= kParallelMinItems)
+#pragma omp parallel for schedule(static, kInterleavedChunk) reduction(min : bad) if(n >= kParallelMinItems)
   for (std::ptrdiff_t i = 0; i < n; ++i)
     if (alive[i] && !finite(v[i]) && i < bad) bad = i;
   return static_cast<std::size_t>(bad);
@@ -122,7 +122,7 @@ void GrowthIntegrator::project(const Tissue& t, std::span<Vec3> x) const {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(x.size());
   if (options_.projection) {
     const auto& alive = t.topology().aliveFlags(0);
-#pragma omp parallel for schedule(static) if(n >= kParallelMinItems)
+#pragma omp parallel for schedule(static, kInterleavedChunk) if(n >= kParallelMinItems)
     for (std::ptrdiff_t i = 0; i < n; ++i)
       if (alive[i]) x[i] = options_.projection(x[i]);
   }
@@ -153,7 +153,7 @@ void GrowthIntegrator::step(Tissue& t, double dt, GeometryCache& geometry) {
   // One sweep keeps x0 (for Heun and for undoing a refused step) and moves
   // the vertices; planar tissues are put back at z = 0 in the same sweep.
   const bool planar = t.embedding() == Embedding::Planar;
-#pragma omp parallel for schedule(static) if(m >= kParallelMinItems)
+#pragma omp parallel for schedule(static, kInterleavedChunk) if(m >= kParallelMinItems)
   for (std::ptrdiff_t i = 0; i < m; ++i) {
     x0_[i] = x[i];
     x[i] = x0_[i] + dt * k1_[i];
@@ -169,7 +169,7 @@ void GrowthIntegrator::step(Tissue& t, double dt, GeometryCache& geometry) {
       resizeDiscarding(k2_, n);
       velocities(t, x, t1, k2_);
       checkVelocities(t, x, k2_, t1);
-#pragma omp parallel for schedule(static) if(m >= kParallelMinItems)
+#pragma omp parallel for schedule(static, kInterleavedChunk) if(m >= kParallelMinItems)
       for (std::ptrdiff_t i = 0; i < m; ++i) {
         x[i] = x0_[i] + (0.5 * dt) * (k1_[i] + k2_[i]);
         if (planar) x[i].z() = 0.0;
@@ -192,7 +192,7 @@ void GrowthIntegrator::checkCells(Tissue& t, const GeometryCache& geometry, doub
   const std::ptrdiff_t nc = static_cast<std::ptrdiff_t>(t.cellSlots());
   const auto& alive = t.topology().aliveFlags(dim);
   std::ptrdiff_t bad = nc;  // lowest offending cell slot (deterministic report)
-#pragma omp parallel for schedule(static) reduction(min : bad) if(nc >= kParallelMinItems)
+#pragma omp parallel for schedule(static, kInterleavedChunk) reduction(min : bad) if(nc >= kParallelMinItems)
   for (std::ptrdiff_t c = 0; c < nc; ++c) {
     if (!alive[c]) continue;
     bool wrong;

@@ -19,7 +19,7 @@ Vec3 LinearField::velocity(const Vec3& x, double) const { return rate_ * (x - ce
 
 void LinearField::velocities(std::span<const Vec3> x, double, std::span<Vec3> out) const {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(x.size());
-#pragma omp parallel for schedule(static) if(n >= kParallelMinItems)
+#pragma omp parallel for schedule(static, kInterleavedChunk) if(n >= kParallelMinItems)
   for (std::ptrdiff_t i = 0; i < n; ++i) out[i] = rate_ * (x[i] - center_);
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "tessella/growth/parallel_threshold.hpp"
+#include "tessella/tissue/uninitialized_vector.hpp"
 
 namespace tessella::growth {
 
@@ -59,8 +60,10 @@ void drawPositiveNormals(Rng& rng, double mean, double stddev, std::span<double>
     double first, second;  // the pair's values, when accepted
     bool accepted;
   };
-  std::vector<Rng::result_type> raw;
-  std::vector<Try> tries;
+  // Not zeroed first (a serial write of megabytes): the engine fills `raw`,
+  // the parallel pass sets every try's `accepted` and an accepted try's values.
+  UninitializedVector<Rng::result_type> raw;
+  UninitializedVector<Try> tries;
   std::optional<double> carry;  // the unused second value of the last pair
   std::size_t filled = 0;
   while (filled < out.size()) {

@@ -8,7 +8,7 @@ namespace tessella::growth {
 
 void VelocityField::velocities(std::span<const Vec3> x, double t, std::span<Vec3> out) const {
   const std::ptrdiff_t n = static_cast<std::ptrdiff_t>(x.size());
-#pragma omp parallel for schedule(static) if(n >= kParallelMinItems)
+#pragma omp parallel for schedule(static, kInterleavedChunk) if(n >= kParallelMinItems)
   for (std::ptrdiff_t i = 0; i < n; ++i) out[i] = velocity(x[i], t);
 }
 

@@ -488,8 +488,21 @@ UninitializedVector<ChordSplit> CellComplex::splitFaces(std::span<const FaceChor
     move_v[w] = from;
   }
 
-  // Pass C, serial and in chord order: existing vertices join the chords at them.
-  for (std::ptrdiff_t i = 0; i < n; ++i) {
+  // Pass C: existing vertices join the chords at them, serially and in chord
+  // order (a list that grows moves to the end of the pool); the chords with
+  // an end at an existing vertex (few) are found in parallel first.
+  auto oldEnds = [&](std::ptrdiff_t i) {
+    const auto [from, to] = fromTo(i);
+    return std::ptrdiff_t{from.index() < v0} + std::ptrdiff_t{to.index() < v0};
+  };
+  UninitializedVector<std::int32_t> joining(chords.size());  // written up to its count
+  const std::ptrdiff_t n_joining = parallelPrefixSum<std::ptrdiff_t>(
+      n, [&](std::ptrdiff_t i) { return std::ptrdiff_t{oldEnds(i) > 0}; },
+      [&](std::ptrdiff_t i, std::ptrdiff_t before) {
+        if (oldEnds(i) > 0) joining[before] = static_cast<std::int32_t>(i);
+      });
+  for (std::ptrdiff_t q = 0; q < n_joining; ++q) {
+    const std::ptrdiff_t i = joining[q];
     const auto [from, to] = fromTo(i);
     for (VertexId v : {from, to})
       if (v.index() < v0) vertex_edges_.pushBack(v.index(), out[i].chord);

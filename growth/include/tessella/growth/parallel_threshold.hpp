@@ -10,4 +10,12 @@ namespace tessella::growth {
 
 inline constexpr std::ptrdiff_t kParallelMinItems = 4096;
 
+/// Loops over every vertex or cell deal chunks of this many items to the
+/// threads in turn (`schedule(static, kInterleavedChunk)`) rather than one
+/// contiguous share each: on a growing tissue the last items (the newest
+/// elements, in array pages first touched in that loop) cost more, and with
+/// contiguous shares they all fell to the last thread, which the others then
+/// waited for.
+inline constexpr int kInterleavedChunk = 4096;
+
 }  // namespace tessella::growth
