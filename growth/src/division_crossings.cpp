@@ -8,7 +8,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <unordered_map>
 #include <vector>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -24,11 +26,22 @@ namespace {
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Tri = std::array<int, 3>;
 
-// Points by id: the tissue's vertex slots, then the division's new vertices,
-// then one centre per fan.
+// Points by local id: the tissue's vertices as they are met, the division's
+// new vertices, one centre per fan.
 struct Points {
+  const Tissue& t;
   std::vector<Vec3> p;
+  std::unordered_map<Index, int> of_vertex;
   K::Point_3 operator()(int i) const { return {p[i].x(), p[i].y(), p[i].z()}; }
+  int add(const Vec3& x) {
+    p.push_back(x);
+    return static_cast<int>(p.size() - 1);
+  }
+  int vertex(VertexId v) {
+    const auto [at, fresh] = of_vertex.try_emplace(v.index(), static_cast<int>(p.size()));
+    if (fresh) p.push_back(t.position(v));
+    return at->second;
+  }
 };
 
 // The surface of a loop of point ids, as the mesher triangulates the wall
@@ -45,8 +58,7 @@ std::vector<Tri> surfaceOf(const std::vector<int>& loop, Points& pts, bool* defe
   }
   std::vector<Tri> tris;
   if (s.fan()) {
-    const int centre = static_cast<int>(pts.p.size());
-    pts.p.push_back(s.center);
+    const int centre = pts.add(s.center);
     for (std::size_t i = 0; i < loop.size(); ++i) tris.push_back({centre, loop[i], loop[(i + 1) % loop.size()]});
   } else {
     for (const auto& t : s.triangles) tris.push_back({loop[t[0]], loop[t[1]], loop[t[2]]});
@@ -96,17 +108,35 @@ Box boxOf(const Points& P, const Tri& t) {
   return b;
 }
 
-// Whether two triangle lists cross (same = one list against itself).
-bool surfacesCross(const Points& P, const std::vector<Tri>& a, const std::vector<Tri>& b, bool same) {
-  for (std::size_t i = 0; i < a.size(); ++i)
-    for (std::size_t j = same ? i + 1 : 0; j < b.size(); ++j)
-      if (boxOf(P, a[i]).overlaps(boxOf(P, b[j])) && trianglesCross(P, a[i], b[j])) return true;
-  return false;
+// A wall's triangles with their boxes, and the box of them all.
+struct Surface {
+  std::vector<Tri> tris;
+  std::vector<Box> boxes;
+  Box box;
+  Surface() = default;
+  Surface(const Points& P, std::vector<Tri> triangles) : tris(std::move(triangles)) {
+    for (const Tri& t : tris) {
+      boxes.push_back(boxOf(P, t));
+      box.add(boxes.back().lo);
+      box.add(boxes.back().hi);
+    }
+  }
+};
+
+// The first crossing pair of triangles (a's index), or -1 (same = one surface against itself).
+long firstCrossing(const Points& P, const Surface& a, const Surface& b, bool same) {
+  if (!a.box.overlaps(b.box)) return -1;
+  for (std::size_t i = 0; i < a.tris.size(); ++i) {
+    if (!a.boxes[i].overlaps(b.box)) continue;
+    for (std::size_t j = same ? i + 1 : 0; j < b.tris.size(); ++j)
+      if (a.boxes[i].overlaps(b.boxes[j]) && trianglesCross(P, a.tris[i], b.tris[j])) return static_cast<long>(i);
+  }
+  return -1;
 }
 
-std::vector<int> loopIds(const Tissue& t, FaceId f) {
+std::vector<int> loopIds(const Tissue& t, FaceId f, Points& P) {
   std::vector<int> ids;
-  for (VertexId v : t.topology().faceVertices(f)) ids.push_back(static_cast<int>(v.index()));
+  for (VertexId v : t.topology().faceVertices(f)) ids.push_back(P.vertex(v));
   return ids;
 }
 
@@ -123,7 +153,7 @@ struct Changed {
   enum Kind { NewWall, Piece, NewVertex } kind;
   Index wall;
   std::vector<int> loop;
-  std::vector<Tri> tris;
+  Surface surface;
 };
 
 std::string describe(const Tissue& t, const Changed& s) {
@@ -135,13 +165,60 @@ std::string describe(const Tissue& t, const Changed& s) {
   return "wall " + std::to_string(s.wall) + " " + cellsText(t, s.wall) + " (given a vertex where the plane crosses it)";
 }
 
+// A flat convex polygon (to `tol`), and its unit normal (loop order).
+bool flatConvex(const Tissue& t, FaceId f, double tol, Vec3& normal) {
+  const auto loop = t.topology().faceVertices(f);
+  const std::size_t n = loop.size();
+  Vec3 area = Vec3::Zero();
+  const Vec3& o = t.position(loop[0]);
+  for (std::size_t i = 1; i + 1 < n; ++i) area += (t.position(loop[i]) - o).cross(t.position(loop[i + 1]) - o);
+  if (!(area.norm() > 0)) return false;
+  normal = area.normalized();
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 &a = t.position(loop[i]), &b = t.position(loop[(i + 1) % n]), &d = t.position(loop[(i + 2) % n]);
+    if (std::abs(normal.dot(a - o)) > tol) return false;
+    if (normal.dot((b - a).cross(d - b)) < -tol * (d - b).norm()) return false;
+  }
+  return true;
+}
+
+// A convex cell with flat convex walls, whose crossed edges' other walls are
+// flat and convex too: the division keeps every wall's point set (a flat
+// convex polygon's fan covers it from any centre inside) and adds a wall
+// inside the cell, so no wall can come to cross another (to `tol`).
+bool cannotCross(const Tissue& t, CellId c, const CellSplitPlan3D& plan) {
+  const CellComplex& cx = t.topology();
+  const std::vector<VertexId> vertices = t.cellVertices(c);
+  Box box;
+  for (VertexId v : vertices) box.add(t.position(v));
+  const double tol = 1e-9 * (box.hi - box.lo).norm();
+  const auto faces = cx.volumeFaces(VolumeId(c.index()));
+  for (OrientedFace of : faces) {
+    Vec3 normal;
+    if (!flatConvex(t, of.handle(), tol, normal)) return false;
+    const Vec3 outward = of.sign() * normal;
+    const Vec3& o = t.position(cx.faceVertices(of.handle())[0]);
+    for (VertexId v : vertices)
+      if (outward.dot(t.position(v) - o) > tol) return false;
+  }
+  for (const CutNode& node : plan.ring) {
+    if (!node.isNew()) continue;
+    for (FaceId f : cx.edgeFaces(node.edge)) {
+      Vec3 normal;
+      if (std::none_of(faces.begin(), faces.end(), [&](OrientedFace of) { return of.handle() == f; }) &&
+          !flatConvex(t, f, tol, normal))
+        return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 std::string divisionCrossing(const Tissue& t, CellId c, const CellSplitPlan3D& plan) {
+  if (cannotCross(t, c, plan)) return {};
   const CellComplex& cx = t.topology();
-  Points pts;
-  pts.p.assign(t.slots(0), Vec3::Zero());
-  for (VertexId v : t.vertices()) pts.p[v.index()] = t.position(v);
+  Points pts{t, {}, {}};
 
   // The loops Tissue::splitCell will make: crossed edges split in ring order
   // (a new vertex goes between the edge's ends in every loop holding it), then
@@ -153,20 +230,19 @@ std::string divisionCrossing(const Tissue& t, CellId c, const CellSplitPlan3D& p
     const auto at = std::find(touched.begin(), touched.end(), f.index());
     if (at != touched.end()) return loops[static_cast<std::size_t>(at - touched.begin())];
     touched.push_back(f.index());
-    loops.push_back(loopIds(t, f));
+    loops.push_back(loopIds(t, f, pts));
     return loops.back();
   };
   std::vector<int> corner(plan.ring.size());
   for (std::size_t i = 0; i < plan.ring.size(); ++i) {
     const CutNode& node = plan.ring[i];
     if (!node.isNew()) {
-      corner[i] = static_cast<int>(node.vertex.index());
+      corner[i] = pts.vertex(node.vertex);
       continue;
     }
-    corner[i] = static_cast<int>(pts.p.size());
-    pts.p.push_back(node.point);
+    corner[i] = pts.add(node.point);
     const auto [a, b] = cx.edgeVertices(node.edge);
-    const int ia = static_cast<int>(a.index()), ib = static_cast<int>(b.index());
+    const int ia = pts.vertex(a), ib = pts.vertex(b);
     for (FaceId f : cx.edgeFaces(node.edge)) {
       std::vector<int>& loop = loopOf(f);
       const std::size_t n = loop.size();
@@ -206,15 +282,13 @@ std::string divisionCrossing(const Tissue& t, CellId c, const CellSplitPlan3D& p
 
   // The old surfaces, for crossings that were there before the division.
   const auto oldCross = [&](Index a, Index b) {
-    Points old = pts;
-    const std::vector<Tri> ta = surfaceOf(loopIds(t, FaceId(a)), old);
-    if (a == b) return surfacesCross(old, ta, ta, true);
-    return surfacesCross(old, ta, surfaceOf(loopIds(t, FaceId(b)), old), false);
+    const Surface sa(pts, surfaceOf(loopIds(t, FaceId(a), pts), pts));
+    if (a == b) return firstCrossing(pts, sa, sa, true) >= 0;
+    return firstCrossing(pts, sa, Surface(pts, surfaceOf(loopIds(t, FaceId(b), pts), pts)), false) >= 0;
   };
   const auto oldDefect = [&](Index w) {
-    Points old = pts;
     bool defect = false;
-    surfaceOf(loopIds(t, FaceId(w)), old, &defect);
+    surfaceOf(loopIds(t, FaceId(w), pts), pts, &defect);
     return defect;
   };
   const std::string who = "dividing cell " + std::to_string(c.index()) + " (lineage " +
@@ -223,30 +297,23 @@ std::string divisionCrossing(const Tissue& t, CellId c, const CellSplitPlan3D& p
   Box changed_box;
   for (Changed& s : changed) {
     bool defect = false;
-    s.tris = surfaceOf(s.loop, pts, &defect);
+    s.surface = Surface(pts, surfaceOf(s.loop, pts, &defect));
     if (defect && !(s.kind != Changed::NewWall && oldDefect(s.wall)))
       return who + describe(t, s) + " self-intersecting (its outline crosses itself in its best-fit plane)";
-    for (const Tri& tri : s.tris) {
-      const Box b = boxOf(pts, tri);
-      changed_box.add(b.lo);
-      changed_box.add(b.hi);
-    }
+    changed_box.add(s.surface.box.lo);
+    changed_box.add(s.surface.box.hi);
   }
-  const auto near = [&](const Tri& tri) { return " near " + formatPoint(pts.p[tri[1]], 9); };
+  const auto near = [&](const Changed& s, long tri) { return " near " + formatPoint(pts.p[s.surface.tris[tri][1]], 9); };
 
   // Among themselves (a surface against itself too, as the mesher tests).
   for (std::size_t i = 0; i < changed.size(); ++i)
     for (std::size_t j = i; j < changed.size(); ++j) {
       const Changed &a = changed[i], &b = changed[j];
-      for (std::size_t p = 0; p < a.tris.size(); ++p)
-        for (std::size_t q = i == j ? p + 1 : 0; q < b.tris.size(); ++q) {
-          if (!boxOf(pts, a.tris[p]).overlaps(boxOf(pts, b.tris[q])) || !trianglesCross(pts, a.tris[p], b.tris[q]))
-            continue;
-          const bool before = a.kind != Changed::NewWall && b.kind != Changed::NewWall && oldCross(a.wall, b.wall);
-          if (before) continue;
-          if (i == j) return who + describe(t, a) + " intersect itself" + near(a.tris[p]);
-          return who + describe(t, a) + " cross " + describe(t, b) + near(a.tris[p]);
-        }
+      const long at = firstCrossing(pts, a.surface, b.surface, i == j);
+      if (at < 0) continue;
+      if (a.kind != Changed::NewWall && b.kind != Changed::NewWall && oldCross(a.wall, b.wall)) continue;
+      if (i == j) return who + describe(t, a) + " intersect itself" + near(a, at);
+      return who + describe(t, a) + " cross " + describe(t, b) + near(a, at);
     }
 
   // Against the unchanged walls of every cell sharing a vertex with a changed wall.
@@ -267,18 +334,15 @@ std::string divisionCrossing(const Tissue& t, CellId c, const CellSplitPlan3D& p
   walls.erase(std::unique(walls.begin(), walls.end()), walls.end());
   for (Index w : walls) {
     if (std::find(touched.begin(), touched.end(), w) != touched.end()) continue;
-    const std::vector<int> loop = loopIds(t, FaceId(w));
     Box wall_box;
-    for (int v : loop) wall_box.add(pts.p[v]);
+    for (VertexId v : cx.faceVertices(FaceId(w))) wall_box.add(t.position(v));
     if (!wall_box.overlaps(changed_box)) continue;
-    const std::vector<Tri> tris = surfaceOf(loop, pts);
-    for (const Changed& s : changed)
-      for (const Tri& a : s.tris)
-        for (const Tri& b : tris) {
-          if (!boxOf(pts, a).overlaps(boxOf(pts, b)) || !trianglesCross(pts, a, b)) continue;
-          if (s.kind != Changed::NewWall && oldCross(s.wall, w)) continue;
-          return who + describe(t, s) + " cross wall " + std::to_string(w) + " " + cellsText(t, w) + near(a);
-        }
+    const Surface other(pts, surfaceOf(loopIds(t, FaceId(w), pts), pts));
+    for (const Changed& s : changed) {
+      const long at = firstCrossing(pts, s.surface, other, false);
+      if (at < 0 || (s.kind != Changed::NewWall && oldCross(s.wall, w))) continue;
+      return who + describe(t, s) + " cross wall " + std::to_string(w) + " " + cellsText(t, w) + near(s, at);
+    }
   }
   return {};
 }
