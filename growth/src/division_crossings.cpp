@@ -54,12 +54,14 @@ std::vector<Tri> surfaceOf(const std::vector<int>& loop, Points& pts, bool* defe
   const PolygonTriangulation s = polygonTriangulation(xyz);
   if (defect) {
     const PolygonDefect d = polygonDefect(xyz);
-    *defect = d.kind == PolygonDefect::Pinched || (d.kind == PolygonDefect::SelfIntersecting && s.folded);
+    *defect =
+        d.kind == PolygonDefect::Pinched || (d.kind == PolygonDefect::SelfIntersecting && s.folded);
   }
   std::vector<Tri> tris;
   if (s.fan()) {
     const int centre = pts.add(s.center);
-    for (std::size_t i = 0; i < loop.size(); ++i) tris.push_back({centre, loop[i], loop[(i + 1) % loop.size()]});
+    for (std::size_t i = 0; i < loop.size(); ++i)
+      tris.push_back({centre, loop[i], loop[(i + 1) % loop.size()]});
   } else {
     for (const auto& t : s.triangles) tris.push_back({loop[t[0]], loop[t[1]], loop[t[2]]});
   }
@@ -99,7 +101,9 @@ struct Box {
     lo = lo.cwiseMin(x);
     hi = hi.cwiseMax(x);
   }
-  bool overlaps(const Box& b) const { return !((lo.array() > b.hi.array()).any() || (b.lo.array() > hi.array()).any()); }
+  bool overlaps(const Box& b) const {
+    return !((lo.array() > b.hi.array()).any() || (b.lo.array() > hi.array()).any());
+  }
 };
 
 Box boxOf(const Points& P, const Tri& t) {
@@ -129,7 +133,8 @@ long firstCrossing(const Points& P, const Surface& a, const Surface& b, bool sam
   for (std::size_t i = 0; i < a.tris.size(); ++i) {
     if (!a.boxes[i].overlaps(b.box)) continue;
     for (std::size_t j = same ? i + 1 : 0; j < b.tris.size(); ++j)
-      if (a.boxes[i].overlaps(b.boxes[j]) && trianglesCross(P, a.tris[i], b.tris[j])) return static_cast<long>(i);
+      if (a.boxes[i].overlaps(b.boxes[j]) && trianglesCross(P, a.tris[i], b.tris[j]))
+        return static_cast<long>(i);
   }
   return -1;
 }
@@ -142,7 +147,8 @@ std::vector<int> loopIds(const Tissue& t, FaceId f, Points& P) {
 
 std::string cellsText(const Tissue& t, Index wall) {
   std::string s;
-  for (CellId c : t.wallCells(WallId(wall))) s += (s.empty() ? "" : ", ") + std::to_string(c.index());
+  for (CellId c : t.wallCells(WallId(wall)))
+    s += (s.empty() ? "" : ", ") + std::to_string(c.index());
   return "(cells " + s + ")";
 }
 
@@ -158,11 +164,15 @@ struct Changed {
 
 std::string describe(const Tissue& t, const Changed& s) {
   switch (s.kind) {
-    case Changed::NewWall: return "the new wall";
-    case Changed::Piece: return "a piece of wall " + std::to_string(s.wall) + " " + cellsText(t, s.wall);
-    case Changed::NewVertex: break;
+    case Changed::NewWall:
+      return "the new wall";
+    case Changed::Piece:
+      return "a piece of wall " + std::to_string(s.wall) + " " + cellsText(t, s.wall);
+    case Changed::NewVertex:
+      break;
   }
-  return "wall " + std::to_string(s.wall) + " " + cellsText(t, s.wall) + " (given a vertex where the plane crosses it)";
+  return "wall " + std::to_string(s.wall) + " " + cellsText(t, s.wall) +
+         " (given a vertex where the plane crosses it)";
 }
 
 // A flat convex polygon (to `tol`), and its unit normal (loop order).
@@ -171,11 +181,13 @@ bool flatConvex(const Tissue& t, FaceId f, double tol, Vec3& normal) {
   const std::size_t n = loop.size();
   Vec3 area = Vec3::Zero();
   const Vec3& o = t.position(loop[0]);
-  for (std::size_t i = 1; i + 1 < n; ++i) area += (t.position(loop[i]) - o).cross(t.position(loop[i + 1]) - o);
+  for (std::size_t i = 1; i + 1 < n; ++i)
+    area += (t.position(loop[i]) - o).cross(t.position(loop[i + 1]) - o);
   if (!(area.norm() > 0)) return false;
   normal = area.normalized();
   for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 &a = t.position(loop[i]), &b = t.position(loop[(i + 1) % n]), &d = t.position(loop[(i + 2) % n]);
+    const Vec3 &a = t.position(loop[i]), &b = t.position(loop[(i + 1) % n]),
+               &d = t.position(loop[(i + 2) % n]);
     if (std::abs(normal.dot(a - o)) > tol) return false;
     if (normal.dot((b - a).cross(d - b)) < -tol * (d - b).norm()) return false;
   }
@@ -205,7 +217,8 @@ bool cannotCross(const Tissue& t, CellId c, const CellSplitPlan3D& plan) {
     if (!node.isNew()) continue;
     for (FaceId f : cx.edgeFaces(node.edge)) {
       Vec3 normal;
-      if (std::none_of(faces.begin(), faces.end(), [&](OrientedFace of) { return of.handle() == f; }) &&
+      if (std::none_of(faces.begin(), faces.end(),
+                       [&](OrientedFace of) { return of.handle() == f; }) &&
           !flatConvex(t, f, tol, normal))
         return false;
     }
@@ -260,8 +273,10 @@ std::string divisionCrossing(const Tissue& t, CellId c, const CellSplitPlan3D& p
   for (const auto& cut : plan.wall_cuts) {
     const std::vector<int>& loop = loopOf(cut.wall);
     const int n = static_cast<int>(loop.size());
-    const int ia = static_cast<int>(std::find(loop.begin(), loop.end(), corner[cut.from]) - loop.begin());
-    const int ib = static_cast<int>(std::find(loop.begin(), loop.end(), corner[cut.to]) - loop.begin());
+    const int ia =
+        static_cast<int>(std::find(loop.begin(), loop.end(), corner[cut.from]) - loop.begin());
+    const int ib =
+        static_cast<int>(std::find(loop.begin(), loop.end(), corner[cut.to]) - loop.begin());
     Changed keep{Changed::Piece, cut.wall.index(), {}, {}}, move = keep;
     for (int i = ia;; i = (i + 1) % n) {
       keep.loop.push_back(loop[i]);
@@ -284,7 +299,8 @@ std::string divisionCrossing(const Tissue& t, CellId c, const CellSplitPlan3D& p
   const auto oldCross = [&](Index a, Index b) {
     const Surface sa(pts, surfaceOf(loopIds(t, FaceId(a), pts), pts));
     if (a == b) return firstCrossing(pts, sa, sa, true) >= 0;
-    return firstCrossing(pts, sa, Surface(pts, surfaceOf(loopIds(t, FaceId(b), pts), pts)), false) >= 0;
+    return firstCrossing(pts, sa, Surface(pts, surfaceOf(loopIds(t, FaceId(b), pts), pts)),
+                         false) >= 0;
   };
   const auto oldDefect = [&](Index w) {
     bool defect = false;
@@ -299,11 +315,14 @@ std::string divisionCrossing(const Tissue& t, CellId c, const CellSplitPlan3D& p
     bool defect = false;
     s.surface = Surface(pts, surfaceOf(s.loop, pts, &defect));
     if (defect && !(s.kind != Changed::NewWall && oldDefect(s.wall)))
-      return who + describe(t, s) + " self-intersecting (its outline crosses itself in its best-fit plane)";
+      return who + describe(t, s) +
+             " self-intersecting (its outline crosses itself in its best-fit plane)";
     changed_box.add(s.surface.box.lo);
     changed_box.add(s.surface.box.hi);
   }
-  const auto near = [&](const Changed& s, long tri) { return " near " + formatPoint(pts.p[s.surface.tris[tri][1]], 9); };
+  const auto near = [&](const Changed& s, long tri) {
+    return " near " + formatPoint(pts.p[s.surface.tris[tri][1]], 9);
+  };
 
   // Among themselves (a surface against itself too, as the mesher tests).
   for (std::size_t i = 0; i < changed.size(); ++i)
@@ -311,7 +330,8 @@ std::string divisionCrossing(const Tissue& t, CellId c, const CellSplitPlan3D& p
       const Changed &a = changed[i], &b = changed[j];
       const long at = firstCrossing(pts, a.surface, b.surface, i == j);
       if (at < 0) continue;
-      if (a.kind != Changed::NewWall && b.kind != Changed::NewWall && oldCross(a.wall, b.wall)) continue;
+      if (a.kind != Changed::NewWall && b.kind != Changed::NewWall && oldCross(a.wall, b.wall))
+        continue;
       if (i == j) return who + describe(t, a) + " intersect itself" + near(a, at);
       return who + describe(t, a) + " cross " + describe(t, b) + near(a, at);
     }
@@ -341,7 +361,8 @@ std::string divisionCrossing(const Tissue& t, CellId c, const CellSplitPlan3D& p
     for (const Changed& s : changed) {
       const long at = firstCrossing(pts, s.surface, other, false);
       if (at < 0 || (s.kind != Changed::NewWall && oldCross(s.wall, w))) continue;
-      return who + describe(t, s) + " cross wall " + std::to_string(w) + " " + cellsText(t, w) + near(s, at);
+      return who + describe(t, s) + " cross wall " + std::to_string(w) + " " + cellsText(t, w) +
+             near(s, at);
     }
   }
   return {};

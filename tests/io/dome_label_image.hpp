@@ -44,8 +44,8 @@ inline LabelImage domeImage(std::uint64_t seed) {
     for (std::int64_t j = 0; j < ny; ++j)
       for (std::int64_t i = 0; i < nx; ++i) {
         const Vec3 p(i + 0.5, j + 0.5, k + 0.5);
-        const double r = std::pow((p.x() - nx / 2.0) / 24, 2) + std::pow((p.y() - ny / 2.0) / 20, 2) +
-                         std::pow(p.z() / 23, 2);
+        const double r = std::pow((p.x() - nx / 2.0) / 24, 2) +
+                         std::pow((p.y() - ny / 2.0) / 20, 2) + std::pow(p.z() / 23, 2);
         std::size_t nearest = 0;
         for (std::size_t s = 1; s < seeds.size(); ++s)
           if ((seeds[s] - p).squaredNorm() < (seeds[nearest] - p).squaredNorm()) nearest = s;

@@ -51,9 +51,11 @@ class GivenPlane final : public growth::DivisionRule {
 
 }  // namespace
 
-TEST_CASE("a division plane is refused exactly when the divided tissue would not mesh", "[sim][division]") {
-  // Every cell of the imported dome, by its shortest-wall plane: the refusal (walls that would cross, tested on
-  // the planned walls alone) against the mesher's check of the whole tissue divided by that plane.
+TEST_CASE("a division plane is refused exactly when the divided tissue would not mesh",
+          "[sim][division]") {
+  // Every cell of the imported dome, by its shortest-wall plane: the refusal (walls that would
+  // cross, tested on the planned walls alone) against the mesher's check of the whole tissue
+  // divided by that plane.
   const Tissue dome = importedDome();
   const growth::ShortestWallRule rule;
   growth::Rng rng(1);
@@ -71,7 +73,8 @@ TEST_CASE("a division plane is refused exactly when the divided tissue would not
     Tissue divided = dome;
     divided.splitCell(c, p);
     const mesh::MeshabilityReport meshable = mesh::findGeometryDefects(divided);
-    INFO("cell " << c.index() << ": refusal '" << crossing << "', mesher '" << meshable.message << "'");
+    INFO("cell " << c.index() << ": refusal '" << crossing << "', mesher '" << meshable.message
+                 << "'");
     CHECK(crossing.empty() == meshable.ok);
     if (!crossing.empty()) {
       ++refused;
@@ -79,12 +82,15 @@ TEST_CASE("a division plane is refused exactly when the divided tissue would not
     }
   }
   CHECK(planned >= 12);  // most cells (the others: planes splitCell refuses, a degenerate cut)
-  CHECK(refused >= 1);  // main at 6427d27 divided cells 8 and 22 so (the mesher then refused the tissue)
+  CHECK(refused >=
+        1);  // main at 6427d27 divided cells 8 and 22 so (the mesher then refused the tissue)
 }
 
-TEST_CASE("the dome divided three times by the shortest wall meshes after every round", "[sim][division]") {
+TEST_CASE("the dome divided three times by the shortest wall meshes after every round",
+          "[sim][division]") {
   Tissue t = importedDome();
-  growth::DivisionScheduler divide(growth::SizeThreshold::fixed(1.0), std::make_shared<growth::ShortestWallRule>());
+  growth::DivisionScheduler divide(growth::SizeThreshold::fixed(1.0),
+                                   std::make_shared<growth::ShortestWallRule>());
   GeometryCache geometry;
   int later_planes = 0;
   for (int round = 1; round <= 3; ++round) {
@@ -95,8 +101,10 @@ TEST_CASE("the dome divided three times by the shortest wall meshes after every 
     // Every cell is over the threshold: each divides or is reported with its reason.
     CHECK(r.divided.size() + r.skipped.size() == before);
     CHECK(t.numCells() == before + r.divided.size());
-    for (const auto& s : r.skipped) CHECK_THAT(s.reason, Contains("cell " + std::to_string(s.cell.index())));
-    for (const auto& d : r.divided) later_planes += d.attempts > 5;  // past the first plane's 5 attempts
+    for (const auto& s : r.skipped)
+      CHECK_THAT(s.reason, Contains("cell " + std::to_string(s.cell.index())));
+    for (const auto& d : r.divided)
+      later_planes += d.attempts > 5;  // past the first plane's 5 attempts
     const auto valid = validate(t);
     INFO(valid.message);
     REQUIRE(valid.ok);
@@ -108,7 +116,8 @@ TEST_CASE("the dome divided three times by the shortest wall meshes after every 
   CHECK(later_planes >= 1);  // some cells took the rule's second (or later) plane
 }
 
-TEST_CASE("a cell whose only plane would make walls cross is skipped with the reason", "[sim][division]") {
+TEST_CASE("a cell whose only plane would make walls cross is skipped with the reason",
+          "[sim][division]") {
   // The first cell whose shortest-wall plane is refused, given to a rule with that plane alone.
   const Tissue dome = importedDome();
   const growth::ShortestWallRule rule;
@@ -122,9 +131,11 @@ TEST_CASE("a cell whose only plane would make walls cross is skipped with the re
     }
     growth::DivisionOptions o;
     o.max_attempts = 1;
-    growth::DivisionScheduler s(growth::SizeThreshold::fixed(1.0), std::make_shared<GivenPlane>(p), o);
+    growth::DivisionScheduler s(growth::SizeThreshold::fixed(1.0), std::make_shared<GivenPlane>(p),
+                                o);
     Tissue t = dome;
-    const std::string cell = "cell " + std::to_string(c.index()) + " (lineage id " + std::to_string(t.lineageId(c)) + ")";
+    const std::string cell = "cell " + std::to_string(c.index()) + " (lineage id " +
+                             std::to_string(t.lineageId(c)) + ")";
     std::string message;
     try {
       s.divide(t, c);
