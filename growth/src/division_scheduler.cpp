@@ -12,6 +12,7 @@
 #include <Eigen/Geometry>
 
 #include "tessella/growth/cell_frame.hpp"
+#include "tessella/growth/division_crossings.hpp"
 #include "tessella/growth/division_walls.hpp"
 #include "tessella/growth/parallel_threshold.hpp"
 #include "tessella/tissue/cell_split_plan.hpp"
@@ -77,34 +78,52 @@ DivisionScheduler::DivisionScheduler(SizeThreshold trigger, std::shared_ptr<cons
 DivisionRecord DivisionScheduler::divide(Tissue& t, CellId c, Rng& rng) {
   if (options_.tag_walls) divisionWallTags(t);
   const std::int64_t mother = t.lineageId(c);
-  const Plane base = withCanonicalSide(rule_->plane(t, c, rng));
-  // Perturbations for degenerate cuts: rotate about the cell normal (2D) or
-  // an axis perpendicular to the plane normal (3D), and shift along it.
-  const Vec3 n0 = base.normal.normalized();
-  const Vec3 axis = t.dim() == 2 ? cellFrame(t, c).normal : n0.unitOrthogonal();
+  // 3D: the rule's planes in its order, each refused when the walls it makes
+  // would cross (division_crossings.hpp); 2D: the rule's plane.
+  const bool volume = t.dim() == 3;
+  const std::vector<Plane> candidates = volume ? rule_->planes(t, c, rng) : std::vector<Plane>{rule_->plane(t, c, rng)};
   const double size = t.dim() == 2 ? std::sqrt(std::abs(cellMeasure(t, c)))
                                    : std::cbrt(std::abs(cellMeasure(t, c)));
-  std::string last_error;
-  for (int attempt = 0; attempt < options_.max_attempts; ++attempt) {
-    Plane p = base;
-    if (attempt > 0) {
-      const int k = (attempt + 1) / 2;
-      const double sign = attempt % 2 == 1 ? 1.0 : -1.0;
-      p.normal = Eigen::AngleAxisd(sign * k * options_.retry_angle, axis) * n0;
-      p.point = base.point + sign * k * options_.retry_shift * size * n0;
-    }
-    try {
-      const CellSplit split = t.splitCell(c, p, options_.split);
-      if (options_.tag_walls) divisionWallTags(t)[split.wall] = mother;
-      return DivisionRecord{mother, c, split.daughter, split.wall, attempt + 1};
-    } catch (const GeometryError& e) {
-      last_error = e.what();
+  std::string last_error = "rule '" + rule_->name() + "' gave no plane";
+  int tried = 0;
+  for (const Plane& candidate : candidates) {
+    const Plane base = withCanonicalSide(candidate);
+    // Perturbations for degenerate cuts: rotate about the cell normal (2D) or
+    // an axis perpendicular to the plane normal (3D), and shift along it.
+    const Vec3 n0 = base.normal.normalized();
+    const Vec3 axis = t.dim() == 2 ? cellFrame(t, c).normal : n0.unitOrthogonal();
+    for (int attempt = 0; attempt < options_.max_attempts; ++attempt) {
+      ++tried;
+      Plane p = base;
+      if (attempt > 0) {
+        const int k = (attempt + 1) / 2;
+        const double sign = attempt % 2 == 1 ? 1.0 : -1.0;
+        p.normal = Eigen::AngleAxisd(sign * k * options_.retry_angle, axis) * n0;
+        p.point = base.point + sign * k * options_.retry_shift * size * n0;
+      }
+      try {
+        if (volume) {
+          std::string crossing = divisionCrossing(t, c, planCellSplit3D(t, c, p, options_.split));
+          if (!crossing.empty()) {
+            last_error = std::move(crossing);
+            continue;
+          }
+        }
+        const CellSplit split = t.splitCell(c, p, options_.split);
+        if (options_.tag_walls) divisionWallTags(t)[split.wall] = mother;
+        return DivisionRecord{mother, c, split.daughter, split.wall, tried};
+      } catch (const GeometryError& e) {
+        last_error = e.what();
+      }
     }
   }
+  const std::string planes =
+      candidates.size() > 1 ? " (" + std::to_string(candidates.size()) + " planes of the rule, " +
+                                  std::to_string(options_.max_attempts) + " attempts each)"
+                            : "";
   throw GeometryError("cell " + std::to_string(c.index()) + " (lineage id " +
                           std::to_string(mother) + ") could not be divided by rule '" +
-                          rule_->name() + "' in " + std::to_string(options_.max_attempts) +
-                          " attempts: " + last_error,
+                          rule_->name() + "' in " + std::to_string(tried) + " attempts" + planes + ": " + last_error,
                       ElementId{t.dim(), c.index()});
 }
 

@@ -12,6 +12,13 @@ Plane ShortestWallRule::plane(const Tissue& t, CellId c, Rng&) const {
   return m.plane(minima.front().normal);  // the global minimum
 }
 
+std::vector<Plane> ShortestWallRule::planes(const Tissue& t, CellId c, Rng&) const {
+  const NewWallMeasure m(t, c);
+  std::vector<Plane> out;
+  for (const WallCandidate& w : newWallLocalMinima(m, options_)) out.push_back(m.plane(w.normal));
+  return out;
+}
+
 DivisionRuleEntry shortestWallRuleEntry() {
   return {"shortest_wall", "The plane through the centroid that makes the new wall shortest (Errera).", {},
           [](const ParamValues&) { return std::make_shared<const ShortestWallRule>(); }};

@@ -135,6 +135,31 @@ TEST_CASE("3D shortest wall finds the smallest section of a flat box", "[growth]
   CHECK(alignment(minima.front().normal, Vec3::UnitX()) == Approx(1.0).margin(1e-6));
 }
 
+TEST_CASE("shortest_wall's planes are its local minima, smallest section first", "[growth][rules]") {
+  // 3 x 2 x 1 box: the sections through the centre across x, y, z (areas 2, 3, 6) are its three local minima;
+  // the first plane is plane()'s, bit for bit; a rule with one plane gives plane() alone.
+  Tissue t = testing::boxCell(3.0, 2.0, 1.0);
+  Rng rng(3);
+  const ShortestWallRule rule;
+  const std::vector<Plane> planes = rule.planes(t, CellId(0), rng);
+  REQUIRE(planes.size() == 3);
+  const Plane first = rule.plane(t, CellId(0), rng);
+  CHECK(planes[0].normal == first.normal);
+  CHECK(planes[0].point == first.point);
+  const Vec3 axes[3] = {Vec3::UnitX(), Vec3::UnitY(), Vec3::UnitZ()};
+  const double areas[3] = {2.0, 3.0, 6.0};
+  const NewWallMeasure m(t, CellId(0));
+  for (int i = 0; i < 3; ++i) {
+    CHECK(alignment(planes[i].normal, axes[i]) == Approx(1.0).margin(1e-9));
+    CHECK(m.measure(planes[i].normal) == Approx(areas[i]).epsilon(1e-12));
+    CHECK((planes[i].point - Vec3(1.5, 1.0, 0.5)).norm() < 1e-12);
+  }
+  const MainAxisRule main_axis;
+  const std::vector<Plane> one = main_axis.planes(t, CellId(0), rng);
+  REQUIRE(one.size() == 1);
+  CHECK(one[0].normal == main_axis.plane(t, CellId(0), rng).normal);
+}
+
 TEST_CASE("the new wall meets the mother wall at right angles", "[growth][rules]") {
   // A 4 x 1 strip divided across x gives two 2 x 1 daughters whose birth wall
   // is the line x = 2. Main axis would cut them across x again; the

@@ -8,6 +8,7 @@
 
 #include <random>
 #include <string>
+#include <vector>
 
 #include "tessella/tissue/tissue.hpp"
 #include "tessella/tissue/vec3.hpp"
@@ -24,6 +25,11 @@ class DivisionRule {
   /// the rule has no answer for this cell (e.g. a fixed direction normal to
   /// a surface cell).
   virtual Plane plane(const Tissue& t, CellId c, Rng& rng) const = 0;
+  /// The planes the rule would take for cell c, best first: plane() first,
+  /// then the rule's next choices (shortest_wall: its other local minima, by
+  /// area). On a 3D tissue the scheduler divides by the first whose new walls
+  /// cross no other wall (division_crossings.hpp). By default plane() alone.
+  virtual std::vector<Plane> planes(const Tissue& t, CellId c, Rng& rng) const { return {plane(t, c, rng)}; }
   /// True when plane() may run on several threads at once and draws nothing
   /// from `rng`: the scheduler then finds a step's planes in parallel. A rule
   /// that draws, keeps state or calls back (Python) says false (the default)

@@ -12,6 +12,12 @@
 // retry_angle and shifted by retry_shift x cell size, alternating sides, up
 // to max_attempts in all; then the cell is skipped for this step and listed
 // in the report (it is tried again next step).
+//
+// Crossing walls (3D): a plane whose new wall, cut wall pieces or walls given
+// a vertex would cross another wall (division_crossings.hpp) is refused like
+// a degenerate cut. Each of the rule's planes (DivisionRule::planes(): for
+// shortest_wall every local minimum, smallest first) is tried with its
+// retries before the next.
 
 #include <cstdint>
 #include <functional>
@@ -54,7 +60,7 @@ struct DivisionRecord {
   CellId cell;      ///< the mother's handle, now the daughter on the negative side
   CellId daughter;  ///< the new cell
   WallId wall;      ///< the new wall
-  int attempts = 1; ///< 1 if the rule's own plane worked
+  int attempts = 1; ///< planes tried: 1 if the rule's own plane worked
 };
 
 struct DivisionReport {

@@ -14,6 +14,8 @@ class ShortestWallRule final : public DivisionRule {
  public:
   explicit ShortestWallRule(ShortestWallSearchOptions options = {}) : options_(options) {}
   Plane plane(const Tissue& t, CellId c, Rng& rng) const override;
+  /// Every local minimum of the new wall's measure, smallest first.
+  std::vector<Plane> planes(const Tissue& t, CellId c, Rng& rng) const override;
   bool concurrent() const override { return true; }
   std::string name() const override { return "shortest_wall"; }
 
