@@ -210,6 +210,7 @@ struct MeshArgs {
   std::string snapshot, out, walls_out, config;
   std::optional<double> size, min_angle, max_volume;
   std::optional<std::size_t> max_elements;
+  std::optional<double> cell_time_limit, time_limit;
   std::optional<std::string> volume_method;
 };
 
@@ -225,6 +226,8 @@ int meshCommand(const MeshArgs& a) {
   if (a.max_volume) options.max_volume = *a.max_volume;
   if (a.volume_method) options.volume_method = tessella::mesh::volumeMethods().parse(*a.volume_method);
   if (a.max_elements) options.max_elements = *a.max_elements;
+  if (a.cell_time_limit) options.cell_time_limit = *a.cell_time_limit;
+  if (a.time_limit) options.time_limit = *a.time_limit;
   mesh::validateMeshOptions(options);  // before reading: a bad flag fails fast
   io::checkOutputFile(a.out, "--out");  // every output, before meshing or writing any of them
   if (!a.walls_out.empty()) io::checkOutputFile(a.walls_out, "--walls");
@@ -373,6 +376,10 @@ int main(int argc, char** argv) {
   mesh->add_option("--max-elements", mesh_args.max_elements,
                    "Refuse a mesh estimated above this many elements (mesh.max_elements; default " +
                        std::to_string(tessella::mesh::kDefaultMaxElements) + ", 0 = no limit)");
+  mesh->add_option("--cell-time-limit", mesh_args.cell_time_limit,
+                   "3D: seconds one cell's TetGen tries may take together (mesh.cell_time_limit; 0 = none)");
+  mesh->add_option("--time-limit", mesh_args.time_limit,
+                   "3D: seconds all TetGen runs of the mesh may take together (mesh.time_limit; 0 = none)");
   mesh->add_option("--volume-method", mesh_args.volume_method, "3D: cell_by_cell or whole_tissue (mesh.volume_method)")
       ->check(CLI::IsMember(tessella::mesh::volumeMethods().names()));
 

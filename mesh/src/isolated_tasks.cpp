@@ -4,10 +4,12 @@
 
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <limits>
 #include <thread>
 
 #include <sys/mman.h>
@@ -15,6 +17,7 @@
 #include <unistd.h>
 
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 
 namespace tessella::mesh::detail {
 namespace {
@@ -22,6 +25,7 @@ namespace {
 /// State shared by the caller and its workers (an anonymous shared mapping).
 struct Shared {
   std::atomic<std::size_t> next{0};  // the next position in `tasks` to take
+  std::atomic<bool> stop{false};     // the run's time limit is spent: take no more
 };
 /// Per worker slot: the position it is running (or none) and since when.
 struct Slot {
@@ -30,6 +34,9 @@ struct Slot {
 };
 static_assert(std::atomic<std::size_t>::is_always_lock_free && std::atomic<long long>::is_always_lock_free &&
               std::atomic<double>::is_always_lock_free);
+
+/// Seconds to 3 significant digits (0.0125, 7.5, 60), whole from 100 up (3600).
+std::string secondsText(double x) { return x >= 100 ? std::to_string(std::llround(x)) : formatNumber(x, 3); }
 
 double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 
@@ -44,13 +51,14 @@ T* sharedArray(std::size_t n) {
 
 bool writeAll(std::FILE* f, const void* data, std::size_t n) { return std::fwrite(data, 1, n, f) == n; }
 
-/// Record: position (u64), ok (u8), length (u64), bytes.
+/// Record: position (u64), ok (u8), seconds (f64), length (u64), bytes.
 void workerLoop(Shared* shared, Slot* slot, std::FILE* out, const std::vector<std::size_t>& tasks,
                 const std::function<std::string(std::size_t)>& task) {
   for (;;) {
     const std::size_t pos = shared->next.fetch_add(1);
-    if (pos >= tasks.size()) break;
-    slot->started.store(now());
+    if (pos >= tasks.size() || shared->stop.load()) break;
+    const double t0 = now();
+    slot->started.store(t0);
     slot->position.store(static_cast<long long>(pos));
     std::string bytes;
     std::uint8_t ok = 1;
@@ -61,7 +69,9 @@ void workerLoop(Shared* shared, Slot* slot, std::FILE* out, const std::vector<st
       bytes = e.what();
     }
     const std::uint64_t p64 = pos, len = bytes.size();
-    if (!writeAll(out, &p64, sizeof p64) || !writeAll(out, &ok, 1) || !writeAll(out, &len, sizeof len) ||
+    const double seconds = now() - t0;
+    if (!writeAll(out, &p64, sizeof p64) || !writeAll(out, &ok, 1) || !writeAll(out, &seconds, sizeof seconds) ||
+        !writeAll(out, &len, sizeof len) ||
         !writeAll(out, bytes.data(), bytes.size()) || std::fflush(out) != 0)
       _exit(3);
     slot->position.store(-1);
@@ -75,13 +85,17 @@ void readRecords(std::FILE* f, std::vector<IsolatedResult>& results) {
   for (;;) {
     std::uint64_t pos = 0, len = 0;
     std::uint8_t ok = 0;
-    if (std::fread(&pos, sizeof pos, 1, f) != 1 || std::fread(&ok, 1, 1, f) != 1 || std::fread(&len, sizeof len, 1, f) != 1)
+    double seconds = 0;
+    if (std::fread(&pos, sizeof pos, 1, f) != 1 || std::fread(&ok, 1, 1, f) != 1 ||
+        std::fread(&seconds, sizeof seconds, 1, f) != 1 || std::fread(&len, sizeof len, 1, f) != 1)
       return;
     std::string bytes(len, '\0');
     if (len > 0 && std::fread(bytes.data(), 1, len, f) != len) return;
     if (pos >= results.size()) return;
     IsolatedResult& r = results[pos];
     r.ok = ok != 0;
+    r.seconds = seconds;
+    r.started = true;
     (r.ok ? r.bytes : r.failure) = std::move(bytes);
   }
 }
@@ -90,6 +104,14 @@ void readRecords(std::FILE* f, std::vector<IsolatedResult>& results) {
 
 std::vector<IsolatedResult> runIsolated(const std::vector<std::size_t>& tasks, int workers, double timeout_seconds,
                                         const std::function<std::string(std::size_t)>& task) {
+  return runIsolated(tasks, workers, std::vector<double>(tasks.size(), timeout_seconds),
+                     std::numeric_limits<double>::infinity(), task);
+}
+
+std::vector<IsolatedResult> runIsolated(const std::vector<std::size_t>& tasks, int workers,
+                                        const std::vector<double>& timeouts, double run_seconds,
+                                        const std::function<std::string(std::size_t)>& task) {
+  const double deadline = now() + run_seconds;
   std::vector<IsolatedResult> results(tasks.size());
   if (tasks.empty()) return results;
   workers = std::max(1, std::min<int>(workers, static_cast<int>(tasks.size())));
@@ -98,6 +120,7 @@ std::vector<IsolatedResult> runIsolated(const std::vector<std::size_t>& tasks, i
   std::vector<pid_t> pids(static_cast<std::size_t>(workers), -1);
   std::vector<std::FILE*> files;
   std::vector<std::string> failures(tasks.size());
+  std::vector<double> ran_seconds(tasks.size(), 0.0);  // of the tasks killed
   std::fflush(nullptr);  // a child must not inherit (and flush again) buffered output
 
   const auto start = [&](std::size_t k) {
@@ -128,10 +151,16 @@ std::vector<IsolatedResult> runIsolated(const std::vector<std::size_t>& tasks, i
       const long long pos = slots[k].position.load();
       std::string why;
       if (done == 0) {
-        if (pos < 0 || now() - slots[k].started.load() <= timeout_seconds) continue;
+        if (now() > deadline) shared->stop.store(true);
+        if (pos < 0) continue;
+        const double ran = now() - slots[k].started.load(), limit = timeouts[static_cast<std::size_t>(pos)];
+        if (ran <= limit && !(now() > deadline)) continue;
         kill(pids[k], SIGKILL);
         waitpid(pids[k], &status, 0);
-        why = "did not finish within " + std::to_string(static_cast<int>(timeout_seconds)) + " s";
+        ran_seconds[static_cast<std::size_t>(pos)] = ran;
+        why = ran > limit ? "did not finish within " + secondsText(limit) + " s"
+                          : "stopped after " + secondsText(ran) + " s at the time limit of the run (" +
+                                secondsText(run_seconds) + " s)";
       } else if (WIFSIGNALED(status)) {
         why = std::string("crashed (signal ") + std::to_string(WTERMSIG(status)) + ", " + strsignal(WTERMSIG(status)) + ")";
       } else if (WIFEXITED(status) && WEXITSTATUS(status) != 0) {
@@ -141,7 +170,7 @@ std::vector<IsolatedResult> runIsolated(const std::vector<std::size_t>& tasks, i
       --running;
       if (pos >= 0 && !why.empty()) failures[static_cast<std::size_t>(pos)] = why;
       // A worker that died while tasks are left is replaced.
-      if (!why.empty() && shared->next.load() < tasks.size()) {
+      if (!why.empty() && shared->next.load() < tasks.size() && !shared->stop.load()) {
         start(k);
         ++running;
       }
@@ -151,9 +180,19 @@ std::vector<IsolatedResult> runIsolated(const std::vector<std::size_t>& tasks, i
     readRecords(f, results);
     std::fclose(f);
   }
-  for (std::size_t i = 0; i < tasks.size(); ++i)
-    if (!results[i].ok && results[i].failure.empty())
-      results[i].failure = failures[i].empty() ? "no result (the worker stopped)" : failures[i];
+  for (std::size_t i = 0; i < tasks.size(); ++i) {
+    if (results[i].ok || !results[i].failure.empty()) continue;
+    if (!failures[i].empty()) {
+      results[i].failure = failures[i];
+      results[i].seconds = ran_seconds[i];
+      results[i].started = true;
+    } else if (shared->stop.load()) {
+      results[i].failure = "not started: the time limit of the run (" + secondsText(run_seconds) + " s) was spent";
+    } else {
+      results[i].failure = "no result (the worker stopped)";
+      results[i].started = true;
+    }
+  }
   munmap(shared, sizeof(Shared));
   munmap(slots, sizeof(Slot) * static_cast<std::size_t>(workers));
   return results;

@@ -22,6 +22,8 @@ struct IsolatedResult {
   bool ok = false;
   std::string bytes;    ///< what the task returned, when ok
   std::string failure;  ///< why not: the task's exception, the signal, the time limit
+  double seconds = 0;   ///< how long the task ran (wall clock; 0 if it never started)
+  bool started = false; ///< false: not run, the run's time limit (`run_seconds`) spent first
 };
 
 /// Runs task(i) for i in `tasks` on up to `workers` processes; a task taking
@@ -29,6 +31,14 @@ struct IsolatedResult {
 /// The task runs in a child process: it must not touch threads or state the
 /// caller needs to see (its only output is the string it returns).
 std::vector<IsolatedResult> runIsolated(const std::vector<std::size_t>& tasks, int workers, double timeout_seconds,
+                                        const std::function<std::string(std::size_t)>& task);
+
+/// As above, with a time limit per task (`timeouts[k]` for `tasks[k]`) and one
+/// for the whole call: once `run_seconds` have passed since the call, running
+/// tasks are killed ("stopped at the time limit of ...") and no other starts
+/// (IsolatedResult::started false).
+std::vector<IsolatedResult> runIsolated(const std::vector<std::size_t>& tasks, int workers,
+                                        const std::vector<double>& timeouts, double run_seconds,
                                         const std::function<std::string(std::size_t)>& task);
 
 }  // namespace tessella::mesh::detail

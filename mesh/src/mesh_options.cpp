@@ -39,6 +39,10 @@ void validateMeshOptions(const MeshOptions& o) {
           "min_dihedral_degrees", o.min_dihedral_degrees, "[0, 70)");
   require(std::isfinite(o.tolerance) && o.tolerance > 0.0 && o.tolerance < 1e-3, "tolerance", o.tolerance,
           "(0, 1e-3)");
+  require(std::isfinite(o.cell_time_limit) && o.cell_time_limit >= 0.0, "cell_time_limit", o.cell_time_limit,
+          ">= 0 seconds (0 = no limit)");
+  require(std::isfinite(o.time_limit) && o.time_limit >= 0.0, "time_limit", o.time_limit,
+          ">= 0 seconds (0 = no limit)");
 }
 
 }  // namespace tessella::mesh

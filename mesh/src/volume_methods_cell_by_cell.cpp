@@ -40,6 +40,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -51,6 +52,7 @@
 
 #include "isolated_tasks.hpp"
 #include "tessella/tissue/errors.hpp"
+#include "tessella/tissue/format.hpp"
 #include "tetgen_support.hpp"
 #include "wall_surface_mesh.hpp"
 
@@ -87,8 +89,6 @@ constexpr Attempt kAttempts[] = {{"T1e-7", true}, {"T1e-7", false}, {"", false},
 /// Relative difference allowed between the volume of a cell's tetrahedra and
 /// the volume its wall triangles enclose (docs/meshing.md: 1e-9 per cell).
 constexpr double kVolumeTolerance = 1e-9;
-/// A cell's TetGen run normally takes milliseconds; one this slow is stuck.
-constexpr double kCellTimeoutSeconds = 60.0;
 
 std::string serialize(const CellMesh& cm) {
   const std::uint64_t sizes[2] = {cm.added.size(), cm.tets.size()};
@@ -242,35 +242,65 @@ FeMesh meshCellByCell(const Tissue& t, const MeshOptions& options, const WallTri
 
   // Every cell in a worker process (isolated_tasks.hpp): a TetGen run that
   // aborts or never ends costs that cell's attempt, not the caller. A cell
-  // that fails is tried again with the next coplanarity tolerance.
+  // that fails is tried again with the next coplanarity tolerance, within its
+  // time limit (try k of n may run for cell_time_limit / 2^(k+1), the last as
+  // long as the one before, so that they add up to the limit) and the mesh's
+  // (MeshOptions::cell_time_limit, time_limit).
+  const double inf = std::numeric_limits<double>::infinity();
+  const double cell_limit = options.cell_time_limit > 0 ? options.cell_time_limit : inf;
+  const double run_limit = options.time_limit > 0 ? options.time_limit : inf;
+  const auto t_start = std::chrono::steady_clock::now();
   std::vector<CellMesh> meshed(cells.size());
   std::vector<std::size_t> todo(cells.size());
   for (std::size_t i = 0; i < cells.size(); ++i) todo[i] = i;
   std::vector<std::string> failures(cells.size());
   std::vector<int> local_of(wm.nodes.size(), -1);  // each worker's own copy
-  for (const Attempt& attempt : kAttempts) {
-    if (todo.empty()) break;
+  const auto limitsText = [&] {
+    return std::string(" (time limits: ") + (cell_limit < inf ? formatNumber(cell_limit) + " s" : "none") +
+           " per cell, mesh.cell_time_limit; " + (run_limit < inf ? formatNumber(run_limit) + " s" : "none") +
+           " per mesh, mesh.time_limit)";
+  };
+  bool limited = false;  // a try was cut short, or not made, by a time limit
+  constexpr std::size_t n_attempts = std::size(kAttempts);
+  for (std::size_t a = 0; a < n_attempts && !todo.empty(); ++a) {
+    const Attempt& attempt = kAttempts[a];
     const std::string switches = tetgenSwitches(std::string("pYzAQ") + attempt.tolerance, options);
-    const auto results = runIsolated(todo, omp_get_max_threads(), kCellTimeoutSeconds, [&](std::size_t i) {
+    const std::string tried = "switches " + switches + (attempt.enclose ? " in a cube" : "");
+    const double run_left =
+        run_limit - std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count();
+    const double try_limit = cell_limit / std::ldexp(1.0, static_cast<int>(std::min(a + 1, n_attempts - 1)));
+    std::vector<std::size_t> runnable, failed;
+    for (const std::size_t i : todo) {
+      if (run_left > 0) {
+        runnable.push_back(i);
+        continue;
+      }
+      limited = true;
+      failures[i] += "; not tried: " + tried + " (the time limit of the mesh was spent)";
+      failed.push_back(i);
+    }
+    const auto results = runIsolated(runnable, omp_get_max_threads(), std::vector<double>(runnable.size(), try_limit),
+                                     std::max(run_left, 0.0), [&](std::size_t i) {
       return serialize(meshCell(t, wm, cells[i], cellSeed(t, walls, cells[i]), switches, attempt.enclose, local_of));
     });
-    std::vector<std::size_t> failed;
-    for (std::size_t k = 0; k < todo.size(); ++k) {
+    for (std::size_t k = 0; k < runnable.size(); ++k) {
+      const std::size_t i = runnable[k];
       if (results[k].ok) {
-        meshed[todo[k]] = deserialize(results[k].bytes);
-      } else {
-        failures[todo[k]] += std::string(failures[todo[k]].empty() ? "" : "; ") + "switches " + switches +
-                             (attempt.enclose ? " in a cube" : "") + ": " + results[k].failure;
-        failed.push_back(todo[k]);
+        meshed[i] = deserialize(results[k].bytes);
+        continue;
       }
+      limited = limited || !results[k].started || results[k].seconds >= try_limit;
+      failures[i] += std::string(failures[i].empty() ? "" : "; ") + tried + ": " + results[k].failure;
+      failed.push_back(i);
     }
+    std::sort(failed.begin(), failed.end());
     todo = std::move(failed);
   }
   if (!todo.empty()) {
     const CellId c = cells[todo.front()];
     throw GeometryError("cell-by-cell mesher: TetGen could not mesh cell " + std::to_string(c.index()) + " (" +
-                            std::to_string(todo.size()) + " cells failed) with any tolerance tried: " +
-                            failures[todo.front()],
+                            std::to_string(todo.size()) + " cells failed) with any tolerance tried" +
+                            (limited ? limitsText() : std::string()) + ": " + failures[todo.front()],
                         ElementId{3, c.index()});
   }
 

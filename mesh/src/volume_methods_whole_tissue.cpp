@@ -201,15 +201,17 @@ FeMesh meshWholeTissue(const Tissue& t, const MeshOptions& options, const WallTr
 
   // TetGen runs in a worker process (isolated_tasks.hpp): if it fails an
   // assertion (it calls abort()) or crashes, that is reported, and the
-  // caller's process lives on. No time limit: large tissues take long.
+  // caller's process lives on. Its time limit is the mesh's (time_limit; large tissues take long).
   const std::string switches = tetgenSwitches("pzAQ", options);
-  const auto result = runIsolated({0}, 1, std::numeric_limits<double>::infinity(), [&](std::size_t) {
+  const double limit = options.time_limit > 0 ? options.time_limit : std::numeric_limits<double>::infinity();
+  const auto result = runIsolated({0}, 1, limit, [&](std::size_t) {
     tetgenio out;
     runTetgen(switches, in, out, "meshing the walls");
     return toBytes(meshFromTetgen(t, out, point_vertex, walls));
   });
   if (!result[0].ok) {
-    const std::string& why = result[0].failure;  // TetGen's own error, or how the worker ended
+    std::string why = result[0].failure;  // TetGen's own error, or how the worker ended
+    if (why.rfind("did not finish", 0) == 0) why += " (the mesh's time limit, mesh.time_limit)";
     throw GeometryError("whole-tissue mesher: " +
                         (why.rfind("TetGen", 0) == 0 ? why : "TetGen (switches \"" + switches + "\") " + why));
   }

@@ -40,18 +40,20 @@ void bindMesh(py::module_& m) {
   py::class_<MeshOptions>(m, "MeshOptions", "Size and quality targets of a tissue mesh (docs/meshing.md).")
       .def(py::init([](double min_angle_degrees, double max_edge_length, double max_volume, double radius_edge_ratio,
                        double min_dihedral_degrees, double tolerance, VolumeMethod volume_method,
-                       std::size_t max_elements) {
+                       std::size_t max_elements, double cell_time_limit, double time_limit) {
              // Designated: a field added to MeshOptions cannot shift the others.
              MeshOptions o{.min_angle_degrees = min_angle_degrees, .max_edge_length = max_edge_length,
                            .max_volume = max_volume, .radius_edge_ratio = radius_edge_ratio,
                            .min_dihedral_degrees = min_dihedral_degrees, .tolerance = tolerance,
-                           .volume_method = volume_method, .max_elements = max_elements};
+                           .volume_method = volume_method, .max_elements = max_elements,
+                           .cell_time_limit = cell_time_limit, .time_limit = time_limit};
              validateMeshOptions(o);
              return o;
            }),
            py::arg("min_angle_degrees") = 20.0, py::arg("max_edge_length") = 0.0, py::arg("max_volume") = 0.0,
            py::arg("radius_edge_ratio") = 1.5, py::arg("min_dihedral_degrees") = 0.0, py::arg("tolerance") = 1e-10,
-           py::arg("volume_method") = mesh::VolumeMethod::CellByCell, py::arg("max_elements") = kDefaultMaxElements)
+           py::arg("volume_method") = mesh::VolumeMethod::CellByCell, py::arg("max_elements") = kDefaultMaxElements,
+           py::arg("cell_time_limit") = kDefaultCellTimeLimit, py::arg("time_limit") = kDefaultTimeLimit)
       .def_readwrite("min_angle_degrees", &MeshOptions::min_angle_degrees, "2D/surface: lower bound on triangle angles.")
       .def_readwrite("max_edge_length", &MeshOptions::max_edge_length, "2D/surface: edge length bound (0 = none).")
       .def_readwrite("max_volume", &MeshOptions::max_volume, "3D: tetrahedron volume bound (0 = none).")
@@ -60,7 +62,11 @@ void bindMesh(py::module_& m) {
       .def_readwrite("tolerance", &MeshOptions::tolerance)
       .def_readwrite("volume_method", &MeshOptions::volume_method, "3D: VolumeMethod.CELL_BY_CELL or WHOLE_TISSUE.")
       .def_readwrite("max_elements", &MeshOptions::max_elements,
-                     "Refuse (InputError) a mesh estimated above this many elements, before meshing (0 = no limit).");
+                     "Refuse (InputError) a mesh estimated above this many elements, before meshing (0 = no limit).")
+      .def_readwrite("cell_time_limit", &MeshOptions::cell_time_limit,
+                     "3D, cell by cell: seconds one cell's TetGen tries may take together (0 = no limit).")
+      .def_readwrite("time_limit", &MeshOptions::time_limit,
+                     "3D: seconds all TetGen runs of one mesh may take together (0 = no limit).");
 
   py::class_<FeMesh>(m, "FeMesh", R"doc(
 A finite-element mesh of a tissue: triangles (dim 2, flat or on a surface) or

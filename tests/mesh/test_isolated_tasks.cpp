@@ -45,3 +45,36 @@ TEST_CASE("isolated tasks: a subset of task ids, and none", "[mesh][isolated]") 
   CHECK(results[1].bytes == "9");
   CHECK(runIsolated({}, 2, 1.0, [](std::size_t) { return std::string(); }).empty());
 }
+
+TEST_CASE("isolated tasks: a time limit per task and one for the whole run", "[mesh][isolated]") {
+  // Per task: task 1 (sleeping) is cut at its own limit, task 0 (quick) has a long one.
+  const auto sleeper = [](std::size_t i) -> std::string {
+    if (i != 0) std::this_thread::sleep_for(std::chrono::seconds(30));
+    return "done " + std::to_string(i);
+  };
+  const auto each = runIsolated({0, 1}, 2, std::vector<double>{10.0, 0.2}, 1e9, sleeper);
+  REQUIRE(each.size() == 2);
+  CHECK(each[0].ok);
+  CHECK(each[0].bytes == "done 0");
+  CHECK(each[0].started);
+  CHECK(each[0].seconds < 10.0);
+  CHECK_FALSE(each[1].ok);
+  CHECK(each[1].started);
+  CHECK_THAT(each[1].failure, Catch::Contains("did not finish within 0.2 s"));
+  CHECK(each[1].seconds >= 0.2);
+  // The run: one worker, three sleeping tasks with long limits of their own; at the run's limit the first is
+  // stopped and the others never start.
+  const auto run = runIsolated({1, 2, 3}, 1, std::vector<double>(3, 100.0), 0.3, sleeper);
+  REQUIRE(run.size() == 3);
+  CHECK_FALSE(run[0].ok);
+  CHECK(run[0].started);
+  CHECK_THAT(run[0].failure, Catch::Contains("at the time limit of the run (0.3 s)"));
+  CHECK(run[0].seconds > 0.1);  // from when it started, a little after the call
+  for (std::size_t k : {1u, 2u}) {
+    INFO("task " << k);
+    CHECK_FALSE(run[k].ok);
+    CHECK_FALSE(run[k].started);
+    CHECK(run[k].seconds == 0.0);
+    CHECK_THAT(run[k].failure, Catch::Contains("not started: the time limit of the run (0.3 s) was spent"));
+  }
+}

@@ -225,3 +225,46 @@ TEST_CASE("bad 3D geometry is reported before TetGen runs", "[mesh][volume][erro
     CHECK_THROWS_AS(meshTissue(t), GeometryError);
   }
 }
+
+TEST_CASE("cell by cell: a cell that cannot be meshed in time fails at the time limits, naming it and every try",
+          "[mesh][volume][errors]") {
+  // Two unit cubes with a volume bound of 2e-7: millions of tetrahedra each, far more than TetGen makes in the
+  // limits below, so every try of every cell is stopped (docs/meshing.md, "Time limits").
+  const Tissue t = boxGrid(2, 1, 1, 1.0, 1.0, 1.0);
+  MeshOptions o;
+  o.max_volume = 2e-7;
+  o.max_edge_length = 0.25;  // coarse walls: the time goes to TetGen
+  SECTION("the cell's limit: try k may run for 1/2^(k+1) of it, the last as long as the one before") {
+    o.cell_time_limit = 0.2;
+    try {
+      meshTissue(t, o);
+      FAIL("no error");
+    } catch (const GeometryError& e) {
+      INFO(e.what());
+      CHECK(e.element().index == 0);
+      CHECK_THAT(e.what(), Catch::Contains("could not mesh cell 0 (2 cells failed)"));
+      CHECK_THAT(e.what(), Catch::Contains("0.2 s per cell, mesh.cell_time_limit"));
+      // The five tries, in turn: 0.1, 0.05, 0.025, 0.0125 and 0.0125 s.
+      CHECK_THAT(e.what(), Catch::Contains("T1e-7q1.5a2e-07 in a cube: did not finish within 0.1 s; "
+                                           "switches pYzAQT1e-7q1.5a2e-07: did not finish within 0.05 s"));
+      CHECK_THAT(e.what(), Catch::Contains("pYzAQq1.5a2e-07: did not finish within 0.025 s"));
+      CHECK_THAT(e.what(), Catch::Contains("pYzAQT1e-9q1.5a2e-07: did not finish within 0.0125 s"));
+      CHECK_THAT(e.what(), Catch::Contains("pYzAQT1e-6q1.5a2e-07: did not finish within 0.0125 s"));
+    }
+  }
+  SECTION("the mesh's limit: the runs going are stopped, no other try starts") {
+    o.cell_time_limit = 0;  // none
+    o.time_limit = 0.3;
+    try {
+      meshTissue(t, o);
+      FAIL("no error");
+    } catch (const GeometryError& e) {
+      INFO(e.what());
+      CHECK_THAT(e.what(), Catch::Contains("could not mesh cell 0 (2 cells failed)"));
+      CHECK_THAT(e.what(), Catch::Contains("none per cell, mesh.cell_time_limit; 0.3 s per mesh, mesh.time_limit"));
+      CHECK_THAT(e.what(), Catch::Contains("at the time limit of the run (0.3 s)"));
+      CHECK_THAT(e.what(), Catch::Contains("not tried: switches pYzAQT1e-6q1.5a2e-07 (the time limit of the mesh "
+                                           "was spent)"));
+    }
+  }
+}

@@ -64,6 +64,19 @@ void declareMeshSection(Schema& s) {
         "area / (sqrt(3)/4 max_edge_length^2) triangles, volume / max_volume tetrahedra). 0 = no limit.")
       .byDefault(static_cast<std::int64_t>(mesh::kDefaultMaxElements))
       .atLeast(0);
+  s.key("mesh.cell_time_limit", ValueType::Float,
+        "3D tissues meshed cell by cell: wall-clock seconds one cell's TetGen runs may take together. A cell "
+        "whose run fails (a TetGen assertion, never-ending flips) is tried again with other coplanarity "
+        "tolerances, up to five tries; try k may run for 1/2^k of this limit, the last as long as the one "
+        "before. A cell still failing is an error naming it and every try. 0 = no limit.")
+      .byDefault(mesh::kDefaultCellTimeLimit)
+      .atLeast(0);
+  s.key("mesh.time_limit", ValueType::Float,
+        "3D tissues: wall-clock seconds all TetGen runs of one mesh may take together (every cell and its tries, "
+        "or the whole-tissue run); once spent, the runs still going are stopped and the mesh is an error naming "
+        "a cell and what was tried. 0 = no limit.")
+      .byDefault(mesh::kDefaultTimeLimit)
+      .atLeast(0);
   s.key("mesh.output", ValueType::Bool,
         "Write the mesh as a ParaView series DIR/mesh.pvd listing DIR/mesh_000000.vtu, ... beside the "
         "tissue series (cell and wall ids as data), and its wall facets as DIR/mesh_walls.pvd; with a `mechanics` "
@@ -87,6 +100,8 @@ mesh::MeshOptions meshOptionsFromConfig(const Config& c) {
   o.tolerance = c.getFloat("mesh.tolerance");
   o.volume_method = parseFromConfig(c, mesh::volumeMethods(), "mesh.volume_method");
   o.max_elements = static_cast<std::size_t>(c.getInt("mesh.max_elements"));
+  o.cell_time_limit = c.getFloat("mesh.cell_time_limit");
+  o.time_limit = c.getFloat("mesh.time_limit");
   mesh::validateMeshOptions(o);  // the schema's ranges are the same; this keeps them in step
   return o;
 }

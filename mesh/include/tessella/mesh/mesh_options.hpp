@@ -14,6 +14,14 @@ namespace tessella::mesh {
 /// and gigabytes (a typo such as a size of 1e-6 must not exhaust memory).
 inline constexpr std::size_t kDefaultMaxElements = 20'000'000;
 
+/// Default MeshOptions::cell_time_limit (seconds): a cell's TetGen run takes
+/// milliseconds; one that runs for a minute is stuck (never-ending flips), and
+/// the first try gets half of this.
+inline constexpr double kDefaultCellTimeLimit = 120.0;
+/// Default MeshOptions::time_limit (seconds): the TetGen runs of one mesh
+/// together (10 000 Voronoi cells take under a minute on two cores).
+inline constexpr double kDefaultTimeLimit = 3600.0;
+
 /// How a 3D tissue is filled with tetrahedra (docs/meshing.md).
 enum class VolumeMethod {
   /// Walls meshed first, once, to the size and angle bounds; then one TetGen
@@ -64,6 +72,14 @@ struct MeshOptions {
   /// Refuse (InputError) before meshing when the size bounds ask for more
   /// elements than this (estimatedElementCount, mesh_tissue.hpp). 0 = no limit.
   std::size_t max_elements = kDefaultMaxElements;
+  /// 3D tissues meshed cell by cell: wall-clock seconds one cell's TetGen runs
+  /// may take together. A cell whose run fails is tried again with other
+  /// tolerances (docs/meshing.md); try k of the five may run for 1/2^k of
+  /// this, the last as long as the one before. 0 = no limit.
+  double cell_time_limit = kDefaultCellTimeLimit;
+  /// 3D tissues: wall-clock seconds all TetGen runs of one mesh may take
+  /// together (every cell and its tries; the one whole-tissue run). 0 = no limit.
+  double time_limit = kDefaultTimeLimit;
 };
 
 /// Throws InputError naming the field and value when an option is out of range.
