@@ -30,12 +30,12 @@ py::array_t<double> asArray(const std::vector<double>& v) { return py::array_t<d
 }  // namespace
 
 void bindMesh(py::module_& m) {
-  py::enum_<VolumeMethod> volume_method(m, "VolumeMethod",
-                                        "How a 3D tissue is filled with tetrahedra (docs/meshing.md).");
+  py::enum_<VolumeMethod> volume_method_enum(m, "VolumeMethod",
+                                             "How a 3D tissue is filled with tetrahedra (docs/meshing.md).");
   for (const auto& e : mesh::volumeMethods().entries()) {
     std::string upper = e.name;  // cell_by_cell -> CELL_BY_CELL
     for (char& ch : upper) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
-    volume_method.value(upper.c_str(), e.value);
+    volume_method_enum.value(upper.c_str(), e.value);
   }
   py::class_<MeshOptions>(m, "MeshOptions", "Size and quality targets of a tissue mesh (docs/meshing.md).")
       .def(py::init([](double min_angle_degrees, double max_edge_length, double max_volume, double radius_edge_ratio,
