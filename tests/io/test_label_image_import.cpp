@@ -53,15 +53,6 @@ const Tissue& voronoi200() {
   return t;
 }
 
-double shortestWall(const Tissue& t) {
-  double shortest = 1e300;
-  for (EdgeId e : t.edges()) {
-    const auto [a, b] = t.topology().edgeVertices(e);
-    shortest = std::min(shortest, (t.position(a) - t.position(b)).norm());
-  }
-  return shortest;
-}
-
 std::vector<Vec3> loopOf(const Tissue& t, CellId c) {
   std::vector<Vec3> loop;
   for (VertexId v : t.topology().faceVertices(t.cellFace(c))) loop.push_back(t.position(v));
