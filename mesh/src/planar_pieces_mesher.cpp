@@ -176,9 +176,9 @@ bool insertParam(std::vector<double>& params, double t) {
 }  // namespace
 
 std::vector<int> PlanarPiecesMesh::sideNodes(int a, int b) const {
-  const std::vector<int>& nodes = side_nodes.at(sideKey(a, b));
-  if (a < b) return nodes;
-  return {nodes.rbegin(), nodes.rend()};
+  const std::vector<int>& along = side_nodes.at(sideKey(a, b));
+  if (a < b) return along;
+  return {along.rbegin(), along.rend()};
 }
 
 PlanarPiecesMesh meshPlanarPieces(const std::vector<Vec3>& points, const std::vector<PlanarPiece>& pieces,

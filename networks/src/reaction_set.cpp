@@ -55,8 +55,14 @@ ReactionSet::ReactionSet(const NetworkModel& model)
       const auto used = parser->GetUsedVar();
       const std::size_t S = species_.size();
       for (std::size_t v = 0; v < S; ++v) {
-        if (used.count("sum_" + species_[v])) uses_sum_[v] = reads_neighbourhood_[(s * 2) * S + v] = true;
-        if (used.count("mean_" + species_[v])) uses_mean_[v] = reads_neighbourhood_[(s * 2 + 1) * S + v] = true;
+        if (used.count("sum_" + species_[v])) {
+          uses_sum_[v] = true;
+          reads_neighbourhood_[(s * 2) * S + v] = true;
+        }
+        if (used.count("mean_" + species_[v])) {
+          uses_mean_[v] = true;
+          reads_neighbourhood_[(s * 2 + 1) * S + v] = true;
+        }
         reads_[s * S + v] = used.count(species_[v]) ? 1 : 0;
       }
     } catch (const mu::Parser::exception_type& e) {
