@@ -634,6 +634,22 @@ YAML
       || fail "zero voxel size: $(cat "$tmp/stderr")"
     [ ! -e "$tmp/f.vtu" ] && [ ! -e "$tmp/z.vtu" ] || fail "an output file was left"
     ;;
+  same_on_any_thread_count)
+    # A run's files do not depend on the number of OpenMP threads (README): growth and division,
+    # a cell network, turgor mechanics, a 3D tissue, a reaction-diffusion field; 1 thread against 2.
+    for spec in voronoi_growth:4 auxin_network_2d:10 turgor_tissue_2d:0.5 box_growth_3d:1 activator_inhibitor_2d:1; do
+      name=${spec%%:*}
+      for threads in 1 2; do
+        OMP_NUM_THREADS=$threads "$tessella" run "$src/configs/$name.yaml" --out "$tmp/$name-$threads" -q \
+          --set time.end=${spec#*:} 2>"$tmp/stderr" || fail "$name on $threads threads: $(cat "$tmp/stderr")"
+      done
+      [ "$(ls "$tmp/$name-1" | wc -l)" -gt 3 ] || fail "$name wrote too little: $(ls "$tmp/$name-1")"
+      # run.yaml names its own output directory; everything else must match byte for byte.
+      diff -r -x run.yaml "$tmp/$name-1" "$tmp/$name-2" >"$tmp/diff" &&
+        diff <(grep -v "directory:" "$tmp/$name-1/run.yaml") <(grep -v "directory:" "$tmp/$name-2/run.yaml") >>"$tmp/diff" ||
+        fail "$name differs on 1 and 2 threads: $(head -5 "$tmp/diff")"
+    done
+    ;;
   render_run)
     "$tessella" run "$src/configs/hex_grid_2d.yaml" --out "$tmp/hex" -q || fail "run failed"
     "$tessella" render "$tmp/hex" --property size --size 320x240 --no-movie >"$tmp/stdout" 2>"$tmp/stderr" \
@@ -660,6 +676,11 @@ YAML
       --vary growth.uniform.rate=0.05,0.1 --replicates 2 --set time.end=1 --set tissue.voronoi.count=12 \
       --out "$tmp/sweep" >"$tmp/stdout" 2>"$tmp/stderr" || fail "sweep failed: $(cat "$tmp/stderr")"
     grep -q "wrote        8 run configs" "$tmp/stdout" || fail "expected 8 runs: $(cat "$tmp/stdout")"
+    # Each run gets one OpenMP thread, or what --set-threads gives it (the dry run prints the commands).
+    (cd "$tmp/sweep" && snakemake -n -p -j 2 >"$tmp/dry1.log" 2>&1 &&
+      snakemake -n -p -c 4 --set-threads run=3 >"$tmp/dry3.log" 2>&1) || fail "dry run failed: $(tail "$tmp/dry1.log")"
+    [ "$(grep -c 'OMP_NUM_THREADS=1 ' "$tmp/dry1.log")" -eq 8 ] && grep -q 'OMP_NUM_THREADS=3 ' "$tmp/dry3.log" \
+      && ! grep -q 'OMP_NUM_THREADS=1 ' "$tmp/dry3.log" || fail "threads per run: $(grep -m2 OMP "$tmp/dry1.log")"
     (cd "$tmp/sweep" && snakemake -j 2 >"$tmp/sm.log" 2>&1) || fail "snakemake failed: $(tail -20 "$tmp/sm.log")"
     csv="$tmp/sweep/sweep.csv"
     [ "$(head -1 "$csv" | cut -d, -f1-7)" = "run,replicate,rng_seed,division.rule,growth.uniform.rate,time,cells" ] \

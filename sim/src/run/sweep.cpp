@@ -63,8 +63,12 @@ rule run:
         "runs/{run}/finished",
     log:
         "logs/{run}.log",
+    # One core per run unless `--set-threads run=N`: Snakemake runs -j runs at once, and
+    # OpenMP would otherwise start a thread per core in each of them.
+    threads: 1
     shell:
-        '"{TESSELLA}" run {input} --out runs/{wildcards.run} --overwrite --quiet > {log} 2>&1 && touch {output}'
+        'OMP_NUM_THREADS={threads} "{TESSELLA}" run {input} --out runs/{wildcards.run} --overwrite --quiet'
+        ' > {log} 2>&1 && touch {output}'
 
 
 rule collect:
