@@ -23,6 +23,7 @@
 #include "tessella/mesh/mesh_tissue.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <queue>
 #include <string>
@@ -99,21 +100,30 @@ using Mesher = CGAL::Delaunay_mesher_2<Cdt, Criteria>;
 /// vertex to its second (the tissue vertices and the Steiner points between).
 using WallChains = std::vector<std::vector<Cdt::Vertex_handle>>;
 
-/// The vertices along the constrained edges from `a` to `b`: from `a`, each
+/// The vertices along the constrained edges from `a` to `b`: from `a`, a
 /// constrained edge is followed through Steiner points (which lie on one wall
 /// and have two constrained edges) to the next tissue vertex; the walk that
-/// ends at `b` is the wall.
+/// ends at `b` is the wall. The edges at `a` are tried best aligned with b - a
+/// first, so the first walk is usually the wall.
 std::vector<Cdt::Vertex_handle> wallChain(const Cdt& cdt, Cdt::Vertex_handle a, Cdt::Vertex_handle b, EdgeId e) {
   const auto other = [](const Cdt::Edge& edge, Cdt::Vertex_handle v) {
     const auto p = edge.first->vertex(Cdt::cw(edge.second));
     return p != v ? p : edge.first->vertex(Cdt::ccw(edge.second));
   };
-  std::vector<Cdt::Vertex_handle> chain;
-  auto start = cdt.incident_edges(a);
-  const auto done = start;
+  const K::Vector_2 ab = b->point() - a->point();
+  std::vector<std::pair<double, Cdt::Vertex_handle>> starts;  // (-cosine to ab, next vertex)
+  auto around_a = cdt.incident_edges(a);
+  const auto stop_a = around_a;
   do {
-    if (!start->first->is_constrained(start->second)) continue;
-    chain.assign({a, other(*start, a)});
+    if (!around_a->first->is_constrained(around_a->second)) continue;
+    const auto next = other(*around_a, a);
+    const K::Vector_2 d = next->point() - a->point();
+    starts.emplace_back(-(d * ab) / std::sqrt(d.squared_length()), next);
+  } while (++around_a != stop_a);
+  std::sort(starts.begin(), starts.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<Cdt::Vertex_handle> chain;
+  for (const auto& start : starts) {
+    chain.assign({a, start.second});
     while (chain.back()->info().vertex < 0 && chain.size() <= cdt.number_of_vertices()) {
       const auto v = chain.back(), previous = chain[chain.size() - 2];
       Cdt::Vertex_handle next;
@@ -132,7 +142,7 @@ std::vector<Cdt::Vertex_handle> wallChain(const Cdt& cdt, Cdt::Vertex_handle a, 
       chain.push_back(next);
     }
     if (chain.back() == b) return chain;
-  } while (++start != done);
+  }
   throw GeometryError("planar mesher: wall " + std::to_string(e.index()) + " is missing from the triangulation",
                       ElementId{1, e.index()});
 }
