@@ -23,6 +23,10 @@
 //   mesh_bench --quick                           the smallest sizes only (1000 2D, 100 3D)
 //   mesh_bench --cell-by-cell N [--no-alone]     the 3D cell-by-cell row alone, at N cells
 //                                                (OMP_NUM_THREADS sets the mesher's worker processes)
+//   mesh_bench --planar N [runs]                 the 2D row alone, at N cells, runs turns (default 5)
+// 2D rows: Tessella and CGAL alone in turns in this process, 5 turns below
+// 10^5 cells (1 from 10^5); the row gives the median of each, the median of
+// the per-turn ratios and the medians of their CPU times.
 // 3D rows also print the CPU time of the mesher (this process and its worker
 // processes), which a busy shared machine disturbs less than wall-clock.
 
@@ -195,17 +199,67 @@ void row(const char* kind, std::size_t cells, std::size_t elements, double t_tes
 }
 
 
+/// The median of `v` (the mean of the middle two for an even count).
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  const std::size_t m = v.size() / 2;
+  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+
 /// CPU seconds of this process and its waited-for children (the mesher's
-/// worker processes) so far.
-double cpuSeconds() {
+/// worker processes) so far; without `children`, this process's only.
+double cpuSeconds(bool children = true) {
   double total = 0;
   for (const int who : {RUSAGE_SELF, RUSAGE_CHILDREN}) {
+    if (who == RUSAGE_CHILDREN && !children) continue;
     rusage u{};
     getrusage(who, &u);
     total += static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
              1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
   }
   return total;
+}
+
+/// The 2D row: a Voronoi rectangle of n cells meshed by Tessella and by CGAL
+/// alone, `runs` times each in turns (Tessella first, then CGAL). The row
+/// gives the median wall-clock of each and the median of the per-turn
+/// ratios; CPU times (this process) are printed as medians too. On a shared
+/// machine one run of each can differ by 1.5x from load alone, the median of
+/// several turns much less.
+void row2d(std::size_t n, int runs) {
+  const double side = std::sqrt(static_cast<double>(n));
+  const Rectangle rect{Vec3::Zero(), Vec3(side, side, 0)};
+  const Tissue t = voronoiTissue(randomSeeds(rect, n, 1), rect);
+  MeshOptions o;
+  o.min_angle_degrees = 20;
+  o.max_edge_length = 0.25;  // about 80 triangles per cell
+  std::vector<double> mine, theirs, ratio, mine_cpu, theirs_cpu;
+  FeMesh mesh;
+  std::size_t alone = 0;
+  for (int r = 0; r < runs; ++r) {
+    const double c0 = cpuSeconds(false);
+    auto a = Clock::now();
+    mesh = meshTissue(t, o);
+    auto b = Clock::now();
+    const double c1 = cpuSeconds(false);
+    alone = cgalAlone(t, o);
+    auto c = Clock::now();
+    const double c2 = cpuSeconds(false);
+    mine.push_back(seconds(a, b));
+    theirs.push_back(seconds(b, c));
+    ratio.push_back(seconds(a, b) / seconds(b, c));
+    mine_cpu.push_back(c1 - c0);
+    theirs_cpu.push_back(c2 - c1);
+  }
+  // issue #19: within 1.3x of CGAL alone
+  row("2D", t.numCells(), static_cast<std::size_t>(mesh.numElements()), median(mine), median(theirs), alone, "mesh.2d",
+      1.3);
+  std::printf("         %d runs in turns: median ratio x%.3f (min %.3f, max %.3f); cpu tessella %.3f s, alone %.3f s"
+              " (medians, this process), cpu ratio x%.3f\n",
+              runs, median(ratio), *std::min_element(ratio.begin(), ratio.end()),
+              *std::max_element(ratio.begin(), ratio.end()), median(mine_cpu), median(theirs_cpu),
+              median(mine_cpu) / median(theirs_cpu));
+  std::fflush(stdout);
 }
 
 /// The 3D rows: a Voronoi box of n cells meshed by `method`, then (with
@@ -246,7 +300,8 @@ void row3d(std::size_t n, VolumeMethod method, bool alone) {
 
 int main(int argc, char** argv) {
   const char* usage =
-      "mesh_bench [max_cells_2d [max_cells_3d]] | --quick | --cell-by-cell N [--no-alone]   (defaults 100000 10000)";
+      "mesh_bench [max_cells_2d [max_cells_3d]] | --quick | --cell-by-cell N [--no-alone] | --planar N [runs]   "
+      "(defaults 100000 10000)";
   if (bench::helpRequested(argc, argv, usage)) return 0;
   if (argc > 1 && std::strcmp(argv[1], "--cell-by-cell") == 0) {
     // The 3D cell-by-cell row alone, at N cells (with or without TetGen alone).
@@ -262,36 +317,26 @@ int main(int argc, char** argv) {
     row3d(n, VolumeMethod::CellByCell, !no_alone);
     return 0;
   }
+  if (argc > 1 && std::strcmp(argv[1], "--planar") == 0) {
+    // The 2D row alone, at N cells, `runs` turns of Tessella and CGAL alone.
+    const std::size_t n = bench::countArgument(argc, argv, 2, "N", 1000, 1, 10000000, usage);
+    const std::size_t runs = bench::countArgument(argc, argv, 3, "runs", 5, 1, 1000, usage);
+    if (argc > 4) {
+      std::fprintf(stderr, "%s: unexpected argument '%s'; usage: %s\n", argv[0], argv[4], usage);
+      return 2;
+    }
+    std::printf("mesh_bench: 2D Voronoi rectangle, unit mean cell size; wall-clock, median of %zu runs in turns\n",
+                runs);
+    row2d(n, static_cast<int>(runs));
+    return 0;
+  }
   const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
   const std::size_t max2d = quick ? 1000 : bench::countArgument(argc, argv, 1, "max_cells_2d", 100000, 0, 10000000, usage);
   const std::size_t max3d = quick ? 100 : bench::countArgument(argc, argv, 2, "max_cells_3d", 10000, 0, 1000000, usage);
-  std::printf("mesh_bench: Voronoi tissues with unit mean cell size; times are wall-clock, 2D rows below 10^5 cells best of 3 in turns, others single runs\n");
+  std::printf("mesh_bench: Voronoi tissues with unit mean cell size; times are wall-clock, 2D rows below 10^5 cells "
+              "median of 5 in turns, others single runs\n");
 
-  for (std::size_t n = 1000; n <= max2d; n *= 10) {
-    const double side = std::sqrt(static_cast<double>(n));
-    const Rectangle rect{Vec3::Zero(), Vec3(side, side, 0)};
-    const Tissue t = voronoiTissue(randomSeeds(rect, n, 1), rect);
-    MeshOptions o;
-    o.min_angle_degrees = 20;
-    o.max_edge_length = 0.25;  // about 30 triangles per cell
-    // In turns, best of 3 below 10^5 cells: on a shared machine one run of
-    // each can differ by 1.5x from load alone.
-    const int runs = n < 100000 ? 3 : 1;
-    double mine = 1e300, theirs = 1e300;
-    FeMesh mesh;
-    std::size_t alone = 0;
-    for (int r = 0; r < runs; ++r) {
-      auto a = Clock::now();
-      mesh = meshTissue(t, o);
-      auto b = Clock::now();
-      alone = cgalAlone(t, o);
-      auto c = Clock::now();
-      mine = std::min(mine, seconds(a, b));
-      theirs = std::min(theirs, seconds(b, c));
-    }
-    // issue #19: within 1.3x of CGAL alone
-    row("2D", t.numCells(), static_cast<std::size_t>(mesh.numElements()), mine, theirs, alone, "mesh.2d", 1.3);
-  }
+  for (std::size_t n = 1000; n <= max2d; n *= 10) row2d(n, n < 100000 ? 5 : 1);
   for (std::size_t n = 1000; n <= std::min<std::size_t>(max2d, 10000); n *= 10) {
     const double radius = std::sqrt(static_cast<double>(n) / M_PI);
     const Disk disk{Vec3::Zero(), radius, 512};

@@ -10,6 +10,8 @@
 #include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/generators/grids.hpp"
+#include "tessella/generators/voronoi.hpp"
+#include "tessella/tissue/geometry.hpp"
 
 using namespace tessella;
 using namespace tessella::mesh;
@@ -67,6 +69,47 @@ TEST_CASE("hexagonal grid meshes cell by cell", "[mesh][planar]") {
   requireConforming(mesh);
   requireWallsMatch(t, mesh);
   requireQuality(mesh, o);
+}
+
+TEST_CASE("each wall's facets run in order from its first vertex to its second", "[mesh][planar]") {
+  // Refinement splits walls; the facets of a wall must be its pieces in
+  // order: contiguous in wall_facets, the first starting at the node of the
+  // wall's first vertex, each starting where the one before ended, the last
+  // ending at the node of its second vertex, the points between added by the
+  // mesher (node_vertex -1) and on the wall's segment.
+  const Rectangle rect{Vec3::Zero(), Vec3(6, 5, 0)};
+  const Tissue t = voronoiTissue(randomSeeds(rect, 30, 7), rect);
+  MeshOptions o;
+  o.max_edge_length = 0.2;
+  const FeMesh mesh = meshTissue(t, o);
+  std::vector<int> node_of(t.slots(0), -1);
+  for (int n = 0; n < mesh.numNodes(); ++n)
+    if (mesh.node_vertex(n) >= 0) node_of[static_cast<std::size_t>(mesh.node_vertex(n))] = n;
+  std::vector<bool> done(t.slots(1), false);
+  int split_walls = 0;
+  for (int f = 0; f < mesh.numWallFacets();) {
+    const EdgeId e(static_cast<Index>(mesh.facet_wall(f)));
+    INFO("wall " << e.index() << ", facet " << f);
+    REQUIRE_FALSE(done[e.index()]);  // its facets are contiguous
+    done[e.index()] = true;
+    const Vec3 a = t.position(t.topology().edgeFrom(e)), b = t.position(t.topology().edgeTo(e));
+    CHECK(mesh.wall_facets(f, 0) == node_of[t.topology().edgeFrom(e).index()]);
+    const int first = f;
+    for (; f + 1 < mesh.numWallFacets() && mesh.facet_wall(f + 1) == mesh.facet_wall(f); ++f) {
+      const int n = mesh.wall_facets(f, 1);
+      CHECK(mesh.wall_facets(f + 1, 0) == n);
+      CHECK(mesh.node_vertex(n) == -1);
+      const Vec3 p = mesh.nodes.row(n).transpose();
+      CHECK((p - a).cross(b - a).norm() <= 1e-12 * (b - a).squaredNorm());
+      CHECK((p - a).dot(b - a) > 0);
+      CHECK((p - b).dot(a - b) > 0);
+    }
+    CHECK(mesh.wall_facets(f, 1) == node_of[t.topology().edgeTo(e).index()]);
+    split_walls += f > first;
+    ++f;
+  }
+  for (EdgeId e : t.edges()) CHECK(done[e.index()]);
+  CHECK(split_walls > 0);  // the size bound split walls (Voronoi walls are longer than 0.2)
 }
 
 TEST_CASE("without refinement the mesh is the constrained triangulation of the walls", "[mesh][planar]") {
