@@ -5,7 +5,7 @@
 //   thresholds (the integrator's step, then SizeThreshold::cellsDue), on 2D
 //   grids of 1e4, 1e5, 1e6 cells and a 3D grid of 1e4 cells, with 1 and 2
 //   OpenMP threads; growth + division steps per second on the same tissues;
-//   then the cost of one division (rule + splitCell) per rule, 2D and 3D.
+//   then the cost of one division (rule + splitCell) per rule, 2D and 3D, and of one 3D division by the scheduler.
 //   Each figure is printed beside its target (issue #4).
 // Usage: growth_bench [--quick | --steps | --divisions | --grow-divide]
 //   --quick skips the 1e6-cell tissue; --steps runs only the growth steps,
@@ -161,6 +161,34 @@ void divisionCost(const char* label, const Tissue& start, const std::string& rul
   tessella::bench::printFigure(name, 1e6 * cpu / n, "us_cpu", target);
 }
 
+// Microseconds per 3D division through the scheduler (DivisionScheduler::divide:
+// the rule's planes, the plan, the crossing check, the cut) over every cell
+// once, CPU time of the thread.
+void schedulerDivisionCost(const char* label, const Tissue& start, const std::string& rule_name) {
+  omp_set_num_threads(1);
+  Tissue t = start;
+  DivisionScheduler scheduler(SizeThreshold::fixed(1.0), makeDivisionRule(rule_name));
+  std::vector<CellId> cells;
+  for (CellId c : t.cells()) cells.push_back(c);
+  std::size_t failed = 0;
+  const auto a = Clock::now();
+  const double cpu0 = threadSeconds();
+  for (CellId c : cells) {
+    try {
+      scheduler.divide(t, c);
+    } catch (const GeometryError&) {
+      ++failed;
+    }
+  }
+  const double cpu = threadSeconds() - cpu0;
+  const double wall = seconds(a, Clock::now());
+  const double n = static_cast<double>(cells.size());
+  std::printf("  %-12s %-30s %8.2f us/division CPU | wall %8.2f us", label, rule_name.c_str(), 1e6 * cpu / n,
+              1e6 * wall / n);
+  if (failed) std::printf("  [%zu cells not divided]", failed);
+  std::printf("\n");
+}
+
 void divisionCosts() {
   std::printf("\nOne division (rule + Tissue::splitCell) over every cell of a tissue, 1 thread;\n"
               "target < 10 us in 2D (CPU time of the thread; wall time beside it)\n");
@@ -169,6 +197,12 @@ void divisionCosts() {
   const Tissue box = boxGrid(10, 10, 10);
   for (const std::string& rule : divisionRuleNames()) divisionCost("2D", voronoi, rule);
   for (const std::string& rule : divisionRuleNames()) divisionCost("3D", box, rule);
+  std::printf("\nOne 3D division by DivisionScheduler::divide (rule, plan, crossing check, cut) over every cell,\n"
+              "1 thread (CPU time of the thread; wall time beside it)\n");
+  const Box cube{Vec3(0, 0, 0), Vec3(10, 10, 10)};
+  const Tissue voronoi3d = voronoiTissue(randomSeeds(cube, 1000, 1), cube);
+  for (const std::string& rule : divisionRuleNames()) schedulerDivisionCost("3D box", box, rule);
+  for (const std::string& rule : divisionRuleNames()) schedulerDivisionCost("3D Voronoi", voronoi3d, rule);
 }
 
 void growthSteps(bool quick) {

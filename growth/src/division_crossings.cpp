@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: AGPL-3.0-or-later
 // The wall surfaces a planned 3D division would make, built as
 // Tissue::splitCell will build their loops, and tested against each other and
-// the walls around them with the mesher's pair test (division_crossings.hpp).
+// the walls around them with the mesher's pair test (tessella/mesh/triangle_pair.hpp).
 
 #include "tessella/growth/division_crossings.hpp"
 
@@ -13,9 +13,9 @@
 #include <unordered_map>
 #include <vector>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/intersections.h>
+#include <Eigen/Geometry>
 
+#include "tessella/mesh/triangle_pair.hpp"
 #include "tessella/tissue/format.hpp"
 #include "tessella/tissue/geometry.hpp"
 
@@ -23,8 +23,7 @@ namespace tessella::growth {
 
 namespace {
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Tri = std::array<int, 3>;
+using Tri = mesh::TriangleIds;
 
 // Points by local id: the tissue's vertices as they are met, the division's
 // new vertices, one centre per fan.
@@ -32,7 +31,6 @@ struct Points {
   const Tissue& t;
   std::vector<Vec3> p;
   std::unordered_map<Index, int> of_vertex;
-  K::Point_3 operator()(int i) const { return {p[i].x(), p[i].y(), p[i].z()}; }
   int add(const Vec3& x) {
     p.push_back(x);
     return static_cast<int>(p.size() - 1);
@@ -68,47 +66,12 @@ std::vector<Tri> surfaceOf(const std::vector<int>& loop, Points& pts, bool* defe
   return tris;
 }
 
-// The mesher's test of two wall triangles: they may meet only at shared
-// vertices and edges.
-bool trianglesCross(const Points& P, const Tri& A, const Tri& B) {
-  std::vector<int> shared;
-  for (int a : A)
-    if (std::find(B.begin(), B.end(), a) != B.end()) shared.push_back(a);
-  const auto others = [&](const Tri& T) {
-    std::vector<int> o;
-    for (int v : T)
-      if (std::find(shared.begin(), shared.end(), v) == shared.end()) o.push_back(v);
-    return o;
-  };
-  if (shared.size() == 3) return true;
-  if (shared.size() == 2) {
-    const int r = others(A)[0], s = others(B)[0];
-    return CGAL::coplanar(P(shared[0]), P(shared[1]), P(r), P(s)) &&
-           CGAL::coplanar_orientation(P(shared[0]), P(shared[1]), P(r), P(s)) == CGAL::POSITIVE;
-  }
-  const K::Triangle_3 ta(P(A[0]), P(A[1]), P(A[2])), tb(P(B[0]), P(B[1]), P(B[2]));
-  if (shared.size() == 1) {
-    const auto oa = others(A), ob = others(B);
-    return CGAL::do_intersect(tb, K::Segment_3(P(oa[0]), P(oa[1]))) ||
-           CGAL::do_intersect(ta, K::Segment_3(P(ob[0]), P(ob[1])));
-  }
-  return CGAL::do_intersect(ta, tb);
-}
-
-struct Box {
-  Vec3 lo = Vec3::Constant(INFINITY), hi = Vec3::Constant(-INFINITY);
-  void add(const Vec3& x) {
-    lo = lo.cwiseMin(x);
-    hi = hi.cwiseMax(x);
-  }
-  bool overlaps(const Box& b) const {
-    return !((lo.array() > b.hi.array()).any() || (b.lo.array() > hi.array()).any());
-  }
-};
+// Boxes of triangles and surfaces, for the broad phase.
+using Box = Eigen::AlignedBox3d;
 
 Box boxOf(const Points& P, const Tri& t) {
   Box b;
-  for (int v : t) b.add(P.p[v]);
+  for (int v : t) b.extend(P.p[v]);
   return b;
 }
 
@@ -121,19 +84,18 @@ struct Surface {
   Surface(const Points& P, std::vector<Tri> triangles) : tris(std::move(triangles)) {
     for (const Tri& t : tris) {
       boxes.push_back(boxOf(P, t));
-      box.add(boxes.back().lo);
-      box.add(boxes.back().hi);
+      box.extend(boxes.back());
     }
   }
 };
 
 // The first crossing pair of triangles (a's index), or -1 (same = one surface against itself).
 long firstCrossing(const Points& P, const Surface& a, const Surface& b, bool same) {
-  if (!a.box.overlaps(b.box)) return -1;
+  if (!a.box.intersects(b.box)) return -1;
   for (std::size_t i = 0; i < a.tris.size(); ++i) {
-    if (!a.boxes[i].overlaps(b.box)) continue;
+    if (!a.boxes[i].intersects(b.box)) continue;
     for (std::size_t j = same ? i + 1 : 0; j < b.tris.size(); ++j)
-      if (a.boxes[i].overlaps(b.boxes[j]) && trianglesCross(P, a.tris[i], b.tris[j]))
+      if (a.boxes[i].intersects(b.boxes[j]) && mesh::trianglesCross(P.p, a.tris[i], b.tris[j]))
         return static_cast<long>(i);
   }
   return -1;
@@ -202,8 +164,8 @@ bool cannotCross(const Tissue& t, CellId c, const CellSplitPlan3D& plan) {
   const CellComplex& cx = t.topology();
   const std::vector<VertexId> vertices = t.cellVertices(c);
   Box box;
-  for (VertexId v : vertices) box.add(t.position(v));
-  const double tol = 1e-9 * (box.hi - box.lo).norm();
+  for (VertexId v : vertices) box.extend(t.position(v));
+  const double tol = 1e-9 * box.diagonal().norm();
   const auto faces = cx.volumeFaces(VolumeId(c.index()));
   for (OrientedFace of : faces) {
     Vec3 normal;
@@ -317,8 +279,7 @@ std::string divisionCrossing(const Tissue& t, CellId c, const CellSplitPlan3D& p
     if (defect && !(s.kind != Changed::NewWall && oldDefect(s.wall)))
       return who + describe(t, s) +
              " self-intersecting (its outline crosses itself in its best-fit plane)";
-    changed_box.add(s.surface.box.lo);
-    changed_box.add(s.surface.box.hi);
+    changed_box.extend(s.surface.box);
   }
   const auto near = [&](const Changed& s, long tri) {
     return " near " + formatPoint(pts.p[s.surface.tris[tri][1]], 9);
@@ -355,8 +316,8 @@ std::string divisionCrossing(const Tissue& t, CellId c, const CellSplitPlan3D& p
   for (Index w : walls) {
     if (std::find(touched.begin(), touched.end(), w) != touched.end()) continue;
     Box wall_box;
-    for (VertexId v : cx.faceVertices(FaceId(w))) wall_box.add(t.position(v));
-    if (!wall_box.overlaps(changed_box)) continue;
+    for (VertexId v : cx.faceVertices(FaceId(w))) wall_box.extend(t.position(v));
+    if (!wall_box.intersects(changed_box)) continue;
     const Surface other(pts, surfaceOf(loopIds(t, FaceId(w), pts), pts));
     for (const Changed& s : changed) {
       const long at = firstCrossing(pts, s.surface, other, false);

@@ -102,14 +102,19 @@ DivisionRecord DivisionScheduler::divide(Tissue& t, CellId c, Rng& rng) {
         p.point = base.point + sign * k * options_.retry_shift * size * n0;
       }
       try {
+        CellSplit split;
         if (volume) {
-          std::string crossing = divisionCrossing(t, c, planCellSplit3D(t, c, p, options_.split));
+          // Planned once: checked for crossings, then applied as it is.
+          const CellSplitPlan3D plan = planCellSplit3D(t, c, p, options_.split);
+          std::string crossing = divisionCrossing(t, c, plan);
           if (!crossing.empty()) {
             last_error = std::move(crossing);
             continue;
           }
+          split = t.splitCell(plan);
+        } else {
+          split = t.splitCell(c, p, options_.split);
         }
-        const CellSplit split = t.splitCell(c, p, options_.split);
         if (options_.tag_walls) divisionWallTags(t)[split.wall] = mother;
         return DivisionRecord{mother, c, split.daughter, split.wall, tried};
       } catch (const GeometryError& e) {

@@ -16,6 +16,7 @@
 #include "polygon_fan.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
+#include "tessella/mesh/triangle_pair.hpp"
 #include "tessella/tissue/geometry.hpp"
 #include "wall_triangulation.hpp"
 
@@ -88,7 +89,6 @@ bool forOverlappingPairs(const std::vector<std::array<Vec3, 2>>& boxes, const Te
 }
 
 K::Point_2 p2(const Vec3& p) { return {p.x(), p.y()}; }
-K::Point_3 p3(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
 
 double loopPerimeter(const std::vector<Vec3>& loop) {
   double perimeter = 0.0;
@@ -310,7 +310,7 @@ MeshabilityReport checkVolumeGeometry(const Tissue& t, const MeshOptions& option
                         "; thinner than the tolerance " + num(tol) + ")",
                     ElementId{3, c.index()});
   }
-  // Wall triangles may meet only at shared vertices and edges.
+  // Wall triangles may meet only at shared vertices and edges (triangle_pair.hpp).
   struct Tri {
     WallId wall;
     std::array<int, 3> v;
@@ -327,33 +327,7 @@ MeshabilityReport checkVolumeGeometry(const Tissue& t, const MeshOptions& option
   forOverlappingPairs(boxes, [&](int i, int j) {
     const auto& A = tris[i].v;
     const auto& B = tris[j].v;
-    const auto P = [&](int id) { return p3(walls.points[id]); };
-    std::vector<int> shared;
-    for (int a : A)
-      if (std::find(B.begin(), B.end(), a) != B.end()) shared.push_back(a);
-    const auto others = [&](const std::array<int, 3>& T) {
-      std::vector<int> o;
-      for (int v : T)
-        if (std::find(shared.begin(), shared.end(), v) == shared.end()) o.push_back(v);
-      return o;
-    };
-    bool bad = false;
-    if (shared.size() == 3) {
-      bad = true;
-    } else if (shared.size() == 2) {
-      // Sharing an edge: they overlap only if folded flat onto each other.
-      const int r = others(A)[0], s = others(B)[0];
-      bad = CGAL::coplanar(P(shared[0]), P(shared[1]), P(r), P(s)) &&
-            CGAL::coplanar_orientation(P(shared[0]), P(shared[1]), P(r), P(s)) == CGAL::POSITIVE;
-    } else if (shared.size() == 1) {
-      // Sharing a vertex: any other contact crosses one triangle's opposite edge.
-      const auto oa = others(A), ob = others(B);
-      const K::Triangle_3 ta(P(A[0]), P(A[1]), P(A[2])), tb(P(B[0]), P(B[1]), P(B[2]));
-      bad = CGAL::do_intersect(tb, K::Segment_3(P(oa[0]), P(oa[1]))) ||
-            CGAL::do_intersect(ta, K::Segment_3(P(ob[0]), P(ob[1])));
-    } else {
-      bad = CGAL::do_intersect(K::Triangle_3(P(A[0]), P(A[1]), P(A[2])), K::Triangle_3(P(B[0]), P(B[1]), P(B[2])));
-    }
+    const bool bad = trianglesCross(walls.points, A, B);
     if (!bad) return true;
     const WallId wa = tris[i].wall, wb = tris[j].wall;
     if (wa == wb)

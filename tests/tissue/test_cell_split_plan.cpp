@@ -8,11 +8,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 #include "fixtures.hpp"
 #include "tessella/tissue/cell_split_plan.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
+#include "tessella/tissue/validate.hpp"
 
 using namespace tessella;
 using namespace tessella::fixtures;
@@ -132,6 +134,8 @@ TEST_CASE("a 3D plan: a box cut across four edges, and through a diagonal", "[ti
       CHECK(cut.from < 4);
       CHECK(cut.to < 4);
       CHECK(cut.from != cut.to);
+      // A 2 x 1 wall cut at x = 0.5: the parts hold a quarter and three quarters of it.
+      CHECK(std::min(cut.kept_fraction, 1 - cut.kept_fraction) == Approx(0.25));
     }
     REQUIRE(plan.distances.size() == 8);
     for (const auto& [v, d] : plan.distances) CHECK(d == t.position(v).x() - 0.5);
@@ -169,5 +173,89 @@ TEST_CASE("a 3D plan: a box cut across four edges, and through a diagonal", "[ti
     CHECK_THROWS_AS(planCellSplit3D(t, c, Plane{Vec3(1e-7, 0, 0), Vec3(1, 0, 0)}), GeometryError);  // sliver
     CHECK_THROWS_AS(planCellSplit3D(t, CellId(7), Plane{Vec3(1, 0, 0), Vec3(1, 0, 0)}), TopologyError);
     CHECK(Snapshot(t) == before);
+  }
+}
+
+TEST_CASE("a refused 3D cut leaves the tissue as it was", "[tissue][editing][plan]") {
+  // The plane 2x + y + z = 2 + 2 eps (snap tolerance 0) passes 2 eps / sqrt(6)
+  // below the corners (1,0,0) and (0,1,1) of the unit cube: it crosses the edges
+  // (0,1,0)-(1,1,0) and (0,0,1)-(1,0,1) near their middles and three edges
+  // within about 2e-14 of their length of a corner, where splitEdge refuses a
+  // vertex (parameter within 1e-12 of an end). Before the plan checked it, the
+  // middle crossings were split first, then the cut threw half-way (9 vertices).
+  Tissue t = box(1, 1, 1);
+  const double eps = 1e-14;
+  const Plane plane{Vec3(1 + eps, 0, 0), Vec3(2, 1, 1)};
+  const SplitOptions options{.snap_tolerance = 0, .min_fraction = 0};
+  const Snapshot before(t);
+  const std::size_t vertices = t.numVertices(), edges = t.numEdges(), faces = t.numFaces();
+
+  CHECK_THROWS_WITH(planCellSplit3D(t, CellId(0), plane, options),
+                    Catch::Contains("is not strictly between its vertices") && Catch::Contains("cell 0"));
+  CHECK_THROWS_AS(t.splitCell(CellId(0), plane, options), GeometryError);
+  CHECK(Snapshot(t) == before);
+  CHECK(t.numVertices() == vertices);
+  CHECK(t.numEdges() == edges);
+  CHECK(t.numFaces() == faces);
+  CHECK(t.numCells() == 1);
+  CHECK(validate(t).ok);
+
+  // The same plane 0.1 further out crosses every edge away from its ends and divides.
+  const Plane far{Vec3(1.1, 0, 0), Vec3(2, 1, 1)};
+  const CellSplit s = t.splitCell(CellId(0), far, options);
+  CHECK(s.new_vertices.size() == 5);
+  CHECK(validate(t).ok);
+  // The daughter is {2x + y + z > 2.2} in the cube: over x, the part of the unit square where
+  // y + z > s = 2.2 - 2x has area (2 - s)^2 / 2 for s >= 1 (x in [0.1, 0.6]) and 1 - s^2 / 2 for
+  // s <= 1 (x in [0.6, 1]), which integrate to 1/12 and 0.4 - 0.992/12.
+  const double daughter = 1.0 / 12 + 0.4 - 0.992 / 12;
+  CHECK(cellMeasure(t, s.daughter) == Approx(daughter).epsilon(1e-12));
+  CHECK(cellMeasure(t, CellId(0)) == Approx(1 - daughter).epsilon(1e-12));
+}
+
+TEST_CASE("a plan applied later: the same division, refused once the tissue changed", "[tissue][editing][plan]") {
+  SECTION("3D") {
+    Tissue t = box(2, 1, 1);
+    const Plane plane{Vec3(0.7, 0.5, 0.5), Vec3(1, 0.2, 0.1)};
+    Tissue reference = t;
+    const CellSplit expected = reference.splitCell(CellId(0), plane);
+    const CellSplitPlan3D plan = planCellSplit3D(t, CellId(0), plane);
+    CHECK(plan.cell == CellId(0));
+    Tissue copy = t;  // same versions: the plan is its plan too
+    const CellSplit got = t.splitCell(plan);
+    CHECK(got.daughter == expected.daughter);
+    CHECK(got.wall == expected.wall);
+    CHECK(got.new_vertices == expected.new_vertices);
+    CHECK(std::equal(t.positions().begin(), t.positions().end(), reference.positions().begin(),
+                     reference.positions().end()));
+    CHECK(cellMeasure(t, CellId(0)) == cellMeasure(reference, CellId(0)));
+    CHECK(cellMeasure(t, got.daughter) == cellMeasure(reference, expected.daughter));
+    CHECK(t.lineageId(got.daughter) == reference.lineageId(expected.daughter));
+    CHECK(validate(t).ok);
+
+    // The tissue has changed since: the plan is refused, and nothing changes.
+    const Snapshot after(t);
+    CHECK_THROWS_AS(t.splitCell(plan), std::logic_error);
+    CHECK(Snapshot(t) == after);
+    // The copy, unchanged, takes it; once a vertex moves, it refuses it.
+    Tissue moved = copy;
+    CHECK(copy.splitCell(plan).daughter == expected.daughter);
+    moved.setPosition(VertexId(0), moved.position(VertexId(0)));
+    CHECK_THROWS_WITH(moved.splitCell(plan), Catch::Contains("cell 0") && Catch::Contains("another state"));
+  }
+  SECTION("2D") {
+    Tissue t = hexagon();
+    const Plane plane{Vec3(0.1, 0, 0), Vec3(1, 0.3, 0)};
+    Tissue reference = t;
+    const CellSplit expected = reference.splitCell(CellId(0), plane);
+    const CellSplitPlan2D plan = planCellSplit2D(t, CellId(0), plane);
+    const CellSplit got = t.splitCell(plan);
+    CHECK(got.daughter == expected.daughter);
+    CHECK(got.new_vertices == expected.new_vertices);
+    CHECK(std::equal(t.positions().begin(), t.positions().end(), reference.positions().begin(),
+                     reference.positions().end()));
+    CHECK(cellMeasure(t, got.daughter) == cellMeasure(reference, expected.daughter));
+    CHECK_THROWS_AS(t.splitCell(plan), std::logic_error);
+    CHECK_THROWS_AS(t.splitCell(planCellSplit3D(box(1, 1, 1), CellId(0), plane)), std::logic_error);  // a 3D plan
   }
 }

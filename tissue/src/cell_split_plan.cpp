@@ -203,6 +203,8 @@ CellSplitPlan2D planCellSplit2D(const Tissue& t, CellId c, const Plane& plane, c
 
   CellSplitPlan2D plan;
   plan.cell = c;
+  plan.topology_version = t.topologyVersion();
+  plan.geometry_version = t.geometryVersion();
   plan.plane = Plane{plane.point, normal};
   plan.snap_distance = options.snap_tolerance * std::sqrt(m.area);
   plan.a = cutNode(loop, A);
@@ -368,6 +370,78 @@ double positiveVolume(const Tissue& t, const std::vector<OrientedFace>& faces, c
   return v6 / 6.0;
 }
 
+// The checks of the edits that apply a plan (Tissue::applyCellSplit: splitEdge
+// for every new corner, in ring order, then splitFace for every crossed wall),
+// made on the same numbers in the same order, so that applying the plan cannot
+// throw after its first edit. Each crossed wall's loop is the one splitFace
+// would see: its vertices with the new corners inserted on their edges. The
+// share of its area each crossed wall keeps, in the order of w.face_cuts (the
+// fraction splitFace computes; the plan carries it, so the edit need not
+// measure the wall again).
+std::vector<double> checkEdits(const Tissue& t, const WallTraces& w, const std::vector<Key>& ring,
+                               const CellName& who) {
+  const CellComplex& cx = t.topology();
+  for (Key k : ring) {
+    if (k >= 0) continue;
+    const EdgeId e(static_cast<Index>(-k - 1));
+    try {
+      detail::edgeParameter(t.position(cx.edgeFrom(e)), t.position(cx.edgeTo(e)), w.node_point.at(k), e);
+    } catch (const GeometryError& error) {
+      throw GeometryError("division plane of " + who.str() + ": " + error.what(), error.element());
+    }
+  }
+  const bool flat = t.embedding() == Embedding::Planar;
+  std::vector<double> kept;
+  kept.reserve(w.face_cuts.size());
+  std::vector<Vec3> whole, keep, move;
+  for (const auto& [f, a, b] : w.face_cuts) {
+    whole.clear();
+    int ia = -1, ib = -1;
+    const auto vertices = cx.faceVertices(f);
+    const auto edges = cx.faceEdges(f);
+    for (std::size_t i = 0; i < vertices.size(); ++i) {
+      const Key kv = vertexKey(vertices[i]), ke = edgeKey(edges[i].handle());
+      if (kv == a) ia = static_cast<int>(whole.size());
+      if (kv == b) ib = static_cast<int>(whole.size());
+      whole.push_back(t.position(vertices[i]));
+      if (const Vec3* p = w.node_point.find(ke)) {
+        if (ke == a) ia = static_cast<int>(whole.size());
+        if (ke == b) ib = static_cast<int>(whole.size());
+        whole.push_back(*p);
+      }
+    }
+    const int n = static_cast<int>(whole.size());
+    const auto refuse = [&](const std::string& why) {
+      throw GeometryError("division plane of " + who.str() + " cannot split wall " + std::to_string(f.index()) +
+                              ": " + why,
+                          {2, f.index()});
+    };
+    if (ia < 0 || ib < 0 || ia == ib || (ia + 1) % n == ib || (ib + 1) % n == ia)
+      refuse("its two corners are equal or adjacent on its loop");
+    if (a >= 0 && b >= 0) {
+      if (const EdgeId e = cx.findEdge(VertexId(static_cast<Index>(a)), VertexId(static_cast<Index>(b))))
+        refuse("its corners, vertices " + std::to_string(a) + " and " + std::to_string(b) +
+               ", are already joined by edge " + std::to_string(e.index()));
+    }
+    // Tissue::splitFace's test, on the same points in the same order.
+    keep.clear();
+    move.clear();
+    for (int i = ia;; i = (i + 1) % n) {
+      keep.push_back(whole[i]);
+      if (i == ib) break;
+    }
+    for (int i = ib;; i = (i + 1) % n) {
+      move.push_back(whole[i]);
+      if (i == ia) break;
+    }
+    const LoopArea lw = loopArea(whole, flat), lk = loopArea(keep, flat), lm = loopArea(move, flat);
+    if (!(lk.area > 0 && lm.area > 0 && lk.normal.dot(lw.normal) > 0 && lm.normal.dot(lw.normal) > 0))
+      refuse("a part would have non-positive area on the wall's side (the cut leaves the warped wall)");
+    kept.push_back(lk.area / (lk.area + lm.area));
+  }
+  return kept;
+}
+
 }  // namespace
 
 CellSplitPlan3D planCellSplit3D(const Tissue& t, CellId c, const Plane& plane, const SplitOptions& options) {
@@ -391,8 +465,12 @@ CellSplitPlan3D planCellSplit3D(const Tissue& t, CellId c, const Plane& plane, c
     throw GeometryError("division of " + who.str() + " would leave a sliver of " + formatNumber(smaller / volume, 6) +
                             " of its volume (minimum " + formatNumber(options.min_fraction) + ")",
                         {3, c.index()});
+  const std::vector<double> kept = checkEdits(t, w, ring, who);
 
   CellSplitPlan3D plan;
+  plan.cell = c;
+  plan.topology_version = t.topologyVersion();
+  plan.geometry_version = t.geometryVersion();
   for (Key k : ring) {
     if (k >= 0)
       plan.ring.push_back({VertexId(static_cast<Index>(k)), {}, w.node_point.at(k)});
@@ -402,7 +480,10 @@ CellSplitPlan3D planCellSplit3D(const Tissue& t, CellId c, const Plane& plane, c
   const auto corner = [&](Key k) {
     return static_cast<std::size_t>(std::find(ring.begin(), ring.end(), k) - ring.begin());
   };
-  for (const auto& [f, a, b] : w.face_cuts) plan.wall_cuts.push_back({f, corner(a), corner(b)});
+  for (std::size_t i = 0; i < w.face_cuts.size(); ++i) {
+    const auto& [f, a, b] = w.face_cuts[i];
+    plan.wall_cuts.push_back({f, corner(a), corner(b), kept[i]});
+  }
   for (const auto& [v, d] : w.dist) plan.distances.emplace_back(VertexId(v), d);
   return plan;
 }

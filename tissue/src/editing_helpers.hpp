@@ -10,13 +10,33 @@
 #include <vector>
 
 #include "polygon_kernels.hpp"
+#include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
+#include "tessella/tissue/handles.hpp"
 #include "tessella/tissue/vec3.hpp"
 
 namespace tessella::detail {
 
 /// A point for messages: "(x, y, z)" with 12 digits.
 inline std::string pointText(const Vec3& p) { return formatPoint(p, 12); }
+
+/// Edge parameter of `point` on a -> b (edge e), required strictly inside (by
+/// 1e-12): Tissue::splitEdge's check, which planCellSplit3D makes for every new
+/// vertex of a plan before the plan's edits run.
+inline double edgeParameter(const Vec3& a, const Vec3& b, const Vec3& point, EdgeId e) {
+  const Vec3 ab = b - a;
+  const double l2 = ab.squaredNorm();
+  if (!(l2 > 0)) throw GeometryError("edge " + std::to_string(e.index()) + " has zero length", {1, e.index()});
+  if (!point.allFinite())
+    throw GeometryError("split point of edge " + std::to_string(e.index()) + " is not finite", {1, e.index()});
+  const double t = (point - a).dot(ab) / l2;
+  constexpr double kEps = 1e-12;
+  if (!(t > kEps && t < 1 - kEps))
+    throw GeometryError("split point " + pointText(point) + " of edge " + std::to_string(e.index()) +
+                            " is not strictly between its vertices (parameter " + formatNumber(t) + ")",
+                        {1, e.index()});
+  return t;
+}
 
 /// Area and normal of a loop of points, with the tissue's kernel.
 struct LoopArea {

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "editing_helpers.hpp"
@@ -20,26 +21,11 @@ namespace tessella {
 
 namespace {
 
+using detail::edgeParameter;
 using detail::LoopArea;
 using detail::loopArea;
 using detail::pointText;
 using detail::SmallMap;
-
-// Edge parameter of `point` on a -> b, required strictly inside.
-double edgeParameter(const Vec3& a, const Vec3& b, const Vec3& point, EdgeId e) {
-  const Vec3 ab = b - a;
-  const double l2 = ab.squaredNorm();
-  if (!(l2 > 0)) throw GeometryError("edge " + std::to_string(e.index()) + " has zero length", {1, e.index()});
-  if (!point.allFinite())
-    throw GeometryError("split point of edge " + std::to_string(e.index()) + " is not finite", {1, e.index()});
-  const double t = (point - a).dot(ab) / l2;
-  constexpr double kEps = 1e-12;
-  if (!(t > kEps && t < 1 - kEps))
-    throw GeometryError("split point " + pointText(point) + " of edge " + std::to_string(e.index()) +
-                            " is not strictly between its vertices (parameter " + std::to_string(t) + ")",
-                        {1, e.index()});
-  return t;
-}
 
 }  // namespace
 
@@ -148,12 +134,34 @@ FaceSplit Tissue::splitFace(FaceId f, EdgeId ea, const Vec3& pa, EdgeId eb, cons
 
 CellSplit Tissue::splitCell(CellId c, const Plane& plane, const SplitOptions& options) {
   // Planning checks everything and throws before the tissue changes.
-  if (dim() == 2) return applyCellSplit(c, planCellSplit2D(*this, c, plane, options));
-  return applyCellSplit(c, planCellSplit3D(*this, c, plane, options));
+  if (dim() == 2) return applyCellSplit(planCellSplit2D(*this, c, plane, options));
+  return applyCellSplit(planCellSplit3D(*this, c, plane, options));
 }
 
-CellSplit Tissue::applyCellSplit(CellId c, const CellSplitPlan2D& plan) {
-  const FaceId f(c.index());
+void Tissue::checkPlanVersions(CellId c, std::uint64_t topology_version, std::uint64_t geometry_version) const {
+  if (topology_version != topologyVersion() || geometry_version != geometryVersion())
+    throw std::logic_error("splitCell: the plan of cell " + std::to_string(c.index()) +
+                           " was made on another state of the tissue (topology version " +
+                           std::to_string(topology_version) + ", geometry version " +
+                           std::to_string(geometry_version) + "; the tissue's are " +
+                           std::to_string(topologyVersion()) + " and " + std::to_string(geometryVersion()) +
+                           "): plan it again");
+}
+
+CellSplit Tissue::splitCell(const CellSplitPlan2D& plan) {
+  if (dim() != 2) throw std::logic_error("splitCell: a 2D plan given to a 3D tissue");
+  checkPlanVersions(plan.cell, plan.topology_version, plan.geometry_version);
+  return applyCellSplit(plan);
+}
+
+CellSplit Tissue::splitCell(const CellSplitPlan3D& plan) {
+  if (dim() != 3) throw std::logic_error("splitCell: a 3D plan given to a 2D tissue");
+  checkPlanVersions(plan.cell, plan.topology_version, plan.geometry_version);
+  return applyCellSplit(plan);
+}
+
+CellSplit Tissue::applyCellSplit(const CellSplitPlan2D& plan) {
+  const FaceId f(plan.cell.index());
   CellSplit result;
   auto vertexAt = [&](const CutNode& x) {
     if (!x.isNew()) return x.vertex;
@@ -175,7 +183,8 @@ CellSplit Tissue::applyCellSplit(CellId c, const CellSplitPlan2D& plan) {
   return result;
 }
 
-CellSplit Tissue::applyCellSplit(CellId c, const CellSplitPlan3D& plan) {
+CellSplit Tissue::applyCellSplit(const CellSplitPlan3D& plan) {
+  const CellId c = plan.cell;
   const VolumeId vol(c.index());
   SmallMap<Index, double> dist;
   for (const auto& [v, d] : plan.distances) dist.set(v.index(), d);
@@ -193,7 +202,15 @@ CellSplit Tissue::applyCellSplit(CellId c, const CellSplitPlan3D& plan) {
     dist[s.vertex.index()] = 0;
     result.new_vertices.push_back(s.vertex);
   }
-  for (const auto& cut : plan.wall_cuts) splitFace(cut.wall, corner[cut.from], corner[cut.to]);
+  // The walls as splitFace would split them (its checks were made by the plan,
+  // which also measured the share each keeps).
+  for (const auto& cut : plan.wall_cuts) {
+    const FaceId f2 = complex_.splitFace(cut.wall, corner[cut.from], corner[cut.to]).second;
+    grew(1);
+    grew(2);
+    properties_[2].divide(cut.wall.index(), f2.index(), cut.kept_fraction);
+    ++geometry_version_;
+  }
   // A wall goes to the daughter when its first vertex off the plane is on the positive side.
   std::vector<FaceId> moving;
   for (OrientedFace of : complex_.volumeFaces(vol)) {

@@ -21,10 +21,10 @@ namespace tessella::growth {
 /// Empty when dividing cell `c` of a 3D tissue by `plan` (planCellSplit3D)
 /// makes no wall surface cross another wall's, or itself, where none crossed
 /// before; else what would cross, naming the walls, their cells and a point
-/// near the crossing. Tested with exact predicates (CGAL), pair by pair as the
-/// mesher's geometry check tests them (mesh/geometry_check.hpp), against the
-/// walls of every cell that shares a vertex with a changed wall. Reads the
-/// tissue only.
+/// near the crossing. Tested pair of triangles by pair with the mesher's own
+/// test (mesh::trianglesCross, tessella/mesh/triangle_pair.hpp: CGAL's exact
+/// predicates), against the walls of every cell that shares a vertex with a
+/// changed wall. Reads the tissue only.
 std::string divisionCrossing(const Tissue& t, CellId c, const CellSplitPlan3D& plan);
 
 }  // namespace tessella::growth

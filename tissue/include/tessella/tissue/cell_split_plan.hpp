@@ -6,9 +6,14 @@
 // names the crossed edges and walls, where the new vertices go and which side
 // each part of the cell goes to; every check (a plane missing the cell,
 // running along a wall, leaving a sliver, ...) is made while planning, so a
-// refused division throws before the tissue is touched.
+// refused division throws before the tissue is touched. A plan records the
+// tissue's topology and geometry versions it was made at: Tissue::splitCell
+// applies it only to a tissue in that state (the same tissue unchanged since,
+// or a copy of it), so a caller can plan, inspect the plan (growth's crossing
+// check) and apply it without planning again.
 
 #include <cstddef>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -28,6 +33,8 @@ struct CutNode {
 /// Dividing a 2D cell: a chord between two points of its boundary.
 struct CellSplitPlan2D {
   CellId cell;  ///< the cell divided
+  /// The tissue's topologyVersion() and geometryVersion() when planned.
+  std::uint64_t topology_version = 0, geometry_version = 0;
   /// The plane (unit normal) and the distance within which a vertex counts as
   /// on it: Tissue::splitCells reuses a vertex another cell of the batch makes
   /// on a shared edge when it lies that close to this plane.
@@ -46,12 +53,18 @@ struct CellSplitPlan2D {
 /// Dividing a 3D cell: a polygon across it whose corners split its edges or
 /// reuse vertices on the plane, and whose sides split its walls.
 struct CellSplitPlan3D {
+  CellId cell;  ///< the cell divided
+  /// The tissue's topologyVersion() and geometryVersion() when planned.
+  std::uint64_t topology_version = 0, geometry_version = 0;
   /// The cut polygon, counter-clockwise seen from the positive side.
   std::vector<CutNode> ring;
-  /// A crossed wall is split between two corners of the ring (indices).
+  /// A crossed wall is split between two corners of the ring (indices): it
+  /// keeps the part of its loop from `from` to `to`, which holds
+  /// `kept_fraction` of its area (its properties are divided by it).
   struct WallCut {
     FaceId wall;
     std::size_t from, to;
+    double kept_fraction = 0.5;
   };
   /// In the order of the cell's walls.
   std::vector<WallCut> wall_cuts;
@@ -67,7 +80,11 @@ struct CellSplitPlan3D {
 CellSplitPlan2D planCellSplit2D(const Tissue& tissue, CellId c, const Plane& plane,
                                 const SplitOptions& options = {});
 
-/// The plan of Tissue::splitCell for a cell of a 3D tissue, with its checks.
+/// The plan of Tissue::splitCell for a cell of a 3D tissue, with its checks,
+/// including those of the edits that apply it (each new vertex strictly inside
+/// its edge, each crossed wall split into two parts of positive area on its
+/// side, two corners of a crossed wall not already joined by an edge), so
+/// applying the plan cannot fail half-way.
 CellSplitPlan3D planCellSplit3D(const Tissue& tissue, CellId c, const Plane& plane,
                                 const SplitOptions& options = {});
 

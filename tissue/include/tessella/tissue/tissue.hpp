@@ -237,6 +237,16 @@ class Tissue {
   /// options.min_fraction, or cuts a non-convex cell into more than two
   /// pieces where the choice is ambiguous (see docs/ARCHITECTURE.md).
   CellSplit splitCell(CellId c, const Plane& plane, const SplitOptions& options = {});
+  /// Divides plan.cell by a plan made on this tissue as it is now
+  /// (planCellSplit2D / planCellSplit3D, cell_split_plan.hpp): splitCell
+  /// without planning again, with the same result. Only the plan's recorded
+  /// topology and geometry versions are checked, against the tissue's (equal
+  /// versions mean the same complex and positions: the tissue it was made on,
+  /// unchanged, or a copy of it); a plan of another state is a
+  /// std::logic_error naming the cell and the versions. Properties and
+  /// lineage do not enter a plan and may change in between.
+  CellSplit splitCell(const CellSplitPlan2D& plan);
+  CellSplit splitCell(const CellSplitPlan3D& plan);
   /// Divides many cells of a 2D tissue at once, in parallel (OpenMP), by plans
   /// made on the tissue as it is (planCellSplit2D, one per cell, each cell
   /// once). The result, bit for bit and whatever the number of threads, is
@@ -268,8 +278,10 @@ class Tissue {
   void dividedCell(Index mother, Index daughter, double fraction);
   void paranoidCheck(const char* where) const;
   // splitCell's edits: apply a plan made for this tissue as it is.
-  CellSplit applyCellSplit(CellId c, const CellSplitPlan2D& plan);
-  CellSplit applyCellSplit(CellId c, const CellSplitPlan3D& plan);
+  CellSplit applyCellSplit(const CellSplitPlan2D& plan);
+  CellSplit applyCellSplit(const CellSplitPlan3D& plan);
+  // Throws std::logic_error unless a plan's versions are the tissue's.
+  void checkPlanVersions(CellId c, std::uint64_t topology_version, std::uint64_t geometry_version) const;
   double measureFraction(int degree, Index kept, Index part) const;
 
   CellComplex complex_;
