@@ -314,9 +314,12 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
   Runs runs;
   {
     const Label first = std::visit([&](auto* px) { return static_cast<Label>(px[y0 * nx + x0]); }, pixels);
+    // Block 0 starts with the first padding row's run, and its arrays become the runs' (the others are copied
+    // after it): it reserves room for the whole image's runs, the others for theirs.
     struct Block {
-      std::vector<std::int32_t> count, x;
-      std::vector<Label> label;
+      std::vector<std::int32_t> count;
+      UninitializedVector<std::int32_t> x;
+      UninitializedVector<Label> label;
       bool several = false;
     };
     const int n_blocks = std::max(1, std::min<int>(omp_get_max_threads(), static_cast<int>(h)));
@@ -328,6 +331,7 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
         Block& blk = blocks[static_cast<std::size_t>(b)];
         const std::int64_t r0 = h * b / n_blocks, r1 = h * (b + 1) / n_blocks;
         bool several = false;
+        if (b == 0) blk.x.push_back(0), blk.label.push_back(kOutside);
         for (std::int64_t r = r0; r < r1; ++r) {
           const auto* src = px + static_cast<std::size_t>((r + y0) * nx + x0);
           const std::size_t before = blk.x.size();
@@ -342,26 +346,34 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
           }
           if (current != kOutside) blk.x.push_back(static_cast<std::int32_t>(w + 1)), blk.label.push_back(kOutside);
           blk.count.push_back(static_cast<std::int32_t>(blk.x.size() - before));
+          if (r == r0) {  // room at a quarter more than the first row's rate (growing by copies touches more memory),
+            // and for a run per 4 pixels at most (a row far busier than the others)
+            const auto rows = static_cast<std::size_t>(b == 0 ? H : r1 - r0), row_runs = blk.x.size() - before;
+            const std::size_t guess = std::min(rows * (row_runs * 5 / 4 + 1), rows * static_cast<std::size_t>(W) / 4);
+            blk.x.reserve(guess), blk.label.reserve(guess), blk.count.reserve(static_cast<std::size_t>(r1 - r0));
+          }
         }
         blk.several = several;
       }
     };
     std::visit(scan, pixels);
     bool several = false;
-    std::size_t n_runs = 2;
+    std::size_t n_runs = 1;  // and the last padding row's run
     for (const Block& blk : blocks) several = several || blk.several, n_runs += blk.x.size();
     if (!several)
       throw InputError(file + ": the image" + std::string(io.crop.empty() ? "" : " (cropped)") +
                        " holds one label only (" + std::to_string(first) + " in every pixel): no cells to tell apart");
     if (n_runs > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
       throw InputError(file + ": too many label changes for a 2D import (2^31); crop the image");
-    // Joined into the runs of the padded image, each block copied to its place.
-    runs.off.resize(static_cast<std::size_t>(H + 1));
-    runs.x.resize(n_runs), runs.label.resize(n_runs);
-    std::vector<std::size_t> block_start(static_cast<std::size_t>(n_blocks) + 1, 1);  // after the padding row
+    // Joined into the runs of the padded image: block 0's in place, the others copied after them.
+    std::vector<std::size_t> block_start(static_cast<std::size_t>(n_blocks) + 1, 0);
     for (int b = 0; b < n_blocks; ++b)
       block_start[b + 1] = block_start[b] + blocks[static_cast<std::size_t>(b)].x.size();
-    runs.off[0] = 0, runs.x[0] = 0, runs.label[0] = kOutside;  // the padding rows: one outside run each
+    block_start[0] = 1;  // block 0's rows, after the padding row
+    runs.off.resize(static_cast<std::size_t>(H + 1));
+    runs.x.swap(blocks[0].x), runs.label.swap(blocks[0].label);
+    runs.x.resize(n_runs), runs.label.resize(n_runs);
+    runs.off[0] = 0;  // the padding rows: one outside run each
     runs.off[H - 1] = static_cast<std::int32_t>(n_runs - 1);
     runs.x[n_runs - 1] = 0, runs.label[n_runs - 1] = kOutside;
     runs.off[H] = static_cast<std::int32_t>(n_runs);
