@@ -29,6 +29,7 @@
 #include "tessella/generators/voronoi.hpp"
 #include "tessella/io/import.hpp"
 #include "tessella/io/label_image.hpp"
+#include "tessella/mesh/geometry_check.hpp"
 #include "tessella/mesh/mesh_tissue.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
@@ -590,4 +591,45 @@ TEST_CASE("a 3D import makes no polygon wall with a corner under 0.1 degree (a s
   const mesh::FeMesh m = mesh::meshTissue(r.tissue, mesh::MeshOptions{});  // the default options: angle bound 20
   CHECK(m.dim == 3);
   CHECK(m.numElements() > 0);
+}
+
+TEST_CASE("a 3D import tests its walls' polygons as the tissue holds them, so the mesher accepts every one",
+          "[io][label_image]") {
+  // Noise of three labels and background (5 x 3 x 5 voxels, keep_pieces), simplify 1. A wall put back on its voxel
+  // corners has an outline whose projection on its best-fit plane touches itself within rounding: the import tested
+  // it in its own frame (the padded grid, 1.5 voxels off the tissue's) and passed it, the mesher tested the tissue's
+  // positions and refused it ("self-intersecting outline"). Both now decide on the tissue's positions, wherever the
+  // image lies.
+  LabelImage img = drawn({{"21133", "31101", "20033"},
+                          {"32002", "00210", "30012"},
+                          {"10330", "33012", "31020"},
+                          {"01302", "12323", "10312"},
+                          {"10021", "20003", "03123"}});
+  LabelImageOptions o;
+  o.background = {0};
+  o.keep_pieces = true;
+  for (const Vec3 origin : {Vec3(0, 0, 0), Vec3(100.25, -7.1, 2.9)}) {
+    INFO("origin " << origin.transpose());
+    img.origin = {origin.x(), origin.y(), origin.z()};
+    const ImportResult r = tissueFromLabelImage(img, withImage(o, 1.0));
+    ValidateOptions vo;
+    vo.check_euler = false;  // the noise's cells enclose tunnels of other cells
+    const auto report = validate(r.tissue, vo);
+    INFO(report.message);
+    REQUIRE(report.ok);
+    // The mesher's polygon test on every wall's loop, from the tissue's positions in the tissue's order.
+    for (WallId w : r.tissue.walls()) {
+      std::vector<Vec3> loop;
+      for (VertexId v : r.tissue.topology().faceVertices(handle_cast<FaceId>(w))) loop.push_back(r.tissue.position(v));
+      const PolygonDefect d = polygonDefect(loop);
+      INFO("wall " << w.index() << " " << polygonDefectText(d, {}, loop));
+      CHECK(!(d.kind == PolygonDefect::Pinched ||
+              (d.kind == PolygonDefect::SelfIntersecting && polygonTriangulation(loop).folded)));
+    }
+    const mesh::MeshabilityReport defects = mesh::findGeometryDefects(r.tissue);
+    INFO(defects.message);
+    CHECK(defects.ok);
+    const mesh::FeMesh m = mesh::meshTissue(r.tissue, mesh::MeshOptions{});
+    CHECK(m.numElements() > 0);
+  }
 }
