@@ -608,7 +608,7 @@ TEST_CASE("a 3D import tests its walls' polygons as the tissue holds them, so th
   LabelImageOptions o;
   o.background = {0};
   o.keep_pieces = true;
-  for (const Vec3 origin : {Vec3(0, 0, 0), Vec3(100.25, -7.1, 2.9)}) {
+  for (const Vec3& origin : {Vec3(0, 0, 0), Vec3(100.25, -7.1, 2.9)}) {
     INFO("origin " << origin.transpose());
     img.origin = {origin.x(), origin.y(), origin.z()};
     const ImportResult r = tissueFromLabelImage(img, withImage(o, 1.0));
