@@ -79,7 +79,7 @@ double wallEdgeBound(const MeshOptions& o) {
 struct Attempt {
   const char* tolerance;
   bool enclose;
-  bool rotate = false;  ///< TetGen meshes the cell turned about its centre (below, kTurn), its points turned back
+  bool rotate = false;  ///< TetGen meshes the cell turned about its centre (turnMatrix), its points turned back
 };
 /// Tries, in order, for a cell whose TetGen run fails: with the cube, then
 /// without it as before the cube: the default tolerance (1e-8) failed on some
@@ -92,8 +92,8 @@ struct Attempt {
 /// every tolerance on cells whose points all lay on a few axis-parallel planes of the voxel grid, with clean
 /// walls (no two triangles closer than 0.05 voxel, none crossing, no fold under 31 degrees): exactly coplanar
 /// and cospherical points, which its symbolic perturbation does not resolve. Turned, they no longer are.
-constexpr Attempt kAttempts[] = {{"T1e-7", true},        {"T1e-7", false},       {"", false}, {"T1e-9", false},
-                                 {"T1e-6", false},       {"T1e-7", true, true}, {"T1e-7", false, true}};
+constexpr Attempt kAttempts[] = {{"T1e-7", true},  {"T1e-7", false},      {"", false},          {"T1e-9", false},
+                                 {"T1e-6", false}, {"T1e-7", true, true}, {"T1e-7", false, true}};
 /// Relative difference allowed between the volume of a cell's tetrahedra and
 /// the volume its wall triangles enclose (docs/meshing.md: 1e-9 per cell).
 constexpr double kVolumeTolerance = 1e-9;
@@ -313,8 +313,8 @@ FeMesh meshCellByCell(const Tissue& t, const MeshOptions& options, const WallTri
     }
     const auto results = runIsolated(runnable, omp_get_max_threads(), std::vector<double>(runnable.size(), try_limit),
                                      std::max(run_left, 0.0), [&](std::size_t i) {
-      return serialize(meshCell(t, wm, cells[i], cellSeed(t, walls, cells[i]), switches, attempt.enclose, attempt.rotate,
-                                    local_of));
+      return serialize(meshCell(t, wm, cells[i], cellSeed(t, walls, cells[i]), switches, attempt.enclose,
+                                attempt.rotate, local_of));
     });
     for (std::size_t k = 0; k < runnable.size(); ++k) {
       const std::size_t i = runnable[k];

@@ -677,7 +677,8 @@ TEST_CASE("3D imports whose cells TetGen fails on, on the voxel grid's planes, m
         1.0);
 }
 
-TEST_CASE("a 3D import's walls of faces have no corner the wall mesher's angle bound cannot fill", "[io][label_image]") {
+TEST_CASE("a 3D import's walls of faces have no corner the wall mesher's angle bound cannot fill",
+          "[io][label_image]") {
   // A crop (x 9..25, y 9..25, z 20..30) of a 100-cell Voronoi image at 48^3, simplify 1: the 17 seeds whose cells
   // it holds (each voxel the label of the nearest, label = seed number + 2, as in the evaluation of docs/import.md).
   // Three walls of faces of one cell met at a corner with angles of 18.7, 9.7 and 7.7 degrees (the bound was 5);
