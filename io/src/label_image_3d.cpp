@@ -58,10 +58,8 @@ constexpr int kStaircasePasses = 2;
 constexpr int kStaircaseExtraSmoothing = 16;
 constexpr double kStaircaseMaxTolerance = 2;
 // Walls of several faces: the smallest corner of a face (degrees), and the sharpest fold between two faces
-// (the cosine of the angle between their normals). The corner bound is the wall mesher's default angle bound: with 5,
-// faces of 18.7, 9.7 and 7.7 degrees around one corner made the mesher's side splits bounce between them, two
-// neighbouring walls came out with 1 400 triangles and nodes 1e-10 apart, and TetGen crashed on their cell.
-constexpr double kMinFaceAngle = 20;
+// (the cosine of the angle between their normals).
+constexpr double kMinFaceAngle = 5;
 constexpr double kMinFoldCosine = -0.5;
 // A wall of one polygon with a corner under this (degrees; the two edges at the corner nearly along each other,
 // a sliver or a spike) fails like a crossing one: the wall mesher's angle bound does not finish on it (corners of
