@@ -20,6 +20,7 @@
 // and of two cells the smaller label bridges.
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <functional>
@@ -65,6 +66,19 @@ struct Segment {
   std::int32_t a, b, wall;
 };
 
+// The positions of the graph's vertices, in pixels: pixel corner (ci, cj) (ci, cj >= 1) is at (ci - 1, cj - 1),
+// the two vertices of a bridged corner a quarter pixel (kSplit) off it. Kept as unsigned quarter pixels from
+// (-1, -1) (4 W + 1 < 2^32: W < 2^30 for any image a 2D import takes), a third of the memory of Vec3s, and read
+// back as the same doubles (quarter pixels are exact).
+struct CornerPositions {
+  std::vector<std::array<std::uint32_t, 2>> q;
+  Vec3 operator[](std::size_t v) const {
+    return Vec3((static_cast<double>(q[v][0]) - 4) * 0.25, (static_cast<double>(q[v][1]) - 4) * 0.25, 0);
+  }
+  std::size_t size() const { return q.size(); }
+  void swap(CornerPositions& other) noexcept { q.swap(other.q); }
+};
+
 // Exact for the quarter-pixel coordinates used here.
 double orient(const Vec3& a, const Vec3& b, const Vec3& c) {
   return (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
@@ -75,7 +89,7 @@ bool onSegment(const Vec3& a, const Vec3& b, const Vec3& p) {
 }
 // Whether two segments of the simplified walls conflict: they cross or touch
 // away from a shared end, overlap along a line, or join the same two vertices.
-bool conflict(const Segment& s, const Segment& t, const std::vector<Vec3>& pos) {
+bool conflict(const Segment& s, const Segment& t, const CornerPositions& pos) {
   const int shared = (s.a == t.a) + (s.a == t.b) + (s.b == t.a) + (s.b == t.b);
   const Vec3 &p1 = pos[s.a], &p2 = pos[s.b], &q1 = pos[t.a], &q2 = pos[t.b];
   if (shared == 2) return true;
@@ -118,7 +132,7 @@ struct InnerCorner {
 // inside, b, as the graph of every pixel corner has them. Its inner corners lie on a segment and are kept
 // only where the test's rounding says they lie off it (a corner inside [x, 0] to [0, 0] at a few ulp) or
 // keep_one asks for one (a straight wall that must not become a segment).
-void simplifyEdge(const std::vector<Vec3>& pos, std::int32_t a, std::int32_t b, double tol, bool keep_one,
+void simplifyEdge(const CornerPositions& pos, std::int32_t a, std::int32_t b, double tol, bool keep_one,
                   std::vector<InnerCorner>& inner) {
   const Vec3 &pa = pos[a], &pb = pos[b];
   const int n = pixelLength(pa, pb);
@@ -145,7 +159,7 @@ void simplifyEdge(const std::vector<Vec3>& pos, std::int32_t a, std::int32_t b, 
 // along a straight stretch the distance to a segment is convex, so the farthest corner (the first of equals)
 // is a vertex of the graph, or the chord is one edge, whose inner corners simplifyEdge visits.
 void douglasPeuckerWall(const std::vector<std::int32_t>& ch, std::size_t lo, std::size_t hi,
-                        const std::vector<Vec3>& pos, double tol, bool keep_one, std::vector<char>& keep,
+                        const CornerPositions& pos, double tol, bool keep_one, std::vector<char>& keep,
                         std::vector<InnerCorner>& inner) {
   if (hi == lo + 1) return simplifyEdge(pos, ch[lo], ch[hi], tol, keep_one, inner);
   if (hi <= lo) return;
@@ -173,7 +187,7 @@ void douglasPeuckerWall(const std::vector<std::int32_t>& ch, std::size_t lo, std
 }
 
 // Simplifies wall wi: sets `keep` of its inner vertices and lists the pixel corners kept inside its edges.
-void simplifyWall(const Walls& ws, std::size_t wi, const std::vector<Vec3>& pos, std::vector<char>& keep,
+void simplifyWall(const Walls& ws, std::size_t wi, const CornerPositions& pos, std::vector<char>& keep,
                   std::vector<InnerCorner>& inner) {
   inner.clear();
   const auto& ch = ws.chain;
@@ -300,9 +314,12 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
   Runs runs;
   {
     const Label first = std::visit([&](auto* px) { return static_cast<Label>(px[y0 * nx + x0]); }, pixels);
+    // Block 0 starts with the first padding row's run, and its arrays become the runs' (the others are copied
+    // after it): it reserves room for the whole image's runs, the others for theirs.
     struct Block {
-      std::vector<std::int32_t> count, x;
-      std::vector<Label> label;
+      std::vector<std::int32_t> count;
+      UninitializedVector<std::int32_t> x;
+      UninitializedVector<Label> label;
       bool several = false;
     };
     const int n_blocks = std::max(1, std::min<int>(omp_get_max_threads(), static_cast<int>(h)));
@@ -314,6 +331,7 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
         Block& blk = blocks[static_cast<std::size_t>(b)];
         const std::int64_t r0 = h * b / n_blocks, r1 = h * (b + 1) / n_blocks;
         bool several = false;
+        if (b == 0) blk.x.push_back(0), blk.label.push_back(kOutside);
         for (std::int64_t r = r0; r < r1; ++r) {
           const auto* src = px + static_cast<std::size_t>((r + y0) * nx + x0);
           const std::size_t before = blk.x.size();
@@ -328,26 +346,34 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
           }
           if (current != kOutside) blk.x.push_back(static_cast<std::int32_t>(w + 1)), blk.label.push_back(kOutside);
           blk.count.push_back(static_cast<std::int32_t>(blk.x.size() - before));
+          if (r == r0) {  // room at a quarter more than the first row's rate (growing by copies touches more memory),
+            // and for a run per 4 pixels at most (a row far busier than the others)
+            const auto rows = static_cast<std::size_t>(b == 0 ? H : r1 - r0), row_runs = blk.x.size() - before;
+            const std::size_t guess = std::min(rows * (row_runs * 5 / 4 + 1), rows * static_cast<std::size_t>(W) / 4);
+            blk.x.reserve(guess), blk.label.reserve(guess), blk.count.reserve(static_cast<std::size_t>(r1 - r0));
+          }
         }
         blk.several = several;
       }
     };
     std::visit(scan, pixels);
     bool several = false;
-    std::size_t n_runs = 2;
+    std::size_t n_runs = 1;  // and the last padding row's run
     for (const Block& blk : blocks) several = several || blk.several, n_runs += blk.x.size();
     if (!several)
       throw InputError(file + ": the image" + std::string(io.crop.empty() ? "" : " (cropped)") +
                        " holds one label only (" + std::to_string(first) + " in every pixel): no cells to tell apart");
     if (n_runs > static_cast<std::size_t>(std::numeric_limits<std::int32_t>::max()))
       throw InputError(file + ": too many label changes for a 2D import (2^31); crop the image");
-    // Joined into the runs of the padded image, each block copied to its place.
-    runs.off.resize(static_cast<std::size_t>(H + 1));
-    runs.x.resize(n_runs), runs.label.resize(n_runs);
-    std::vector<std::size_t> block_start(static_cast<std::size_t>(n_blocks) + 1, 1);  // after the padding row
+    // Joined into the runs of the padded image: block 0's in place, the others copied after them.
+    std::vector<std::size_t> block_start(static_cast<std::size_t>(n_blocks) + 1, 0);
     for (int b = 0; b < n_blocks; ++b)
       block_start[b + 1] = block_start[b] + blocks[static_cast<std::size_t>(b)].x.size();
-    runs.off[0] = 0, runs.x[0] = 0, runs.label[0] = kOutside;  // the padding rows: one outside run each
+    block_start[0] = 1;  // block 0's rows, after the padding row
+    runs.off.resize(static_cast<std::size_t>(H + 1));
+    runs.x.swap(blocks[0].x), runs.label.swap(blocks[0].label);
+    runs.x.resize(n_runs), runs.label.resize(n_runs);
+    runs.off[0] = 0;  // the padding rows: one outside run each
     runs.off[H - 1] = static_cast<std::int32_t>(n_runs - 1);
     runs.x[n_runs - 1] = 0, runs.label[n_runs - 1] = kOutside;
     runs.off[H] = static_cast<std::int32_t>(n_runs);
@@ -595,11 +621,60 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
   const std::size_t n_verts = n_corners + bridge_row.size() + n_hcorners;  // the pixel corners on a boundary
   const std::size_t n_vedges = runs.x.size() - static_cast<std::size_t>(H);  // the pixel edges, vertical
   const std::int64_t h_key = 2 * W * (H + 1);  // the keys of the corners inside horizontal stretches start here
-  std::vector<Vec3> pos;
+  CornerPositions pos;
   std::vector<std::int64_t> key;
   std::vector<BoundaryEdge> edges, h_edges;
-  pos.reserve(n_corners + 3 * bridge_row.size()), key.reserve(n_corners + 3 * bridge_row.size());
+  // The edge that follows each edge around each of its two cells: follow[e][0] leaves v, the end of e, along the
+  // left cell of e (which runs u -> v); follow[e][1] leaves u along the right cell (v -> u); -1 if there is none.
+  // At a vertex of two edges, the other edge. Both walks below (walls, outlines) read it instead of chasing a
+  // vertex's edges. Made in the sweep, as each corner row's vertices get all their edges (no incidence table).
+  std::vector<std::array<std::int32_t, 2>> follow, h_follow;
+  // Per vertex: its number of edges, whether it is a junction (more or fewer than two edges, or two between
+  // different cells), and for a junction its lowest edge (a vertical one), from which its others are found.
+  std::vector<std::uint8_t> degree;
+  std::vector<char> junction;
+  std::vector<std::int32_t> first_edge;
+  const std::size_t n_vertex_guess = n_corners + 3 * bridge_row.size();
+  pos.q.reserve(n_vertex_guess), key.reserve(n_vertex_guess);
+  degree.reserve(n_vertex_guess), junction.reserve(n_vertex_guess), first_edge.reserve(n_vertex_guess);
   edges.reserve(n_vedges + n_hedges), h_edges.reserve(n_hedges);
+  follow.reserve(n_vedges + n_hedges), h_follow.reserve(n_hedges);
+  // In the sweep, horizontal edge i is numbered -2 - i (and -1 is none); once every vertical edge is made, they
+  // follow them: n_vertical + i. Their order among themselves and after the vertical ones is kept.
+  auto followAt = [&](std::int32_t e) -> std::array<std::int32_t, 2>& {
+    return e >= 0 ? follow[e] : h_follow[-2 - e];
+  };
+  auto edgeOrder = [](std::int32_t e) { return e >= 0 ? std::int64_t{e} : (std::int64_t{1} << 40) - 2 - e; };
+  // An edge at a vertex, as the sweep knows it (without reading the edge): its number (-1: none), its cells, and
+  // whether the vertex is its end v (else its start u).
+  struct EdgeEnd {
+    std::int32_t e = -1, left = -1, right = -1;
+    bool at_v = false;
+  };
+  // Vertex vx's edges are `at`, all made: its degree, junction, and the follow at vx of each.
+  auto settle = [&](std::int32_t vx, std::array<EdgeEnd, 4> at) {
+    int d = 0;
+    for (const EdgeEnd& g : at)
+      if (g.e != -1) at[d++] = g;
+    for (int i = 1; i < d; ++i)  // increasing, as an incidence table made edge by edge lists them
+      for (int j = i; j > 0 && edgeOrder(at[j].e) < edgeOrder(at[j - 1].e); --j) std::swap(at[j], at[j - 1]);
+    const auto v = static_cast<std::size_t>(vx);
+    degree[v] = static_cast<std::uint8_t>(d);
+    junction[v] = d != 2 || std::minmax(at[0].left, at[0].right) != std::minmax(at[1].left, at[1].right);
+    first_edge[v] = at[0].e;
+    for (int i = 0; i < d; ++i) {
+      const int side = at[i].at_v ? 0 : 1;
+      const std::int32_t ci = side == 0 ? at[i].left : at[i].right;
+      std::int32_t f = -1;
+      if (d == 2) {
+        f = at[1 - i].e;
+      } else {
+        for (int j = 0; j < d && f < 0; ++j)
+          if ((at[j].left == ci && !at[j].at_v) || (at[j].right == ci && at[j].at_v)) f = at[j].e;
+      }
+      followAt(at[i].e)[side] = f;
+    }
+  };
   std::size_t pixel_edges = 0;  // in the edges made, checked against the counts above
   std::size_t bp_this = 0, bp_next = 0, bp_above = 0;  // into the bridge lists
   auto bridgeAt = [&](std::size_t& bp, std::int32_t row, std::int32_t x) -> int {
@@ -609,11 +684,13 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
   // The vertex at corner (ci, cj): at a bridged corner, `second` is the one on the side of the edges leaving
   // it up or left (type 1) or up or right (type 2), a quarter pixel off the corner.
   auto newVertex = [&](std::int32_t ci, std::int32_t cj, int type, bool second, std::int64_t k) {
-    const double x = ci - 1, y = cj - 1;
-    if (type == 1) pos.push_back(second ? Vec3(x - kSplit, y + kSplit, 0) : Vec3(x + kSplit, y - kSplit, 0));
-    else if (type == 2) pos.push_back(second ? Vec3(x + kSplit, y + kSplit, 0) : Vec3(x - kSplit, y - kSplit, 0));
-    else pos.push_back(Vec3(x, y, 0));
+    constexpr std::uint32_t s = 4 * kSplit;  // in quarter pixels
+    const std::uint32_t x = 4 * static_cast<std::uint32_t>(ci), y = 4 * static_cast<std::uint32_t>(cj);
+    if (type == 1) pos.q.push_back(second ? std::array{x - s, y + s} : std::array{x + s, y - s});
+    else if (type == 2) pos.q.push_back(second ? std::array{x + s, y + s} : std::array{x - s, y - s});
+    else pos.q.push_back({x, y});
     key.push_back(k);
+    degree.push_back(0), junction.push_back(0), first_edge.push_back(-1);
     return static_cast<std::int32_t>(pos.size() - 1);
   };
   // The scan's order of a corner met by a vertical pixel edge of pixel row `row`: its lower or upper end.
@@ -621,9 +698,11 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
   struct Corner {
     std::int32_t x, v0, v1;  // v1: the second vertex of a bridged corner; v0 -1: inside a vertical stack
     int type;
+    EdgeEnd down{}, up{}, left{}, right{};  // its edges
   };
   struct Up {
     std::int32_t x, vertex, edge;  // vertex -1: the stack of `edge` goes on into the row above
+    std::int32_t left, right;      // the edge's cells
   };
   std::vector<Corner> corners;  // of corner row cj: those on a vertical edge, by x
   std::vector<Up> up, next_up;  // the upper ends of the row below's vertical edges
@@ -640,25 +719,27 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
     while (p < up.size() || k < k_end) {
       const std::int32_t xa = p < up.size() ? up[p].x : kNone, xb = k < k_end ? runs.x[k] : kNone;
       if (xa < xb) {
-        corners.push_back({xa, up[p++].vertex, -1, 0});
+        corners.push_back({xa, up[p].vertex, -1, 0, {up[p].edge, up[p].left, up[p].right, true}});
+        ++p;
         continue;
       }
       const std::int32_t left = cell[k - 1], right = cell[k];
       const int type = bridgeAt(bp_this, cj, xb);
       std::int32_t v0 = -1, v1 = -1, e;
+      EdgeEnd down{};
       bool starts = true;
       if (xa == xb && up[p].vertex < 0) {  // the stack below goes on: its corner here is no vertex
         e = up[p++].edge, starts = false;
       } else {
         std::int32_t lower;
         if (xa == xb) {
-          v0 = up[p++].vertex;
+          down = {up[p].edge, up[p].left, up[p].right, true}, v0 = up[p++].vertex;
           lower = type ? (v1 = newVertex(xb, cj, type, true, vKey(cj, xb, 0))) : v0;
         } else {
           lower = v0 = newVertex(xb, cj, 0, false, vKey(cj, xb, 0));
         }
         e = static_cast<std::int32_t>(edges.size());
-        edges.push_back({lower, -1, left, right});
+        edges.push_back({lower, -1, left, right}), follow.push_back({-1, -1});
       }
       ++pixel_edges;
       // The stack goes on into row cj + 1 where that row has a vertical edge at xb between the same cells (no
@@ -669,13 +750,13 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
       const bool goes_on = ka < ka_end && runs.x[ka] == xb && cell[ka - 1] == left && cell[ka] == right &&
                            !(starts && type) && !bridgeAt(bp_above, cj + 2, xb);
       if (goes_on) {
-        next_up.push_back({xb, -1, e});
+        next_up.push_back({xb, -1, e, left, right});
       } else {
         const std::int32_t upper = newVertex(xb, cj + 1, type_up, false, vKey(cj, xb, 1));
         edges[static_cast<std::size_t>(e)].v = upper;
-        next_up.push_back({xb, upper, e});
+        next_up.push_back({xb, upper, e, left, right});
       }
-      corners.push_back({xb, v0, v1, type});
+      corners.push_back({xb, v0, v1, type, down, {starts ? e : -1, left, right, false}});
       ++k;
     }
     std::swap(up, next_up);
@@ -687,59 +768,54 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
                [&](std::size_t kb, std::size_t kc, std::int32_t s, std::int32_t e, bool, bool) {
                  const std::int32_t below = cell[kb], above = cell[kc];
                  if (below != above) {
-                   const Corner &cs = corners[q - 1], &ce = corners[q];
+                   Corner &cs = corners[q - 1], &ce = corners[q];
                    std::int32_t u = cs.type == 2 ? cs.v1 : cs.v0;  // leaving right: type 2's second vertex
                    const std::int32_t v = ce.type == 1 ? ce.v1 : ce.v0;  // leaving left: type 1's second vertex
+                   std::int32_t last = -1;  // the stretch's edge made last
+                   auto addEdge = [&](std::int32_t to) {
+                     const std::int32_t id = -2 - static_cast<std::int32_t>(h_edges.size());
+                     h_edges.push_back({u, to, above, below}), h_follow.push_back({-1, -1});
+                     if (last == -1) cs.right = {id, above, below, false};
+                     else followAt(last)[0] = id, followAt(id)[1] = last;  // at the kink between them
+                     last = id;
+                   };
                    auto kink = [&](std::int32_t ci) {
                      const std::int32_t kv = newVertex(ci, cj, 0, false, h_key + cj * W + ci);
-                     h_edges.push_back({u, kv, above, below});
+                     degree[static_cast<std::size_t>(kv)] = 2;  // two edges between the same cells
+                     addEdge(kv);
                      u = kv;
                    };
                    if (cs.type && e - s >= 2) kink(s + 1);
                    if (ce.type && e - s >= 2 && !(cs.type && e - s == 2)) kink(e - 1);
-                   h_edges.push_back({u, v, above, below});
+                   addEdge(v);
+                   ce.left = {last, above, below, true};
                    pixel_edges += static_cast<std::size_t>(e - s);
                  }
                  q += e < width;
                });
+    // The corners of row cj now have all their edges: at a bridged corner, the first vertex has the edges
+    // leaving it down and right (type 1) or down and left (type 2), the second the others.
+    for (const Corner& c : corners) {
+      if (c.v0 < 0) continue;
+      if (c.type == 0) settle(c.v0, {c.down, c.up, c.left, c.right});
+      else if (c.type == 1) settle(c.v0, {c.down, c.right, {}, {}}), settle(c.v1, {c.up, c.left, {}, {}});
+      else settle(c.v0, {c.down, c.left, {}, {}}), settle(c.v1, {c.up, c.right, {}, {}});
+    }
   }
+  // The horizontal edges after the vertical ones, renumbered.
+  const auto n_vertical = static_cast<std::int32_t>(edges.size());
+  auto renumber = [&](const std::array<std::int32_t, 2>& f) {
+    return std::array{f[0] < -1 ? n_vertical - 2 - f[0] : f[0], f[1] < -1 ? n_vertical - 2 - f[1] : f[1]};
+  };
+  for (auto& f : follow) f = renumber(f);
+  for (const auto& f : h_follow) follow.push_back(renumber(f));
   edges.insert(edges.end(), h_edges.begin(), h_edges.end());
   std::vector<BoundaryEdge>().swap(h_edges);
+  std::vector<std::array<std::int32_t, 2>>().swap(h_follow);
   const std::size_t n_edges = edges.size(), nv = pos.size();
   if (pixel_edges != n_vedges + n_hedges || nv + pixel_edges - n_edges != n_verts)
     throw InputError(file + ": the pixel corners were miscounted (an internal error)");
   Runs().x.swap(runs.x);
-  UninitializedVector<std::array<std::int32_t, 4>> incident(nv);  // written up to degree
-  std::vector<std::uint8_t> degree(nv, 0);
-  for (std::size_t e = 0; e < n_edges; ++e)
-    for (const std::int32_t v : {edges[e].u, edges[e].v}) incident[v][degree[v]++] = static_cast<std::int32_t>(e);
-  auto pairOf = [&](std::size_t e) { return std::minmax(edges[e].left, edges[e].right); };
-  std::vector<char> junction(nv, 0);
-  for (std::size_t v = 0; v < nv; ++v)
-    junction[v] = degree[v] != 2 || pairOf(incident[v][0]) != pairOf(incident[v][1]);
-  // The edge that follows each edge around each of its two cells: follow[e][0] leaves v, the end of e, along the
-  // left cell of e (which runs u -> v); follow[e][1] leaves u along the right cell (v -> u); -1 if there is none.
-  // At a vertex of two edges, the other edge. Both walks below (walls, outlines) then read two arrays indexed
-  // by the edge instead of chasing the vertex's incidence: in parallel, each edge writes its own entry.
-  UninitializedVector<std::array<std::int32_t, 2>> follow(n_edges);  // each written below
-#pragma omp parallel for schedule(static)
-  for (std::ptrdiff_t ee = 0; ee < static_cast<std::ptrdiff_t>(n_edges); ++ee) {
-    const auto e = static_cast<std::int32_t>(ee);
-    for (int side = 0; side < 2; ++side) {
-      const std::int32_t v = side == 0 ? edges[e].v : edges[e].u, ci = side == 0 ? edges[e].left : edges[e].right;
-      std::int32_t f = -1;
-      if (degree[v] == 2) {
-        f = incident[v][incident[v][0] == e];
-      } else {
-        for (int j = 0; j < degree[v] && f < 0; ++j) {
-          const std::int32_t g = incident[v][j];
-          if ((edges[g].left == ci && edges[g].u == v) || (edges[g].right == ci && edges[g].v == v)) f = g;
-        }
-      }
-      follow[e][side] = f;
-    }
-  }
-
   // Walls: chains of edges between junctions; a closed chain without one starts at its first vertex.
   // Outlines: per cell, its boundary edges chained the way the cell runs (counter-clockwise), from its first
   // edge (the edges of each cell in increasing order); the loop through a cell's first edge (each cell writes
@@ -748,7 +824,8 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
   // then runs on its section's thread; the result is the same for any number of threads).
   Walls walls;
   std::vector<std::array<std::int32_t, 2>> wall_cells;  // -1: none (the outside)
-  Csr<std::int32_t> cell_edges;
+  // Per cell: the number of its edges (as offsets: cell c has cell_off[c + 1] - cell_off[c]) and its first one.
+  std::vector<std::int32_t> cell_off, cell_first;
   Csr<std::int32_t> outlines;  // the vertices, in loop order
   std::vector<std::uint8_t> outline_fault(n_cells, 0);
   auto traceWalls = [&] {
@@ -773,10 +850,25 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
       walls.keep_one.push_back(0);
       wall_cells.push_back({edges[e0].left, edges[e0].right});
     };
-    for (std::size_t v = 0; v < nv; ++v)
-      if (junction[v])
-        for (int k = 0; k < degree[v]; ++k)
-          if (edge_wall[incident[v][k]] < 0) walk(static_cast<std::int32_t>(v), incident[v][k]);
+    // From each junction, in order, along each of its edges in increasing order. Its edges are found from its
+    // lowest one by turning around it: the edge that follows an edge at a vertex, around the cell on one side,
+    // is the next one around the vertex, and its other cell leads on.
+    for (std::size_t v = 0; v < nv; ++v) {
+      if (!junction[v]) continue;
+      const auto vx = static_cast<std::int32_t>(v);
+      const int d = degree[v];
+      std::array<std::int32_t, 4> at{first_edge[v], -1, -1, -1};
+      for (int k = 1; k < d; ++k) {
+        const std::int32_t g = at[k - 1];
+        at[k] = follow[g][edges[g].v == vx ? 0 : 1];
+        if (at[k] < 0 || std::find(at.begin(), at.begin() + k, at[k]) != at.begin() + k)
+          throw InputError(file + ": the walls around a junction were misread (an internal error)");
+      }
+      for (int i = 1; i < d; ++i)
+        for (int j = i; j > 0 && at[j] < at[j - 1]; --j) std::swap(at[j], at[j - 1]);
+      for (int k = 0; k < d; ++k)
+        if (edge_wall[at[k]] < 0) walk(vx, at[k]);
+    }
     for (std::size_t e = 0; e < n_edges; ++e)
       if (edge_wall[e] < 0) {
         junction[edges[e].u] = 1;
@@ -785,22 +877,17 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
     std::vector<std::int32_t>().swap(edge_wall);
   };
   auto traceOutlines = [&] {
-    cell_edges.off.assign(n_cells + 1, 0);
-    for (const BoundaryEdge& e : edges) {
-      if (e.left >= 0) ++cell_edges.off[static_cast<std::size_t>(e.left) + 1];
-      if (e.right >= 0) ++cell_edges.off[static_cast<std::size_t>(e.right) + 1];
-    }
-    std::partial_sum(cell_edges.off.begin(), cell_edges.off.end(), cell_edges.off.begin());
-    cell_edges.items.resize(static_cast<std::size_t>(cell_edges.off.back()));
-    {
-      std::vector<std::int32_t> fill(cell_edges.off.begin(), cell_edges.off.end() - 1);
-      for (std::size_t e = 0; e < n_edges; ++e) {
-        if (edges[e].left >= 0) cell_edges.items[fill[edges[e].left]++] = static_cast<std::int32_t>(e);
-        if (edges[e].right >= 0) cell_edges.items[fill[edges[e].right]++] = static_cast<std::int32_t>(e);
-      }
-    }
-    outlines.off = cell_edges.off;
-    outlines.items.resize(cell_edges.items.size());
+    cell_off.assign(n_cells + 1, 0), cell_first.assign(n_cells, -1);
+    for (std::size_t e = 0; e < n_edges; ++e)
+      for (const std::int32_t c : {edges[e].left, edges[e].right})
+        if (c >= 0) {
+          const auto ci = static_cast<std::size_t>(c);
+          ++cell_off[ci + 1];
+          if (cell_first[ci] < 0) cell_first[ci] = static_cast<std::int32_t>(e);
+        }
+    std::partial_sum(cell_off.begin(), cell_off.end(), cell_off.begin());
+    outlines.off = cell_off;
+    outlines.items.resize(static_cast<std::size_t>(cell_off.back()));
     // Each step of a walk waits for a load from memory (the edges are far apart): a block of cells is walked
     // kLanes at a time, one step of each in turn, so that their loads overlap. Each cell's walk is its own.
     {
@@ -818,8 +905,8 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
         auto start = [&](Lane& l) {
           if (c_next == c_end) return false;
           const std::size_t c = c_next++;
-          l.c = static_cast<std::int32_t>(c), l.begin = cell_edges.off[c], l.count = cell_edges.off[c + 1] - l.begin;
-          l.e = l.e0 = cell_edges.items[static_cast<std::size_t>(l.begin)], l.k = 0;
+          l.c = static_cast<std::int32_t>(c), l.begin = cell_off[c], l.count = cell_off[c + 1] - l.begin;
+          l.e = l.e0 = cell_first[c], l.k = 0;
           return true;
         };
         int active = 0;
@@ -850,6 +937,11 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
     if (!outline_fault[c]) continue;
     // Every loop of the cell, for the message.
     const auto ci = static_cast<std::int32_t>(c);
+    // Every vertex's edges (the sweep keeps none): for the message only.
+    std::vector<std::array<std::int32_t, 4>> incident(nv);
+    std::fill(degree.begin(), degree.end(), 0);
+    for (std::size_t e = 0; e < n_edges; ++e)
+      for (const std::int32_t v : {edges[e].u, edges[e].v}) incident[v][degree[v]++] = static_cast<std::int32_t>(e);
     auto side = [&](std::int32_t e) -> std::uint8_t { return edges[e].left == ci ? 1 : 2; };
     auto from = [&](std::int32_t e) { return edges[e].left == ci ? edges[e].u : edges[e].v; };
     auto to = [&](std::int32_t e) { return edges[e].left == ci ? edges[e].v : edges[e].u; };
@@ -862,8 +954,9 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
     };
     std::map<std::int32_t, std::uint8_t> edge_used;  // 1: walked by its left cell, 2: by its right one
     std::vector<std::vector<std::int32_t>> loops;
-    for (auto k = cell_edges.off[c]; k < cell_edges.off[c + 1]; ++k) {
-      const std::int32_t e0 = cell_edges.items[static_cast<std::size_t>(k)];
+    for (std::size_t k = 0; k < n_edges; ++k) {  // the cell's edges, in increasing order
+      const auto e0 = static_cast<std::int32_t>(k);
+      if (edges[k].left != ci && edges[k].right != ci) continue;
       if (edge_used[e0] & side(e0)) continue;
       loops.emplace_back();
       for (std::int32_t e = e0; !(edge_used[e] & side(e)); e = out(to(e))) {
@@ -905,22 +998,22 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
   std::vector<char> rotated(n_cells, 0);
   for (std::ptrdiff_t cc = 0; cc < static_cast<std::ptrdiff_t>(n_cells); ++cc) {
     const auto c = static_cast<std::size_t>(cc);
-    const auto& first = edges[static_cast<std::size_t>(cell_edges.items[static_cast<std::size_t>(cell_edges.off[c])])];
+    const auto& first = edges[static_cast<std::size_t>(cell_first[c])];
     if (pixelLength(pos[first.u], pos[first.v]) < 2) continue;
     rotated[c] = 1;
     const auto begin = outlines.items.begin();
-    std::rotate(begin + cell_edges.off[c], begin + cell_edges.off[c] + 1, begin + cell_edges.off[c + 1]);
+    std::rotate(begin + cell_off[c], begin + cell_off[c] + 1, begin + cell_off[c + 1]);
   }
-  UninitializedVector<std::int32_t>().swap(cell_edges.items);
+  std::vector<std::int32_t>().swap(cell_first);
   decltype(follow)().swap(follow);
 
   // Simplify, then make sure no two walls cross and no cell flattens.
   std::vector<char> keep(junction.begin(), junction.end());
   // Not read from here on: freed now, so that the arrays made below can take their memory.
   auto drop = [](auto& v) { std::remove_cvref_t<decltype(v)>().swap(v); };
-  drop(edges), drop(incident), drop(degree), drop(junction), drop(piece_of_run);
+  drop(edges), drop(first_edge), drop(degree), drop(junction), drop(piece_of_run);
   drop(runs.off), drop(runs.label), drop(bridge_row), drop(bridge_x), drop(bridge_type);
-  drop(cell_edges.off);
+  drop(cell_off);
   // The pixel corners kept inside edges, by wall (few or none: see simplifyEdge); has_inner[w]: wall w has some.
   std::map<std::int32_t, std::vector<InnerCorner>> wall_inner;
   std::vector<char> has_inner(n_walls, 0);

@@ -1036,6 +1036,25 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
   // The crossing test's points: every junction-line corner, then the walls' fan centres (n_corners + wall).
   std::vector<Vec3> points(n_corners + n_walls);
   for (std::size_t u = 0; u < n_corners; ++u) points[u] = Vec3(pos[u].x() * s[0], pos[u].y() * s[1], pos[u].z() * s[2]);
+  // The tissue's position of a point, bit for bit as written below (a junction-line corner from its grid position, a
+  // point inside a wall of faces from its crossing-test position), and back. The polygon checks run on these: the
+  // mesher runs the same ones on the tissue, and whether a loop's projection touches itself can depend on the last
+  // bit of a coordinate (a wall of voxel corners passed here in the crossing test's frame, shifted by 1.5 voxels,
+  // and was refused by the mesher).
+  auto worldOf = [&](std::size_t u) {
+    Vec3 x;
+    if (u < n_corners)
+      for (int a = 0; a < 3; ++a) x[a] = img.origin[a] + (pos[u][a] - 1.0 + static_cast<double>(lo[a]) - 0.5) * s[a];
+    else
+      for (int a = 0; a < 3; ++a)
+        x[a] = img.origin[a] + (points[u][a] / s[a] - 1.0 + static_cast<double>(lo[a]) - 0.5) * s[a];
+    return x;
+  };
+  auto fromWorld = [&](const Vec3& x) {
+    Vec3 y;
+    for (int a = 0; a < 3; ++a) y[a] = ((x[a] - img.origin[a]) / s[a] + 1.0 - static_cast<double>(lo[a]) + 0.5) * s[a];
+    return y;
+  };
   std::vector<char> refined(n_walls, 0);    // walls along a junction line simplified less than asked (or smoothed)
   std::vector<char> coarsened(n_walls, 0);  // simplify 0: walls along a junction line simplified after all
   std::vector<std::size_t> failing;  // walls still failing every repair
@@ -1239,7 +1258,9 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
         for (std::size_t j = 0; j < wall_faces[p].size(); ++j) {
           const auto& ids = wall_faces[p][j];
           const std::array<Vec3, 3> tp{points[ids[0]], points[ids[1]], points[ids[2]]};
-          const PolygonDefect defect = polygonDefect(tp);
+          const PolygonDefect defect = polygonDefect(std::array<Vec3, 3>{
+              worldOf(static_cast<std::size_t>(ids[0])), worldOf(static_cast<std::size_t>(ids[1])),
+              worldOf(static_cast<std::size_t>(ids[2]))});  // as the tissue will hold it
           // A sliver (mean width 2 area / perimeter, as the mesher measures it) is a defect too.
           const double width = (tp[1] - tp[0]).cross(tp[2] - tp[0]).norm() /
                                ((tp[1] - tp[0]).norm() + (tp[2] - tp[1]).norm() + (tp[0] - tp[2]).norm());
@@ -1284,20 +1305,28 @@ ImportResult tissueFromLabelImage3d(const LabelImage& img, const ImportOptions& 
         if (!(worst > kMinFoldCosine)) wall_state[p] = 1;
         continue;
       }
-      std::vector<Vec3> loop_points;
+      std::vector<Vec3> loop_points, loop_world;
       std::vector<std::int32_t> ids;
       for (const std::int32_t u : loops[p])
-        if (keep[u]) loop_points.push_back(points[u]), ids.push_back(u);
+        if (keep[u]) loop_points.push_back(points[u]), loop_world.push_back(worldOf(u)), ids.push_back(u);
       if (loop_points.size() < 3) {
         wall_state[p] = 2;
         continue;
       }
-      // The cells' volumes as the tissue will measure them (tissue/geometry.hpp).
-      const PolygonTriangulation tri = polygonTriangulation(loop_points);
+      // The cells' volumes as the tissue will measure them (tissue/geometry.hpp), from the loop as the tissue will
+      // hold it (its positions and order: the wall's vertices are written in this order).
+      // Where the crossing test's frame makes the same triangles (nearly always), its own fan centre is kept.
+      PolygonTriangulation tri = polygonTriangulation(loop_points);
+      PolygonTriangulation in_tissue = polygonTriangulation(loop_world);
+      const bool folded = in_tissue.folded;
+      if (in_tissue.triangles != tri.triangles || in_tissue.folded != tri.folded) {
+        tri = std::move(in_tissue);
+        if (tri.fan()) tri.center = fromWorld(tri.center);
+      }
       // A loop the mesher and validate() refuse (tissue/validate.cpp): simplify it less.
-      const PolygonDefect defect = polygonDefect(loop_points);
+      const PolygonDefect defect = polygonDefect(loop_world);
       wall_state[p] = defect.kind == PolygonDefect::Pinched ||
-                      (defect.kind == PolygonDefect::SelfIntersecting && tri.folded);
+                      (defect.kind == PolygonDefect::SelfIntersecting && folded);
       // A corner under kMinPolygonAngle degrees (a sliver, or a spike), which the wall mesher's angle bound fills
       // with points without end (a 0.0007-degree corner of a 4-corner wall at simplify 2 in docs/import.md).
       const double sin_min = std::sin(kMinPolygonAngle * std::numbers::pi / 180);

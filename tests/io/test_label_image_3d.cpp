@@ -29,6 +29,7 @@
 #include "tessella/generators/voronoi.hpp"
 #include "tessella/io/import.hpp"
 #include "tessella/io/label_image.hpp"
+#include "tessella/mesh/geometry_check.hpp"
 #include "tessella/mesh/mesh_tissue.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/geometry.hpp"
@@ -590,4 +591,88 @@ TEST_CASE("a 3D import makes no polygon wall with a corner under 0.1 degree (a s
   const mesh::FeMesh m = mesh::meshTissue(r.tissue, mesh::MeshOptions{});  // the default options: angle bound 20
   CHECK(m.dim == 3);
   CHECK(m.numElements() > 0);
+}
+
+TEST_CASE("a 3D import tests its walls' polygons as the tissue holds them, so the mesher accepts every one",
+          "[io][label_image]") {
+  // Noise of three labels and background (5 x 3 x 5 voxels, keep_pieces), simplify 1. A wall put back on its voxel
+  // corners has an outline whose projection on its best-fit plane touches itself within rounding: the import tested
+  // it in its own frame (the padded grid, 1.5 voxels off the tissue's) and passed it, the mesher tested the tissue's
+  // positions and refused it ("self-intersecting outline"). Both now decide on the tissue's positions, wherever the
+  // image lies.
+  LabelImage img = drawn({{"21133", "31101", "20033"},
+                          {"32002", "00210", "30012"},
+                          {"10330", "33012", "31020"},
+                          {"01302", "12323", "10312"},
+                          {"10021", "20003", "03123"}});
+  LabelImageOptions o;
+  o.background = {0};
+  o.keep_pieces = true;
+  for (const Vec3& origin : {Vec3(0, 0, 0), Vec3(100.25, -7.1, 2.9)}) {
+    INFO("origin " << origin.transpose());
+    img.origin = {origin.x(), origin.y(), origin.z()};
+    const ImportResult r = tissueFromLabelImage(img, withImage(o, 1.0));
+    ValidateOptions vo;
+    vo.check_euler = false;  // the noise's cells enclose tunnels of other cells
+    const auto report = validate(r.tissue, vo);
+    INFO(report.message);
+    REQUIRE(report.ok);
+    // The mesher's polygon test on every wall's loop, from the tissue's positions in the tissue's order.
+    for (WallId w : r.tissue.walls()) {
+      std::vector<Vec3> loop;
+      for (VertexId v : r.tissue.topology().faceVertices(handle_cast<FaceId>(w))) loop.push_back(r.tissue.position(v));
+      const PolygonDefect d = polygonDefect(loop);
+      INFO("wall " << w.index() << " " << polygonDefectText(d, {}, loop));
+      CHECK(!(d.kind == PolygonDefect::Pinched ||
+              (d.kind == PolygonDefect::SelfIntersecting && polygonTriangulation(loop).folded)));
+    }
+    const mesh::MeshabilityReport defects = mesh::findGeometryDefects(r.tissue);
+    INFO(defects.message);
+    CHECK(defects.ok);
+    const mesh::FeMesh m = mesh::meshTissue(r.tissue, mesh::MeshOptions{});
+    CHECK(m.numElements() > 0);
+  }
+}
+
+TEST_CASE("3D imports whose cells TetGen fails on, on the voxel grid's planes, mesh: the cell is meshed turned",
+          "[io][label_image]") {
+  // Noise of one label and background, keep_pieces: at simplify 0 (2 x 4 x 6 voxels) TetGen's tetrahedra of cell 0
+  // fell short of its volume by up to a voxel with every tolerance; at simplify 1 (6 x 6 x 4 voxels, three labels)
+  // TetGen failed an assertion of its insphere test on cell 8 with every tolerance. Both cells' walls are clean
+  // (no two wall triangles crossing or closer than 1/20 voxel); their points lie on a few planes of the voxel grid.
+  // The cell-by-cell mesher's last tries mesh the cell turned (docs/meshing.md).
+  const auto check = [](LabelImage img, double simplify) {
+    img.origin = {0.5, 0.5, 0.5};  // as from NumPy: the image spans [0, nx] x [0, ny] x [0, nz]
+    LabelImageOptions o;
+    o.background = {0};
+    o.keep_pieces = true;
+    const ImportResult r = tissueFromLabelImage(img, withImage(o, simplify));
+    ValidateOptions vo;
+    vo.check_euler = false;  // the noise's cells enclose tunnels of other cells
+    REQUIRE(validate(r.tissue, vo).ok);
+    const mesh::FeMesh m = mesh::meshTissue(r.tissue, mesh::MeshOptions{});
+    REQUIRE(m.dim == 3);
+    // Each cell's tetrahedra fill it: their volumes add up to the cell's as the tissue measures it.
+    std::vector<double> volume(r.tissue.slots(3), 0.0);
+    for (int e = 0; e < m.numElements(); ++e) {
+      const Vec3 a = m.nodes.row(m.elements(e, 0)).transpose();
+      const Vec3 b = m.nodes.row(m.elements(e, 1)).transpose(), c = m.nodes.row(m.elements(e, 2)).transpose(),
+                 d = m.nodes.row(m.elements(e, 3)).transpose();
+      const double v = (b - a).dot((c - a).cross(d - a)) / 6;
+      CHECK(v > 0);
+      volume[static_cast<std::size_t>(m.element_cell(e))] += v;
+    }
+    for (CellId c : r.tissue.cells()) {
+      INFO("cell " << c.index());
+      CHECK(volume[c.index()] == Approx(cellMeasure(r.tissue, c)).epsilon(1e-9));
+    }
+  };
+  check(drawn({{"00", "10", "01", "00"}, {"10", "00", "11", "11"}, {"11", "01", "00", "11"},
+               {"00", "10", "01", "11"}, {"01", "11", "10", "10"}, {"11", "11", "11", "10"}}),
+        0.0);
+  check(drawn({{"111001", "222303", "121110", "321230", "222103", "102030"},
+               {"111132", "010122", "023011", "023221", "101322", "320330"},
+               {"301200", "000320", "333301", "222023", "032110", "031300"},
+               {"332330", "301031", "211001", "221203", "101310", "001302"}}),
+        1.0);
 }

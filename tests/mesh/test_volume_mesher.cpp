@@ -244,12 +244,14 @@ TEST_CASE("cell by cell: a cell that cannot be meshed in time fails at the time 
       CHECK(e.element().index == 0);
       CHECK_THAT(e.what(), Catch::Contains("could not mesh cell 0 (2 cells failed)"));
       CHECK_THAT(e.what(), Catch::Contains("0.2 s per cell, mesh.cell_time_limit"));
-      // The five tries, in turn: 0.1, 0.05, 0.025, 0.0125 and 0.0125 s.
+      // The seven tries, in turn: 0.1, 0.05, 0.025, 0.0125, 0.00625, 0.003125 and 0.003125 s (adding up to 0.2).
       CHECK_THAT(e.what(), Catch::Contains("T1e-7q1.5a2e-07 in a cube: did not finish within 0.1 s; "
                                            "switches pYzAQT1e-7q1.5a2e-07: did not finish within 0.05 s"));
       CHECK_THAT(e.what(), Catch::Contains("pYzAQq1.5a2e-07: did not finish within 0.025 s"));
       CHECK_THAT(e.what(), Catch::Contains("pYzAQT1e-9q1.5a2e-07: did not finish within 0.0125 s"));
-      CHECK_THAT(e.what(), Catch::Contains("pYzAQT1e-6q1.5a2e-07: did not finish within 0.0125 s"));
+      CHECK_THAT(e.what(), Catch::Contains("pYzAQT1e-6q1.5a2e-07: did not finish within 0.00625 s"));
+      CHECK_THAT(e.what(), Catch::Contains("pYzAQT1e-7q1.5a2e-07 in a cube turned: did not finish within 0.00313 s; "
+                                           "switches pYzAQT1e-7q1.5a2e-07 turned: did not finish within 0.00313 s"));
     }
   }
   SECTION("the mesh's limit: the runs going are stopped, no other try starts") {

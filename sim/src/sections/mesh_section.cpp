@@ -67,8 +67,9 @@ void declareMeshSection(Schema& s) {
   s.key("mesh.cell_time_limit", ValueType::Float,
         "3D tissues meshed cell by cell: wall-clock seconds one cell's TetGen runs may take together. A cell "
         "whose run fails (a TetGen assertion, never-ending flips) is tried again with other coplanarity "
-        "tolerances, up to five tries; try k may run for 1/2^k of this limit, the last as long as the one "
-        "before. A cell still failing is an error naming it and every try. 0 = no limit.")
+        "tolerances (the last two with the cell turned), up to seven tries; try k may run for 1/2^k of this "
+        "limit, the last as long as the one before. A cell still failing is an error naming it and every try. "
+        "0 = no limit.")
       .byDefault(mesh::kDefaultCellTimeLimit)
       .atLeast(0);
   s.key("mesh.time_limit", ValueType::Float,
