@@ -260,6 +260,31 @@ TEST_CASE("Voronoi tissues do not depend on the thread count", "[voronoi][thread
     const auto in_ball = randomSeeds(Ball{}, 400, 16);
     CHECK(identical(withThreads(1, in_ball, Ball{}), withThreads(2, in_ball, Ball{})));
   }
+  SECTION("3D lattice (cospherical seeds everywhere), 1 and 2 threads") {
+    // Degenerate: CGAL's symbolic perturbation picks one of the many
+    // triangulations, the same whichever way it is built.
+    for (int n : {6, 20}) {  // 20^3 seeds: two half triangulations, split on a lattice plane
+      std::vector<Vec3> seeds;
+      for (int k = 0; k < n; ++k)
+        for (int j = 0; j < n; ++j)
+          for (int i = 0; i < n; ++i) seeds.emplace_back((i + 0.5) / n, (j + 0.5) / n, (k + 0.5) / n);
+      const Tissue one = withThreads(1, seeds, Box{});
+      REQUIRE(validate(one).ok);
+      CHECK(one.numVertices() == static_cast<std::size_t>((n + 1) * (n + 1) * (n + 1)));
+      CHECK(identical(one, withThreads(2, seeds, Box{})));
+    }
+  }
+  SECTION("3D box and ball, enough seeds for two half triangulations") {
+    // With 2 threads the triangulation is built as two halves side by side,
+    // with 1 thread as one: the same cells, numbered the same.
+    const auto seeds = randomSeeds(Box{}, 20000, 17);
+    const Tissue one = withThreads(1, seeds, Box{});
+    REQUIRE(validate(one).ok);
+    CHECK(totalMeasure(one) == Approx(1.0).epsilon(1e-9));
+    CHECK(identical(one, withThreads(2, seeds, Box{})));
+    const auto in_ball = randomSeeds(Ball{}, 12000, 18);
+    CHECK(identical(withThreads(1, in_ball, Ball{}), withThreads(2, in_ball, Ball{})));
+  }
   SECTION("3D box") {
     const auto seeds = randomSeeds(Box{}, 3000, 13);
     const Tissue one = withThreads(1, seeds, Box{});
