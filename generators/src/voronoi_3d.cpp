@@ -653,11 +653,11 @@ std::optional<RawTets> triangulateSplit(std::span<const Vec3> seeds, const std::
   return raw;
 }
 
-Tetrahedra tetrahedra(std::span<const Vec3> seeds) {
+// The seeds' ranks (order, rank, seeds by rank) of a Tetrahedra.
+Tetrahedra ranked(std::span<const Vec3> seeds, std::vector<Point>& points) {
   const std::size_t n = seeds.size();
   const std::int64_t ns = static_cast<std::int64_t>(n);
   Tetrahedra tets;
-  std::vector<Point> points;
   tets.order = spatialOrder(seeds, points);
   tets.rank.resize(n);
   tets.seeds.resize(n);
@@ -666,6 +666,13 @@ Tetrahedra tetrahedra(std::span<const Vec3> seeds) {
     tets.rank[tets.order[q]] = static_cast<Index>(q);
     tets.seeds[q] = seeds[tets.order[q]];
   }
+  return tets;
+}
+
+Tetrahedra tetrahedra(std::span<const Vec3> seeds) {
+  const std::size_t n = seeds.size();
+  std::vector<Point> points;
+  Tetrahedra tets = ranked(seeds, points);
   std::optional<RawTets> raw;
   if (n >= kSplitMinSeeds3 && omp_get_max_threads() >= 2) raw = triangulateSplit(seeds, points, tets);
   if (!raw) {
@@ -1231,6 +1238,12 @@ void assembleCells(std::span<const Vec3> seeds, const Tetrahedra& tets, const Du
 }
 
 }  // namespace
+
+bool triangulatesInHalves3(std::span<const Vec3> seeds) {
+  std::vector<Point> points;
+  const Tetrahedra tets = ranked(seeds, points);
+  return triangulateSplit(seeds, points, tets).has_value();
+}
 
 ClippedCells3 clipVoronoi3(std::span<const Vec3> seeds, const ConvexDomain3& domain,
                            double duplicate_tolerance, CellOutput output) {
