@@ -19,8 +19,11 @@
 #include <array>
 #include <span>
 #include <cmath>
+#include <iterator>
 #include <cstdint>
 #include <functional>
+#include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -32,8 +35,11 @@
 #include <CGAL/Delaunay_triangulation_3.h>
 #include <CGAL/Delaunay_triangulation_cell_base_3.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
 #pragma GCC diagnostic pop
 
 #include <Eigen/Dense>
@@ -65,19 +71,40 @@ using Point = Kernel::Point_3;
 constexpr int kScaffoldLabel = -1000000000;
 int domainLabel(std::size_t face) { return -1 - static_cast<int>(face); }
 
-Delaunay triangulate(std::span<const Vec3> seeds) {
-  std::vector<std::pair<Point, Index>> points;
+// CGAL's spatial (Hilbert) order of the seeds, computed as its range
+// insertion computes it (so the ranks are those of inserting all seeds at
+// once); `points` gets the seeds as CGAL points, by seed index.
+std::vector<Index> spatialOrder(std::span<const Vec3> seeds, std::vector<Point>& points) {
+  points.clear();
   points.reserve(seeds.size());
-  for (std::size_t i = 0; i < seeds.size(); ++i)
-    points.emplace_back(Point(seeds[i].x(), seeds[i].y(), seeds[i].z()), static_cast<Index>(i));
-  Delaunay dt;
-  dt.insert(points.begin(), points.end());  // spatially sorted insertion
+  for (const Vec3& s : seeds) points.emplace_back(s.x(), s.y(), s.z());
+  std::vector<std::size_t> sorted(seeds.size());
+  for (std::size_t i = 0; i < sorted.size(); ++i) sorted[i] = i;
+  using Traits = CGAL::Spatial_sort_traits_adapter_3<Kernel, CGAL::Pointer_property_map<Point>::type>;
+  CGAL::spatial_sort(sorted.begin(), sorted.end(), Traits(CGAL::make_property_map(points), Kernel()));
+  return std::vector<Index>(sorted.begin(), sorted.end());
+}
 
+// Inserts points[i] for i in `which` (spatial order) one by one, each located
+// from the last inserted vertex, as CGAL's range insertion does after its
+// sort; a vertex's info is its seed (the last one of exact duplicates).
+void insertInOrder(Delaunay& dt, const std::vector<Point>& points, std::span<const Index> which) {
+  Delaunay::Vertex_handle hint;
+  for (Index i : which) {
+    hint = dt.insert(points[i], hint);
+    if (hint != Delaunay::Vertex_handle()) hint->info() = i;
+  }
+}
+
+// One triangulation of all seeds; throws on duplicate or coplanar seeds.
+void triangulateWhole(Delaunay& dt, std::span<const Vec3> seeds, const std::vector<Point>& points,
+                      std::span<const Index> order) {
+  insertInOrder(dt, points, order);
   if (dt.number_of_vertices() < seeds.size()) {  // exact duplicates were merged
     std::vector<std::uint8_t> kept(seeds.size(), 0);
     for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) kept[v->info()] = 1;
     for (std::size_t i = 0; i < seeds.size(); ++i)
-      if (!kept[i]) throwDuplicate(seeds, i, dt.nearest_vertex(points[i].first)->info());
+      if (!kept[i]) throwDuplicate(seeds, i, dt.nearest_vertex(points[i])->info());
   }
   if (dt.dimension() < 3) {
     throw InputError("all " + std::to_string(seeds.size()) + " seeds are " +
@@ -88,7 +115,6 @@ Delaunay triangulate(std::span<const Vec3> seeds) {
   }
   // Seeds closer than duplicate_distance are found among Delaunay neighbours
   // (the nearest neighbour of every seed is one) by clipVoronoi3.
-  return dt;
 }
 
 // The point on the planes of sorted generators (equidistant from them) and
@@ -216,11 +242,11 @@ bool reverseOf(std::span<const Index> a, std::span<const Index> b) {
 // CGAL's incidence queries mark cells and are not thread-safe, so the cells'
 // vertices and neighbours, and each seed's cells, are copied out once. The
 // copy is renumbered for locality: seeds by rank along CGAL's spatial
-// (Hilbert) insertion order, cells by first appearance around the seeds in
-// that order. Random seeds then put neighbouring seeds, their cells and
-// circumcentres next to each other in memory, and every pass below streams
-// instead of missing the cache at each step. Only the cell list of the tissue
-// (cell k = seed k) and the messages go back to seed indices.
+// (Hilbert) insertion order, cells canonically by their vertex ranks (see
+// numberCanonically). Random seeds then put neighbouring seeds, their cells
+// and circumcentres next to each other in memory, and every pass below
+// streams instead of missing the cache at each step. Only the cell list of
+// the tissue (cell k = seed k) and the messages go back to seed indices.
 struct Tetrahedra {
   std::vector<std::array<Index, 4>> tv, tn;  // vertex ranks (kInvalidIndex: infinite), neighbour cells
   std::vector<std::uint8_t> finite;
@@ -246,65 +272,415 @@ void incidence(Tetrahedra& tets, std::size_t n) {
       if (v != kInvalidIndex) tets.inc[fill[v]++] = static_cast<Index>(t);
 }
 
-Tetrahedra tetrahedra(Delaunay& dt, std::span<const Vec3> seeds) {
-  const std::size_t n = seeds.size();
-  Tetrahedra tets;
-  tets.order.reserve(n);
-  tets.rank.resize(n);
-  tets.seeds.reserve(n);
-  for (auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v) {
-    tets.rank[v->info()] = static_cast<Index>(tets.order.size());
-    tets.order.push_back(v->info());
-    tets.seeds.push_back(seeds[v->info()]);
-  }
+// The cells of a Delaunay triangulation in any numbering: vertex ranks in
+// CGAL's slot order (positively oriented), the neighbour opposite each slot.
+struct RawTets {
+  std::vector<std::array<Index, 4>> tv, tn;
+  std::vector<std::uint8_t> finite;
+};
+
+RawTets readWhole(const Delaunay& dt, std::span<const Index> rank) {
   std::vector<Delaunay::Cell_handle> tet;
-  tet.reserve(7 * n);
+  tet.reserve(7 * dt.number_of_vertices());
   for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) {
     c->info() = static_cast<Index>(tet.size());
     tet.push_back(c);
   }
-  const std::size_t nt = tet.size();
-  // In CGAL's numbering first. (Reading handles is thread-safe; only CGAL's
-  // incidence queries are not.)
-  const std::int64_t nts = static_cast<std::int64_t>(nt);
-  std::vector<std::array<Index, 4>> tv(nt);
-#pragma omp parallel for schedule(static)
-  for (std::int64_t t = 0; t < nts; ++t)
-    for (int k = 0; k < 4; ++k) {
-      const auto v = tet[t]->vertex(k);
-      tv[t][k] = dt.is_infinite(v) ? kInvalidIndex : tets.rank[v->info()];
-    }
-  tets.tv = std::move(tv);
-  // Cells renumbered by first appearance along the ranks (every cell has a
-  // finite vertex): a cell first appears around its lowest rank, after the
-  // cells of lower indices there, so this is a counting sort of the cells by
-  // lowest rank, stable in CGAL's numbering.
-  std::vector<Index> lowest(nt), start(n + 1, 0);
+  const std::int64_t nts = static_cast<std::int64_t>(tet.size());
+  RawTets raw;
+  raw.tv.resize(tet.size());
+  raw.tn.resize(tet.size());
+  raw.finite.resize(tet.size());
+  // (Reading handles is thread-safe; only CGAL's incidence queries are not.)
 #pragma omp parallel for schedule(static)
   for (std::int64_t t = 0; t < nts; ++t) {
-    Index m = kInvalidIndex;
-    for (Index v : tets.tv[t]) m = std::min(m, v);  // kInvalidIndex (infinite) is the largest
-    lowest[t] = m;
+    for (int k = 0; k < 4; ++k) {
+      const auto v = tet[t]->vertex(k);
+      raw.tv[t][k] = dt.is_infinite(v) ? kInvalidIndex : rank[v->info()];
+      raw.tn[t][k] = tet[t]->neighbor(k)->info();
+    }
+    raw.finite[t] = !dt.is_infinite(tet[t]);
   }
-  for (std::size_t t = 0; t < nt; ++t) ++start[lowest[t] + 1];
+  return raw;
+}
+
+std::array<Index, 4> sortedRanks(std::array<Index, 4> v) {
+  std::sort(v.begin(), v.end());  // kInvalidIndex (infinite) last
+  return v;
+}
+
+// Cells numbered canonically: by their sorted vertex ranks, in lexicographic
+// order -- a function of the triangulation alone (unique for any seeds: CGAL
+// perturbs degenerate ones symbolically), not of CGAL's storage order nor of
+// how it was built (one triangulation or two halves). Sorted first by lowest
+// rank, a cell comes right after the cells around the ranks before its
+// lowest one, so cells around neighbouring seeds are close in memory.
+void numberCanonically(const RawTets& raw, std::size_t n, Tetrahedra& tets) {
+  const std::size_t nt = raw.tv.size();
+  const std::int64_t nts = static_cast<std::int64_t>(nt), ns = static_cast<std::int64_t>(n);
+  std::vector<std::array<Index, 4>> key(nt);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t t = 0; t < nts; ++t) key[t] = sortedRanks(raw.tv[t]);
+  std::vector<Index> start(n + 1, 0), old_of(nt), renumber(nt);
+  for (std::size_t t = 0; t < nt; ++t) ++start[key[t][0] + 1];
   for (std::size_t q = 0; q < n; ++q) start[q + 1] += start[q];
-  std::vector<Index> renumber(nt), old_of(nt);
-  for (std::size_t t = 0; t < nt; ++t) {
-    const Index u = start[lowest[t]]++;
-    renumber[t] = u;
-    old_of[u] = static_cast<Index>(t);
+  {
+    std::vector<Index> fill(start.begin(), start.end() - 1);
+    for (std::size_t t = 0; t < nt; ++t) old_of[fill[key[t][0]]++] = static_cast<Index>(t);
   }
-  tv.resize(nt);
+#pragma omp parallel for schedule(dynamic, 1024)
+  for (std::int64_t q = 0; q < ns; ++q)
+    std::sort(old_of.begin() + start[q], old_of.begin() + start[q + 1],
+              [&](Index a, Index b) { return key[a] < key[b]; });
+#pragma omp parallel for schedule(static)
+  for (std::int64_t u = 0; u < nts; ++u) renumber[old_of[u]] = static_cast<Index>(u);
+  tets.tv.resize(nt);
   tets.tn.resize(nt);
   tets.finite.resize(nt);
 #pragma omp parallel for schedule(static)
   for (std::int64_t u = 0; u < nts; ++u) {
     const Index t = old_of[u];
-    tv[u] = tets.tv[t];
-    tets.finite[u] = !dt.is_infinite(tet[t]);
-    for (int k = 0; k < 4; ++k) tets.tn[u][k] = renumber[tet[t]->neighbor(k)->info()];
+    tets.tv[u] = raw.tv[t];
+    tets.finite[u] = raw.finite[t];
+    for (int k = 0; k < 4; ++k) tets.tn[u][k] = renumber[raw.tn[t][k]];
   }
-  tets.tv = std::move(tv);
+}
+
+// --- Two half triangulations side by side --------------------------------------
+
+// Mean spacings of seeds each half keeps beyond the split plane (most
+// circumballs of uniformly spread seeds' cells are narrower; the seeds a wider
+// one holds are inserted when found), and the fewest seeds worth splitting.
+constexpr double kSplitMargin3 = 2.0;
+constexpr std::size_t kSplitMinSeeds3 = 5000;
+
+// The seeds a half left out, in bins (boxes of about 32 seeds) with their
+// bounding boxes: whether a cell of the half is a cell of the whole
+// triangulation is decided by the exact in-sphere test against the left-out
+// seeds of the bins its circumball (or, for an infinite cell, the open side of
+// its hull facet) may reach.
+struct LeftOut {
+  Vec3 lo = Vec3::Constant(0), hi = Vec3::Constant(0);  // of all
+  std::vector<Vec3> box_lo, box_hi;                     // per bin (empty bins dropped)
+  std::vector<Index> start;
+  std::vector<Point> points;
+  std::vector<Index> seed;             // points[k] is seed seed[k]
+  std::vector<std::uint8_t> inserted;  // since inserted into the half (no longer left out)
+
+  LeftOut(std::span<const Vec3> seeds, const std::vector<Point>& all, std::span<const Index> which) {
+    if (which.empty()) return;
+    lo = hi = seeds[which[0]];
+    for (Index i : which) {
+      lo = lo.cwiseMin(seeds[i]);
+      hi = hi.cwiseMax(seeds[i]);
+    }
+    const Vec3 extent = (hi - lo).cwiseMax(Vec3::Constant(1e-300));
+    const double w = std::cbrt(extent.prod() * 32.0 / static_cast<double>(which.size()));
+    std::array<std::size_t, 3> dims{};
+    for (int a = 0; a < 3; ++a) dims[a] = std::clamp<std::size_t>(static_cast<std::size_t>(extent[a] / w) + 1, 1, 64);
+    auto binOf = [&](const Vec3& p) {
+      std::size_t b = 0;
+      for (int a = 2; a >= 0; --a) {
+        const auto c = static_cast<std::size_t>((p[a] - lo[a]) / extent[a] * static_cast<double>(dims[a]));
+        b = b * dims[a] + std::min(c, dims[a] - 1);
+      }
+      return b;
+    };
+    const std::size_t nb = dims[0] * dims[1] * dims[2];
+    std::vector<Index> count(nb + 1, 0);
+    for (Index i : which) ++count[binOf(seeds[i]) + 1];
+    for (std::size_t b = 0; b < nb; ++b) count[b + 1] += count[b];
+    std::vector<Index> sorted(which.size());
+    {
+      std::vector<Index> fill(count.begin(), count.end() - 1);
+      for (Index i : which) sorted[fill[binOf(seeds[i])]++] = i;
+    }
+    start.push_back(0);
+    for (std::size_t b = 0; b < nb; ++b) {
+      if (count[b] == count[b + 1]) continue;
+      Vec3 blo = seeds[sorted[count[b]]], bhi = blo;
+      for (Index k = count[b]; k < count[b + 1]; ++k) {
+        blo = blo.cwiseMin(seeds[sorted[k]]);
+        bhi = bhi.cwiseMax(seeds[sorted[k]]);
+        points.push_back(all[sorted[k]]);
+        seed.push_back(sorted[k]);
+      }
+      box_lo.push_back(blo);
+      box_hi.push_back(bhi);
+      start.push_back(static_cast<Index>(points.size()));
+    }
+    inserted.assign(points.size(), 0);
+  }
+};
+
+double squaredDistanceToBox(const Vec3& p, const Vec3& lo, const Vec3& hi) {
+  return (lo - p).cwiseMax(p - hi).cwiseMax(Vec3::Zero()).squaredNorm();
+}
+
+Vec3 toVec(const Point& p) { return Vec3(p.x(), p.y(), p.z()); }
+
+// Whether cell c of a half's triangulation is a cell of the triangulation of
+// all seeds: no left-out seed (not inserted since) in its circumsphere (or
+// beyond its hull facet), by CGAL's exact test with the symbolic perturbation
+// the whole triangulation uses. Returns such a seed (its place in `out`), or
+// kInvalidIndex. Bins are skipped by floating-point bounds widened far beyond their
+// rounding: the circumcentre of a nearly flat cell is ill-conditioned (error
+// about machine epsilon times L^4 / 6V for longest edge L and volume V), the
+// ball is widened by 1e-10 of that; a hull facet's plane by 1e-9 of its
+// edges' and the distance's product.
+Index conflict(const Delaunay& dt, Delaunay::Cell_handle c, const LeftOut& out) {
+  if (out.points.empty()) return kInvalidIndex;
+  auto inBin = [&](std::size_t b) {
+    for (Index k = out.start[b]; k < out.start[b + 1]; ++k)
+      if (!out.inserted[k] && dt.side_of_sphere(c, out.points[k], true) != CGAL::ON_UNBOUNDED_SIDE) return k;
+    return kInvalidIndex;
+  };
+  const std::size_t nb = out.box_lo.size();
+  if (!dt.is_infinite(c)) {
+    std::array<Vec3, 4> p;
+    for (int k = 0; k < 4; ++k) p[k] = toVec(c->vertex(k)->point());
+    const Vec3 cc = toVec(CGAL::circumcenter(c->vertex(0)->point(), c->vertex(1)->point(), c->vertex(2)->point(),
+                                             c->vertex(3)->point()));
+    double r2 = 0, l2 = 0;
+    for (int k = 0; k < 4; ++k) {
+      r2 = std::max(r2, (p[k] - cc).squaredNorm());
+      for (int m = k + 1; m < 4; ++m) l2 = std::max(l2, (p[k] - p[m]).squaredNorm());
+    }
+    const double v6 = std::abs((p[1] - p[0]).dot((p[2] - p[0]).cross(p[3] - p[0])));
+    const double r = std::sqrt(r2) + 1e-10 * l2 * l2 / v6;
+    if (!std::isfinite(r) || !cc.allFinite()) {
+      for (std::size_t b = 0; b < nb; ++b)
+        if (const Index k = inBin(b); k != kInvalidIndex) return k;
+      return kInvalidIndex;
+    }
+    if (squaredDistanceToBox(cc, out.lo, out.hi) > r * r) return kInvalidIndex;
+    for (std::size_t b = 0; b < nb; ++b)
+      if (squaredDistanceToBox(cc, out.box_lo[b], out.box_hi[b]) <= r * r)
+        if (const Index k = inBin(b); k != kInvalidIndex) return k;
+    return kInvalidIndex;
+  }
+  const int i = c->index(dt.infinite_vertex());
+  std::array<Vec3, 3> f;
+  for (int k = 1; k <= 3; ++k) f[k - 1] = toVec(c->vertex((i + k) % 4)->point());
+  Vec3 normal = (f[1] - f[0]).cross(f[2] - f[0]);  // towards the open side
+  if (normal.dot(toVec(dt.mirror_vertex(c, i)->point()) - f[0]) > 0) normal = -normal;
+  const double l = std::max({(f[1] - f[0]).norm(), (f[2] - f[1]).norm(), (f[0] - f[2]).norm()});
+  for (std::size_t b = 0; b < nb; ++b) {
+    const Vec3 centre = (out.box_lo[b] + out.box_hi[b]) / 2, half = (out.box_hi[b] - out.box_lo[b]) / 2;
+    const double reach = normal.dot(centre - f[0]) + normal.cwiseAbs().dot(half);
+    const double tol = 1e-9 * l * l * ((centre - f[0]).norm() + half.norm());
+    if (reach < -tol) continue;
+    if (const Index k = inBin(b); k != kInvalidIndex) return k;
+  }
+  return kInvalidIndex;
+}
+
+// One half's triangulation and the cells it contributes: those whose lowest
+// rank it owns. Every cell around a seed it owns is certified (a cell of the
+// whole triangulation), so its star is the whole triangulation's and it
+// contributes every cell whose lowest rank it owns. A neighbour across a
+// facet the half does not contribute is the other half's cell listed with
+// that facet (one with a neighbour it does not contribute there).
+struct Half {
+  std::unique_ptr<Delaunay> dt;
+  std::vector<std::array<Index, 4>> tv, tn;  // tn: local cell, or kInvalidIndex (looked up)
+  std::vector<std::uint8_t> finite;
+  std::vector<std::pair<std::array<Index, 3>, Index>> border;  // (facet's sorted ranks, local cell), sorted
+  struct Pending {
+    Index cell;
+    int slot;
+    std::array<Index, 3> key;  // the facet opposite the slot
+  };
+  std::vector<Pending> pending;
+  bool ok = false;
+};
+
+void buildHalf(int s, const std::vector<Point>& points, std::span<const Index> kept, LeftOut& out,
+               std::span<const Index> rank, std::span<const std::uint8_t> owner_of_rank,
+               std::span<const std::uint8_t> owner_of_seed, Half& h) {
+  h.dt = std::make_unique<Delaunay>();
+  Delaunay& dt = *h.dt;
+  insertInOrder(dt, points, kept);
+  if (dt.number_of_vertices() != kept.size() || dt.dimension() < 3) return;  // left to one triangulation
+  auto ranksOf = [&](Delaunay::Cell_handle c) {
+    std::array<Index, 4> r;
+    for (int k = 0; k < 4; ++k) {
+      const auto v = c->vertex(k);
+      r[k] = dt.is_infinite(v) ? kInvalidIndex : rank[v->info()];
+    }
+    return r;
+  };
+  // Every cell around a seed it owns is certified; a left-out seed in
+  // conflict with one is inserted (near the domain's boundary the
+  // triangulation has long flat cells), and the new cells (those around the
+  // inserted seeds) are certified in turn.
+  std::size_t added = 0;
+  std::vector<Index> more;  // places in `out`
+  auto certify = [&](Delaunay::Cell_handle c) {
+    bool owns = false;
+    for (int k = 0; k < 4; ++k) {
+      const auto v = c->vertex(k);
+      owns |= !dt.is_infinite(v) && owner_of_seed[v->info()] == s;
+    }
+    if (!owns) return;
+    if (const Index k = conflict(dt, c, out); k != kInvalidIndex && !out.inserted[k]) {
+      out.inserted[k] = 1;
+      more.push_back(k);
+    }
+  };
+  for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) certify(c);
+  std::vector<Delaunay::Vertex_handle> inserted;
+  std::vector<Delaunay::Cell_handle> around;
+  while (!more.empty()) {
+    added += more.size();
+    if (added > kept.size() / 8) return;  // left to one triangulation
+    std::sort(more.begin(), more.end(), [&](Index a, Index b) { return rank[out.seed[a]] < rank[out.seed[b]]; });
+    inserted.clear();
+    Delaunay::Vertex_handle hint;
+    for (Index k : more) {
+      hint = dt.insert(out.points[k], hint);
+      hint->info() = out.seed[k];
+      inserted.push_back(hint);
+    }
+    if (dt.number_of_vertices() != kept.size() + added) return;
+    more.clear();
+    around.clear();
+    for (const auto v : inserted) dt.incident_cells(v, std::back_inserter(around));
+    for (const auto c : around) certify(c);
+  }
+  std::vector<Delaunay::Cell_handle> cells;
+  for (auto c = dt.all_cells_begin(); c != dt.all_cells_end(); ++c) {
+    const std::array<Index, 4> r = ranksOf(c);
+    const Index lowest = *std::min_element(r.begin(), r.end());
+    if (owner_of_rank[lowest] != s) {
+      c->info() = kInvalidIndex;
+      continue;
+    }
+    c->info() = static_cast<Index>(cells.size());
+    cells.push_back(c);
+    h.tv.push_back(r);
+    h.finite.push_back(!dt.is_infinite(c));
+  }
+  h.tn.resize(cells.size());
+  for (std::size_t u = 0; u < cells.size(); ++u) {
+    const Delaunay::Cell_handle c = cells[u];
+    for (int k = 0; k < 4; ++k) {
+      const Delaunay::Cell_handle nb = c->neighbor(k);
+      h.tn[u][k] = nb->info();
+      if (nb->info() != kInvalidIndex) continue;
+      std::array<Index, 3> facet;
+      for (int m = 0, f = 0; m < 4; ++m)
+        if (m != k) facet[f++] = h.tv[u][m];
+      std::sort(facet.begin(), facet.end());
+      h.pending.push_back({static_cast<Index>(u), k, facet});
+      h.border.emplace_back(facet, static_cast<Index>(u));
+    }
+  }
+  std::sort(h.border.begin(), h.border.end());
+  h.ok = true;
+}
+
+// The triangulation of all seeds from two halves (split at the median x, each
+// with the other's seeds within a margin) triangulated side by side, or
+// nothing when a cell cannot be certified or a neighbour is not found (then
+// one triangulation is built: the split changes speed, never the result).
+std::optional<RawTets> triangulateSplit(std::span<const Vec3> seeds, const std::vector<Point>& points,
+                                        const Tetrahedra& tets) {
+  const std::size_t n = seeds.size();
+  std::vector<double> xs(n);
+  Vec3 lo = seeds[0], hi = seeds[0];
+  for (std::size_t i = 0; i < n; ++i) {
+    xs[i] = seeds[i].x();
+    lo = lo.cwiseMin(seeds[i]);
+    hi = hi.cwiseMax(seeds[i]);
+  }
+  std::nth_element(xs.begin(), xs.begin() + static_cast<std::ptrdiff_t>(n / 2), xs.end());
+  const double split = xs[n / 2];
+  const double margin = kSplitMargin3 * std::cbrt((hi - lo).prod() / static_cast<double>(n));
+  if (!(margin > 0) || split - margin <= lo.x() || split + margin >= hi.x()) return std::nullopt;
+  std::vector<std::uint8_t> owner_of_rank(n), owner_of_seed(n);  // 0: x <= split, 1: beyond
+  for (std::size_t q = 0; q < n; ++q) {
+    const Index i = tets.order[q];
+    const double x = seeds[i].x();
+    owner_of_rank[q] = owner_of_seed[i] = x <= split ? 0 : 1;
+  }
+  std::array<Half, 2> half;
+#pragma omp parallel for num_threads(2) schedule(static, 1)
+  for (int s = 0; s < 2; ++s) {
+    std::vector<Index> mine, left_out;
+    for (std::size_t q = 0; q < n; ++q) {
+      const Index i = tets.order[q];
+      const double x = seeds[i].x();
+      const bool keep = s == 0 ? x <= split + margin : x >= split - margin;
+      (keep ? mine : left_out).push_back(i);
+    }
+    try {
+      LeftOut out(seeds, points, left_out);
+      buildHalf(s, points, mine, out, tets.rank, owner_of_rank, owner_of_seed, half[s]);
+    } catch (...) {  // (none expected) left to one triangulation, which reports it
+      half[s].ok = false;
+    }
+  }
+  if (!half[0].ok || !half[1].ok) return std::nullopt;
+  const std::array<Index, 2> offset{0, static_cast<Index>(half[0].tv.size())};
+  std::array<std::uint8_t, 2> found{1, 1};
+  RawTets raw;
+  const std::size_t nt = half[0].tv.size() + half[1].tv.size();
+  raw.tv.resize(nt);
+  raw.tn.resize(nt);
+  raw.finite.resize(nt);
+#pragma omp parallel for num_threads(2) schedule(static, 1)
+  for (int s = 0; s < 2; ++s) {
+    Half& h = half[s];
+    const Half& other = half[1 - s];
+    for (std::size_t u = 0; u < h.tv.size(); ++u) {
+      raw.tv[offset[s] + u] = h.tv[u];
+      raw.finite[offset[s] + u] = h.finite[u];
+      for (int k = 0; k < 4; ++k)
+        raw.tn[offset[s] + u][k] = h.tn[u][k] == kInvalidIndex ? kInvalidIndex : h.tn[u][k] + offset[s];
+    }
+    for (const Half::Pending& p : h.pending) {
+      const auto it = std::lower_bound(other.border.begin(), other.border.end(), std::make_pair(p.key, Index{0}));
+      if (it == other.border.end() || it->first != p.key) {
+        found[s] = 0;
+        break;
+      }
+      raw.tn[offset[s] + p.cell][p.slot] = offset[1 - s] + it->second;
+    }
+    h.dt.reset();
+  }
+  if (!found[0] || !found[1]) return std::nullopt;
+  return raw;
+}
+
+// The seeds' ranks (order, rank, seeds by rank) of a Tetrahedra.
+Tetrahedra ranked(std::span<const Vec3> seeds, std::vector<Point>& points) {
+  const std::size_t n = seeds.size();
+  const std::int64_t ns = static_cast<std::int64_t>(n);
+  Tetrahedra tets;
+  tets.order = spatialOrder(seeds, points);
+  tets.rank.resize(n);
+  tets.seeds.resize(n);
+#pragma omp parallel for schedule(static)
+  for (std::int64_t q = 0; q < ns; ++q) {
+    tets.rank[tets.order[q]] = static_cast<Index>(q);
+    tets.seeds[q] = seeds[tets.order[q]];
+  }
+  return tets;
+}
+
+Tetrahedra tetrahedra(std::span<const Vec3> seeds) {
+  const std::size_t n = seeds.size();
+  std::vector<Point> points;
+  Tetrahedra tets = ranked(seeds, points);
+  std::optional<RawTets> raw;
+  if (n >= kSplitMinSeeds3 && omp_get_max_threads() >= 2) raw = triangulateSplit(seeds, points, tets);
+  if (!raw) {
+    Delaunay dt;
+    triangulateWhole(dt, seeds, points, tets.order);
+    raw = readWhole(dt, tets.rank);
+  }
+  numberCanonically(*raw, n, tets);
   incidence(tets, n);
   return tets;
 }
@@ -863,10 +1239,15 @@ void assembleCells(std::span<const Vec3> seeds, const Tetrahedra& tets, const Du
 
 }  // namespace
 
+bool triangulatesInHalves3(std::span<const Vec3> seeds) {
+  std::vector<Point> points;
+  const Tetrahedra tets = ranked(seeds, points);
+  return triangulateSplit(seeds, points, tets).has_value();
+}
+
 ClippedCells3 clipVoronoi3(std::span<const Vec3> seeds, const ConvexDomain3& domain,
                            double duplicate_tolerance, CellOutput output) {
-  Delaunay dt = triangulate(seeds);
-  const Tetrahedra tets = tetrahedra(dt, seeds);
+  const Tetrahedra tets = tetrahedra(seeds);
   DualVertices3 dual;
   computeCircumcentres(tets.seeds, domain, tets, dual);
   groupCloseCircumcentres(tets, kWeldTolerance * domain.scale, dual);

@@ -44,6 +44,11 @@ ClippedCells2 clipVoronoi2(std::span<const Vec3> seeds, const ConvexDomain2& dom
 ClippedCells3 clipVoronoi3(std::span<const Vec3> seeds, const ConvexDomain3& domain,
                            double duplicate_tolerance, CellOutput output);
 
+// Whether the 3D triangulation of these seeds can be built as two halves side
+// by side (voronoi_3d.cpp; with 2 threads or more and 5000 seeds or more
+// clipVoronoi3 does so, else it builds one triangulation of all seeds).
+bool triangulatesInHalves3(std::span<const Vec3> seeds);
+
 /// Lloyd relaxation: `iterations` times, every seed moves to the centroid of
 /// its clipped cell.
 std::vector<Vec3> lloydRelax(std::span<const Vec3> seeds, const ConvexDomain2& domain,

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <map>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -19,6 +20,7 @@
 #include "tessella/tissue/geometry.hpp"
 #include "tessella/tissue/validate.hpp"
 #include "tessella/generators/voronoi.hpp"
+#include "../../generators/src/voronoi_cells.hpp"
 
 using namespace tessella;
 
@@ -259,6 +261,57 @@ TEST_CASE("Voronoi tissues do not depend on the thread count", "[voronoi][thread
     CHECK(identical(withThreads(1, seeds, Box{}), withThreads(2, seeds, Box{})));
     const auto in_ball = randomSeeds(Ball{}, 400, 16);
     CHECK(identical(withThreads(1, in_ball, Ball{}), withThreads(2, in_ball, Ball{})));
+  }
+  SECTION("3D lattice (cospherical seeds everywhere), 1 and 2 threads") {
+    // Degenerate: CGAL's symbolic perturbation picks one of the many
+    // triangulations, the same whichever way it is built.
+    for (int n : {6, 20}) {  // 20^3 seeds: two half triangulations, split on a lattice plane
+      std::vector<Vec3> seeds;
+      for (int k = 0; k < n; ++k)
+        for (int j = 0; j < n; ++j)
+          for (int i = 0; i < n; ++i) seeds.emplace_back((i + 0.5) / n, (j + 0.5) / n, (k + 0.5) / n);
+      if (n == 20) REQUIRE(detail::triangulatesInHalves3(seeds));
+      const Tissue one = withThreads(1, seeds, Box{});
+      REQUIRE(validate(one).ok);
+      CHECK(one.numVertices() == static_cast<std::size_t>((n + 1) * (n + 1) * (n + 1)));
+      CHECK(identical(one, withThreads(2, seeds, Box{})));
+    }
+  }
+  SECTION("3D box and ball, enough seeds for two half triangulations") {
+    // With 2 threads the triangulation is built as two halves side by side,
+    // with 1 thread as one: the same cells, numbered the same.
+    auto seeds = randomSeeds(Box{}, 20000, 17);
+    REQUIRE(detail::triangulatesInHalves3(seeds));  // (else both would build one triangulation)
+    const Tissue one = withThreads(1, seeds, Box{});
+    REQUIRE(validate(one).ok);
+    CHECK(totalMeasure(one) == Approx(1.0).epsilon(1e-9));
+    CHECK(identical(one, withThreads(2, seeds, Box{})));
+    const auto in_ball = randomSeeds(Ball{}, 12000, 18);
+    REQUIRE(detail::triangulatesInHalves3(in_ball));
+    CHECK(identical(withThreads(1, in_ball, Ball{}), withThreads(2, in_ball, Ball{})));
+    // A hole around the box's centre (where the split plane runs) with one
+    // seed in it: its tetrahedra reach far past the halves' margin.
+    std::erase_if(seeds, [](const Vec3& p) { return (p - Vec3(0.5, 0.5, 0.5)).norm() < 0.15; });
+    seeds.emplace_back(0.5, 0.5, 0.5);
+    const Tissue holed = withThreads(1, seeds, Box{});
+    REQUIRE(validate(holed).ok);
+    CHECK(identical(holed, withThreads(2, seeds, Box{})));
+    // An exact duplicate: the same error whichever way it is triangulated.
+    seeds[12345] = seeds[321];
+    CHECK_FALSE(detail::triangulatesInHalves3(seeds));
+    std::string message[2];
+    const int before = omp_get_max_threads();
+    for (int threads : {1, 2}) {
+      omp_set_num_threads(threads);
+      try {
+        voronoiTissue(seeds, Box{});
+      } catch (const InputError& e) {
+        message[threads - 1] = e.what();
+      }
+    }
+    omp_set_num_threads(before);
+    CHECK_FALSE(message[0].empty());
+    CHECK(message[0] == message[1]);
   }
   SECTION("3D box") {
     const auto seeds = randomSeeds(Box{}, 3000, 13);
