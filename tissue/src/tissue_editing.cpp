@@ -82,13 +82,17 @@ FaceSplit Tissue::splitFace(FaceId f, VertexId a, VertexId b) {
       fraction = k.area / (k.area + m.area);
     }
   }
+  return commitFaceSplit(f, a, b, fraction);
+}
+
+FaceSplit Tissue::commitFaceSplit(FaceId f, VertexId a, VertexId b, double kept) {
   const auto [e, f2] = complex_.splitFace(f, a, b);  // checks the topology
   grew(1);
   grew(2);
   if (dim() == 2)
-    dividedCell(f.index(), f2.index(), fraction);
+    dividedCell(f.index(), f2.index(), kept);
   else
-    properties_[2].divide(f.index(), f2.index(), fraction);
+    properties_[2].divide(f.index(), f2.index(), kept);
   ++geometry_version_;
   paranoidCheck("splitFace");
   return {e, f2};
@@ -204,13 +208,7 @@ CellSplit Tissue::applyCellSplit(const CellSplitPlan3D& plan) {
   }
   // The walls as splitFace would split them (its checks were made by the plan,
   // which also measured the share each keeps).
-  for (const auto& cut : plan.wall_cuts) {
-    const FaceId f2 = complex_.splitFace(cut.wall, corner[cut.from], corner[cut.to]).second;
-    grew(1);
-    grew(2);
-    properties_[2].divide(cut.wall.index(), f2.index(), cut.kept_fraction);
-    ++geometry_version_;
-  }
+  for (const auto& cut : plan.wall_cuts) commitFaceSplit(cut.wall, corner[cut.from], corner[cut.to], cut.kept_fraction);
   // A wall goes to the daughter when its first vertex off the plane is on the positive side.
   std::vector<FaceId> moving;
   for (OrientedFace of : complex_.volumeFaces(vol)) {

@@ -277,6 +277,8 @@ class Tissue {
   void newCell(Index cell);
   void dividedCell(Index mother, Index daughter, double fraction);
   void paranoidCheck(const char* where) const;
+  // splitFace's edit once its checks passed: the complex's split, and `kept` of the measures to f.
+  FaceSplit commitFaceSplit(FaceId f, VertexId a, VertexId b, double kept);
   // splitCell's edits: apply a plan made for this tissue as it is.
   CellSplit applyCellSplit(const CellSplitPlan2D& plan);
   CellSplit applyCellSplit(const CellSplitPlan3D& plan);
