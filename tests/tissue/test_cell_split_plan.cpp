@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "fixtures.hpp"
 #include "tessella/tissue/cell_split_plan.hpp"
@@ -257,5 +259,93 @@ TEST_CASE("a plan applied later: the same division, refused once the tissue chan
     CHECK(cellMeasure(t, got.daughter) == cellMeasure(reference, expected.daughter));
     CHECK_THROWS_AS(t.splitCell(plan), std::logic_error);
     CHECK_THROWS_AS(t.splitCell(planCellSplit3D(box(1, 1, 1), CellId(0), plane)), std::logic_error);  // a 3D plan
+  }
+}
+
+TEST_CASE("a refused 2D cut leaves the tissue as it was", "[tissue][editing][plan]") {
+  // Two unit squares side by side; cell 0 is [0,1]^2, its loop (0,0) (1,0) (1,1) (0,1).
+  // With snap tolerance 0, the line through (0.5, 0) and (1 - eps, 1) leaves the corner
+  // (1, 1) eps * 2 / sqrt(5) off it, on the side of (1, 0): it crosses the bottom edge at
+  // its middle and the top edge (1,1)-(0,1) at parameter eps from (1, 1), where splitEdge
+  // refuses a vertex (within 1e-12 of an end). The plan is made (the batch splitCells
+  // takes such plans); the serial edit made its first cut, then threw (an extra vertex).
+  const double eps = 1e-14;
+  Tissue t = rectangularGrid(2, 1);
+  const CellId c(0);
+  const Vec3 p(0.5, 0, 0), q(1 - eps, 1, 0);
+  const Vec3 normal = (q - p).cross(Vec3(0, 0, 1));
+  const EdgeId bottom = edgeBetween(t, Vec3(0, 0, 0), Vec3(1, 0, 0)), top = edgeBetween(t, Vec3(1, 1, 0), Vec3(0, 1, 0));
+  const SplitOptions options{.snap_tolerance = 0, .min_fraction = 0};
+  const Snapshot before(t);
+  const std::size_t vertices = t.numVertices(), edges = t.numEdges(), faces = t.numFaces();
+  const auto unchanged = [&] {
+    CHECK(Snapshot(t) == before);
+    CHECK(t.numVertices() == vertices);
+    CHECK(t.numEdges() == edges);
+    CHECK(t.numFaces() == faces);
+    CHECK(t.numCells() == 2);
+    CHECK(t.topology().faceVertices(FaceId(0)).size() == 4);
+    CHECK(t.topology().faceVertices(FaceId(1)).size() == 4);
+    CHECK(validate(t).ok);
+  };
+  // The message of the GeometryError `divide` throws ("" if it throws none).
+  const auto geometryError = [](auto&& divide) -> std::string {
+    try {
+      divide();
+    } catch (const GeometryError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  const auto edgeName = [](EdgeId e) { return "edge " + std::to_string(e.index()) + " "; };
+
+  SECTION("the corner crossing is the second cut") {
+    const Plane plane{p, normal};
+    const CellSplitPlan2D plan = planCellSplit2D(t, c, plane, options);
+    REQUIRE(plan.a.isNew());
+    REQUIRE(plan.b.isNew());
+    REQUIRE(plan.a.edge == bottom);  // cut first, fine
+    REQUIRE(plan.b.edge == top);     // cut second, refused
+    CHECK_THROWS_AS(t.splitCell(c, plane, options), GeometryError);
+    unchanged();
+    const std::string what = geometryError([&] { t.splitCell(c, plane, options); });
+    CHECK_THAT(what, Catch::Contains("cell 0 (lineage 0)") && Catch::Contains(edgeName(top)) &&
+                         Catch::Contains("not strictly between its vertices (parameter "));
+    // The value named is the new vertex's parameter on the top edge: about eps from one end.
+    const std::size_t at = what.find("(parameter ");
+    REQUIRE(at != std::string::npos);
+    const double named = std::stod(what.substr(at + 11));
+    CHECK(std::min(named, 1 - named) == Approx(eps).epsilon(0.01));
+    unchanged();
+    CHECK_THAT(geometryError([&] { t.splitCell(plan); }), Catch::Contains("cell 0") && Catch::Contains(edgeName(top)));
+    unchanged();
+
+    // The batch takes the plan as it did (a vertex eps from the corner).
+    Tissue batch = t;
+    const std::vector<CellSplitPlan2D> plans{plan};
+    const std::vector<CellSplit> splits = batch.splitCells(plans);
+    CHECK(splits.at(0).new_vertices.size() == 2);
+    CHECK(batch.numCells() == 3);
+  }
+  SECTION("the corner crossing is the first cut") {
+    // The same line mirrored in y = 0.5: through (0.5, 1) and (1 - eps, 0).
+    const Plane plane{Vec3(0.5, 1, 0), Vec3(normal.x(), -normal.y(), 0)};
+    const CellSplitPlan2D plan = planCellSplit2D(t, c, plane, options);
+    REQUIRE(plan.a.edge == bottom);  // now the refused one, cut first
+    REQUIRE(plan.b.edge == top);
+    CHECK_THROWS_AS(t.splitCell(c, plane, options), GeometryError);
+    CHECK_THAT(geometryError([&] { t.splitCell(c, plane, options); }),
+               Catch::Contains("cell 0 (lineage 0)") && Catch::Contains(edgeName(bottom)) &&
+                   Catch::Contains("not strictly between its vertices (parameter"));
+    unchanged();
+  }
+  SECTION("the line a little further from the corner divides") {
+    const Plane plane{p, (Vec3(1 - 1e-3, 1, 0) - p).cross(Vec3(0, 0, 1))};
+    const CellSplit s = t.splitCell(c, plane, options);
+    CHECK(s.new_vertices.size() == 2);
+    CHECK(validate(t).ok);
+    // The trapezoid (0,0) (0.5,0) (0.999,1) (0,1) stays: (0.5 + 0.999) / 2.
+    CHECK(cellMeasure(t, c) == Approx(0.7495).epsilon(1e-12));
+    CHECK(cellMeasure(t, s.daughter) == Approx(0.2505).epsilon(1e-12));
   }
 }
