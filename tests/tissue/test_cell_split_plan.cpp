@@ -339,6 +339,36 @@ TEST_CASE("a refused 2D cut leaves the tissue as it was", "[tissue][editing][pla
                    Catch::Contains("not strictly between its vertices (parameter"));
     unchanged();
   }
+  SECTION("a plan edited by hand is refused before any edit") {
+    // splitCell(plan) takes any plan with the tissue's versions: each defect
+    // below made the first cut, then threw in the complex's splitFace.
+    const CellSplitPlan2D planned = planCellSplit2D(t, c, Plane{Vec3(0.5, 0.5, 0), Vec3(1, 0, 0)});
+    REQUIRE(planned.a.edge == bottom);
+    REQUIRE(planned.b.edge == top);
+    const EdgeId right = edgeBetween(t, Vec3(1, 0, 0), Vec3(1, 1, 0)), far = edgeBetween(t, Vec3(2, 0, 0), Vec3(2, 1, 0));
+    CellSplitPlan2D plan = planned;
+    SECTION("an edge of another cell") {
+      plan.b = {{}, far, Vec3(2, 0.5, 0)};
+      CHECK_THROWS_WITH(t.splitCell(plan), Catch::Contains("cell 0") && Catch::Contains("edge " + std::to_string(far.index())));
+    }
+    SECTION("the same edge twice") {
+      plan.b = {{}, bottom, Vec3(0.25, 0, 0)};
+      CHECK_THROWS_WITH(t.splitCell(plan), Catch::Contains("cell 0") && Catch::Contains("twice"));
+    }
+    SECTION("an end of the edge it cuts") {
+      plan.b = {vertexAt(t, Vec3(1, 0, 0)), {}, Vec3(1, 0, 0)};
+      CHECK_THROWS_WITH(t.splitCell(plan), Catch::Contains("cell 0") && Catch::Contains("its own edge"));
+    }
+    SECTION("two adjacent corners") {
+      plan.a = {vertexAt(t, Vec3(1, 0, 0)), {}, Vec3(1, 0, 0)};
+      plan.b = {vertexAt(t, Vec3(1, 1, 0)), {}, Vec3(1, 1, 0)};
+      REQUIRE(right);
+      CHECK_THROWS_WITH(t.splitCell(plan), Catch::Contains("cell 0") && Catch::Contains("adjacent"));
+    }
+    CHECK_THROWS_AS(t.splitCell(plan), TopologyError);
+    unchanged();
+    CHECK(t.splitCell(planned).new_vertices.size() == 2);  // the plan as made still divides
+  }
   SECTION("the line a little further from the corner divides") {
     const Plane plane{p, (Vec3(1 - 1e-3, 1, 0) - p).cross(Vec3(0, 0, 1))};
     const CellSplit s = t.splitCell(c, plane, options);

@@ -27,6 +27,66 @@ using detail::loopArea;
 using detail::pointText;
 using detail::SmallMap;
 
+// The checks of the edits that apply a 2D plan (Tissue::applyCellSplit:
+// splitEdge for a new end a, then for b, then the complex's splitFace), made
+// before the first edit on the numbers those edits see, so that a refused
+// plan leaves the tissue as it was. The second splitEdge sees b's edge as it
+// is now: splitting a's edge moves no vertex and keeps every other edge's ends.
+// A plan planCellSplit2D made on this tissue passes every topology check below
+// (its ends are distinct crossings of the cell's loop: a vertex on the plane is
+// no end of a crossed edge, two vertices on it are not adjacent); its new
+// vertices may still lie within 1e-12 of their edge's ends (snap tolerance 0),
+// where splitEdge refuses them. That check is not planning's own, as
+// Tissue::splitCells takes such plans (it places the vertex as planned).
+void checkChordEdits(const Tissue& t, const CellSplitPlan2D& plan) {
+  const CellComplex& cx = t.topology();
+  const CellId c = plan.cell;
+  if (!t.alive(c))
+    throw TopologyError("cannot divide dead cell " + std::to_string(c.index()), {2, c.index()});
+  const FaceId f(c.index());
+  const auto who = [&] {
+    return "cell " + std::to_string(c.index()) + " (lineage " + std::to_string(t.lineageId(c)) + ")";
+  };
+  const auto refuse = [&](const std::string& why) {
+    throw TopologyError("the division plan of " + who() + " " + why, {2, c.index()});
+  };
+  for (const CutNode* x : {&plan.a, &plan.b}) {
+    if (!x->isNew()) {
+      if (cx.loopPosition(f, x->vertex) < 0)
+        refuse("ends at vertex " + std::to_string(x->vertex.index()) + ", not on its loop");
+      continue;
+    }
+    if (cx.loopPosition(f, x->edge) < 0)
+      refuse("cuts edge " + std::to_string(x->edge.index()) + ", not on its loop");
+    try {
+      edgeParameter(t.position(cx.edgeFrom(x->edge)), t.position(cx.edgeTo(x->edge)), x->point, x->edge);
+    } catch (const GeometryError& error) {
+      throw GeometryError("division plane of " + who() + ": " + error.what(), error.element());
+    }
+  }
+  const CutNode &a = plan.a, &b = plan.b;
+  if (!a.isNew() && !b.isNew()) {
+    // The complex's splitFace refuses these.
+    const int n = static_cast<int>(cx.faceVertices(f).size());
+    const int ia = cx.loopPosition(f, a.vertex), ib = cx.loopPosition(f, b.vertex);
+    if (ia == ib || (ia + 1) % n == ib || (ib + 1) % n == ia)
+      refuse("joins vertices " + std::to_string(a.vertex.index()) + " and " + std::to_string(b.vertex.index()) +
+             ", equal or adjacent on its loop");
+    if (const EdgeId e = cx.findEdge(a.vertex, b.vertex))
+      refuse("joins vertices " + std::to_string(a.vertex.index()) + " and " + std::to_string(b.vertex.index()) +
+             ", already joined by edge " + std::to_string(e.index()));
+  } else if (a.isNew() && b.isNew()) {
+    if (a.edge == b.edge) refuse("cuts edge " + std::to_string(a.edge.index()) + " twice");
+  } else {
+    // A new vertex is joined to its edge's ends only.
+    const VertexId v = a.isNew() ? b.vertex : a.vertex;
+    const EdgeId e = a.isNew() ? a.edge : b.edge;
+    if (cx.edgeFrom(e) == v || cx.edgeTo(e) == v)
+      refuse("joins vertex " + std::to_string(v.index()) + " to a new vertex on its own edge " +
+             std::to_string(e.index()));
+  }
+}
+
 }  // namespace
 
 double Tissue::measureFraction(int degree, Index kept, Index part) const {
@@ -165,6 +225,13 @@ CellSplit Tissue::splitCell(const CellSplitPlan3D& plan) {
 }
 
 CellSplit Tissue::applyCellSplit(const CellSplitPlan2D& plan) {
+  // Everything below that could refuse the plan is checked here first. What
+  // follows then cannot throw but for lack of memory, a user's Custom
+  // division function (run after its element is split) or a paranoid build's
+  // validate(): splitEdge's dead-edge check and the complex's splitFace checks
+  // are those of checkChordEdits, and the built-in property policies and the
+  // lineage only assign values to slots grew() made.
+  checkChordEdits(*this, plan);
   const FaceId f(plan.cell.index());
   CellSplit result;
   auto vertexAt = [&](const CutNode& x) {

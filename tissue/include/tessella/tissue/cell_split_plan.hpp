@@ -76,7 +76,10 @@ struct CellSplitPlan3D {
 /// The plan of Tissue::splitCell for a cell of a 2D (planar or surface)
 /// tissue, with splitCell's checks: InputError for options out of range,
 /// TopologyError for a dead cell, GeometryError for a plane that cannot
-/// divide the cell (docs/ARCHITECTURE.md, "Editing primitives").
+/// divide the cell (docs/ARCHITECTURE.md, "Editing primitives"). Not the
+/// checks of the edits that apply it (a new vertex within 1e-12 of its edge's
+/// end, possible with snap tolerance 0): Tissue::splitCells takes such plans,
+/// and Tissue::splitCell makes those checks before its first edit.
 CellSplitPlan2D planCellSplit2D(const Tissue& tissue, CellId c, const Plane& plane,
                                 const SplitOptions& options = {});
 
