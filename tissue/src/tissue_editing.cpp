@@ -50,23 +50,19 @@ void checkChordEdits(const Tissue& t, const CellSplitPlan2D& plan) {
   const auto refuse = [&](const std::string& why) {
     throw TopologyError("the division plan of " + who() + " " + why, {2, c.index()});
   };
-  // Where each end is on the loop: a new vertex's edge i joins vertices i and i + 1.
-  const CutNode* ends[2] = {&plan.a, &plan.b};
-  const auto edges = cx.faceEdges(f);
-  const auto vertices = cx.faceVertices(f);
-  const int n = static_cast<int>(vertices.size());
-  int at[2] = {-1, -1};
-  for (int i = 0; i < n; ++i)
-    for (int k = 0; k < 2; ++k)
-      if (ends[k]->isNew() ? edges[i].handle() == ends[k]->edge : vertices[i] == ends[k]->vertex) at[k] = i;
-  for (int k = 0; k < 2; ++k) {
-    const CutNode& x = *ends[k];
-    if (at[k] < 0)
-      refuse(x.isNew() ? "cuts edge " + std::to_string(x.edge.index()) + ", not on its loop"
-                       : "ends at vertex " + std::to_string(x.vertex.index()) + ", not on its loop");
-    if (!x.isNew()) continue;
+  // Each end on the cell's loop: a new vertex's edge bounds the cell (one of
+  // at most two faces), an existing vertex is found on the loop (rare: a
+  // vertex on the plane).
+  for (const CutNode* x : {&plan.a, &plan.b}) {
+    if (!x->isNew()) {
+      if (cx.loopPosition(f, x->vertex) < 0)
+        refuse("ends at vertex " + std::to_string(x->vertex.index()) + ", not on its loop");
+      continue;
+    }
+    if (!cx.alive(x->edge) || std::ranges::find(cx.edgeFaces(x->edge), f) == cx.edgeFaces(x->edge).end())
+      refuse("cuts edge " + std::to_string(x->edge.index()) + ", not on its loop");
     try {
-      edgeParameter(t.position(cx.edgeFrom(x.edge)), t.position(cx.edgeTo(x.edge)), x.point, x.edge);
+      edgeParameter(t.position(cx.edgeFrom(x->edge)), t.position(cx.edgeTo(x->edge)), x->point, x->edge);
     } catch (const GeometryError& error) {
       throw GeometryError("division plane of " + who() + ": " + error.what(), error.element());
     }
@@ -74,7 +70,9 @@ void checkChordEdits(const Tissue& t, const CellSplitPlan2D& plan) {
   const CutNode &a = plan.a, &b = plan.b;
   if (!a.isNew() && !b.isNew()) {
     // The complex's splitFace refuses these.
-    if (at[0] == at[1] || (at[0] + 1) % n == at[1] || (at[1] + 1) % n == at[0])
+    const int n = static_cast<int>(cx.faceVertices(f).size());
+    const int ia = cx.loopPosition(f, a.vertex), ib = cx.loopPosition(f, b.vertex);
+    if (ia == ib || (ia + 1) % n == ib || (ib + 1) % n == ia)
       refuse("joins vertices " + std::to_string(a.vertex.index()) + " and " + std::to_string(b.vertex.index()) +
              ", equal or adjacent on its loop");
     if (const EdgeId e = cx.findEdge(a.vertex, b.vertex))
@@ -84,10 +82,11 @@ void checkChordEdits(const Tissue& t, const CellSplitPlan2D& plan) {
     if (a.edge == b.edge) refuse("cuts edge " + std::to_string(a.edge.index()) + " twice");
   } else {
     // A new vertex is adjacent to, and joined to, its edge's ends only.
-    const int v = a.isNew() ? at[1] : at[0], e = a.isNew() ? at[0] : at[1];
-    if (v == e || v == (e + 1) % n)
-      refuse("joins vertex " + std::to_string(vertices[v].index()) + " to a new vertex on its own edge " +
-             std::to_string(edges[e].handle().index()));
+    const VertexId v = a.isNew() ? b.vertex : a.vertex;
+    const EdgeId e = a.isNew() ? a.edge : b.edge;
+    if (cx.edgeFrom(e) == v || cx.edgeTo(e) == v)
+      refuse("joins vertex " + std::to_string(v.index()) + " to a new vertex on its own edge " +
+             std::to_string(e.index()));
   }
 }
 
