@@ -340,8 +340,9 @@ TEST_CASE("a refused 2D cut leaves the tissue as it was", "[tissue][editing][pla
     unchanged();
   }
   SECTION("a plan edited by hand is refused before any edit") {
-    // splitCell(plan) takes any plan with the tissue's versions: each defect
-    // below made the first cut, then threw in the complex's splitFace.
+    // splitCell(plan) takes any plan with the tissue's versions. Before the
+    // check, the first three defects below made the first cut, then threw in
+    // the complex's splitFace; the fourth threw there, naming no cell.
     const CellSplitPlan2D planned = planCellSplit2D(t, c, Plane{Vec3(0.5, 0.5, 0), Vec3(1, 0, 0)});
     REQUIRE(planned.a.edge == bottom);
     REQUIRE(planned.b.edge == top);
@@ -362,7 +363,7 @@ TEST_CASE("a refused 2D cut leaves the tissue as it was", "[tissue][editing][pla
     SECTION("two adjacent corners") {
       plan.a = {vertexAt(t, Vec3(1, 0, 0)), {}, Vec3(1, 0, 0)};
       plan.b = {vertexAt(t, Vec3(1, 1, 0)), {}, Vec3(1, 1, 0)};
-      REQUIRE(right);
+      REQUIRE(right);  // they are joined by the right edge
       CHECK_THROWS_WITH(t.splitCell(plan), Catch::Contains("cell 0") && Catch::Contains("adjacent"));
     }
     CHECK_THROWS_AS(t.splitCell(plan), TopologyError);
