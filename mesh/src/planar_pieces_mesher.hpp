@@ -22,8 +22,8 @@
 // (Delaunay_mesher_no_edge_refinement_2), keeping their side points. The
 // mesh stays conforming and exact; the angle bound may be missed next to
 // those sides. Pieces marked `inside_only` (a fan
-// triangle sharper than the bound, whose wedge would feed O(1/angle) points
-// to its sides) are always refined inside only.
+// triangle or a planar wall with a corner sharper than the bound, whose wedge
+// would feed O(1/angle) points to its sides) are always refined inside only.
 //
 // Every refinement runs within a vertex budget (bounded_refinement.hpp) and
 // raises a GeometryError naming the piece's owner instead of running on.

@@ -87,4 +87,18 @@ inline double smallestAngleDegrees(const std::array<Vec3, 3>& c) {
   return smallest;
 }
 
+/// Smallest interior angle of a planar polygon whose loop runs counter-clockwise
+/// about the unit normal n, in degrees (reflex corners count as more than 180).
+inline double smallestCornerDegrees(std::span<const Vec3> loop, const Vec3& n) {
+  double smallest = 360.0;
+  const std::size_t m = loop.size();
+  for (std::size_t i = 0; i < m; ++i) {
+    const Vec3 back = loop[(i + m - 1) % m] - loop[i], ahead = loop[(i + 1) % m] - loop[i];
+    double angle = std::atan2(n.dot(ahead.cross(back)), ahead.dot(back)) * 180.0 / std::numbers::pi;
+    if (angle < 0.0) angle += 360.0;
+    smallest = std::min(smallest, angle);
+  }
+  return smallest;
+}
+
 }  // namespace tessella::mesh::detail

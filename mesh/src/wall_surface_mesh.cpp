@@ -17,7 +17,14 @@ WallSurfaceMesh meshWallSurfaces(const Tissue& t, const WallTriangulation& walls
   for (WallId w : t.walls()) {
     if (walls.wall_planar[w.index()]) {
       PlanarPiece p{{}, walls.wall_normal[w.index()]};
-      for (VertexId v : t.topology().faceVertices(handle_cast<FaceId>(w))) p.corners.push_back(static_cast<int>(v.index()));
+      std::vector<Vec3> loop;
+      for (VertexId v : t.topology().faceVertices(handle_cast<FaceId>(w))) {
+        p.corners.push_back(static_cast<int>(v.index()));
+        loop.push_back(t.position(v));
+      }
+      // A wall with a corner sharper than the bound is refined inside only, like a sharp fan triangle: the
+      // wedge cannot meet the bound, and its side splits would bounce between the walls around the corner.
+      p.inside_only = min_angle_degrees > 0.0 && smallestCornerDegrees(loop, p.normal) < min_angle_degrees;
       pieces.push_back(std::move(p));
       piece_wall.push_back(static_cast<int>(w.index()));
       continue;

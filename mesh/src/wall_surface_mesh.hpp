@@ -10,9 +10,9 @@
 // its own plane by a CGAL constrained Delaunay refinement. The sides of the
 // pieces — tissue edges, shared by every wall around them, and the spokes of
 // non-planar fans — are subdivided once, uniformly, and every piece using a
-// side gets exactly those points; the refinement never splits a side
-// (Delaunay_mesher_no_edge_refinement_2). So the mesh conforms across walls by
-// construction, with no rounds of side splits to settle.
+// side gets exactly those points and the points the refinement of the pieces
+// puts on it, in rounds (planar_pieces_mesher.hpp). A piece with a corner
+// sharper than the angle bound is refined inside only: it never splits a side.
 
 #include <array>
 #include <vector>
