@@ -285,6 +285,10 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
       for (std::uint32_t e = 0; e < ne; ++e)
         for (VertexId v : c.edge_vertices_[e]) star[star_end[v.index()]++] = EdgeId(e);
       for (std::size_t v = 0; v < num_vertices; ++v) star_end[v] -= star_start[v];  // now each star's size
+      // edge_vertices_ to its size (it had room for one edge per loop side): bytes() counts capacity.
+      UninitializedVector<std::array<VertexId, 2>> edge_vertices = detail::freshArray<std::array<VertexId, 2>>(ne);
+      std::copy_n(c.edge_vertices_.begin(), ne, edge_vertices.begin());
+      c.edge_vertices_.swap(edge_vertices);
       c.alive_[0].assign(num_vertices, 1);
       c.vertex_edges_ = RaggedArray<EdgeId>::fromPool(std::move(star), std::span(star_start).first(num_vertices),
                                                       std::span(star_end).first(num_vertices));
