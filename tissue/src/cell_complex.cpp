@@ -259,7 +259,8 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
                             {2, f});
       if (dim == 2) edge_face_slots[2 * e + edge_face_count[e]] = FaceId(f);
       ++edge_face_count[e];
-      // Reversed when the edge does not start at a: it starts at the lower end exactly when a is not it.
+      // Reversed when the edge does not start at a, i.e. it starts at the lower end and a is the higher, or
+      // the other way round.
       face_edges[b + i] = OrientedEdge(EdgeId(e), ((item & kFromLower) != 0) != (a == lo));
     }
   }
