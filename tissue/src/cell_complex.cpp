@@ -3,13 +3,16 @@
 #include "tessella/tissue/cell_complex.hpp"
 
 #include <algorithm>
+#include <exception>
 #include <limits>
+#include <numeric>
 #include <span>
 #include <type_traits>
 #include <string>
 #include <utility>
 
 #include "closed_surface.hpp"
+#include "huge_pages.hpp"
 #include "tessella/tissue/errors.hpp"
 
 namespace tessella {
@@ -179,138 +182,173 @@ CellComplex CellComplex::fromLoops(int dim, std::size_t num_vertices, std::span<
   // Loop q is face faceOf(q); every pass below reads the loops in list order.
   auto faceOf = [&](std::size_t q) -> Index { return face_ids.empty() ? static_cast<Index>(q) : face_ids[q]; };
   // Check every loop first, so that an error leaves nothing half built.
-  std::vector<std::uint32_t> star_size(num_vertices + 1, 0);
-  std::vector<Index> last_loop(num_vertices, kInvalidIndex);  // a repeat within a loop shows here
+  // Each edge is found in the half star of its lower vertex: the edges whose
+  // lower end it is, with their higher ends (the key a loop side looks up).
+  // Counted here per loop side, at the side's lower end: an upper bound.
+  UninitializedVector<std::uint32_t> half_start = detail::freshArray<std::uint32_t>(num_vertices + 1, 0);
+  UninitializedVector<Index> last_loop = detail::freshArray<Index>(num_vertices, kInvalidIndex);  // repeats show here
   for (std::size_t q = 0; q < nf; ++q) {
     const auto loop = loop_vertices.subspan(loop_offsets[q], loop_offsets[q + 1] - loop_offsets[q]);
     const Index fi = faceOf(q);
     if (loop.size() < 3)
       throw TopologyError(id("face", fi) + " has " + std::to_string(loop.size()) + " vertices (at least 3 needed)",
                           {2, fi});
-    for (Index v : loop) {
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+      const Index v = loop[i];
       if (v >= num_vertices)
         throw TopologyError(id("face", fi) + " uses vertex " + std::to_string(v) + " but there are only " +
                                 std::to_string(num_vertices) + " vertices",
                             {2, fi});
       if (last_loop[v] == q) throw TopologyError(id("face", fi) + " passes twice through " + id("vertex", v), {2, fi});
       last_loop[v] = static_cast<Index>(q);
-      star_size[v] += 2;  // each loop edge at v: an upper bound on v's edges
+      ++half_start[std::min(v, loop[i + 1 < loop.size() ? i + 1 : 0])];  // <= v: in range even if the next is not
     }
   }
-  // Vertex stars in one scratch pool (room for star_size[v] at
-  // star_start[v]); packed, it becomes vertex_edges_.
-  std::vector<std::uint32_t> star_start(num_vertices + 1, 0);
-  for (std::size_t v = 0; v < num_vertices; ++v) star_start[v + 1] = star_start[v] + star_size[v];
-  UninitializedVector<EdgeId> star(star_start[num_vertices]);  // written where used, then packed
-  std::vector<Index> star_other(star.size());  // the edge's other end: no lookup in edge_vertices_
-  std::vector<std::uint32_t> star_count(num_vertices, 0);
-  UninitializedVector<OrientedEdge> face_edges(total);  // in list order, like loop_vertices (each written)
-  std::vector<std::uint32_t> edge_face_count;
-  edge_face_count.reserve(total / 2 + 1);
+  std::exclusive_scan(half_start.begin(), half_start.end(), half_start.begin(), std::uint32_t{0});
+  // The edges in order of first use. Half star items: the higher end and the
+  // edge, whose top bit (free: total < 2^31) says that the edge starts at the
+  // lower end, so that a side's orientation needs no look-up in edge_vertices_.
+  struct HalfStarItem {
+    Index other;
+    std::uint32_t edge_and_from_lower;
+  };
+  constexpr std::uint32_t kFromLower = std::uint32_t{1} << 31;
+  UninitializedVector<HalfStarItem> half = detail::freshArray<HalfStarItem>(total);
+  UninitializedVector<std::uint32_t> half_count = std::move(last_loop);  // its memory again, now a count per vertex
+  std::fill(half_count.begin(), half_count.end(), 0);
+  UninitializedVector<std::uint32_t> degree = detail::freshArray<std::uint32_t>(num_vertices + 1, 0);  // edges per vertex
+  c.edge_vertices_ = detail::freshArray<std::array<VertexId, 2>>(total);  // an upper bound, cut to size below
+  UninitializedVector<std::uint32_t> edge_face_count = detail::freshArray<std::uint32_t>(total);
+  UninitializedVector<OrientedEdge> face_edges = detail::freshArray<OrientedEdge>(total);  // in list order
   // Edge -> faces. 2D: at most two faces per edge, kept in a pair of slots
   // per edge (the second use of an edge comes soon after its first when
   // nearby faces are listed together). 3D: read back afterwards from the
   // faces' edge lists, in list order.
   UninitializedVector<FaceId> edge_face_slots;
-  if (dim == 2) edge_face_slots.reserve(total + 2);
+  if (dim == 2) edge_face_slots = detail::freshArray<FaceId>(2 * total);
+  std::uint32_t ne = 0;
   for (std::size_t q = 0; q < nf; ++q) {
     const std::size_t b = loop_offsets[q], m = loop_offsets[q + 1] - b;
     const Index f = faceOf(q);
     for (std::size_t i = 0; i < m; ++i) {
-      const VertexId a(loop_vertices[b + i]), h(loop_vertices[i + 1 < m ? b + i + 1 : b]);
-      EdgeId e;
-      const std::size_t sa = star_start[a.index()];
-      for (std::uint32_t k = 0; k < star_count[a.index()]; ++k)
-        if (star_other[sa + k] == h.index()) {
-          e = star[sa + k];
+      const Index a = loop_vertices[b + i], h = loop_vertices[i + 1 < m ? b + i + 1 : b];
+      const Index lo = std::min(a, h), hi = std::max(a, h);
+      HalfStarItem* const items = half.data() + half_start[lo];
+      const std::uint32_t n = half_count[lo];
+      std::uint32_t item = kInvalidIndex;
+      for (std::uint32_t k = 0; k < n; ++k)
+        if (items[k].other == hi) {
+          item = items[k].edge_and_from_lower;
           break;
         }
-      if (!e) {
-        e = EdgeId(static_cast<Index>(c.edge_vertices_.size()));
-        c.edge_vertices_.push_back({a, h});
-        edge_face_count.push_back(0);
-        if (dim == 2) edge_face_slots.insert(edge_face_slots.end(), 2, FaceId());
-        const std::size_t ka = sa + star_count[a.index()]++;
-        const std::size_t kh = star_start[h.index()] + star_count[h.index()]++;
-        star[ka] = star[kh] = e;
-        star_other[ka] = h.index();
-        star_other[kh] = a.index();
+      if (item == kInvalidIndex) {  // a new edge, from a to h
+        item = ne | (a == lo ? kFromLower : 0);
+        c.edge_vertices_[ne] = {VertexId(a), VertexId(h)};
+        edge_face_count[ne] = 0;
+        if (dim == 2) edge_face_slots[2 * ne] = edge_face_slots[2 * ne + 1] = FaceId();
+        items[n] = {hi, item};
+        half_count[lo] = n + 1;
+        ++degree[a];
+        ++degree[h];
+        ++ne;
       }
-      if (dim == 2 && edge_face_count[e.index()] == 2)
-        throw TopologyError(id("face", f) + ": " + id("edge", e.index()) + " (vertices " +
-                                std::to_string(a.index()) + ", " + std::to_string(h.index()) +
-                                ") already bounds two faces",
+      const std::uint32_t e = item & ~kFromLower;
+      if (dim == 2 && edge_face_count[e] == 2)
+        throw TopologyError(id("face", f) + ": " + id("edge", e) + " (vertices " + std::to_string(a) + ", " +
+                                std::to_string(h) + ") already bounds two faces",
                             {2, f});
-      if (dim == 2) edge_face_slots[2 * e.index() + edge_face_count[e.index()]] = FaceId(f);
-      ++edge_face_count[e.index()];
-      face_edges[b + i] = OrientedEdge(e, c.edge_vertices_[e.index()][0] != a);
+      if (dim == 2) edge_face_slots[2 * e + edge_face_count[e]] = FaceId(f);
+      ++edge_face_count[e];
+      // Reversed when the edge does not start at a, i.e. it starts at the lower end and a is the higher, or
+      // the other way round.
+      face_edges[b + i] = OrientedEdge(EdgeId(e), ((item & kFromLower) != 0) != (a == lo));
     }
   }
-  star_other = {};
-  // Close the gaps the upper bounds left between stars (moving left, in place).
-  std::uint32_t packed = 0;
-  for (std::size_t v = 0; v < num_vertices; ++v) {
-    if (packed != star_start[v]) std::copy_n(star.begin() + star_start[v], star_count[v], star.begin() + packed);
-    star_start[v] = packed;
-    packed += star_count[v];
-  }
-  star.resize(packed);
-  star.shrink_to_fit();
-  const std::size_t ne = c.edge_vertices_.size();
-  c.alive_[0].assign(num_vertices, 1);
-  c.alive_[1].assign(ne, 1);
-  c.alive_[2].assign(nf, 1);
+  half = {};
+  c.edge_vertices_.resize(ne);
+  edge_face_count.resize(ne);
+  if (dim == 2) edge_face_slots.resize(2 * std::size_t{ne});
   c.live_count_ = {num_vertices, ne, nf, 0};
-  c.vertex_edges_ = RaggedArray<EdgeId>::fromPool(std::move(star), std::span(star_start).first(num_vertices),
-                                                  star_count);
-  // Face lists stay where the loops are (list order); face f's slot points there.
-  // (These passes touch disjoint slots: run in parallel.)
-  std::vector<std::uint32_t> at(nf), size(nf);
-  const std::int64_t nfs = static_cast<std::int64_t>(nf);
-#pragma omp parallel for schedule(static)
-  for (std::int64_t q = 0; q < nfs; ++q) {
-    const Index f = faceOf(static_cast<std::size_t>(q));
-    at[f] = loop_offsets[q];
-    size[f] = loop_offsets[q + 1] - loop_offsets[q];
-  }
-  UninitializedVector<VertexId> face_vertices(total);
-  const std::int64_t totals = static_cast<std::int64_t>(total);
-#pragma omp parallel for schedule(static)
-  for (std::int64_t k = 0; k < totals; ++k) face_vertices[k] = VertexId(loop_vertices[k]);
-  c.face_edges_ = RaggedArray<OrientedEdge>::fromPool(std::move(face_edges), at, size);
-  c.face_vertices_ = RaggedArray<VertexId>::fromPool(std::move(face_vertices), at, size);
-  std::fill(at.begin(), at.end(), 0);
-  std::fill(size.begin(), size.end(), 0);
-  c.face_volumes_ = RaggedArray<VolumeId>::fromPool({}, at, size);
-  // Edge -> faces, each list in face id order (as addFace would append them).
-  if (dim == 2) {
-    std::vector<std::uint32_t> ef_at(ne);
-    const std::int64_t nes = static_cast<std::int64_t>(ne);
-#pragma omp parallel for schedule(static)
-    for (std::int64_t e = 0; e < nes; ++e) {
-      ef_at[e] = static_cast<std::uint32_t>(2 * e);
-      if (edge_face_count[e] == 2 && edge_face_slots[2 * e + 1] < edge_face_slots[2 * e])
-        std::swap(edge_face_slots[2 * e], edge_face_slots[2 * e + 1]);
+  // The rest is two independent parts, the vertex stars and the face and
+  // edge -> face lists, which two threads make side by side (one region: a
+  // team per loop costs more than these loops on a busy machine).
+  std::exception_ptr failed[2];
+#pragma omp parallel sections num_threads(2) if (total >= kParallelCopyMin)
+  {
+#pragma omp section
+    try {
+      // Vertex stars: every edge at both ends, in edge id order (as addEdge appends them).
+      UninitializedVector<std::uint32_t>& star_start = degree;  // the degrees summed in place
+      std::exclusive_scan(degree.begin(), degree.end(), star_start.begin(), std::uint32_t{0});
+      UninitializedVector<EdgeId> star = detail::freshArray<EdgeId>(2 * std::size_t{ne});
+      UninitializedVector<std::uint32_t>& star_end = half_count;  // a cursor per vertex: where its star is filled to
+      std::copy_n(star_start.begin(), num_vertices, star_end.begin());
+      for (std::uint32_t e = 0; e < ne; ++e)
+        for (VertexId v : c.edge_vertices_[e]) star[star_end[v.index()]++] = EdgeId(e);
+      for (std::size_t v = 0; v < num_vertices; ++v) star_end[v] -= star_start[v];  // now each star's size
+      // edge_vertices_ to its size (it had room for one edge per loop side): bytes() counts capacity.
+      UninitializedVector<std::array<VertexId, 2>> edge_vertices = detail::freshArray<std::array<VertexId, 2>>(ne);
+      std::copy_n(c.edge_vertices_.begin(), ne, edge_vertices.begin());
+      c.edge_vertices_.swap(edge_vertices);
+      c.alive_[0].assign(num_vertices, 1);
+      c.vertex_edges_ = RaggedArray<EdgeId>::fromPool(std::move(star), std::span(star_start).first(num_vertices),
+                                                      std::span(star_end).first(num_vertices));
+    } catch (...) {
+      failed[0] = std::current_exception();
     }
-    c.edge_faces_ = RaggedArray<FaceId>::fromPool(std::move(edge_face_slots), ef_at, edge_face_count);
-  } else {
-    std::vector<std::uint32_t> ef_start(ne + 1, 0);
-    for (std::size_t e = 0; e < ne; ++e) ef_start[e + 1] = ef_start[e] + edge_face_count[e];
-    UninitializedVector<FaceId> ef(ef_start[ne]);
-    std::fill(edge_face_count.begin(), edge_face_count.end(), 0);
-    for (std::size_t q = 0; q < nf; ++q) {
-      const FaceId f(faceOf(q));
-      for (OrientedEdge oe : c.face_edges_[f.index()]) {  // (the loop's slots, in list order)
-        const Index e = oe.handle().index();
-        ef[ef_start[e] + edge_face_count[e]++] = f;
+#pragma omp section
+    try {
+      c.alive_[1].assign(ne, 1);
+      c.alive_[2].assign(nf, 1);
+      // Face lists stay where the loops are (list order); face f's slot points there.
+      std::vector<std::uint32_t> at(nf), size(nf);
+      for (std::size_t q = 0; q < nf; ++q) {
+        const Index f = faceOf(q);
+        at[f] = loop_offsets[q];
+        size[f] = loop_offsets[q + 1] - loop_offsets[q];
       }
+      UninitializedVector<VertexId> face_vertices = detail::freshArray<VertexId>(total);
+      std::transform(loop_vertices.begin(), loop_vertices.end(), face_vertices.begin(),
+                     [](Index v) { return VertexId(v); });
+      c.face_edges_ = RaggedArray<OrientedEdge>::fromPool(std::move(face_edges), at, size);
+      c.face_vertices_ = RaggedArray<VertexId>::fromPool(std::move(face_vertices), at, size);
+      std::fill(at.begin(), at.end(), 0);
+      std::fill(size.begin(), size.end(), 0);
+      c.face_volumes_ = RaggedArray<VolumeId>::fromPool({}, at, size);
+      // Edge -> faces, each list in face id order (as addFace would append them).
+      if (dim == 2) {
+        UninitializedVector<std::uint32_t> ef_at = detail::freshArray<std::uint32_t>(ne);
+        for (std::uint32_t e = 0; e < ne; ++e) {
+          ef_at[e] = 2 * e;
+          if (edge_face_count[e] == 2 && edge_face_slots[2 * e + 1] < edge_face_slots[2 * e])
+            std::swap(edge_face_slots[2 * e], edge_face_slots[2 * e + 1]);
+        }
+        c.edge_faces_ = RaggedArray<FaceId>::fromPool(std::move(edge_face_slots), ef_at, edge_face_count);
+      } else {
+        std::vector<std::uint32_t> ef_start(ne + 1, 0);
+        for (std::size_t e = 0; e < ne; ++e) ef_start[e + 1] = ef_start[e] + edge_face_count[e];
+        UninitializedVector<FaceId> ef(ef_start[ne]);
+        std::fill(edge_face_count.begin(), edge_face_count.end(), 0);
+        for (std::size_t q = 0; q < nf; ++q) {
+          const FaceId f(faceOf(q));
+          for (OrientedEdge oe : c.face_edges_[f.index()]) {  // (the loop's slots, in list order)
+            const Index e = oe.handle().index();
+            ef[ef_start[e] + edge_face_count[e]++] = f;
+          }
+        }
+        if (!face_ids.empty())  // filled in list order: back to face id order
+          for (std::size_t e = 0; e < ne; ++e)
+            std::sort(ef.begin() + static_cast<std::ptrdiff_t>(ef_start[e]),
+                      ef.begin() + static_cast<std::ptrdiff_t>(ef_start[e + 1]));
+        c.edge_faces_ =
+            RaggedArray<FaceId>::fromPool(std::move(ef), std::span(ef_start).first(ne), edge_face_count);
+      }
+    } catch (...) {
+      failed[1] = std::current_exception();
     }
-    if (!face_ids.empty())  // filled in list order: back to face id order
-      for (std::size_t e = 0; e < ne; ++e)
-        std::sort(ef.begin() + static_cast<std::ptrdiff_t>(ef_start[e]),
-                  ef.begin() + static_cast<std::ptrdiff_t>(ef_start[e + 1]));
-    c.edge_faces_ = RaggedArray<FaceId>::fromPool(std::move(ef), std::span(ef_start).first(ne), edge_face_count);
   }
+  for (const std::exception_ptr& f : failed)
+    if (f) std::rethrow_exception(f);
   ++c.version_;
   return c;
 }
