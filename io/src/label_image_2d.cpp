@@ -27,11 +27,13 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <thread>
 #include <type_traits>
 #include <variant>
 
 #include <omp.h>
 
+#include "huge_page_allocator.hpp"
 #include "label_image_2d.hpp"
 #include "label_image_3d.hpp"
 #include "labelled_surface.hpp"
@@ -40,12 +42,13 @@
 #include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
-#include "tessella/tissue/uninitialized_vector.hpp"
 
 namespace tessella::io {
 
 namespace {
 
+using detail::HugePageUninitializedVector;
+using detail::HugePageVector;
 using detail::Label;
 constexpr Label kOutside = std::numeric_limits<Label>::min();
 constexpr double kSplit = 0.25;  // offset of the two vertices of a bridged corner, in pixels
@@ -71,7 +74,7 @@ struct Segment {
 // (-1, -1) (4 W + 1 < 2^32: W < 2^30 for any image a 2D import takes), a third of the memory of Vec3s, and read
 // back as the same doubles (quarter pixels are exact).
 struct CornerPositions {
-  std::vector<std::array<std::uint32_t, 2>> q;
+  HugePageVector<std::array<std::uint32_t, 2>> q;
   Vec3 operator[](std::size_t v) const {
     return Vec3((static_cast<double>(q[v][0]) - 4) * 0.25, (static_cast<double>(q[v][1]) - 4) * 0.25, 0);
   }
@@ -110,7 +113,8 @@ bool conflict(const Segment& s, const Segment& t, const CornerPositions& pos) {
 // first == last), simplified with tolerance tol[w] (< 0: keep every vertex); keep_one[w]: keep an inner vertex
 // (another wall with the same two ends is a straight segment).
 struct Walls {
-  std::vector<std::int32_t> off{0}, chain;
+  std::vector<std::int32_t> off{0};
+  HugePageVector<std::int32_t> chain;
   std::vector<double> tol;
   std::vector<char> keep_one;
   std::size_t size() const { return tol.size(); }
@@ -140,8 +144,20 @@ void simplifyEdge(const CornerPositions& pos, std::int32_t a, std::int32_t b, do
   const double ax = std::round(pa.x()), ay = std::round(pa.y());
   const double dx = (std::round(pb.x()) - ax) / n, dy = (std::round(pb.y()) - ay) / n;
   auto at = [&](int i) { return i == 0 ? pa : i == n ? pb : Vec3(ax + i * dx, ay + i * dy, 0); };
+  // Ends on pixel corners (not a quarter pixel off) and the edge along an axis: every corner lies on the chord,
+  // and the test's distance of corner k of h from the chord's start is exactly 0 where (k / h) * h == k in
+  // doubles (the dot product and squared length are exact integers; only t = k / h and t * h round). Where that
+  // holds for every corner the test finds no distance above any tol >= 0: the same result without it.
+  const bool on_axis = (dx == 0 || dy == 0) && pa.x() == ax && pa.y() == ay && pb.x() == std::round(pb.x()) &&
+                       pb.y() == std::round(pb.y());
   auto dp = [&](auto&& self, int lo, int hi, bool one) -> void {
     if (hi <= lo + 1) return;
+    if (on_axis && !one) {
+      const auto h = static_cast<double>(hi - lo);
+      bool exact = true;
+      for (int k = 1; k < hi - lo; ++k) exact &= (static_cast<double>(k) / h) * h == static_cast<double>(k);
+      if (exact) return;
+    }
     const Vec3 p = at(lo), q = at(hi);
     double worst = -1;
     int arg = lo;
@@ -158,8 +174,8 @@ void simplifyEdge(const CornerPositions& pos, std::int32_t a, std::int32_t b, do
 // detail::douglasPeucker on the wall chain[lo..hi] of graph vertices, the same as on every pixel corner of it:
 // along a straight stretch the distance to a segment is convex, so the farthest corner (the first of equals)
 // is a vertex of the graph, or the chord is one edge, whose inner corners simplifyEdge visits.
-void douglasPeuckerWall(const std::vector<std::int32_t>& ch, std::size_t lo, std::size_t hi,
-                        const CornerPositions& pos, double tol, bool keep_one, std::vector<char>& keep,
+void douglasPeuckerWall(const HugePageVector<std::int32_t>& ch, std::size_t lo, std::size_t hi,
+                        const CornerPositions& pos, double tol, bool keep_one, HugePageVector<char>& keep,
                         std::vector<InnerCorner>& inner) {
   if (hi == lo + 1) return simplifyEdge(pos, ch[lo], ch[hi], tol, keep_one, inner);
   if (hi <= lo) return;
@@ -187,7 +203,7 @@ void douglasPeuckerWall(const std::vector<std::int32_t>& ch, std::size_t lo, std
 }
 
 // Simplifies wall wi: sets `keep` of its inner vertices and lists the pixel corners kept inside its edges.
-void simplifyWall(const Walls& ws, std::size_t wi, const CornerPositions& pos, std::vector<char>& keep,
+void simplifyWall(const Walls& ws, std::size_t wi, const CornerPositions& pos, HugePageVector<char>& keep,
                   std::vector<InnerCorner>& inner) {
   inner.clear();
   const auto& ch = ws.chain;
@@ -218,7 +234,7 @@ void simplifyWall(const Walls& ws, std::size_t wi, const CornerPositions& pos, s
 template <typename T>
 struct Csr {
   std::vector<std::int32_t> off;
-  UninitializedVector<T> items;  // every item written after the resize
+  HugePageUninitializedVector<T> items;  // every item written after the resize
 };
 
 // The runs of equal labels along the rows of the padded image: row r's runs start at x[off[r]] (the first at 0),
@@ -226,15 +242,15 @@ struct Csr {
 // background, dropped labels and the padding, all joined into one run).
 struct Runs {
   std::vector<std::int32_t> off;
-  UninitializedVector<std::int32_t> x;  // every item written after a resize
-  UninitializedVector<Label> label;
+  HugePageUninitializedVector<std::int32_t> x;  // every item written after a resize
+  HugePageUninitializedVector<Label> label;
   std::int32_t end(std::size_t k, std::size_t row, std::int32_t width) const {
     return k + 1 < static_cast<std::size_t>(off[row + 1]) ? x[k + 1] : width;
   }
 };
 
 struct UnionFind32 {
-  std::vector<std::int32_t> parent;
+  HugePageUninitializedVector<std::int32_t> parent;  // every item written by iota
   explicit UnionFind32(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
   std::int32_t find(std::int32_t a) {
     while (parent[a] != a) a = parent[a] = parent[parent[a]];
@@ -318,8 +334,8 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
     // after it): it reserves room for the whole image's runs, the others for theirs.
     struct Block {
       std::vector<std::int32_t> count;
-      UninitializedVector<std::int32_t> x;
-      UninitializedVector<Label> label;
+      HugePageUninitializedVector<std::int32_t> x;
+      HugePageUninitializedVector<Label> label;
       bool several = false;
     };
     const int n_blocks = std::max(1, std::min<int>(omp_get_max_threads(), static_cast<int>(h)));
@@ -387,7 +403,10 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
         runs.off[row++] = static_cast<std::int32_t>(at), at += static_cast<std::size_t>(n);
     }
   }
-  if (release) release();  // the pixels: not read again
+  // The pixels are not read again: freed on a thread of their own, beside the steps below (unmapping a 4096^2
+  // image's 64 MB took 10 ms of the serial path); joined when this returns or throws.
+  std::jthread releasing;
+  if (release) releasing = std::jthread(release);
   auto runEnd = [&](std::size_t k, std::size_t row) { return runs.end(k, row, width); };
   // Walks the runs of rows ra and rb side by side: f(ka, kb, s, e, a_ends, b_ends) for each stretch [s, e) of
   // the padded row over which run ka of row ra and run kb of row rb both lie (a_ends: run ka ends at e).
@@ -534,7 +553,7 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
     Label label;
     std::size_t first, pixels = 0;
   };
-  std::vector<std::int32_t> piece_of_run(n_runs, -1);  // by root run, then by run
+  HugePageVector<std::int32_t> piece_of_run(n_runs, -1);  // by root run, then by run
   std::vector<Piece> pieces;
   for (std::size_t r = 1; r + 1 < static_cast<std::size_t>(H); ++r)
     for (auto k = static_cast<std::size_t>(runs.off[r]); k < static_cast<std::size_t>(runs.off[r + 1]); ++k) {
@@ -594,7 +613,7 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
   for (std::size_t c = 0; c < order.size(); ++c) cell_of_piece[order[c]] = static_cast<std::int32_t>(c);
   const std::size_t n_cells = pieces.size();
   // The cell of each run (-1 outside), in place: a piece's root is its first run, converted before the others.
-  std::vector<std::int32_t>& cell = piece_of_run;
+  auto& cell = piece_of_run;
   for (std::size_t k = 0; k < n_runs; ++k) {
     if (runs.label[k] == kOutside) {
       cell[k] = -1;
@@ -603,7 +622,7 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
     const auto root = static_cast<std::size_t>(uf.find(static_cast<std::int32_t>(k)));
     cell[k] = root == k ? cell_of_piece[static_cast<std::size_t>(cell[k])] : cell[root];
   }
-  std::vector<std::int32_t>().swap(uf.parent);
+  decltype(uf.parent)().swap(uf.parent);
   auto cellName = [&](std::int32_t c) {
     return c < 0 ? std::string("the background") : "label " + std::to_string(pieces[order[c]].label);
   };
@@ -622,18 +641,18 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
   const std::size_t n_vedges = runs.x.size() - static_cast<std::size_t>(H);  // the pixel edges, vertical
   const std::int64_t h_key = 2 * W * (H + 1);  // the keys of the corners inside horizontal stretches start here
   CornerPositions pos;
-  std::vector<std::int64_t> key;
-  std::vector<BoundaryEdge> edges, h_edges;
+  HugePageVector<std::int64_t> key;
+  HugePageVector<BoundaryEdge> edges, h_edges;
   // The edge that follows each edge around each of its two cells: follow[e][0] leaves v, the end of e, along the
   // left cell of e (which runs u -> v); follow[e][1] leaves u along the right cell (v -> u); -1 if there is none.
   // At a vertex of two edges, the other edge. Both walks below (walls, outlines) read it instead of chasing a
   // vertex's edges. Made in the sweep, as each corner row's vertices get all their edges (no incidence table).
-  std::vector<std::array<std::int32_t, 2>> follow, h_follow;
+  HugePageVector<std::array<std::int32_t, 2>> follow, h_follow;
   // Per vertex: its number of edges, whether it is a junction (more or fewer than two edges, or two between
   // different cells), and for a junction its lowest edge (a vertical one), from which its others are found.
-  std::vector<std::uint8_t> degree;
-  std::vector<char> junction;
-  std::vector<std::int32_t> first_edge;
+  HugePageVector<std::uint8_t> degree;
+  HugePageVector<char> junction;
+  HugePageVector<std::int32_t> first_edge;
   const std::size_t n_vertex_guess = n_corners + 3 * bridge_row.size();
   pos.q.reserve(n_vertex_guess), key.reserve(n_vertex_guess);
   degree.reserve(n_vertex_guess), junction.reserve(n_vertex_guess), first_edge.reserve(n_vertex_guess);
@@ -810,8 +829,8 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
   for (auto& f : follow) f = renumber(f);
   for (const auto& f : h_follow) follow.push_back(renumber(f));
   edges.insert(edges.end(), h_edges.begin(), h_edges.end());
-  std::vector<BoundaryEdge>().swap(h_edges);
-  std::vector<std::array<std::int32_t, 2>>().swap(h_follow);
+  decltype(h_edges)().swap(h_edges);
+  decltype(h_follow)().swap(h_follow);
   const std::size_t n_edges = edges.size(), nv = pos.size();
   if (pixel_edges != n_vedges + n_hedges || nv + pixel_edges - n_edges != n_verts)
     throw InputError(file + ": the pixel corners were miscounted (an internal error)");
@@ -829,7 +848,7 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
   Csr<std::int32_t> outlines;  // the vertices, in loop order
   std::vector<std::uint8_t> outline_fault(n_cells, 0);
   auto traceWalls = [&] {
-    std::vector<std::int32_t> edge_wall(n_edges, -1);
+    HugePageVector<std::int32_t> edge_wall(n_edges, -1);
     // At most one wall per edge, and a wall's chain holds its edges and one more vertex: room for all.
     walls.chain.reserve(2 * n_edges), walls.off.reserve(n_edges + 1), walls.tol.reserve(n_edges);
     walls.keep_one.reserve(n_edges), wall_cells.reserve(n_edges);
@@ -874,7 +893,7 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
         junction[edges[e].u] = 1;
         walk(edges[e].u, static_cast<std::int32_t>(e));
       }
-    std::vector<std::int32_t>().swap(edge_wall);
+    decltype(edge_wall)().swap(edge_wall);
   };
   auto traceOutlines = [&] {
     cell_off.assign(n_cells + 1, 0), cell_first.assign(n_cells, -1);
@@ -996,6 +1015,7 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
   // just above the stack's lower end, which the walk met second: the outline then starts at the lower end, and
   // the corner is the last inside its closing edge (`rotated`).
   std::vector<char> rotated(n_cells, 0);
+#pragma omp parallel for schedule(static)
   for (std::ptrdiff_t cc = 0; cc < static_cast<std::ptrdiff_t>(n_cells); ++cc) {
     const auto c = static_cast<std::size_t>(cc);
     const auto& first = edges[static_cast<std::size_t>(cell_first[c])];
@@ -1008,7 +1028,7 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
   decltype(follow)().swap(follow);
 
   // Simplify, then make sure no two walls cross and no cell flattens.
-  std::vector<char> keep(junction.begin(), junction.end());
+  HugePageVector<char> keep(junction.begin(), junction.end());
   // Not read from here on: freed now, so that the arrays made below can take their memory.
   auto drop = [](auto& v) { std::remove_cvref_t<decltype(v)>().swap(v); };
   drop(edges), drop(first_edge), drop(degree), drop(junction), drop(piece_of_run);
@@ -1201,10 +1221,10 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
     const double y = img.origin[1] + (p.y() + static_cast<double>(y0) - 0.5) * sy;
     return Vec3(o.scale * x, o.scale * y, 0.0);
   };
-  UninitializedVector<std::int32_t> new_index(nv);  // written and read for kept vertices only
+  HugePageUninitializedVector<std::int32_t> new_index(nv);  // written and read for kept vertices only
   std::vector<Vec3> positions;
   std::vector<Index> polygon_off(n_cells + 1, 0);
-  UninitializedVector<Index> polygon_vertices;
+  HugePageUninitializedVector<Index> polygon_vertices;
   if (wall_inner.empty()) {
     constexpr std::ptrdiff_t kBlocks = 64;
     std::vector<std::size_t> start_v(kBlocks + 1, 0), start_h(kBlocks + 1, 0);
@@ -1231,7 +1251,8 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
         std::partial_sum(start_v.begin(), start_v.end(), start_v.begin());
         start_h[0] = start_v.back();
         std::partial_sum(start_h.begin(), start_h.end(), start_h.begin());
-        positions.resize(start_h.back());
+        positions.resize(start_h.back());  // Vec3's default constructor writes nothing
+        detail::adviseHugePages(positions.data(), positions.size() * sizeof(Vec3));
         std::partial_sum(polygon_off.begin(), polygon_off.end(), polygon_off.begin());
         polygon_vertices.resize(polygon_off.back());
       }
