@@ -74,7 +74,7 @@ struct Segment {
 // (-1, -1) (4 W + 1 < 2^32: W < 2^30 for any image a 2D import takes), a third of the memory of Vec3s, and read
 // back as the same doubles (quarter pixels are exact).
 struct CornerPositions {
-  HugePageVector<std::array<std::uint32_t, 2>> q;
+  HugePageUninitializedVector<std::array<std::uint32_t, 2>> q;
   Vec3 operator[](std::size_t v) const {
     return Vec3((static_cast<double>(q[v][0]) - 4) * 0.25, (static_cast<double>(q[v][1]) - 4) * 0.25, 0);
   }
@@ -640,197 +640,337 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
   const std::size_t n_verts = n_corners + bridge_row.size() + n_hcorners;  // the pixel corners on a boundary
   const std::size_t n_vedges = runs.x.size() - static_cast<std::size_t>(H);  // the pixel edges, vertical
   const std::int64_t h_key = 2 * W * (H + 1);  // the keys of the corners inside horizontal stretches start here
-  CornerPositions pos;
-  HugePageVector<std::int64_t> key;
-  HugePageVector<BoundaryEdge> edges, h_edges;
   // The edge that follows each edge around each of its two cells: follow[e][0] leaves v, the end of e, along the
   // left cell of e (which runs u -> v); follow[e][1] leaves u along the right cell (v -> u); -1 if there is none.
   // At a vertex of two edges, the other edge. Both walks below (walls, outlines) read it instead of chasing a
   // vertex's edges. Made in the sweep, as each corner row's vertices get all their edges (no incidence table).
-  HugePageVector<std::array<std::int32_t, 2>> follow, h_follow;
   // Per vertex: its number of edges, whether it is a junction (more or fewer than two edges, or two between
   // different cells), and for a junction its lowest edge (a vertical one), from which its others are found.
-  HugePageVector<std::uint8_t> degree;
-  HugePageVector<char> junction;
-  HugePageVector<std::int32_t> first_edge;
-  const std::size_t n_vertex_guess = n_corners + 3 * bridge_row.size();
-  pos.q.reserve(n_vertex_guess), key.reserve(n_vertex_guess);
-  degree.reserve(n_vertex_guess), junction.reserve(n_vertex_guess), first_edge.reserve(n_vertex_guess);
-  edges.reserve(n_vedges + n_hedges), h_edges.reserve(n_hedges);
-  follow.reserve(n_vedges + n_hedges), h_follow.reserve(n_hedges);
   // In the sweep, horizontal edge i is numbered -2 - i (and -1 is none); once every vertical edge is made, they
   // follow them: n_vertical + i. Their order among themselves and after the vertical ones is kept.
-  auto followAt = [&](std::int32_t e) -> std::array<std::int32_t, 2>& {
-    return e >= 0 ? follow[e] : h_follow[-2 - e];
-  };
-  auto edgeOrder = [](std::int32_t e) { return e >= 0 ? std::int64_t{e} : (std::int64_t{1} << 40) - 2 - e; };
-  // An edge at a vertex, as the sweep knows it (without reading the edge): its number (-1: none), its cells, and
-  // whether the vertex is its end v (else its start u).
-  struct EdgeEnd {
-    std::int32_t e = -1, left = -1, right = -1;
-    bool at_v = false;
-  };
-  // Vertex vx's edges are `at`, all made: its degree, junction, and the follow at vx of each.
-  auto settle = [&](std::int32_t vx, std::array<EdgeEnd, 4> at) {
-    int d = 0;
-    for (const EdgeEnd& g : at)
-      if (g.e != -1) at[d++] = g;
-    for (int i = 1; i < d; ++i)  // increasing, as an incidence table made edge by edge lists them
-      for (int j = i; j > 0 && edgeOrder(at[j].e) < edgeOrder(at[j - 1].e); --j) std::swap(at[j], at[j - 1]);
-    const auto v = static_cast<std::size_t>(vx);
-    degree[v] = static_cast<std::uint8_t>(d);
-    junction[v] = d != 2 || std::minmax(at[0].left, at[0].right) != std::minmax(at[1].left, at[1].right);
-    first_edge[v] = at[0].e;
-    for (int i = 0; i < d; ++i) {
-      const int side = at[i].at_v ? 0 : 1;
-      const std::int32_t ci = side == 0 ? at[i].left : at[i].right;
-      std::int32_t f = -1;
-      if (d == 2) {
-        f = at[1 - i].e;
-      } else {
-        for (int j = 0; j < d && f < 0; ++j)
-          if ((at[j].left == ci && !at[j].at_v) || (at[j].right == ci && at[j].at_v)) f = at[j].e;
-      }
-      followAt(at[i].e)[side] = f;
-    }
-  };
-  std::size_t pixel_edges = 0;  // in the edges made, checked against the counts above
-  std::size_t bp_this = 0, bp_next = 0, bp_above = 0;  // into the bridge lists
-  auto bridgeAt = [&](std::size_t& bp, std::int32_t row, std::int32_t x) -> int {
-    while (bp < bridge_row.size() && (bridge_row[bp] < row || (bridge_row[bp] == row && bridge_x[bp] < x))) ++bp;
-    return bp < bridge_row.size() && bridge_row[bp] == row && bridge_x[bp] == x ? bridge_type[bp] : 0;
-  };
-  // The vertex at corner (ci, cj): at a bridged corner, `second` is the one on the side of the edges leaving
-  // it up or left (type 1) or up or right (type 2), a quarter pixel off the corner.
-  auto newVertex = [&](std::int32_t ci, std::int32_t cj, int type, bool second, std::int64_t k) {
-    constexpr std::uint32_t s = 4 * kSplit;  // in quarter pixels
-    const std::uint32_t x = 4 * static_cast<std::uint32_t>(ci), y = 4 * static_cast<std::uint32_t>(cj);
-    if (type == 1) pos.q.push_back(second ? std::array{x - s, y + s} : std::array{x + s, y - s});
-    else if (type == 2) pos.q.push_back(second ? std::array{x + s, y + s} : std::array{x - s, y - s});
-    else pos.q.push_back({x, y});
-    key.push_back(k);
-    degree.push_back(0), junction.push_back(0), first_edge.push_back(-1);
-    return static_cast<std::int32_t>(pos.size() - 1);
-  };
-  // The scan's order of a corner met by a vertical pixel edge of pixel row `row`: its lower or upper end.
-  auto vKey = [&](std::int32_t row, std::int32_t x, int upper) { return (row * W + x) * 2 + upper; };
-  struct Corner {
-    std::int32_t x, v0, v1;  // v1: the second vertex of a bridged corner; v0 -1: inside a vertical stack
-    int type;
-    EdgeEnd down{}, up{}, left{}, right{};  // its edges
+  //
+  // The sweep runs over two blocks of corner rows at once, [1, m) and [m, H), joined after into the graph one
+  // sweep makes (the same numbers). The second block starts from the vertical edges of pixel row m - 1, which
+  // the first one makes: it refers to the j-th of them, and to its upper vertex, as kPlaceholder + j, and keeps
+  // its writes to them (their vertices' degree, junction and lowest edge, the edges' follow and upper end) for
+  // the join. Whether such a stack goes on into row m depends on rows m - 1, m and the bridged corners only (a
+  // stack never goes on through a bridged corner), so the second block knows it; the join checks it.
+  struct EdgeEnd {  // an edge at a vertex, as the sweep knows it (without reading the edge)
+    std::int32_t e = -1, left = -1, right = -1;  // its number (-1: none), its cells
+    bool at_v = false;                           // whether the vertex is its end v (else its start u)
   };
   struct Up {
     std::int32_t x, vertex, edge;  // vertex -1: the stack of `edge` goes on into the row above
     std::int32_t left, right;      // the edge's cells
   };
-  std::vector<Corner> corners;  // of corner row cj: those on a vertical edge, by x
-  std::vector<Up> up, next_up;  // the upper ends of the row below's vertical edges
+  struct Sweep {
+    CornerPositions pos;
+    // Written by push_back only (a join's resize leaves room it then fills).
+    HugePageUninitializedVector<std::int64_t> key;
+    HugePageUninitializedVector<BoundaryEdge> edges, h_edges;
+    HugePageUninitializedVector<std::array<std::int32_t, 2>> follow, h_follow;
+    HugePageUninitializedVector<std::uint8_t> degree;
+    HugePageUninitializedVector<char> junction;
+    HugePageUninitializedVector<std::int32_t> first_edge;
+    std::size_t pixel_edges = 0;  // in the edges made, checked against the counts above
+    std::vector<Up> up;           // after the sweep: the upper ends of its last pixel row's vertical edges
+    // A second block's writes to the first block's vertices and edges (placeholders), made at the join.
+    std::vector<std::array<std::int32_t, 4>> settled;  // vertex, degree, junction, lowest edge
+    std::vector<std::array<std::int32_t, 3>> follows;  // edge, side, the edge that follows it there
+    std::vector<std::array<std::int32_t, 2>> ends;     // edge, its end v
+  };
+  constexpr std::int32_t kPlaceholder = std::int32_t{1} << 30;
+  auto placeholder = [](std::int32_t id) { return id >= kPlaceholder; };
+  // The scan's order of a corner met by a vertical pixel edge of pixel row `row`: its lower or upper end.
+  auto vKey = [&](std::int32_t row, std::int32_t x, int upper) { return (row * W + x) * 2 + upper; };
+  // The index in the bridge lists of the first bridged corner at or after (row, x).
+  auto bridgeFrom = [&](std::int32_t row) {
+    return static_cast<std::size_t>(std::lower_bound(bridge_row.begin(), bridge_row.end(), row) - bridge_row.begin());
+  };
+  auto bridgeAt = [&](std::size_t& bp, std::int32_t row, std::int32_t x) -> int {
+    while (bp < bridge_row.size() && (bridge_row[bp] < row || (bridge_row[bp] == row && bridge_x[bp] < x))) ++bp;
+    return bp < bridge_row.size() && bridge_row[bp] == row && bridge_x[bp] == x ? bridge_type[bp] : 0;
+  };
   constexpr std::int32_t kNone = std::numeric_limits<std::int32_t>::max();
-  for (std::int32_t cj = 1; cj < static_cast<std::int32_t>(H); ++cj) {
-    // The vertical edges of pixel row cj (none in the padding row H - 1).
-    corners.clear(), next_up.clear();
-    std::size_t p = 0, k = static_cast<std::size_t>(runs.off[cj]) + 1;
-    const auto k_end = static_cast<std::size_t>(runs.off[cj + 1]);
-    // Row cj + 1's label changes, to tell whether a stack goes on.
-    std::size_t ka = 0, ka_end = 0;
-    if (cj + 1 < static_cast<std::int32_t>(H))
-      ka = static_cast<std::size_t>(runs.off[cj + 1]) + 1, ka_end = static_cast<std::size_t>(runs.off[cj + 2]);
-    while (p < up.size() || k < k_end) {
-      const std::int32_t xa = p < up.size() ? up[p].x : kNone, xb = k < k_end ? runs.x[k] : kNone;
-      if (xa < xb) {
-        corners.push_back({xa, up[p].vertex, -1, 0, {up[p].edge, up[p].left, up[p].right, true}});
-        ++p;
-        continue;
-      }
-      const std::int32_t left = cell[k - 1], right = cell[k];
-      const int type = bridgeAt(bp_this, cj, xb);
-      std::int32_t v0 = -1, v1 = -1, e;
-      EdgeEnd down{};
-      bool starts = true;
-      if (xa == xb && up[p].vertex < 0) {  // the stack below goes on: its corner here is no vertex
-        e = up[p++].edge, starts = false;
+  // Corner rows [r0, r1) into s, from `up`, the upper ends of pixel row r0 - 1's vertical edges.
+  auto sweepRows = [&](Sweep& s, std::int32_t r0, std::int32_t r1, std::vector<Up> up, std::size_t n_vertex_guess,
+                       std::size_t n_vedge_guess, std::size_t n_hedge_guess) {
+    s.pos.q.reserve(n_vertex_guess), s.key.reserve(n_vertex_guess);
+    s.degree.reserve(n_vertex_guess), s.junction.reserve(n_vertex_guess), s.first_edge.reserve(n_vertex_guess);
+    s.edges.reserve(n_vedge_guess + n_hedge_guess), s.h_edges.reserve(n_hedge_guess);
+    s.follow.reserve(n_vedge_guess + n_hedge_guess), s.h_follow.reserve(n_hedge_guess);
+    auto setFollow = [&](std::int32_t e, int side, std::int32_t f) {
+      if (placeholder(e)) s.follows.push_back({e, side, f});
+      else (e >= 0 ? s.follow[e] : s.h_follow[-2 - e])[side] = f;
+    };
+    // The first block's edges before this block's, vertical edges before horizontal ones.
+    auto edgeOrder = [&](std::int32_t e) {
+      return placeholder(e) ? std::int64_t{-1} : e >= 0 ? std::int64_t{e} : (std::int64_t{1} << 40) - 2 - e;
+    };
+    // Vertex vx's edges are `at`, all made: its degree, junction, and the follow at vx of each.
+    auto settle = [&](std::int32_t vx, std::array<EdgeEnd, 4> at) {
+      int d = 0;
+      for (const EdgeEnd& g : at)
+        if (g.e != -1) at[d++] = g;
+      for (int i = 1; i < d; ++i)  // increasing, as an incidence table made edge by edge lists them
+        for (int j = i; j > 0 && edgeOrder(at[j].e) < edgeOrder(at[j - 1].e); --j) std::swap(at[j], at[j - 1]);
+      const bool is_junction = d != 2 || std::minmax(at[0].left, at[0].right) != std::minmax(at[1].left, at[1].right);
+      if (placeholder(vx)) {
+        s.settled.push_back({vx, d, is_junction, at[0].e});
       } else {
-        std::int32_t lower;
-        if (xa == xb) {
-          down = {up[p].edge, up[p].left, up[p].right, true}, v0 = up[p++].vertex;
-          lower = type ? (v1 = newVertex(xb, cj, type, true, vKey(cj, xb, 0))) : v0;
+        const auto v = static_cast<std::size_t>(vx);
+        s.degree[v] = static_cast<std::uint8_t>(d), s.junction[v] = is_junction, s.first_edge[v] = at[0].e;
+      }
+      for (int i = 0; i < d; ++i) {
+        const int side = at[i].at_v ? 0 : 1;
+        const std::int32_t ci = side == 0 ? at[i].left : at[i].right;
+        std::int32_t f = -1;
+        if (d == 2) {
+          f = at[1 - i].e;
         } else {
-          lower = v0 = newVertex(xb, cj, 0, false, vKey(cj, xb, 0));
+          for (int j = 0; j < d && f < 0; ++j)
+            if ((at[j].left == ci && !at[j].at_v) || (at[j].right == ci && at[j].at_v)) f = at[j].e;
         }
-        e = static_cast<std::int32_t>(edges.size());
-        edges.push_back({lower, -1, left, right}), follow.push_back({-1, -1});
+        setFollow(at[i].e, side, f);
       }
-      ++pixel_edges;
-      // The stack goes on into row cj + 1 where that row has a vertical edge at xb between the same cells (no
-      // corner between them is bridged), unless a bridged corner lies just below (a stack starting at one) or
-      // two corners up: the corner next to a bridged one is a vertex.
+    };
+    std::size_t bp_this = bridgeFrom(r0), bp_next = bp_this, bp_above = bp_this;  // into the bridge lists
+    // The vertex at corner (ci, cj): at a bridged corner, `second` is the one on the side of the edges leaving
+    // it up or left (type 1) or up or right (type 2), a quarter pixel off the corner.
+    auto newVertex = [&](std::int32_t ci, std::int32_t cj, int type, bool second, std::int64_t k) {
+      constexpr std::uint32_t sp = 4 * kSplit;  // in quarter pixels
+      const std::uint32_t x = 4 * static_cast<std::uint32_t>(ci), y = 4 * static_cast<std::uint32_t>(cj);
+      if (type == 1) s.pos.q.push_back(second ? std::array{x - sp, y + sp} : std::array{x + sp, y - sp});
+      else if (type == 2) s.pos.q.push_back(second ? std::array{x + sp, y + sp} : std::array{x - sp, y - sp});
+      else s.pos.q.push_back({x, y});
+      s.key.push_back(k);
+      s.degree.push_back(0), s.junction.push_back(0), s.first_edge.push_back(-1);
+      return static_cast<std::int32_t>(s.pos.size() - 1);
+    };
+    struct Corner {
+      std::int32_t x, v0, v1;  // v1: the second vertex of a bridged corner; v0 -1: inside a vertical stack
+      int type;
+      EdgeEnd down{}, up{}, left{}, right{};  // its edges
+    };
+    std::vector<Corner> corners;  // of corner row cj: those on a vertical edge, by x
+    std::vector<Up> next_up;      // `up` for the next row
+    for (std::int32_t cj = r0; cj < r1; ++cj) {
+      // The vertical edges of pixel row cj (none in the padding row H - 1).
+      corners.clear(), next_up.clear();
+      std::size_t p = 0, k = static_cast<std::size_t>(runs.off[cj]) + 1;
+      const auto k_end = static_cast<std::size_t>(runs.off[cj + 1]);
+      // Row cj + 1's label changes, to tell whether a stack goes on.
+      std::size_t ka = 0, ka_end = 0;
+      if (cj + 1 < static_cast<std::int32_t>(H))
+        ka = static_cast<std::size_t>(runs.off[cj + 1]) + 1, ka_end = static_cast<std::size_t>(runs.off[cj + 2]);
+      while (p < up.size() || k < k_end) {
+        const std::int32_t xa = p < up.size() ? up[p].x : kNone, xb = k < k_end ? runs.x[k] : kNone;
+        if (xa < xb) {
+          corners.push_back({xa, up[p].vertex, -1, 0, {up[p].edge, up[p].left, up[p].right, true}});
+          ++p;
+          continue;
+        }
+        const std::int32_t left = cell[k - 1], right = cell[k];
+        const int type = bridgeAt(bp_this, cj, xb);
+        std::int32_t v0 = -1, v1 = -1, e;
+        EdgeEnd down{};
+        bool starts = true;
+        if (xa == xb && up[p].vertex < 0) {  // the stack below goes on: its corner here is no vertex
+          e = up[p++].edge, starts = false;
+        } else {
+          std::int32_t lower;
+          if (xa == xb) {
+            down = {up[p].edge, up[p].left, up[p].right, true}, v0 = up[p++].vertex;
+            lower = type ? (v1 = newVertex(xb, cj, type, true, vKey(cj, xb, 0))) : v0;
+          } else {
+            lower = v0 = newVertex(xb, cj, 0, false, vKey(cj, xb, 0));
+          }
+          e = static_cast<std::int32_t>(s.edges.size());
+          s.edges.push_back({lower, -1, left, right}), s.follow.push_back({-1, -1});
+        }
+        ++s.pixel_edges;
+        // The stack goes on into row cj + 1 where that row has a vertical edge at xb between the same cells (no
+        // corner between them is bridged), unless a bridged corner lies just below (a stack starting at one) or
+        // two corners up: the corner next to a bridged one is a vertex.
+        while (ka < ka_end && runs.x[ka] < xb) ++ka;
+        const int type_up = bridgeAt(bp_next, cj + 1, xb);
+        const bool goes_on = ka < ka_end && runs.x[ka] == xb && cell[ka - 1] == left && cell[ka] == right &&
+                             !(starts && type) && !bridgeAt(bp_above, cj + 2, xb);
+        if (goes_on) {
+          next_up.push_back({xb, -1, e, left, right});
+        } else {
+          const std::int32_t upper = newVertex(xb, cj + 1, type_up, false, vKey(cj, xb, 1));
+          if (placeholder(e)) s.ends.push_back({e, upper});
+          else s.edges[static_cast<std::size_t>(e)].v = upper;
+          next_up.push_back({xb, upper, e, left, right});
+        }
+        corners.push_back({xb, v0, v1, type, down, {starts ? e : -1, left, right, false}});
+        ++k;
+      }
+      std::swap(up, next_up);
+      // The horizontal edges along corner row cj, between pixel rows cj - 1 (below) and cj (above): each
+      // stretch [s, e) starts and ends at a corner on a vertical edge, corners[q - 1] and corners[q]; a bridged
+      // end makes the corner next to it a vertex (kink).
+      std::size_t q = 0;
+      sideBySide(static_cast<std::size_t>(cj) - 1, static_cast<std::size_t>(cj),
+                 [&](std::size_t kb, std::size_t kc, std::int32_t xs, std::int32_t xe, bool, bool) {
+                   const std::int32_t below = cell[kb], above = cell[kc];
+                   if (below != above) {
+                     Corner &cs = corners[q - 1], &ce = corners[q];
+                     std::int32_t u = cs.type == 2 ? cs.v1 : cs.v0;  // leaving right: type 2's second vertex
+                     const std::int32_t v = ce.type == 1 ? ce.v1 : ce.v0;  // leaving left: type 1's second vertex
+                     std::int32_t last = -1;  // the stretch's edge made last
+                     auto addEdge = [&](std::int32_t to) {
+                       const std::int32_t id = -2 - static_cast<std::int32_t>(s.h_edges.size());
+                       s.h_edges.push_back({u, to, above, below}), s.h_follow.push_back({-1, -1});
+                       if (last == -1) cs.right = {id, above, below, false};
+                       else setFollow(last, 0, id), setFollow(id, 1, last);  // at the kink between them
+                       last = id;
+                     };
+                     auto kink = [&](std::int32_t ci) {
+                       const std::int32_t kv = newVertex(ci, cj, 0, false, h_key + cj * W + ci);
+                       s.degree[static_cast<std::size_t>(kv)] = 2;  // two edges between the same cells
+                       addEdge(kv);
+                       u = kv;
+                     };
+                     if (cs.type && xe - xs >= 2) kink(xs + 1);
+                     if (ce.type && xe - xs >= 2 && !(cs.type && xe - xs == 2)) kink(xe - 1);
+                     addEdge(v);
+                     ce.left = {last, above, below, true};
+                     s.pixel_edges += static_cast<std::size_t>(xe - xs);
+                   }
+                   q += xe < width;
+                 });
+      // The corners of row cj now have all their edges: at a bridged corner, the first vertex has the edges
+      // leaving it down and right (type 1) or down and left (type 2), the second the others.
+      for (const Corner& c : corners) {
+        if (c.v0 < 0) continue;
+        if (c.type == 0) settle(c.v0, {c.down, c.up, c.left, c.right});
+        else if (c.type == 1) settle(c.v0, {c.down, c.right, {}, {}}), settle(c.v1, {c.up, c.left, {}, {}});
+        else settle(c.v0, {c.down, c.left, {}, {}}), settle(c.v1, {c.up, c.right, {}, {}});
+      }
+    }
+    s.up = std::move(up);
+  };
+  // The upper ends of pixel row r's vertical edges as placeholders: what the sweep of row r leaves for row r + 1.
+  auto placeholdersAfter = [&](std::int32_t r) {
+    std::vector<Up> out;
+    std::size_t ka = static_cast<std::size_t>(runs.off[r + 1]) + 1;
+    const auto ka_end = static_cast<std::size_t>(runs.off[r + 2]);
+    std::size_t bp = bridgeFrom(r), bp_above = bridgeFrom(r + 2);
+    for (auto k = static_cast<std::size_t>(runs.off[r]) + 1; k < static_cast<std::size_t>(runs.off[r + 1]); ++k) {
+      const std::int32_t xb = runs.x[k], left = cell[k - 1], right = cell[k];
       while (ka < ka_end && runs.x[ka] < xb) ++ka;
-      const int type_up = bridgeAt(bp_next, cj + 1, xb);
       const bool goes_on = ka < ka_end && runs.x[ka] == xb && cell[ka - 1] == left && cell[ka] == right &&
-                           !(starts && type) && !bridgeAt(bp_above, cj + 2, xb);
-      if (goes_on) {
-        next_up.push_back({xb, -1, e, left, right});
-      } else {
-        const std::int32_t upper = newVertex(xb, cj + 1, type_up, false, vKey(cj, xb, 1));
-        edges[static_cast<std::size_t>(e)].v = upper;
-        next_up.push_back({xb, upper, e, left, right});
-      }
-      corners.push_back({xb, v0, v1, type, down, {starts ? e : -1, left, right, false}});
-      ++k;
+                           !bridgeAt(bp, r, xb) && !bridgeAt(bp_above, r + 2, xb);
+      const auto id = kPlaceholder + static_cast<std::int32_t>(out.size());
+      out.push_back({xb, goes_on ? -1 : id, id, left, right});
     }
-    std::swap(up, next_up);
-    // The horizontal edges along corner row cj, between pixel rows cj - 1 (below) and cj (above): each
-    // stretch [s, e) starts and ends at a corner on a vertical edge, corners[q - 1] and corners[q]; a bridged
-    // end makes the corner next to it a vertex (kink).
-    std::size_t q = 0;
-    sideBySide(static_cast<std::size_t>(cj) - 1, static_cast<std::size_t>(cj),
-               [&](std::size_t kb, std::size_t kc, std::int32_t s, std::int32_t e, bool, bool) {
-                 const std::int32_t below = cell[kb], above = cell[kc];
-                 if (below != above) {
-                   Corner &cs = corners[q - 1], &ce = corners[q];
-                   std::int32_t u = cs.type == 2 ? cs.v1 : cs.v0;  // leaving right: type 2's second vertex
-                   const std::int32_t v = ce.type == 1 ? ce.v1 : ce.v0;  // leaving left: type 1's second vertex
-                   std::int32_t last = -1;  // the stretch's edge made last
-                   auto addEdge = [&](std::int32_t to) {
-                     const std::int32_t id = -2 - static_cast<std::int32_t>(h_edges.size());
-                     h_edges.push_back({u, to, above, below}), h_follow.push_back({-1, -1});
-                     if (last == -1) cs.right = {id, above, below, false};
-                     else followAt(last)[0] = id, followAt(id)[1] = last;  // at the kink between them
-                     last = id;
-                   };
-                   auto kink = [&](std::int32_t ci) {
-                     const std::int32_t kv = newVertex(ci, cj, 0, false, h_key + cj * W + ci);
-                     degree[static_cast<std::size_t>(kv)] = 2;  // two edges between the same cells
-                     addEdge(kv);
-                     u = kv;
-                   };
-                   if (cs.type && e - s >= 2) kink(s + 1);
-                   if (ce.type && e - s >= 2 && !(cs.type && e - s == 2)) kink(e - 1);
-                   addEdge(v);
-                   ce.left = {last, above, below, true};
-                   pixel_edges += static_cast<std::size_t>(e - s);
-                 }
-                 q += e < width;
-               });
-    // The corners of row cj now have all their edges: at a bridged corner, the first vertex has the edges
-    // leaving it down and right (type 1) or down and left (type 2), the second the others.
-    for (const Corner& c : corners) {
-      if (c.v0 < 0) continue;
-      if (c.type == 0) settle(c.v0, {c.down, c.up, c.left, c.right});
-      else if (c.type == 1) settle(c.v0, {c.down, c.right, {}, {}}), settle(c.v1, {c.up, c.left, {}, {}});
-      else settle(c.v0, {c.down, c.left, {}, {}}), settle(c.v1, {c.up, c.right, {}, {}});
-    }
+    return out;
+  };
+  Sweep graph;  // the first block's, then the whole graph
+  const std::size_t n_vertex_guess = n_corners + 3 * bridge_row.size();
+  // Two blocks of about as many runs each; one for a small image (and where the placeholders could not be told
+  // from numbers).
+  std::int32_t split = static_cast<std::int32_t>(H);
+  if (H >= 8 && n_verts + n_vedges + n_hedges < static_cast<std::size_t>(kPlaceholder)) {
+    const auto half = static_cast<std::int32_t>(runs.x.size() / 2);
+    split = static_cast<std::int32_t>(std::upper_bound(runs.off.begin(), runs.off.end(), half) - runs.off.begin());
+    split = std::clamp(split, std::int32_t{3}, static_cast<std::int32_t>(H) - 2);
   }
+  if (split == static_cast<std::int32_t>(H)) {
+    sweepRows(graph, 1, split, {}, n_vertex_guess, n_vedges, n_hedges);
+  } else {
+    Sweep second;
+    // The second block's share of the graph, with room to spare (its arrays are copied after the first's).
+    const double share = static_cast<double>(runs.x.size() - static_cast<std::size_t>(runs.off[split])) /
+                         static_cast<double>(runs.x.size());
+    auto part = [&](std::size_t n) { return static_cast<std::size_t>(static_cast<double>(n) * share * 1.25) + 64; };
+#pragma omp parallel sections num_threads(std::min(2, omp_get_max_threads()))
+    {
+#pragma omp section
+      sweepRows(graph, 1, split, {}, n_vertex_guess, n_vedges, n_hedges);
+#pragma omp section
+      sweepRows(second, split, static_cast<std::int32_t>(H), placeholdersAfter(split - 1), part(n_vertex_guess),
+                part(n_vedges), part(n_hedges));
+    }
+    // The join: the second block's vertices and edges numbered after the first's, its placeholders replaced by
+    // the first block's vertices and edges they stand for.
+    const std::vector<Up>& ends = graph.up;
+    const std::vector<Up> expected = placeholdersAfter(split - 1);
+    bool same = ends.size() == expected.size();
+    for (std::size_t j = 0; same && j < ends.size(); ++j)
+      same = ends[j].x == expected[j].x && ends[j].left == expected[j].left && ends[j].right == expected[j].right &&
+             (ends[j].vertex < 0) == (expected[j].vertex < 0);
+    if (!same) throw InputError(file + ": the sweep's two blocks do not meet (an internal error)");
+    const auto nv0 = static_cast<std::int32_t>(graph.pos.size()), ne0 = static_cast<std::int32_t>(graph.edges.size()),
+               nh0 = static_cast<std::int32_t>(graph.h_edges.size());
+    auto vertexOf = [&](std::int32_t v) { return v < 0 ? v : placeholder(v) ? ends[v - kPlaceholder].vertex : nv0 + v; };
+    auto edgeOf = [&](std::int32_t e) {
+      return e == -1 ? e : placeholder(e) ? ends[e - kPlaceholder].edge : e >= 0 ? ne0 + e : e - nh0;
+    };
+    // Copied in parallel into room made after the first block's items (a copy each, at an offset).
+    const std::size_t nv1 = second.pos.size(), ne1 = second.edges.size(), nh1 = second.h_edges.size();
+    graph.pos.q.resize(nv0 + nv1), graph.key.resize(nv0 + nv1), graph.degree.resize(nv0 + nv1);
+    graph.junction.resize(nv0 + nv1), graph.first_edge.resize(nv0 + nv1);
+    graph.edges.resize(ne0 + ne1), graph.follow.resize(ne0 + ne1);
+    graph.h_edges.resize(nh0 + nh1), graph.h_follow.resize(nh0 + nh1);
+    constexpr std::ptrdiff_t kChunk = 1 << 14;
+    auto chunks = [](std::size_t n) { return static_cast<std::ptrdiff_t>((n + kChunk - 1) / kChunk); };
+    auto range = [](std::ptrdiff_t c, std::size_t n) {
+      return std::pair{static_cast<std::size_t>(c * kChunk), std::min(n, static_cast<std::size_t>((c + 1) * kChunk))};
+    };
+#pragma omp parallel
+    {
+#pragma omp for schedule(static) nowait
+      for (std::ptrdiff_t c = 0; c < chunks(nv1); ++c)
+        for (auto [i, end] = range(c, nv1); i < end; ++i) {
+          graph.pos.q[nv0 + i] = second.pos.q[i], graph.key[nv0 + i] = second.key[i];
+          graph.degree[nv0 + i] = second.degree[i], graph.junction[nv0 + i] = second.junction[i];
+          graph.first_edge[nv0 + i] = edgeOf(second.first_edge[i]);
+        }
+#pragma omp for schedule(static) nowait
+      for (std::ptrdiff_t c = 0; c < chunks(ne1); ++c)
+        for (auto [i, end] = range(c, ne1); i < end; ++i) {
+          const BoundaryEdge& e = second.edges[i];
+          graph.edges[ne0 + i] = {vertexOf(e.u), vertexOf(e.v), e.left, e.right};
+          graph.follow[ne0 + i] = {edgeOf(second.follow[i][0]), edgeOf(second.follow[i][1])};
+        }
+#pragma omp for schedule(static)
+      for (std::ptrdiff_t c = 0; c < chunks(nh1); ++c)
+        for (auto [i, end] = range(c, nh1); i < end; ++i) {
+          const BoundaryEdge& e = second.h_edges[i];
+          graph.h_edges[nh0 + i] = {vertexOf(e.u), vertexOf(e.v), e.left, e.right};
+          graph.h_follow[nh0 + i] = {edgeOf(second.h_follow[i][0]), edgeOf(second.h_follow[i][1])};
+        }
+    }
+    for (const auto& [vx, d, is_junction, e] : second.settled) {
+      const auto v = static_cast<std::size_t>(vertexOf(vx));
+      graph.degree[v] = static_cast<std::uint8_t>(d), graph.junction[v] = static_cast<char>(is_junction);
+      graph.first_edge[v] = edgeOf(e);
+    }
+    for (const auto& [e, side, f] : second.follows) graph.follow[static_cast<std::size_t>(edgeOf(e))][side] = edgeOf(f);
+    for (const auto& [e, v] : second.ends) graph.edges[static_cast<std::size_t>(edgeOf(e))].v = vertexOf(v);
+    graph.pixel_edges += second.pixel_edges;
+  }
+  CornerPositions& pos = graph.pos;
+  auto& key = graph.key;
+  auto& edges = graph.edges;
+  auto& follow = graph.follow;
+  auto& degree = graph.degree;
+  auto& junction = graph.junction;
+  auto& first_edge = graph.first_edge;
+  const std::size_t pixel_edges = graph.pixel_edges;
   // The horizontal edges after the vertical ones, renumbered.
   const auto n_vertical = static_cast<std::int32_t>(edges.size());
   auto renumber = [&](const std::array<std::int32_t, 2>& f) {
     return std::array{f[0] < -1 ? n_vertical - 2 - f[0] : f[0], f[1] < -1 ? n_vertical - 2 - f[1] : f[1]};
   };
   for (auto& f : follow) f = renumber(f);
-  for (const auto& f : h_follow) follow.push_back(renumber(f));
-  edges.insert(edges.end(), h_edges.begin(), h_edges.end());
-  decltype(h_edges)().swap(h_edges);
-  decltype(h_follow)().swap(h_follow);
+  for (const auto& f : graph.h_follow) follow.push_back(renumber(f));
+  edges.insert(edges.end(), graph.h_edges.begin(), graph.h_edges.end());
+  decltype(graph.h_edges)().swap(graph.h_edges);
+  decltype(graph.h_follow)().swap(graph.h_follow);
   const std::size_t n_edges = edges.size(), nv = pos.size();
   if (pixel_edges != n_vedges + n_hedges || nv + pixel_edges - n_edges != n_verts)
     throw InputError(file + ": the pixel corners were miscounted (an internal error)");
@@ -1025,7 +1165,7 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
     std::rotate(begin + cell_off[c], begin + cell_off[c] + 1, begin + cell_off[c + 1]);
   }
   std::vector<std::int32_t>().swap(cell_first);
-  decltype(follow)().swap(follow);
+  decltype(graph.follow)().swap(follow);
 
   // Simplify, then make sure no two walls cross and no cell flattens.
   HugePageVector<char> keep(junction.begin(), junction.end());
