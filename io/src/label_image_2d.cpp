@@ -512,37 +512,72 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
   // top-right, 2: bottom-right/top-left) is listed row by row.
   const std::size_t n_runs = runs.x.size();
   UnionFind32 uf(n_runs);
-  std::vector<std::int32_t> bridge_row, bridge_x;
-  std::vector<std::uint8_t> bridge_type;
-  std::size_t checkerboards = 0;
-  // Counted on the way, for the vertices and edges below: the corners on a vertical edge, and the horizontal
-  // boundary edges and the corners inside their straight stretches.
-  std::size_t n_corners = 0, n_hedges = 0, n_hcorners = 0;
-  for (std::size_t cj = 1; cj < static_cast<std::size_t>(H); ++cj)
-    sideBySide(cj - 1, cj, [&](std::size_t ka, std::size_t kb, std::int32_t s, std::int32_t e, bool a_ends,
-                               bool b_ends) {
-      const Label below = runs.label[ka];
-      if (below == runs.label[kb]) {
-        if (below != kOutside) uf.unite(static_cast<std::int32_t>(ka), static_cast<std::int32_t>(kb));
-      } else {  // a boundary (runs of one label side by side are one piece)
-        n_hedges += static_cast<std::size_t>(e - s), n_hcorners += static_cast<std::size_t>(e - s - 1);
-      }
-      n_corners += e < width;
-      if (!a_ends || !b_ends || e == width) return;
-      // Corner e: pixels a (below left), b (below right), c (above left), d (above right).
-      const Label a = below, b = runs.label[ka + 1], c = runs.label[kb], d = runs.label[kb + 1];
-      const bool ad = a == d && b != a && c != a, bc = b == c && a != b && d != b;
-      if (!ad && !bc) return;
-      bool use_ad = ad;
-      if (ad && bc) {
-        ++checkerboards;
-        use_ad = b == kOutside ? true : a == kOutside ? false : a < b;
-      }
-      bridge_row.push_back(static_cast<std::int32_t>(cj)), bridge_x.push_back(e);
-      bridge_type.push_back(use_ad ? 1 : 2);
-      if (use_ad && d != kOutside) uf.unite(static_cast<std::int32_t>(ka), static_cast<std::int32_t>(kb + 1));
-      if (!use_ad && b != kOutside) uf.unite(static_cast<std::int32_t>(ka + 1), static_cast<std::int32_t>(kb));
-    });
+  // Per block of rows: the bridged corners, row by row; counted on the way, for the vertices and edges below:
+  // the corners on a vertical edge, and the horizontal boundary edges and the corners inside their straight
+  // stretches.
+  struct Scan {
+    std::vector<std::int32_t> bridge_row, bridge_x;
+    std::vector<std::uint8_t> bridge_type;
+    std::size_t checkerboards = 0, n_corners = 0, n_hedges = 0, n_hcorners = 0;
+  };
+  // Corner rows [r0, r1): the runs of rows r0 - 1 .. r1 - 1 are united (the sets' roots, their lowest runs, do
+  // not depend on the order of the unions).
+  auto scanRows = [&](Scan& sc, std::size_t r0, std::size_t r1) {
+    for (std::size_t cj = r0; cj < r1; ++cj)
+      sideBySide(cj - 1, cj, [&](std::size_t ka, std::size_t kb, std::int32_t s, std::int32_t e, bool a_ends,
+                                 bool b_ends) {
+        const Label below = runs.label[ka];
+        if (below == runs.label[kb]) {
+          if (below != kOutside) uf.unite(static_cast<std::int32_t>(ka), static_cast<std::int32_t>(kb));
+        } else {  // a boundary (runs of one label side by side are one piece)
+          sc.n_hedges += static_cast<std::size_t>(e - s), sc.n_hcorners += static_cast<std::size_t>(e - s - 1);
+        }
+        sc.n_corners += e < width;
+        if (!a_ends || !b_ends || e == width) return;
+        // Corner e: pixels a (below left), b (below right), c (above left), d (above right).
+        const Label a = below, b = runs.label[ka + 1], c = runs.label[kb], d = runs.label[kb + 1];
+        const bool ad = a == d && b != a && c != a, bc = b == c && a != b && d != b;
+        if (!ad && !bc) return;
+        bool use_ad = ad;
+        if (ad && bc) {
+          ++sc.checkerboards;
+          use_ad = b == kOutside ? true : a == kOutside ? false : a < b;
+        }
+        sc.bridge_row.push_back(static_cast<std::int32_t>(cj)), sc.bridge_x.push_back(e);
+        sc.bridge_type.push_back(use_ad ? 1 : 2);
+        if (use_ad && d != kOutside) uf.unite(static_cast<std::int32_t>(ka), static_cast<std::int32_t>(kb + 1));
+        if (!use_ad && b != kOutside) uf.unite(static_cast<std::int32_t>(ka + 1), static_cast<std::int32_t>(kb));
+      });
+  };
+  // Two blocks of corner rows at once, [1, m) and [m + 1, H), whose unions touch the runs of rows below m and
+  // from m on: none in common; then row m, which joins them.
+  Scan scan;
+  if (H >= 8) {
+    const auto m = static_cast<std::size_t>(H / 2);
+    Scan second, seam;
+#pragma omp parallel sections num_threads(std::min(2, omp_get_max_threads()))
+    {
+#pragma omp section
+      scanRows(scan, 1, m);
+#pragma omp section
+      scanRows(second, m + 1, static_cast<std::size_t>(H));
+    }
+    scanRows(seam, m, m + 1);
+    for (const Scan* part : {&seam, &second}) {
+      scan.bridge_row.insert(scan.bridge_row.end(), part->bridge_row.begin(), part->bridge_row.end());
+      scan.bridge_x.insert(scan.bridge_x.end(), part->bridge_x.begin(), part->bridge_x.end());
+      scan.bridge_type.insert(scan.bridge_type.end(), part->bridge_type.begin(), part->bridge_type.end());
+      scan.checkerboards += part->checkerboards, scan.n_corners += part->n_corners;
+      scan.n_hedges += part->n_hedges, scan.n_hcorners += part->n_hcorners;
+    }
+  } else {
+    scanRows(scan, 1, static_cast<std::size_t>(H));
+  }
+  std::vector<std::int32_t>& bridge_row = scan.bridge_row;
+  std::vector<std::int32_t>& bridge_x = scan.bridge_x;
+  std::vector<std::uint8_t>& bridge_type = scan.bridge_type;
+  const std::size_t checkerboards = scan.checkerboards, n_corners = scan.n_corners, n_hedges = scan.n_hedges,
+                    n_hcorners = scan.n_hcorners;
   if (checkerboards)
     report.notes.push_back(std::to_string(checkerboards) +
                            " pixel corner(s) where two labels touch diagonally (a checkerboard): the smaller "
