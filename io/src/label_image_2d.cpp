@@ -27,11 +27,13 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <thread>
 #include <type_traits>
 #include <variant>
 
 #include <omp.h>
 
+#include "huge_page_allocator.hpp"
 #include "label_image_2d.hpp"
 #include "label_image_3d.hpp"
 #include "labelled_surface.hpp"
@@ -40,12 +42,13 @@
 #include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
-#include "tessella/tissue/uninitialized_vector.hpp"
 
 namespace tessella::io {
 
 namespace {
 
+using detail::HugePageUninitializedVector;
+using detail::HugePageVector;
 using detail::Label;
 constexpr Label kOutside = std::numeric_limits<Label>::min();
 constexpr double kSplit = 0.25;  // offset of the two vertices of a bridged corner, in pixels
@@ -71,7 +74,7 @@ struct Segment {
 // (-1, -1) (4 W + 1 < 2^32: W < 2^30 for any image a 2D import takes), a third of the memory of Vec3s, and read
 // back as the same doubles (quarter pixels are exact).
 struct CornerPositions {
-  std::vector<std::array<std::uint32_t, 2>> q;
+  HugePageUninitializedVector<std::array<std::uint32_t, 2>> q;
   Vec3 operator[](std::size_t v) const {
     return Vec3((static_cast<double>(q[v][0]) - 4) * 0.25, (static_cast<double>(q[v][1]) - 4) * 0.25, 0);
   }
@@ -110,7 +113,8 @@ bool conflict(const Segment& s, const Segment& t, const CornerPositions& pos) {
 // first == last), simplified with tolerance tol[w] (< 0: keep every vertex); keep_one[w]: keep an inner vertex
 // (another wall with the same two ends is a straight segment).
 struct Walls {
-  std::vector<std::int32_t> off{0}, chain;
+  std::vector<std::int32_t> off{0};
+  HugePageVector<std::int32_t> chain;
   std::vector<double> tol;
   std::vector<char> keep_one;
   std::size_t size() const { return tol.size(); }
@@ -140,8 +144,20 @@ void simplifyEdge(const CornerPositions& pos, std::int32_t a, std::int32_t b, do
   const double ax = std::round(pa.x()), ay = std::round(pa.y());
   const double dx = (std::round(pb.x()) - ax) / n, dy = (std::round(pb.y()) - ay) / n;
   auto at = [&](int i) { return i == 0 ? pa : i == n ? pb : Vec3(ax + i * dx, ay + i * dy, 0); };
+  // Ends on pixel corners (not a quarter pixel off) and the edge along an axis: every corner lies on the chord,
+  // and the test's distance of corner k of h from the chord's start is exactly 0 where (k / h) * h == k in
+  // doubles (the dot product and squared length are exact integers; only t = k / h and t * h round). Where that
+  // holds for every corner the test finds no distance above any tol >= 0: the same result without it.
+  const bool on_axis = (dx == 0 || dy == 0) && pa.x() == ax && pa.y() == ay && pb.x() == std::round(pb.x()) &&
+                       pb.y() == std::round(pb.y());
   auto dp = [&](auto&& self, int lo, int hi, bool one) -> void {
     if (hi <= lo + 1) return;
+    if (on_axis && !one) {
+      const auto h = static_cast<double>(hi - lo);
+      bool exact = true;
+      for (int k = 1; k < hi - lo; ++k) exact &= (static_cast<double>(k) / h) * h == static_cast<double>(k);
+      if (exact) return;
+    }
     const Vec3 p = at(lo), q = at(hi);
     double worst = -1;
     int arg = lo;
@@ -158,8 +174,8 @@ void simplifyEdge(const CornerPositions& pos, std::int32_t a, std::int32_t b, do
 // detail::douglasPeucker on the wall chain[lo..hi] of graph vertices, the same as on every pixel corner of it:
 // along a straight stretch the distance to a segment is convex, so the farthest corner (the first of equals)
 // is a vertex of the graph, or the chord is one edge, whose inner corners simplifyEdge visits.
-void douglasPeuckerWall(const std::vector<std::int32_t>& ch, std::size_t lo, std::size_t hi,
-                        const CornerPositions& pos, double tol, bool keep_one, std::vector<char>& keep,
+void douglasPeuckerWall(const HugePageVector<std::int32_t>& ch, std::size_t lo, std::size_t hi,
+                        const CornerPositions& pos, double tol, bool keep_one, HugePageVector<char>& keep,
                         std::vector<InnerCorner>& inner) {
   if (hi == lo + 1) return simplifyEdge(pos, ch[lo], ch[hi], tol, keep_one, inner);
   if (hi <= lo) return;
@@ -187,7 +203,7 @@ void douglasPeuckerWall(const std::vector<std::int32_t>& ch, std::size_t lo, std
 }
 
 // Simplifies wall wi: sets `keep` of its inner vertices and lists the pixel corners kept inside its edges.
-void simplifyWall(const Walls& ws, std::size_t wi, const CornerPositions& pos, std::vector<char>& keep,
+void simplifyWall(const Walls& ws, std::size_t wi, const CornerPositions& pos, HugePageVector<char>& keep,
                   std::vector<InnerCorner>& inner) {
   inner.clear();
   const auto& ch = ws.chain;
@@ -218,7 +234,7 @@ void simplifyWall(const Walls& ws, std::size_t wi, const CornerPositions& pos, s
 template <typename T>
 struct Csr {
   std::vector<std::int32_t> off;
-  UninitializedVector<T> items;  // every item written after the resize
+  HugePageUninitializedVector<T> items;  // every item written after the resize
 };
 
 // The runs of equal labels along the rows of the padded image: row r's runs start at x[off[r]] (the first at 0),
@@ -226,15 +242,15 @@ struct Csr {
 // background, dropped labels and the padding, all joined into one run).
 struct Runs {
   std::vector<std::int32_t> off;
-  UninitializedVector<std::int32_t> x;  // every item written after a resize
-  UninitializedVector<Label> label;
+  HugePageUninitializedVector<std::int32_t> x;  // every item written after a resize
+  HugePageUninitializedVector<Label> label;
   std::int32_t end(std::size_t k, std::size_t row, std::int32_t width) const {
     return k + 1 < static_cast<std::size_t>(off[row + 1]) ? x[k + 1] : width;
   }
 };
 
 struct UnionFind32 {
-  std::vector<std::int32_t> parent;
+  HugePageUninitializedVector<std::int32_t> parent;  // every item written by iota
   explicit UnionFind32(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
   std::int32_t find(std::int32_t a) {
     while (parent[a] != a) a = parent[a] = parent[parent[a]];
@@ -318,8 +334,8 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
     // after it): it reserves room for the whole image's runs, the others for theirs.
     struct Block {
       std::vector<std::int32_t> count;
-      UninitializedVector<std::int32_t> x;
-      UninitializedVector<Label> label;
+      HugePageUninitializedVector<std::int32_t> x;
+      HugePageUninitializedVector<Label> label;
       bool several = false;
     };
     const int n_blocks = std::max(1, std::min<int>(omp_get_max_threads(), static_cast<int>(h)));
@@ -387,7 +403,10 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
         runs.off[row++] = static_cast<std::int32_t>(at), at += static_cast<std::size_t>(n);
     }
   }
-  if (release) release();  // the pixels: not read again
+  // The pixels are not read again: freed on a thread of their own, beside the steps below (unmapping a 4096^2
+  // image's 64 MB took 10 ms of the serial path); joined when this returns or throws.
+  std::jthread releasing;
+  if (release) releasing = std::jthread(release);
   auto runEnd = [&](std::size_t k, std::size_t row) { return runs.end(k, row, width); };
   // Walks the runs of rows ra and rb side by side: f(ka, kb, s, e, a_ends, b_ends) for each stretch [s, e) of
   // the padded row over which run ka of row ra and run kb of row rb both lie (a_ends: run ka ends at e).
@@ -493,37 +512,72 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
   // top-right, 2: bottom-right/top-left) is listed row by row.
   const std::size_t n_runs = runs.x.size();
   UnionFind32 uf(n_runs);
-  std::vector<std::int32_t> bridge_row, bridge_x;
-  std::vector<std::uint8_t> bridge_type;
-  std::size_t checkerboards = 0;
-  // Counted on the way, for the vertices and edges below: the corners on a vertical edge, and the horizontal
-  // boundary edges and the corners inside their straight stretches.
-  std::size_t n_corners = 0, n_hedges = 0, n_hcorners = 0;
-  for (std::size_t cj = 1; cj < static_cast<std::size_t>(H); ++cj)
-    sideBySide(cj - 1, cj, [&](std::size_t ka, std::size_t kb, std::int32_t s, std::int32_t e, bool a_ends,
-                               bool b_ends) {
-      const Label below = runs.label[ka];
-      if (below == runs.label[kb]) {
-        if (below != kOutside) uf.unite(static_cast<std::int32_t>(ka), static_cast<std::int32_t>(kb));
-      } else {  // a boundary (runs of one label side by side are one piece)
-        n_hedges += static_cast<std::size_t>(e - s), n_hcorners += static_cast<std::size_t>(e - s - 1);
-      }
-      n_corners += e < width;
-      if (!a_ends || !b_ends || e == width) return;
-      // Corner e: pixels a (below left), b (below right), c (above left), d (above right).
-      const Label a = below, b = runs.label[ka + 1], c = runs.label[kb], d = runs.label[kb + 1];
-      const bool ad = a == d && b != a && c != a, bc = b == c && a != b && d != b;
-      if (!ad && !bc) return;
-      bool use_ad = ad;
-      if (ad && bc) {
-        ++checkerboards;
-        use_ad = b == kOutside ? true : a == kOutside ? false : a < b;
-      }
-      bridge_row.push_back(static_cast<std::int32_t>(cj)), bridge_x.push_back(e);
-      bridge_type.push_back(use_ad ? 1 : 2);
-      if (use_ad && d != kOutside) uf.unite(static_cast<std::int32_t>(ka), static_cast<std::int32_t>(kb + 1));
-      if (!use_ad && b != kOutside) uf.unite(static_cast<std::int32_t>(ka + 1), static_cast<std::int32_t>(kb));
-    });
+  // Per block of rows: the bridged corners, row by row; counted on the way, for the vertices and edges below:
+  // the corners on a vertical edge, and the horizontal boundary edges and the corners inside their straight
+  // stretches.
+  struct Scan {
+    std::vector<std::int32_t> bridge_row, bridge_x;
+    std::vector<std::uint8_t> bridge_type;
+    std::size_t checkerboards = 0, n_corners = 0, n_hedges = 0, n_hcorners = 0;
+  };
+  // Corner rows [r0, r1): the runs of rows r0 - 1 .. r1 - 1 are united (the sets' roots, their lowest runs, do
+  // not depend on the order of the unions).
+  auto scanRows = [&](Scan& sc, std::size_t r0, std::size_t r1) {
+    for (std::size_t cj = r0; cj < r1; ++cj)
+      sideBySide(cj - 1, cj, [&](std::size_t ka, std::size_t kb, std::int32_t s, std::int32_t e, bool a_ends,
+                                 bool b_ends) {
+        const Label below = runs.label[ka];
+        if (below == runs.label[kb]) {
+          if (below != kOutside) uf.unite(static_cast<std::int32_t>(ka), static_cast<std::int32_t>(kb));
+        } else {  // a boundary (runs of one label side by side are one piece)
+          sc.n_hedges += static_cast<std::size_t>(e - s), sc.n_hcorners += static_cast<std::size_t>(e - s - 1);
+        }
+        sc.n_corners += e < width;
+        if (!a_ends || !b_ends || e == width) return;
+        // Corner e: pixels a (below left), b (below right), c (above left), d (above right).
+        const Label a = below, b = runs.label[ka + 1], c = runs.label[kb], d = runs.label[kb + 1];
+        const bool ad = a == d && b != a && c != a, bc = b == c && a != b && d != b;
+        if (!ad && !bc) return;
+        bool use_ad = ad;
+        if (ad && bc) {
+          ++sc.checkerboards;
+          use_ad = b == kOutside ? true : a == kOutside ? false : a < b;
+        }
+        sc.bridge_row.push_back(static_cast<std::int32_t>(cj)), sc.bridge_x.push_back(e);
+        sc.bridge_type.push_back(use_ad ? 1 : 2);
+        if (use_ad && d != kOutside) uf.unite(static_cast<std::int32_t>(ka), static_cast<std::int32_t>(kb + 1));
+        if (!use_ad && b != kOutside) uf.unite(static_cast<std::int32_t>(ka + 1), static_cast<std::int32_t>(kb));
+      });
+  };
+  // Two blocks of corner rows at once, [1, m) and [m + 1, H), whose unions touch the runs of rows below m and
+  // from m on: none in common; then row m, which joins them.
+  Scan scan;
+  if (H >= 8) {
+    const auto m = static_cast<std::size_t>(H / 2);
+    Scan second, seam;
+#pragma omp parallel sections num_threads(std::min(2, omp_get_max_threads()))
+    {
+#pragma omp section
+      scanRows(scan, 1, m);
+#pragma omp section
+      scanRows(second, m + 1, static_cast<std::size_t>(H));
+    }
+    scanRows(seam, m, m + 1);
+    for (const Scan* part : {&seam, &second}) {
+      scan.bridge_row.insert(scan.bridge_row.end(), part->bridge_row.begin(), part->bridge_row.end());
+      scan.bridge_x.insert(scan.bridge_x.end(), part->bridge_x.begin(), part->bridge_x.end());
+      scan.bridge_type.insert(scan.bridge_type.end(), part->bridge_type.begin(), part->bridge_type.end());
+      scan.checkerboards += part->checkerboards, scan.n_corners += part->n_corners;
+      scan.n_hedges += part->n_hedges, scan.n_hcorners += part->n_hcorners;
+    }
+  } else {
+    scanRows(scan, 1, static_cast<std::size_t>(H));
+  }
+  std::vector<std::int32_t>& bridge_row = scan.bridge_row;
+  std::vector<std::int32_t>& bridge_x = scan.bridge_x;
+  std::vector<std::uint8_t>& bridge_type = scan.bridge_type;
+  const std::size_t checkerboards = scan.checkerboards, n_corners = scan.n_corners, n_hedges = scan.n_hedges,
+                    n_hcorners = scan.n_hcorners;
   if (checkerboards)
     report.notes.push_back(std::to_string(checkerboards) +
                            " pixel corner(s) where two labels touch diagonally (a checkerboard): the smaller "
@@ -534,7 +588,7 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
     Label label;
     std::size_t first, pixels = 0;
   };
-  std::vector<std::int32_t> piece_of_run(n_runs, -1);  // by root run, then by run
+  HugePageVector<std::int32_t> piece_of_run(n_runs, -1);  // by root run, then by run
   std::vector<Piece> pieces;
   for (std::size_t r = 1; r + 1 < static_cast<std::size_t>(H); ++r)
     for (auto k = static_cast<std::size_t>(runs.off[r]); k < static_cast<std::size_t>(runs.off[r + 1]); ++k) {
@@ -594,7 +648,7 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
   for (std::size_t c = 0; c < order.size(); ++c) cell_of_piece[order[c]] = static_cast<std::int32_t>(c);
   const std::size_t n_cells = pieces.size();
   // The cell of each run (-1 outside), in place: a piece's root is its first run, converted before the others.
-  std::vector<std::int32_t>& cell = piece_of_run;
+  auto& cell = piece_of_run;
   for (std::size_t k = 0; k < n_runs; ++k) {
     if (runs.label[k] == kOutside) {
       cell[k] = -1;
@@ -603,7 +657,7 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
     const auto root = static_cast<std::size_t>(uf.find(static_cast<std::int32_t>(k)));
     cell[k] = root == k ? cell_of_piece[static_cast<std::size_t>(cell[k])] : cell[root];
   }
-  std::vector<std::int32_t>().swap(uf.parent);
+  decltype(uf.parent)().swap(uf.parent);
   auto cellName = [&](std::int32_t c) {
     return c < 0 ? std::string("the background") : "label " + std::to_string(pieces[order[c]].label);
   };
@@ -621,197 +675,319 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
   const std::size_t n_verts = n_corners + bridge_row.size() + n_hcorners;  // the pixel corners on a boundary
   const std::size_t n_vedges = runs.x.size() - static_cast<std::size_t>(H);  // the pixel edges, vertical
   const std::int64_t h_key = 2 * W * (H + 1);  // the keys of the corners inside horizontal stretches start here
-  CornerPositions pos;
-  std::vector<std::int64_t> key;
-  std::vector<BoundaryEdge> edges, h_edges;
   // The edge that follows each edge around each of its two cells: follow[e][0] leaves v, the end of e, along the
   // left cell of e (which runs u -> v); follow[e][1] leaves u along the right cell (v -> u); -1 if there is none.
   // At a vertex of two edges, the other edge. Both walks below (walls, outlines) read it instead of chasing a
   // vertex's edges. Made in the sweep, as each corner row's vertices get all their edges (no incidence table).
-  std::vector<std::array<std::int32_t, 2>> follow, h_follow;
   // Per vertex: its number of edges, whether it is a junction (more or fewer than two edges, or two between
   // different cells), and for a junction its lowest edge (a vertical one), from which its others are found.
-  std::vector<std::uint8_t> degree;
-  std::vector<char> junction;
-  std::vector<std::int32_t> first_edge;
-  const std::size_t n_vertex_guess = n_corners + 3 * bridge_row.size();
-  pos.q.reserve(n_vertex_guess), key.reserve(n_vertex_guess);
-  degree.reserve(n_vertex_guess), junction.reserve(n_vertex_guess), first_edge.reserve(n_vertex_guess);
-  edges.reserve(n_vedges + n_hedges), h_edges.reserve(n_hedges);
-  follow.reserve(n_vedges + n_hedges), h_follow.reserve(n_hedges);
   // In the sweep, horizontal edge i is numbered -2 - i (and -1 is none); once every vertical edge is made, they
   // follow them: n_vertical + i. Their order among themselves and after the vertical ones is kept.
-  auto followAt = [&](std::int32_t e) -> std::array<std::int32_t, 2>& {
-    return e >= 0 ? follow[e] : h_follow[-2 - e];
-  };
-  auto edgeOrder = [](std::int32_t e) { return e >= 0 ? std::int64_t{e} : (std::int64_t{1} << 40) - 2 - e; };
-  // An edge at a vertex, as the sweep knows it (without reading the edge): its number (-1: none), its cells, and
-  // whether the vertex is its end v (else its start u).
-  struct EdgeEnd {
-    std::int32_t e = -1, left = -1, right = -1;
-    bool at_v = false;
-  };
-  // Vertex vx's edges are `at`, all made: its degree, junction, and the follow at vx of each.
-  auto settle = [&](std::int32_t vx, std::array<EdgeEnd, 4> at) {
-    int d = 0;
-    for (const EdgeEnd& g : at)
-      if (g.e != -1) at[d++] = g;
-    for (int i = 1; i < d; ++i)  // increasing, as an incidence table made edge by edge lists them
-      for (int j = i; j > 0 && edgeOrder(at[j].e) < edgeOrder(at[j - 1].e); --j) std::swap(at[j], at[j - 1]);
-    const auto v = static_cast<std::size_t>(vx);
-    degree[v] = static_cast<std::uint8_t>(d);
-    junction[v] = d != 2 || std::minmax(at[0].left, at[0].right) != std::minmax(at[1].left, at[1].right);
-    first_edge[v] = at[0].e;
-    for (int i = 0; i < d; ++i) {
-      const int side = at[i].at_v ? 0 : 1;
-      const std::int32_t ci = side == 0 ? at[i].left : at[i].right;
-      std::int32_t f = -1;
-      if (d == 2) {
-        f = at[1 - i].e;
-      } else {
-        for (int j = 0; j < d && f < 0; ++j)
-          if ((at[j].left == ci && !at[j].at_v) || (at[j].right == ci && at[j].at_v)) f = at[j].e;
-      }
-      followAt(at[i].e)[side] = f;
-    }
-  };
-  std::size_t pixel_edges = 0;  // in the edges made, checked against the counts above
-  std::size_t bp_this = 0, bp_next = 0, bp_above = 0;  // into the bridge lists
-  auto bridgeAt = [&](std::size_t& bp, std::int32_t row, std::int32_t x) -> int {
-    while (bp < bridge_row.size() && (bridge_row[bp] < row || (bridge_row[bp] == row && bridge_x[bp] < x))) ++bp;
-    return bp < bridge_row.size() && bridge_row[bp] == row && bridge_x[bp] == x ? bridge_type[bp] : 0;
-  };
-  // The vertex at corner (ci, cj): at a bridged corner, `second` is the one on the side of the edges leaving
-  // it up or left (type 1) or up or right (type 2), a quarter pixel off the corner.
-  auto newVertex = [&](std::int32_t ci, std::int32_t cj, int type, bool second, std::int64_t k) {
-    constexpr std::uint32_t s = 4 * kSplit;  // in quarter pixels
-    const std::uint32_t x = 4 * static_cast<std::uint32_t>(ci), y = 4 * static_cast<std::uint32_t>(cj);
-    if (type == 1) pos.q.push_back(second ? std::array{x - s, y + s} : std::array{x + s, y - s});
-    else if (type == 2) pos.q.push_back(second ? std::array{x + s, y + s} : std::array{x - s, y - s});
-    else pos.q.push_back({x, y});
-    key.push_back(k);
-    degree.push_back(0), junction.push_back(0), first_edge.push_back(-1);
-    return static_cast<std::int32_t>(pos.size() - 1);
-  };
-  // The scan's order of a corner met by a vertical pixel edge of pixel row `row`: its lower or upper end.
-  auto vKey = [&](std::int32_t row, std::int32_t x, int upper) { return (row * W + x) * 2 + upper; };
-  struct Corner {
-    std::int32_t x, v0, v1;  // v1: the second vertex of a bridged corner; v0 -1: inside a vertical stack
-    int type;
-    EdgeEnd down{}, up{}, left{}, right{};  // its edges
+  //
+  // The sweep runs over two blocks of corner rows at once, [1, m) and [m, H), joined after into the graph one
+  // sweep makes (the same numbers). The second block starts from the vertical edges of pixel row m - 1, which
+  // the first one makes: it refers to the j-th of them, and to its upper vertex, as kPlaceholder + j, and keeps
+  // its writes to them (their vertices' degree, junction and lowest edge, the edges' follow and upper end) for
+  // the join. Whether such a stack goes on into row m depends on rows m - 1, m and the bridged corners only (a
+  // stack never goes on through a bridged corner), so the second block knows it; the join checks it.
+  struct EdgeEnd {  // an edge at a vertex, as the sweep knows it (without reading the edge)
+    std::int32_t e = -1, left = -1, right = -1;  // its number (-1: none), its cells
+    bool at_v = false;                           // whether the vertex is its end v (else its start u)
   };
   struct Up {
     std::int32_t x, vertex, edge;  // vertex -1: the stack of `edge` goes on into the row above
     std::int32_t left, right;      // the edge's cells
   };
-  std::vector<Corner> corners;  // of corner row cj: those on a vertical edge, by x
-  std::vector<Up> up, next_up;  // the upper ends of the row below's vertical edges
+  struct Sweep {
+    CornerPositions pos;
+    // Written by push_back only.
+    HugePageUninitializedVector<std::int64_t> key;
+    HugePageUninitializedVector<BoundaryEdge> edges, h_edges;
+    HugePageUninitializedVector<std::array<std::int32_t, 2>> follow, h_follow;
+    HugePageUninitializedVector<std::uint8_t> degree;
+    HugePageUninitializedVector<char> junction;
+    HugePageUninitializedVector<std::int32_t> first_edge;
+    std::size_t pixel_edges = 0;  // in the edges made, checked against the counts above
+    std::vector<Up> up;           // after the sweep: the upper ends of its last pixel row's vertical edges
+    // A second block's writes to the first block's vertices and edges (placeholders), made at the join.
+    std::vector<std::array<std::int32_t, 4>> settled;  // vertex, degree, junction, lowest edge
+    std::vector<std::array<std::int32_t, 3>> follows;  // edge, side, the edge that follows it there
+    std::vector<std::array<std::int32_t, 2>> ends;     // edge, its end v
+  };
+  constexpr std::int32_t kPlaceholder = std::int32_t{1} << 30;
+  auto placeholder = [](std::int32_t id) { return id >= kPlaceholder; };
+  // The scan's order of a corner met by a vertical pixel edge of pixel row `row`: its lower or upper end.
+  auto vKey = [&](std::int32_t row, std::int32_t x, int upper) { return (row * W + x) * 2 + upper; };
+  // The index in the bridge lists of the first bridged corner at or after (row, x).
+  auto bridgeFrom = [&](std::int32_t row) {
+    return static_cast<std::size_t>(std::lower_bound(bridge_row.begin(), bridge_row.end(), row) - bridge_row.begin());
+  };
+  auto bridgeAt = [&](std::size_t& bp, std::int32_t row, std::int32_t x) -> int {
+    while (bp < bridge_row.size() && (bridge_row[bp] < row || (bridge_row[bp] == row && bridge_x[bp] < x))) ++bp;
+    return bp < bridge_row.size() && bridge_row[bp] == row && bridge_x[bp] == x ? bridge_type[bp] : 0;
+  };
   constexpr std::int32_t kNone = std::numeric_limits<std::int32_t>::max();
-  for (std::int32_t cj = 1; cj < static_cast<std::int32_t>(H); ++cj) {
-    // The vertical edges of pixel row cj (none in the padding row H - 1).
-    corners.clear(), next_up.clear();
-    std::size_t p = 0, k = static_cast<std::size_t>(runs.off[cj]) + 1;
-    const auto k_end = static_cast<std::size_t>(runs.off[cj + 1]);
-    // Row cj + 1's label changes, to tell whether a stack goes on.
-    std::size_t ka = 0, ka_end = 0;
-    if (cj + 1 < static_cast<std::int32_t>(H))
-      ka = static_cast<std::size_t>(runs.off[cj + 1]) + 1, ka_end = static_cast<std::size_t>(runs.off[cj + 2]);
-    while (p < up.size() || k < k_end) {
-      const std::int32_t xa = p < up.size() ? up[p].x : kNone, xb = k < k_end ? runs.x[k] : kNone;
-      if (xa < xb) {
-        corners.push_back({xa, up[p].vertex, -1, 0, {up[p].edge, up[p].left, up[p].right, true}});
-        ++p;
-        continue;
-      }
-      const std::int32_t left = cell[k - 1], right = cell[k];
-      const int type = bridgeAt(bp_this, cj, xb);
-      std::int32_t v0 = -1, v1 = -1, e;
-      EdgeEnd down{};
-      bool starts = true;
-      if (xa == xb && up[p].vertex < 0) {  // the stack below goes on: its corner here is no vertex
-        e = up[p++].edge, starts = false;
+  // Corner rows [r0, r1) into s, from `up`, the upper ends of pixel row r0 - 1's vertical edges.
+  auto sweepRows = [&](Sweep& s, std::int32_t r0, std::int32_t r1, std::vector<Up> up, std::size_t n_vertex_guess,
+                       std::size_t n_vedge_guess, std::size_t n_hedge_guess) {
+    s.pos.q.reserve(n_vertex_guess), s.key.reserve(n_vertex_guess);
+    s.degree.reserve(n_vertex_guess), s.junction.reserve(n_vertex_guess), s.first_edge.reserve(n_vertex_guess);
+    s.edges.reserve(n_vedge_guess + n_hedge_guess), s.h_edges.reserve(n_hedge_guess);
+    s.follow.reserve(n_vedge_guess + n_hedge_guess), s.h_follow.reserve(n_hedge_guess);
+    auto setFollow = [&](std::int32_t e, int side, std::int32_t f) {
+      if (placeholder(e)) s.follows.push_back({e, side, f});
+      else (e >= 0 ? s.follow[e] : s.h_follow[-2 - e])[side] = f;
+    };
+    // The first block's edges before this block's, vertical edges before horizontal ones.
+    auto edgeOrder = [&](std::int32_t e) {
+      return placeholder(e) ? std::int64_t{-1} : e >= 0 ? std::int64_t{e} : (std::int64_t{1} << 40) - 2 - e;
+    };
+    // Vertex vx's edges are `at`, all made: its degree, junction, and the follow at vx of each.
+    auto settle = [&](std::int32_t vx, std::array<EdgeEnd, 4> at) {
+      int d = 0;
+      for (const EdgeEnd& g : at)
+        if (g.e != -1) at[d++] = g;
+      for (int i = 1; i < d; ++i)  // increasing, as an incidence table made edge by edge lists them
+        for (int j = i; j > 0 && edgeOrder(at[j].e) < edgeOrder(at[j - 1].e); --j) std::swap(at[j], at[j - 1]);
+      const bool is_junction = d != 2 || std::minmax(at[0].left, at[0].right) != std::minmax(at[1].left, at[1].right);
+      if (placeholder(vx)) {
+        s.settled.push_back({vx, d, is_junction, at[0].e});
       } else {
-        std::int32_t lower;
-        if (xa == xb) {
-          down = {up[p].edge, up[p].left, up[p].right, true}, v0 = up[p++].vertex;
-          lower = type ? (v1 = newVertex(xb, cj, type, true, vKey(cj, xb, 0))) : v0;
+        const auto v = static_cast<std::size_t>(vx);
+        s.degree[v] = static_cast<std::uint8_t>(d), s.junction[v] = is_junction, s.first_edge[v] = at[0].e;
+      }
+      for (int i = 0; i < d; ++i) {
+        const int side = at[i].at_v ? 0 : 1;
+        const std::int32_t ci = side == 0 ? at[i].left : at[i].right;
+        std::int32_t f = -1;
+        if (d == 2) {
+          f = at[1 - i].e;
         } else {
-          lower = v0 = newVertex(xb, cj, 0, false, vKey(cj, xb, 0));
+          for (int j = 0; j < d && f < 0; ++j)
+            if ((at[j].left == ci && !at[j].at_v) || (at[j].right == ci && at[j].at_v)) f = at[j].e;
         }
-        e = static_cast<std::int32_t>(edges.size());
-        edges.push_back({lower, -1, left, right}), follow.push_back({-1, -1});
+        setFollow(at[i].e, side, f);
       }
-      ++pixel_edges;
-      // The stack goes on into row cj + 1 where that row has a vertical edge at xb between the same cells (no
-      // corner between them is bridged), unless a bridged corner lies just below (a stack starting at one) or
-      // two corners up: the corner next to a bridged one is a vertex.
+    };
+    std::size_t bp_this = bridgeFrom(r0), bp_next = bp_this, bp_above = bp_this;  // into the bridge lists
+    // The vertex at corner (ci, cj): at a bridged corner, `second` is the one on the side of the edges leaving
+    // it up or left (type 1) or up or right (type 2), a quarter pixel off the corner.
+    auto newVertex = [&](std::int32_t ci, std::int32_t cj, int type, bool second, std::int64_t k) {
+      constexpr std::uint32_t sp = 4 * kSplit;  // in quarter pixels
+      const std::uint32_t x = 4 * static_cast<std::uint32_t>(ci), y = 4 * static_cast<std::uint32_t>(cj);
+      if (type == 1) s.pos.q.push_back(second ? std::array{x - sp, y + sp} : std::array{x + sp, y - sp});
+      else if (type == 2) s.pos.q.push_back(second ? std::array{x + sp, y + sp} : std::array{x - sp, y - sp});
+      else s.pos.q.push_back({x, y});
+      s.key.push_back(k);
+      s.degree.push_back(0), s.junction.push_back(0), s.first_edge.push_back(-1);
+      return static_cast<std::int32_t>(s.pos.size() - 1);
+    };
+    struct Corner {
+      std::int32_t x, v0, v1;  // v1: the second vertex of a bridged corner; v0 -1: inside a vertical stack
+      int type;
+      EdgeEnd down{}, up{}, left{}, right{};  // its edges
+    };
+    std::vector<Corner> corners;  // of corner row cj: those on a vertical edge, by x
+    std::vector<Up> next_up;      // `up` for the next row
+    for (std::int32_t cj = r0; cj < r1; ++cj) {
+      // The vertical edges of pixel row cj (none in the padding row H - 1).
+      corners.clear(), next_up.clear();
+      std::size_t p = 0, k = static_cast<std::size_t>(runs.off[cj]) + 1;
+      const auto k_end = static_cast<std::size_t>(runs.off[cj + 1]);
+      // Row cj + 1's label changes, to tell whether a stack goes on.
+      std::size_t ka = 0, ka_end = 0;
+      if (cj + 1 < static_cast<std::int32_t>(H))
+        ka = static_cast<std::size_t>(runs.off[cj + 1]) + 1, ka_end = static_cast<std::size_t>(runs.off[cj + 2]);
+      while (p < up.size() || k < k_end) {
+        const std::int32_t xa = p < up.size() ? up[p].x : kNone, xb = k < k_end ? runs.x[k] : kNone;
+        if (xa < xb) {
+          corners.push_back({xa, up[p].vertex, -1, 0, {up[p].edge, up[p].left, up[p].right, true}});
+          ++p;
+          continue;
+        }
+        const std::int32_t left = cell[k - 1], right = cell[k];
+        const int type = bridgeAt(bp_this, cj, xb);
+        std::int32_t v0 = -1, v1 = -1, e;
+        EdgeEnd down{};
+        bool starts = true;
+        if (xa == xb && up[p].vertex < 0) {  // the stack below goes on: its corner here is no vertex
+          e = up[p++].edge, starts = false;
+        } else {
+          std::int32_t lower;
+          if (xa == xb) {
+            down = {up[p].edge, up[p].left, up[p].right, true}, v0 = up[p++].vertex;
+            lower = type ? (v1 = newVertex(xb, cj, type, true, vKey(cj, xb, 0))) : v0;
+          } else {
+            lower = v0 = newVertex(xb, cj, 0, false, vKey(cj, xb, 0));
+          }
+          e = static_cast<std::int32_t>(s.edges.size());
+          s.edges.push_back({lower, -1, left, right}), s.follow.push_back({-1, -1});
+        }
+        ++s.pixel_edges;
+        // The stack goes on into row cj + 1 where that row has a vertical edge at xb between the same cells (no
+        // corner between them is bridged), unless a bridged corner lies just below (a stack starting at one) or
+        // two corners up: the corner next to a bridged one is a vertex.
+        while (ka < ka_end && runs.x[ka] < xb) ++ka;
+        const int type_up = bridgeAt(bp_next, cj + 1, xb);
+        const bool goes_on = ka < ka_end && runs.x[ka] == xb && cell[ka - 1] == left && cell[ka] == right &&
+                             !(starts && type) && !bridgeAt(bp_above, cj + 2, xb);
+        if (goes_on) {
+          next_up.push_back({xb, -1, e, left, right});
+        } else {
+          const std::int32_t upper = newVertex(xb, cj + 1, type_up, false, vKey(cj, xb, 1));
+          if (placeholder(e)) s.ends.push_back({e, upper});
+          else s.edges[static_cast<std::size_t>(e)].v = upper;
+          next_up.push_back({xb, upper, e, left, right});
+        }
+        corners.push_back({xb, v0, v1, type, down, {starts ? e : -1, left, right, false}});
+        ++k;
+      }
+      std::swap(up, next_up);
+      // The horizontal edges along corner row cj, between pixel rows cj - 1 (below) and cj (above): each
+      // stretch [s, e) starts and ends at a corner on a vertical edge, corners[q - 1] and corners[q]; a bridged
+      // end makes the corner next to it a vertex (kink).
+      std::size_t q = 0;
+      sideBySide(static_cast<std::size_t>(cj) - 1, static_cast<std::size_t>(cj),
+                 [&](std::size_t kb, std::size_t kc, std::int32_t xs, std::int32_t xe, bool, bool) {
+                   const std::int32_t below = cell[kb], above = cell[kc];
+                   if (below != above) {
+                     Corner &cs = corners[q - 1], &ce = corners[q];
+                     std::int32_t u = cs.type == 2 ? cs.v1 : cs.v0;  // leaving right: type 2's second vertex
+                     const std::int32_t v = ce.type == 1 ? ce.v1 : ce.v0;  // leaving left: type 1's second vertex
+                     std::int32_t last = -1;  // the stretch's edge made last
+                     auto addEdge = [&](std::int32_t to) {
+                       const std::int32_t id = -2 - static_cast<std::int32_t>(s.h_edges.size());
+                       s.h_edges.push_back({u, to, above, below}), s.h_follow.push_back({-1, -1});
+                       if (last == -1) cs.right = {id, above, below, false};
+                       else setFollow(last, 0, id), setFollow(id, 1, last);  // at the kink between them
+                       last = id;
+                     };
+                     auto kink = [&](std::int32_t ci) {
+                       const std::int32_t kv = newVertex(ci, cj, 0, false, h_key + cj * W + ci);
+                       s.degree[static_cast<std::size_t>(kv)] = 2;  // two edges between the same cells
+                       addEdge(kv);
+                       u = kv;
+                     };
+                     if (cs.type && xe - xs >= 2) kink(xs + 1);
+                     if (ce.type && xe - xs >= 2 && !(cs.type && xe - xs == 2)) kink(xe - 1);
+                     addEdge(v);
+                     ce.left = {last, above, below, true};
+                     s.pixel_edges += static_cast<std::size_t>(xe - xs);
+                   }
+                   q += xe < width;
+                 });
+      // The corners of row cj now have all their edges: at a bridged corner, the first vertex has the edges
+      // leaving it down and right (type 1) or down and left (type 2), the second the others.
+      for (const Corner& c : corners) {
+        if (c.v0 < 0) continue;
+        if (c.type == 0) settle(c.v0, {c.down, c.up, c.left, c.right});
+        else if (c.type == 1) settle(c.v0, {c.down, c.right, {}, {}}), settle(c.v1, {c.up, c.left, {}, {}});
+        else settle(c.v0, {c.down, c.left, {}, {}}), settle(c.v1, {c.up, c.right, {}, {}});
+      }
+    }
+    s.up = std::move(up);
+  };
+  // The upper ends of pixel row r's vertical edges as placeholders: what the sweep of row r leaves for row r + 1.
+  auto placeholdersAfter = [&](std::int32_t r) {
+    std::vector<Up> out;
+    std::size_t ka = static_cast<std::size_t>(runs.off[r + 1]) + 1;
+    const auto ka_end = static_cast<std::size_t>(runs.off[r + 2]);
+    std::size_t bp = bridgeFrom(r), bp_above = bridgeFrom(r + 2);
+    for (auto k = static_cast<std::size_t>(runs.off[r]) + 1; k < static_cast<std::size_t>(runs.off[r + 1]); ++k) {
+      const std::int32_t xb = runs.x[k], left = cell[k - 1], right = cell[k];
       while (ka < ka_end && runs.x[ka] < xb) ++ka;
-      const int type_up = bridgeAt(bp_next, cj + 1, xb);
       const bool goes_on = ka < ka_end && runs.x[ka] == xb && cell[ka - 1] == left && cell[ka] == right &&
-                           !(starts && type) && !bridgeAt(bp_above, cj + 2, xb);
-      if (goes_on) {
-        next_up.push_back({xb, -1, e, left, right});
-      } else {
-        const std::int32_t upper = newVertex(xb, cj + 1, type_up, false, vKey(cj, xb, 1));
-        edges[static_cast<std::size_t>(e)].v = upper;
-        next_up.push_back({xb, upper, e, left, right});
-      }
-      corners.push_back({xb, v0, v1, type, down, {starts ? e : -1, left, right, false}});
-      ++k;
+                           !bridgeAt(bp, r, xb) && !bridgeAt(bp_above, r + 2, xb);
+      const auto id = kPlaceholder + static_cast<std::int32_t>(out.size());
+      out.push_back({xb, goes_on ? -1 : id, id, left, right});
     }
-    std::swap(up, next_up);
-    // The horizontal edges along corner row cj, between pixel rows cj - 1 (below) and cj (above): each
-    // stretch [s, e) starts and ends at a corner on a vertical edge, corners[q - 1] and corners[q]; a bridged
-    // end makes the corner next to it a vertex (kink).
-    std::size_t q = 0;
-    sideBySide(static_cast<std::size_t>(cj) - 1, static_cast<std::size_t>(cj),
-               [&](std::size_t kb, std::size_t kc, std::int32_t s, std::int32_t e, bool, bool) {
-                 const std::int32_t below = cell[kb], above = cell[kc];
-                 if (below != above) {
-                   Corner &cs = corners[q - 1], &ce = corners[q];
-                   std::int32_t u = cs.type == 2 ? cs.v1 : cs.v0;  // leaving right: type 2's second vertex
-                   const std::int32_t v = ce.type == 1 ? ce.v1 : ce.v0;  // leaving left: type 1's second vertex
-                   std::int32_t last = -1;  // the stretch's edge made last
-                   auto addEdge = [&](std::int32_t to) {
-                     const std::int32_t id = -2 - static_cast<std::int32_t>(h_edges.size());
-                     h_edges.push_back({u, to, above, below}), h_follow.push_back({-1, -1});
-                     if (last == -1) cs.right = {id, above, below, false};
-                     else followAt(last)[0] = id, followAt(id)[1] = last;  // at the kink between them
-                     last = id;
-                   };
-                   auto kink = [&](std::int32_t ci) {
-                     const std::int32_t kv = newVertex(ci, cj, 0, false, h_key + cj * W + ci);
-                     degree[static_cast<std::size_t>(kv)] = 2;  // two edges between the same cells
-                     addEdge(kv);
-                     u = kv;
-                   };
-                   if (cs.type && e - s >= 2) kink(s + 1);
-                   if (ce.type && e - s >= 2 && !(cs.type && e - s == 2)) kink(e - 1);
-                   addEdge(v);
-                   ce.left = {last, above, below, true};
-                   pixel_edges += static_cast<std::size_t>(e - s);
-                 }
-                 q += e < width;
-               });
-    // The corners of row cj now have all their edges: at a bridged corner, the first vertex has the edges
-    // leaving it down and right (type 1) or down and left (type 2), the second the others.
-    for (const Corner& c : corners) {
-      if (c.v0 < 0) continue;
-      if (c.type == 0) settle(c.v0, {c.down, c.up, c.left, c.right});
-      else if (c.type == 1) settle(c.v0, {c.down, c.right, {}, {}}), settle(c.v1, {c.up, c.left, {}, {}});
-      else settle(c.v0, {c.down, c.left, {}, {}}), settle(c.v1, {c.up, c.right, {}, {}});
-    }
+    return out;
+  };
+  Sweep graph;  // the first block's, then the whole graph
+  const std::size_t n_vertex_guess = n_corners + 3 * bridge_row.size();
+  // Two blocks of about as many runs each; one for a small image (and where the placeholders could not be told
+  // from numbers).
+  std::int32_t split = static_cast<std::int32_t>(H);
+  if (H >= 8 && n_verts + n_vedges + n_hedges < static_cast<std::size_t>(kPlaceholder)) {
+    const auto half = static_cast<std::int32_t>(runs.x.size() / 2);
+    split = static_cast<std::int32_t>(std::upper_bound(runs.off.begin(), runs.off.end(), half) - runs.off.begin());
+    split = std::clamp(split, std::int32_t{3}, static_cast<std::int32_t>(H) - 2);
   }
+  if (split == static_cast<std::int32_t>(H)) {
+    sweepRows(graph, 1, split, {}, n_vertex_guess, n_vedges, n_hedges);
+  } else {
+    Sweep second;
+    // The second block's share of the graph, with room to spare (its arrays are copied after the first's).
+    const double share = static_cast<double>(runs.x.size() - static_cast<std::size_t>(runs.off[split])) /
+                         static_cast<double>(runs.x.size());
+    auto part = [&](std::size_t n) { return static_cast<std::size_t>(static_cast<double>(n) * share * 1.25) + 64; };
+#pragma omp parallel sections num_threads(std::min(2, omp_get_max_threads()))
+    {
+#pragma omp section
+      sweepRows(graph, 1, split, {}, n_vertex_guess, n_vedges, n_hedges);
+#pragma omp section
+      sweepRows(second, split, static_cast<std::int32_t>(H), placeholdersAfter(split - 1), part(n_vertex_guess),
+                part(n_vedges), part(n_hedges));
+    }
+    // The join: the second block's vertices and edges numbered after the first's, its placeholders replaced by
+    // the first block's vertices and edges they stand for.
+    const std::vector<Up>& ends = graph.up;
+    const std::vector<Up> expected = placeholdersAfter(split - 1);
+    bool same = ends.size() == expected.size();
+    for (std::size_t j = 0; same && j < ends.size(); ++j)
+      same = ends[j].x == expected[j].x && ends[j].left == expected[j].left && ends[j].right == expected[j].right &&
+             (ends[j].vertex < 0) == (expected[j].vertex < 0);
+    if (!same) throw InputError(file + ": the sweep's two blocks do not meet (an internal error)");
+    const auto nv0 = static_cast<std::int32_t>(graph.pos.size()), ne0 = static_cast<std::int32_t>(graph.edges.size()),
+               nh0 = static_cast<std::int32_t>(graph.h_edges.size());
+    auto vertexOf = [&](std::int32_t v) { return v < 0 ? v : placeholder(v) ? ends[v - kPlaceholder].vertex : nv0 + v; };
+    auto edgeOf = [&](std::int32_t e) {
+      return e == -1 ? e : placeholder(e) ? ends[e - kPlaceholder].edge : e >= 0 ? ne0 + e : e - nh0;
+    };
+    // Copied after the first block's items, on one thread: 4 ms at 4096^2, where a parallel loop waited up to
+    // 100 ms for its second thread on a loaded machine.
+    for (std::size_t i = 0; i < second.pos.size(); ++i) {
+      graph.pos.q.push_back(second.pos.q[i]), graph.key.push_back(second.key[i]);
+      graph.degree.push_back(second.degree[i]), graph.junction.push_back(second.junction[i]);
+      graph.first_edge.push_back(edgeOf(second.first_edge[i]));
+    }
+    for (std::size_t i = 0; i < second.edges.size(); ++i) {
+      const BoundaryEdge& e = second.edges[i];
+      graph.edges.push_back({vertexOf(e.u), vertexOf(e.v), e.left, e.right});
+      graph.follow.push_back({edgeOf(second.follow[i][0]), edgeOf(second.follow[i][1])});
+    }
+    for (std::size_t i = 0; i < second.h_edges.size(); ++i) {
+      const BoundaryEdge& e = second.h_edges[i];
+      graph.h_edges.push_back({vertexOf(e.u), vertexOf(e.v), e.left, e.right});
+      graph.h_follow.push_back({edgeOf(second.h_follow[i][0]), edgeOf(second.h_follow[i][1])});
+    }
+    for (const auto& [vx, d, is_junction, e] : second.settled) {
+      const auto v = static_cast<std::size_t>(vertexOf(vx));
+      graph.degree[v] = static_cast<std::uint8_t>(d), graph.junction[v] = static_cast<char>(is_junction);
+      graph.first_edge[v] = edgeOf(e);
+    }
+    for (const auto& [e, side, f] : second.follows) graph.follow[static_cast<std::size_t>(edgeOf(e))][side] = edgeOf(f);
+    for (const auto& [e, v] : second.ends) graph.edges[static_cast<std::size_t>(edgeOf(e))].v = vertexOf(v);
+    graph.pixel_edges += second.pixel_edges;
+  }
+  CornerPositions& pos = graph.pos;
+  auto& key = graph.key;
+  auto& edges = graph.edges;
+  auto& follow = graph.follow;
+  auto& degree = graph.degree;
+  auto& junction = graph.junction;
+  auto& first_edge = graph.first_edge;
+  const std::size_t pixel_edges = graph.pixel_edges;
   // The horizontal edges after the vertical ones, renumbered.
   const auto n_vertical = static_cast<std::int32_t>(edges.size());
   auto renumber = [&](const std::array<std::int32_t, 2>& f) {
     return std::array{f[0] < -1 ? n_vertical - 2 - f[0] : f[0], f[1] < -1 ? n_vertical - 2 - f[1] : f[1]};
   };
   for (auto& f : follow) f = renumber(f);
-  for (const auto& f : h_follow) follow.push_back(renumber(f));
-  edges.insert(edges.end(), h_edges.begin(), h_edges.end());
-  std::vector<BoundaryEdge>().swap(h_edges);
-  std::vector<std::array<std::int32_t, 2>>().swap(h_follow);
+  for (const auto& f : graph.h_follow) follow.push_back(renumber(f));
+  edges.insert(edges.end(), graph.h_edges.begin(), graph.h_edges.end());
+  decltype(graph.h_edges)().swap(graph.h_edges);
+  decltype(graph.h_follow)().swap(graph.h_follow);
   const std::size_t n_edges = edges.size(), nv = pos.size();
   if (pixel_edges != n_vedges + n_hedges || nv + pixel_edges - n_edges != n_verts)
     throw InputError(file + ": the pixel corners were miscounted (an internal error)");
@@ -829,7 +1005,7 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
   Csr<std::int32_t> outlines;  // the vertices, in loop order
   std::vector<std::uint8_t> outline_fault(n_cells, 0);
   auto traceWalls = [&] {
-    std::vector<std::int32_t> edge_wall(n_edges, -1);
+    HugePageVector<std::int32_t> edge_wall(n_edges, -1);
     // At most one wall per edge, and a wall's chain holds its edges and one more vertex: room for all.
     walls.chain.reserve(2 * n_edges), walls.off.reserve(n_edges + 1), walls.tol.reserve(n_edges);
     walls.keep_one.reserve(n_edges), wall_cells.reserve(n_edges);
@@ -874,7 +1050,7 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
         junction[edges[e].u] = 1;
         walk(edges[e].u, static_cast<std::int32_t>(e));
       }
-    std::vector<std::int32_t>().swap(edge_wall);
+    decltype(edge_wall)().swap(edge_wall);
   };
   auto traceOutlines = [&] {
     cell_off.assign(n_cells + 1, 0), cell_first.assign(n_cells, -1);
@@ -996,6 +1172,7 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
   // just above the stack's lower end, which the walk met second: the outline then starts at the lower end, and
   // the corner is the last inside its closing edge (`rotated`).
   std::vector<char> rotated(n_cells, 0);
+#pragma omp parallel for schedule(static)
   for (std::ptrdiff_t cc = 0; cc < static_cast<std::ptrdiff_t>(n_cells); ++cc) {
     const auto c = static_cast<std::size_t>(cc);
     const auto& first = edges[static_cast<std::size_t>(cell_first[c])];
@@ -1005,10 +1182,10 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
     std::rotate(begin + cell_off[c], begin + cell_off[c] + 1, begin + cell_off[c + 1]);
   }
   std::vector<std::int32_t>().swap(cell_first);
-  decltype(follow)().swap(follow);
+  decltype(graph.follow)().swap(follow);
 
   // Simplify, then make sure no two walls cross and no cell flattens.
-  std::vector<char> keep(junction.begin(), junction.end());
+  HugePageVector<char> keep(junction.begin(), junction.end());
   // Not read from here on: freed now, so that the arrays made below can take their memory.
   auto drop = [](auto& v) { std::remove_cvref_t<decltype(v)>().swap(v); };
   drop(edges), drop(first_edge), drop(degree), drop(junction), drop(piece_of_run);
@@ -1201,10 +1378,10 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
     const double y = img.origin[1] + (p.y() + static_cast<double>(y0) - 0.5) * sy;
     return Vec3(o.scale * x, o.scale * y, 0.0);
   };
-  UninitializedVector<std::int32_t> new_index(nv);  // written and read for kept vertices only
+  HugePageUninitializedVector<std::int32_t> new_index(nv);  // written and read for kept vertices only
   std::vector<Vec3> positions;
   std::vector<Index> polygon_off(n_cells + 1, 0);
-  UninitializedVector<Index> polygon_vertices;
+  HugePageUninitializedVector<Index> polygon_vertices;
   if (wall_inner.empty()) {
     constexpr std::ptrdiff_t kBlocks = 64;
     std::vector<std::size_t> start_v(kBlocks + 1, 0), start_h(kBlocks + 1, 0);
@@ -1231,7 +1408,8 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
         std::partial_sum(start_v.begin(), start_v.end(), start_v.begin());
         start_h[0] = start_v.back();
         std::partial_sum(start_h.begin(), start_h.end(), start_h.begin());
-        positions.resize(start_h.back());
+        positions.resize(start_h.back());  // Vec3's default constructor writes nothing
+        detail::adviseHugePages(positions.data(), positions.size() * sizeof(Vec3));
         std::partial_sum(polygon_off.begin(), polygon_off.end(), polygon_off.begin());
         polygon_vertices.resize(polygon_off.back());
       }
