@@ -33,7 +33,7 @@
 
 #include <omp.h>
 
-#include "huge_page_allocator.hpp"
+#include "tessella/tissue/huge_pages.hpp"
 #include "label_image_2d.hpp"
 #include "label_image_3d.hpp"
 #include "labelled_surface.hpp"
@@ -47,8 +47,8 @@ namespace tessella::io {
 
 namespace {
 
-using detail::HugePageUninitializedVector;
-using detail::HugePageVector;
+using tessella::detail::HugePageUninitializedVector;
+using tessella::detail::HugePageVector;
 using detail::Label;
 constexpr Label kOutside = std::numeric_limits<Label>::min();
 constexpr double kSplit = 0.25;  // offset of the two vertices of a bridged corner, in pixels
@@ -1409,7 +1409,7 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
         start_h[0] = start_v.back();
         std::partial_sum(start_h.begin(), start_h.end(), start_h.begin());
         positions.resize(start_h.back());  // Vec3's default constructor writes nothing
-        detail::adviseHugePages(positions.data(), positions.size() * sizeof(Vec3));
+        tessella::detail::adviseHugePages(positions.data(), positions.size() * sizeof(Vec3));
         std::partial_sum(polygon_off.begin(), polygon_off.end(), polygon_off.begin());
         polygon_vertices.resize(polygon_off.back());
       }

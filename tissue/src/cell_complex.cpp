@@ -12,7 +12,7 @@
 #include <utility>
 
 #include "closed_surface.hpp"
-#include "huge_pages.hpp"
+#include "tessella/tissue/huge_pages.hpp"
 #include "tessella/tissue/errors.hpp"
 
 namespace tessella {
