@@ -20,6 +20,7 @@
 // and of two cells the smaller label bridges.
 
 #include <algorithm>
+#include <exception>
 #include <array>
 #include <atomic>
 #include <cmath>
@@ -555,13 +556,24 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
   if (H >= 8) {
     const auto m = static_cast<std::size_t>(H / 2);
     Scan second, seam;
+    std::exception_ptr failed[2];  // (an exception must not leave a section: out of memory, say)
 #pragma omp parallel sections num_threads(std::min(2, omp_get_max_threads()))
     {
 #pragma omp section
-      scanRows(scan, 1, m);
+      try {
+        scanRows(scan, 1, m);
+      } catch (...) {
+        failed[0] = std::current_exception();
+      }
 #pragma omp section
-      scanRows(second, m + 1, static_cast<std::size_t>(H));
+      try {
+        scanRows(second, m + 1, static_cast<std::size_t>(H));
+      } catch (...) {
+        failed[1] = std::current_exception();
+      }
     }
+    for (const std::exception_ptr& e : failed)
+      if (e) std::rethrow_exception(e);
     scanRows(seam, m, m + 1);
     for (const Scan* part : {&seam, &second}) {
       scan.bridge_row.insert(scan.bridge_row.end(), part->bridge_row.begin(), part->bridge_row.end());
@@ -921,14 +933,25 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
     const double share = static_cast<double>(runs.x.size() - static_cast<std::size_t>(runs.off[split])) /
                          static_cast<double>(runs.x.size());
     auto part = [&](std::size_t n) { return static_cast<std::size_t>(static_cast<double>(n) * share * 1.25) + 64; };
+    std::exception_ptr failed[2];  // (an exception must not leave a section: out of memory, say)
 #pragma omp parallel sections num_threads(std::min(2, omp_get_max_threads()))
     {
 #pragma omp section
-      sweepRows(graph, 1, split, {}, n_vertex_guess, n_vedges, n_hedges);
+      try {
+        sweepRows(graph, 1, split, {}, n_vertex_guess, n_vedges, n_hedges);
+      } catch (...) {
+        failed[0] = std::current_exception();
+      }
 #pragma omp section
-      sweepRows(second, split, static_cast<std::int32_t>(H), placeholdersAfter(split - 1), part(n_vertex_guess),
-                part(n_vedges), part(n_hedges));
+      try {
+        sweepRows(second, split, static_cast<std::int32_t>(H), placeholdersAfter(split - 1), part(n_vertex_guess),
+                  part(n_vedges), part(n_hedges));
+      } catch (...) {
+        failed[1] = std::current_exception();
+      }
     }
+    for (const std::exception_ptr& e : failed)
+      if (e) std::rethrow_exception(e);
     // The join: the second block's vertices and edges numbered after the first's, its placeholders replaced by
     // the first block's vertices and edges they stand for.
     const std::vector<Up>& ends = graph.up;
@@ -1101,12 +1124,25 @@ ImportResult convertLabelImage(const LabelImage& img, detail::LabelPixels pixels
       }
     }
   };
-#pragma omp parallel sections num_threads(std::min(2, omp_get_max_threads()))
   {
+    std::exception_ptr failed[2];  // (an exception must not leave a section: out of memory, say)
+#pragma omp parallel sections num_threads(std::min(2, omp_get_max_threads()))
+    {
 #pragma omp section
-    traceWalls();
+      try {
+        traceWalls();
+      } catch (...) {
+        failed[0] = std::current_exception();
+      }
 #pragma omp section
-    traceOutlines();
+      try {
+        traceOutlines();
+      } catch (...) {
+        failed[1] = std::current_exception();
+      }
+    }
+    for (const std::exception_ptr& e : failed)
+      if (e) std::rethrow_exception(e);
   }
   const std::size_t n_walls = walls.size();
   for (std::size_t c = 0; c < n_cells; ++c) {
