@@ -352,6 +352,11 @@ vtkSmartPointer<vtkImageData> readGzip(const NrrdHeader& h, const HeaderParser& 
   std::ifstream in(h.data_path, std::ios::binary);
   in.seekg(static_cast<std::streamoff>(h.data_offset));
   const std::string compressed{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  // Deflate expands at most ~1032 times: a header claiming more is refused before its image is allocated.
+  const double most = 1032.0 * static_cast<double>(compressed.size()) + 1024;
+  if (static_cast<double>(valueCount(h)) * h.type.bytes > most)
+    parser.fail("holds " + std::to_string(compressed.size()) + " bytes of gzip data, too few for its sizes and type (" +
+                describe(h) + ")");
   vtkSmartPointer<vtkImageData> image = emptyImage(h);
   vtkDataArray* scalars = image->GetPointData()->GetScalars();
   const std::size_t bytes = static_cast<std::size_t>(valueCount(h)) * static_cast<std::size_t>(h.type.bytes);
@@ -392,9 +397,15 @@ vtkSmartPointer<vtkImageData> readGzip(const NrrdHeader& h, const HeaderParser& 
 vtkSmartPointer<vtkImageData> readAscii(const NrrdHeader& h, const HeaderParser& parser) {
   std::ifstream in(h.data_path, std::ios::binary);
   in.seekg(static_cast<std::streamoff>(h.data_offset));
+  const std::int64_t count = valueCount(h);
+  // Every value takes a character at least: a header claiming more is refused before its image is allocated.
+  const std::uintmax_t file_size = std::filesystem::file_size(h.data_path);
+  const std::uintmax_t text = file_size - std::min(h.data_offset, file_size);
+  if (static_cast<std::uintmax_t>(count) > text)
+    parser.fail("holds " + std::to_string(text) + " bytes of ASCII data, too few for its sizes (" + describe(h) +
+                ")");
   vtkSmartPointer<vtkImageData> image = emptyImage(h);
   vtkDataArray* scalars = image->GetPointData()->GetScalars();
-  const std::int64_t count = valueCount(h);
   const int bits = 8 * h.type.bytes;
   std::int64_t n = 0;
   for (std::string token; in >> token; ++n) {

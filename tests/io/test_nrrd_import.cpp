@@ -261,9 +261,13 @@ TEST_CASE("malformed NRRD headers and data give an InputError naming the file an
   g.encoding = "gzip";
   fails("gzip_short", g, gzipped(raw.substr(0, 80)), {"80 bytes of gzip data", "need 90"});
   fails("gzip_corrupt", g, "this is not gzip data at all", {"gzip"});
+  g.n = {100000, 100000, 1};  // 20 GB claimed: refused before any allocation
+  fails("gzip_huge", g, gzipped(raw), {"gzip data, too few", "100000 x 100000"});
+  g.encoding = "ascii";
+  fails("ascii_huge", g, "2 3 4\n", {"ASCII data, too few", "100000 x 100000"});
   g = f;
   g.encoding = "ascii";
-  fails("ascii_short", g, "2 3 4\n", {"3 ASCII values", "need 45"});
+  fails("ascii_short", g, "2 3 4" + std::string(60, ' ') + "\n", {"3 ASCII values", "need 45"});
   g.type = kTypes[0];  // uint8
   std::string text = encoded(g, labels);
   text.replace(0, 1, "300");
