@@ -1,7 +1,7 @@
 // SPDX-FileCopyrightText: 2026 The Tessella developers
 // SPDX-License-Identifier: AGPL-3.0-or-later
-// Label images read through VTK's image readers (TIFF, NRRD, MetaImage, VTK
-// XML image data) and imported as tissues (label_image_2d.cpp).
+// Label images read through VTK's image readers (TIFF, MetaImage, VTK XML image
+// data; NRRD in nrrd_image.cpp) and imported as tissues (label_image_2d.cpp).
 
 #include <algorithm>
 #include <cctype>
@@ -15,7 +15,6 @@
 #include <vtkImageData.h>
 #include <vtkImageReader2.h>
 #include <vtkMetaImageReader.h>
-#include <vtkNrrdReader.h>
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
 #include <vtkTIFFReader.h>
@@ -24,6 +23,7 @@
 #include <vtkXMLImageDataReader.h>
 
 #include "label_image_2d.hpp"
+#include "nrrd_image.hpp"
 #include "vtk_integer_types.hpp"
 #include "tessella/io/import.hpp"
 #include "tessella/io/label_image.hpp"
@@ -53,9 +53,9 @@ void copyLabels(const T* values, std::vector<std::int64_t>& labels, const std::s
 
 namespace {
 
-// An image read by VTK: its header (no labels yet) and its scalars, kept alive by `reader`.
+// An image read by VTK: its header (no labels yet) and its scalars, kept alive by `data`.
 struct VtkImage {
-  vtkSmartPointer<vtkAlgorithm> reader;
+  vtkSmartPointer<vtkImageData> data;
   vtkDataArray* scalars = nullptr;
   LabelImage header;
 };
@@ -91,8 +91,10 @@ VtkImage readVtkImage(const std::string& path) {
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
   auto capture = vtkSmartPointer<detail::VtkErrorCapture>::New();
   VtkImage out;
-  vtkSmartPointer<vtkAlgorithm>& reader = out.reader;
-  if (ext == ".vti") {
+  vtkSmartPointer<vtkAlgorithm> reader;
+  if (ext == ".nrrd" || ext == ".nhdr") {
+    out.data = detail::readNrrdImage(path);
+  } else if (ext == ".vti") {
     auto r = vtkSmartPointer<vtkXMLImageDataReader>::New();
     r->SetFileName(path.c_str());
     reader = r;
@@ -102,8 +104,7 @@ VtkImage readVtkImage(const std::string& path) {
       auto tiff = vtkSmartPointer<vtkTIFFReader>::New();
       tiff->SetOrientationType(1);  // see docs/import.md: the first row stored is j = 0, as NumPy reads it
       r = tiff;
-    } else if (ext == ".nrrd" || ext == ".nhdr") r = vtkSmartPointer<vtkNrrdReader>::New();
-    else if (ext == ".mha" || ext == ".mhd") {
+    } else if (ext == ".mha" || ext == ".mhd") {
       refuseWideMetaImage(path, file);
       r = vtkSmartPointer<vtkMetaImageReader>::New();
     } else
@@ -114,12 +115,15 @@ VtkImage readVtkImage(const std::string& path) {
     r->SetFileName(path.c_str());
     reader = r;
   }
-  capture->watch(reader);
-  reader->Update();
-  vtkImageData* data = vtkImageData::SafeDownCast(reader->GetOutputDataObject(0));
-  if (capture->failed() || !data)
-    throw InputError("cannot read label image " + file + ": " +
-                     (capture->failed() ? capture->message() : std::string("no image in the file")));
+  if (reader) {
+    capture->watch(reader);
+    reader->Update();
+    out.data = vtkImageData::SafeDownCast(reader->GetOutputDataObject(0));
+    if (capture->failed() || !out.data)
+      throw InputError("cannot read label image " + file + ": " +
+                       (capture->failed() ? capture->message() : std::string("no image in the file")));
+  }
+  vtkImageData* data = out.data;
   vtkDataArray* scalars = data->GetPointData() ? data->GetPointData()->GetScalars() : nullptr;
   if (!scalars && data->GetPointData() && data->GetPointData()->GetNumberOfArrays() > 0)
     scalars = data->GetPointData()->GetArray(0);
@@ -188,7 +192,7 @@ ImportResult importLabelImage(const std::string& path, const ImportOptions& opti
   ImportResult r =
       pixels ? detail::tissueFromLabelPixels2d(image.header, *pixels,
                                                static_cast<std::size_t>(image.scalars->GetNumberOfTuples()), options,
-                                               [&] { image.scalars = nullptr, image.reader = nullptr; })
+                                               [&] { image.scalars = nullptr, image.data = nullptr; })
              : tissueFromLabelImage(withLabels(std::move(image)), options);
   r.report.path = path;
   return r;
