@@ -29,6 +29,7 @@
 #include "tessella/generators/voronoi.hpp"
 #include "bench_args.hpp"
 #include "bench_figure.hpp"
+#include "process_usage.hpp"
 
 using namespace tessella;
 
@@ -47,19 +48,10 @@ double seconds(std::chrono::steady_clock::time_point since) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - since).count();
 }
 
-// CPU time of the process (all threads): on a shared machine, where wall
-// times stretch with the load, the CPU ratio of one thread's work is the
-// steadier figure.
-double cpuSeconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
-
 // Wall time; `cpu` gets the CPU time (both without the triangulation's destruction).
 template <typename Triangulation, typename MakePoint>
 double timeDelaunay(const std::vector<Vec3>& seeds, MakePoint make_point, double& cpu) {
-  const double c0 = cpuSeconds();
+  const double c0 = bench::processCpuSeconds();
   const auto t0 = std::chrono::steady_clock::now();
   std::vector<std::pair<typename Triangulation::Point, unsigned>> points;
   points.reserve(seeds.size());
@@ -67,7 +59,7 @@ double timeDelaunay(const std::vector<Vec3>& seeds, MakePoint make_point, double
   Triangulation dt;
   dt.insert(points.begin(), points.end());
   const double t = seconds(t0);
-  cpu = cpuSeconds() - c0;
+  cpu = bench::processCpuSeconds() - c0;
   if (dt.number_of_vertices() != seeds.size()) std::printf("  (duplicate seeds?)\n");
   return t;
 }
@@ -104,9 +96,9 @@ void run(const char* label, const Domain& domain, std::size_t n, MakePoint make_
   const double delaunay = timeDelaunay<Triangulation>(seeds, make_point, delaunay_cpu);
   const double dual = Triangulation::Point::Ambient_dimension::value == 2 ? timeDelaunayDual2(seeds) : 0.0;
   const auto t0 = std::chrono::steady_clock::now();
-  const double c1 = cpuSeconds();
+  const double c1 = bench::processCpuSeconds();
   const Tissue t = voronoiTissue(seeds, domain);
-  const double voronoi = seconds(t0), voronoi_cpu = cpuSeconds() - c1;
+  const double voronoi = seconds(t0), voronoi_cpu = bench::processCpuSeconds() - c1;
   std::printf("%-12s %9zu cells  %8zu vertices  %8zu walls  CGAL Delaunay %7.3f s  voronoiTissue %7.3f s  ratio %5.2f",
               label, t.numCells(), t.numVertices(), t.numWalls(), delaunay, voronoi, voronoi / delaunay);
   if (dual > 0) std::printf("  (CGAL Delaunay + dual cells %7.3f s, ratio %5.2f)", dual, voronoi / dual);

@@ -33,6 +33,7 @@
 #include "tessella/generators/voronoi.hpp"
 #include "bench_args.hpp"
 #include "bench_figure.hpp"
+#include "process_usage.hpp"
 
 using namespace tessella;
 using namespace tessella::growth;
@@ -72,14 +73,6 @@ StepTime growthStepMs(const Tissue& start, IntegrationScheme scheme, int threads
   return StepTime{best, total / (repeats * steps)};
 }
 
-// CPU time of the process (all threads; OpenMP threads waiting at a barrier
-// spin for a while, and that counts too).
-double processSeconds() {
-  timespec ts;
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
-}
-
 // Growth and division together: steps per second while cells divide
 // (Euler growth step + division of every cell over its noisy threshold).
 /// Milliseconds per step of growth and division.
@@ -95,7 +88,7 @@ double growthWithDivision(const char* label, const Tissue& start, int threads, i
   GeometryCache geometry;  // shared by growth and division, as in a Simulation
   double dividing = 0;  // seconds in the division steps
   const auto a = Clock::now();
-  const double cpu0 = processSeconds();
+  const double cpu0 = bench::processCpuSeconds();
   for (int s = 0; s < steps; ++s) {
     g.step(t, 0.05, geometry);
     const auto b = Clock::now();
@@ -103,20 +96,12 @@ double growthWithDivision(const char* label, const Tissue& start, int threads, i
     dividing += seconds(b, Clock::now());
   }
   const double sec = seconds(a, Clock::now());
-  const double cpu = processSeconds() - cpu0;
+  const double cpu = bench::processCpuSeconds() - cpu0;
   std::printf("  %-14s %d thr: %8.2f steps/s  (%6.1f ms/step, division %6.1f, CPU %6.1f), %zu divisions (%zu -> %zu "
               "cells)\n",
               label, threads, steps / sec, 1e3 * sec / steps, 1e3 * dividing / steps, 1e3 * cpu / steps, divisions,
               start.numCells(), t.numCells());
   return 1e3 * sec / steps;
-}
-
-// CPU time of the calling thread: on a shared machine the wall clock also
-// counts the time other processes hold the core.
-double threadSeconds() {
-  timespec ts;
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
-  return ts.tv_sec + 1e-9 * ts.tv_nsec;
 }
 
 // Microseconds per division (rule plane + splitCell) over every cell once;
@@ -133,9 +118,9 @@ void divisionCost(const char* label, const Tissue& start, const std::string& rul
   std::vector<Plane> planes;
   planes.reserve(cells.size());
   const auto a = Clock::now();
-  const double cpu0 = threadSeconds();
+  const double cpu0 = bench::threadCpuSeconds();
   for (CellId c : cells) planes.push_back(rule->plane(t, c, rng));
-  const double plane_cpu = threadSeconds() - cpu0;
+  const double plane_cpu = bench::threadCpuSeconds() - cpu0;
   std::size_t failed = 0;
   for (std::size_t i = 0; i < cells.size(); ++i) {
     try {
@@ -144,7 +129,7 @@ void divisionCost(const char* label, const Tissue& start, const std::string& rul
       ++failed;
     }
   }
-  const double cpu = threadSeconds() - cpu0;
+  const double cpu = bench::threadCpuSeconds() - cpu0;
   const double wall = seconds(a, Clock::now());
   const double n = static_cast<double>(cells.size());
   std::printf("  %-4s %-30s %8.2f us/division CPU (rule %7.2f, split %6.2f) | wall %8.2f us", label,
@@ -172,7 +157,7 @@ void schedulerDivisionCost(const char* label, const Tissue& start, const std::st
   for (CellId c : t.cells()) cells.push_back(c);
   std::size_t failed = 0;
   const auto a = Clock::now();
-  const double cpu0 = threadSeconds();
+  const double cpu0 = bench::threadCpuSeconds();
   for (CellId c : cells) {
     try {
       scheduler.divide(t, c);
@@ -180,7 +165,7 @@ void schedulerDivisionCost(const char* label, const Tissue& start, const std::st
       ++failed;
     }
   }
-  const double cpu = threadSeconds() - cpu0;
+  const double cpu = bench::threadCpuSeconds() - cpu0;
   const double wall = seconds(a, Clock::now());
   const double n = static_cast<double>(cells.size());
   std::printf("  %-12s %-30s %8.2f us/division CPU | wall %8.2f us", label, rule_name.c_str(), 1e6 * cpu / n,

@@ -15,8 +15,6 @@
 //   label_image_bench [--quick | --2d | --3d]   --quick: 1024^2 (about 6000 cells) and 128^3 (about 1000 cells);
 //                                               --2d, --3d: the full size of one dimension only
 
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -31,6 +29,7 @@
 
 #include "bench_args.hpp"
 #include "bench_figure.hpp"
+#include "process_usage.hpp"
 #include "tessella/io/import.hpp"
 #include "tessella/io/label_image.hpp"
 #include "tessella/tissue/builders.hpp"
@@ -41,20 +40,6 @@ using Clock = std::chrono::steady_clock;
 namespace {
 
 double secondsSince(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-// CPU seconds of the process (all threads), less sensitive than wall time to a busy machine.
-double cpuSeconds() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
-         1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-}
-
-double maxRssMb() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return static_cast<double>(u.ru_maxrss) / 1024.0;  // kilobytes on Linux
-}
 
 // A discrete Voronoi label image of n^dim pixels, g^dim jittered-grid seeds
 // (each within the middle half of its grid cell), labels 2.. (0 and 1 are
@@ -139,11 +124,11 @@ void row(const std::string& path, int dim, std::int64_t n, std::size_t seeds, do
   for (int r = 0; r < runs; ++r) {
     {
       const auto t0 = Clock::now();
-      const double c0 = cpuSeconds();
+      const double c0 = bench::processCpuSeconds();
       const io::LabelImage img = io::readLabelImage(path);
       read = std::min(read, secondsSince(t0));
-      read_cpu = std::min(read_cpu, cpuSeconds() - c0);
-      rss_read = std::max(rss_read, maxRssMb());
+      read_cpu = std::min(read_cpu, bench::processCpuSeconds() - c0);
+      rss_read = std::max(rss_read, bench::maxRssMb());
       if (r == 0 && dim == 2) {  // the conversion alone (tissueFromLabelImage), from the image in memory
         const auto t1 = Clock::now();
         const io::ImportResult result = io::tissueFromLabelImage(img, o);
@@ -151,10 +136,10 @@ void row(const std::string& path, int dim, std::int64_t n, std::size_t seeds, do
       }
     }
     const auto t0 = Clock::now();
-    const double c0 = cpuSeconds();
+    const double c0 = bench::processCpuSeconds();
     const io::ImportResult result = io::importTissue(path, o);
     import = std::min(import, secondsSince(t0));
-    import_cpu = std::min(import_cpu, cpuSeconds() - c0);
+    import_cpu = std::min(import_cpu, bench::processCpuSeconds() - c0);
     cells = result.tissue.numCells(), vertices = result.tissue.numVertices();
     if (dim == 2) {  // the floor: building the same tissue from its polygons
       const Polygons p = polygonsOf(result.tissue);
@@ -163,7 +148,7 @@ void row(const std::string& path, int dim, std::int64_t n, std::size_t seeds, do
       build = std::min(build, secondsSince(t1));
     }
   }
-  const double rss_import = maxRssMb();
+  const double rss_import = bench::maxRssMb();
   const std::string size = dim == 3 ? std::to_string(n) + "^3" : std::to_string(n) + "^2";
   std::printf("%-3dD %-8s %8zu %8zu %9zu %8.3f %9.3f %8.3f %8.3f %8.3f %8.3f %7.2f %9.2f %10.0f %9.0f %10.0f\n", dim,
               size.c_str(), seeds, cells, vertices, read, import, read_cpu, import_cpu, dim == 2 ? convert : 0.0,

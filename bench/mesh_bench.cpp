@@ -40,7 +40,6 @@
 #include <vector>
 
 #include <omp.h>
-#include <sys/resource.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
@@ -54,6 +53,7 @@
 #include "../mesh/src/tetgen_support.hpp"  // the meshers' switch string and facet filling (internal)
 #include "bench_args.hpp"
 #include "bench_figure.hpp"
+#include "process_usage.hpp"
 #include "tessella/mesh/mesh_measures.hpp"
 #include "tessella/mesh/mesh_tissue.hpp"
 #include "tessella/generators/dome.hpp"
@@ -209,15 +209,7 @@ double median(std::vector<double> v) {
 /// CPU seconds of this process and its waited-for children (the mesher's
 /// worker processes) so far; without `children`, this process's only.
 double cpuSeconds(bool children = true) {
-  double total = 0;
-  for (const int who : {RUSAGE_SELF, RUSAGE_CHILDREN}) {
-    if (who == RUSAGE_CHILDREN && !children) continue;
-    rusage u{};
-    getrusage(who, &u);
-    total += static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
-             1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
-  }
-  return total;
+  return bench::processCpuSeconds() + (children ? bench::childrenCpuSeconds() : 0.0);
 }
 
 /// The 2D row: a Voronoi rectangle of n cells meshed by Tessella and by CGAL

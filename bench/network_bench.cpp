@@ -58,6 +58,7 @@
 #include "tessella/tissue/geometry.hpp"
 #include "bench_args.hpp"
 #include "bench_figure.hpp"
+#include "process_usage.hpp"
 
 using namespace tessella;
 using namespace tessella::networks;
@@ -116,14 +117,6 @@ std::vector<Variant> variants() {
   return out;
 }
 
-// The process' CPU seconds (all its threads): on a shared machine the steady clock also counts the time
-// other processes hold the cores.
-double cpuSeconds() {
-  timespec ts{};
-  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-  return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
-}
-
 struct Run {
   double seconds = 0;
   double cpu_seconds = 0;
@@ -136,7 +129,7 @@ struct Run {
 // `steps` network steps: graph, system, integrator (as v.build says), advance.
 Run runSteps(const Tissue& tissue, const NetworkModel& model, const Variant& v, std::vector<double> y, int steps) {
   Run run;
-  const double cpu_start = cpuSeconds();
+  const double cpu_start = bench::processCpuSeconds();
   if (v.build == Build::Once) {
     const auto a = Clock::now();
     GeometryCache geometry;
@@ -150,7 +143,7 @@ Run runSteps(const Tissue& tissue, const NetworkModel& model, const Variant& v, 
     run.seconds = std::chrono::duration<double>(Clock::now() - a).count();
     run.stats = integrator.statistics();
     run.y = std::move(y);
-    run.cpu_seconds = cpuSeconds() - cpu_start;
+    run.cpu_seconds = bench::processCpuSeconds() - cpu_start;
     return run;
   }
   std::unique_ptr<NetworkSystem> system;
@@ -175,7 +168,7 @@ Run runSteps(const Tissue& tissue, const NetworkModel& model, const Variant& v, 
     run.stats += integrator->statistics();
   }
   run.y = std::move(y);
-  run.cpu_seconds = cpuSeconds() - cpu_start;
+  run.cpu_seconds = bench::processCpuSeconds() - cpu_start;
   return run;
 }
 

@@ -8,7 +8,6 @@
 //   tissue_bench [--quick]     (--quick: skip the 10^6-cell and 10^5-cell 3D sizes)
 
 #include <omp.h>
-#include <sys/resource.h>
 
 #include <chrono>
 #include <cmath>
@@ -23,6 +22,7 @@
 #include "tessella/tissue/tissue.hpp"
 #include "bench_args.hpp"
 #include "bench_figure.hpp"
+#include "process_usage.hpp"
 
 using namespace tessella;
 using Clock = std::chrono::steady_clock;
@@ -162,18 +162,6 @@ PolygonLoops outlineLoops(std::size_t side, int pieces) {
   return p;
 }
 
-struct Usage {
-  double cpu;
-  long faults;
-};
-Usage usage() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return {static_cast<double>(u.ru_utime.tv_sec + u.ru_stime.tv_sec) +
-              1e-6 * static_cast<double>(u.ru_utime.tv_usec + u.ru_stime.tv_usec),
-          u.ru_minflt};
-}
-
 // buildPolygonTissue of ~10^5 cells, next to copying what it reads (positions,
 // offsets, loops, into arrays already written: the memory traffic any build
 // that owns its lists has at least), in turns.
@@ -187,12 +175,14 @@ void build2D(std::size_t side, int pieces) {
     std::size_t edges = 0;
     PolygonLoops copied = p;  // the baseline copies into memory already touched: no allocator state in it
     for (int r = 0; r < 5; ++r) {
-      const Usage u0 = usage();
+      const double c0 = bench::processCpuSeconds();
+      const long f0 = bench::minorPageFaults();
       const auto t0 = Clock::now();
       const Tissue t = buildPolygonTissue(p.positions, p.offsets, p.loops);
       const double s = std::chrono::duration<double>(Clock::now() - t0).count();
-      const Usage u1 = usage();
-      if (s < best) best = s, best_cpu = u1.cpu - u0.cpu, faults = u1.faults - u0.faults;
+      const double c1 = bench::processCpuSeconds();
+      const long f1 = bench::minorPageFaults();
+      if (s < best) best = s, best_cpu = c1 - c0, faults = f1 - f0;
       edges = t.numWalls();
       const auto t1 = Clock::now();
       std::copy(p.positions.begin(), p.positions.end(), copied.positions.begin());

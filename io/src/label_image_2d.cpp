@@ -20,10 +20,10 @@
 // and of two cells the smaller label bridges.
 
 #include <algorithm>
-#include <exception>
 #include <array>
 #include <atomic>
 #include <cmath>
+#include <exception>
 #include <functional>
 #include <limits>
 #include <map>
@@ -34,7 +34,6 @@
 
 #include <omp.h>
 
-#include "tessella/tissue/huge_pages.hpp"
 #include "label_image_2d.hpp"
 #include "label_image_3d.hpp"
 #include "labelled_surface.hpp"
@@ -43,6 +42,7 @@
 #include "tessella/tissue/builders.hpp"
 #include "tessella/tissue/errors.hpp"
 #include "tessella/tissue/format.hpp"
+#include "tessella/tissue/huge_pages.hpp"
 
 namespace tessella::io {
 
@@ -145,20 +145,8 @@ void simplifyEdge(const CornerPositions& pos, std::int32_t a, std::int32_t b, do
   const double ax = std::round(pa.x()), ay = std::round(pa.y());
   const double dx = (std::round(pb.x()) - ax) / n, dy = (std::round(pb.y()) - ay) / n;
   auto at = [&](int i) { return i == 0 ? pa : i == n ? pb : Vec3(ax + i * dx, ay + i * dy, 0); };
-  // Ends on pixel corners (not a quarter pixel off) and the edge along an axis: every corner lies on the chord,
-  // and the test's distance of corner k of h from the chord's start is exactly 0 where (k / h) * h == k in
-  // doubles (the dot product and squared length are exact integers; only t = k / h and t * h round). Where that
-  // holds for every corner the test finds no distance above any tol >= 0: the same result without it.
-  const bool on_axis = (dx == 0 || dy == 0) && pa.x() == ax && pa.y() == ay && pb.x() == std::round(pb.x()) &&
-                       pb.y() == std::round(pb.y());
   auto dp = [&](auto&& self, int lo, int hi, bool one) -> void {
     if (hi <= lo + 1) return;
-    if (on_axis && !one) {
-      const auto h = static_cast<double>(hi - lo);
-      bool exact = true;
-      for (int k = 1; k < hi - lo; ++k) exact &= (static_cast<double>(k) / h) * h == static_cast<double>(k);
-      if (exact) return;
-    }
     const Vec3 p = at(lo), q = at(hi);
     double worst = -1;
     int arg = lo;
